@@ -1,0 +1,59 @@
+// fcc_lattice.cpp: FCC site generation and bonding (see fcc_lattice.h).
+#include "fcc_lattice.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "errors.h"
+#include "neighbor_pairs.h"
+
+namespace swarf {
+
+Lattice generate_fcc(const FccSpec& spec) {
+  if (!(spec.radius > 0.0) || !std::isfinite(spec.radius))
+    throw InputError(fmt::format("lattice: radius must be a positive length in m, got {}", spec.radius));
+  const double d = 2.0 * spec.radius;
+  const double a = d * std::sqrt(2.0);
+  const double h = 0.5 * a;
+  const bool by_cells = spec.cells[0] > 0 || spec.cells[1] > 0 || spec.cells[2] > 0;
+  std::array<long, 3> count{};  // number of half-cell steps per axis
+  for (int c = 0; c < 3; ++c) {
+    if (by_cells) {
+      if (spec.cells[c] <= 0)
+        throw InputError(fmt::format("lattice: cells must be three positive integers, got {},{},{}",
+                                     spec.cells[0], spec.cells[1], spec.cells[2]));
+      count[c] = 2L * spec.cells[c];
+    } else {
+      if (!(spec.size[c] > 0.0) || !std::isfinite(spec.size[c]))
+        throw InputError(fmt::format("lattice: size must be three positive lengths in m, got {},{},{}",
+                                     spec.size[0], spec.size[1], spec.size[2]));
+      count[c] = static_cast<long>(std::floor(spec.size[c] / h * (1.0 + 1e-9))) + 1;
+    }
+  }
+  const double n_sites = 0.5 * double(count[0]) * double(count[1]) * double(count[2]);
+  if (n_sites > 2.0e9) throw InputError(fmt::format("lattice: {:.3g} particles is more than swarf indexes", n_sites));
+  Lattice lat;
+  lat.cell_edge = a;
+  if (by_cells) lat.cells = spec.cells;
+  lat.position.reserve(static_cast<std::size_t>(n_sites) + 1);
+  for (long k = 0; k < count[2]; ++k)
+    for (long j = 0; j < count[1]; ++j)
+      for (long i = 0; i < count[0]; ++i)
+        if ((i + j + k) % 2 == 0) lat.position.emplace_back(double(i) * h, double(j) * h, double(k) * h);
+  if (lat.position.empty()) throw InputError("lattice: the box holds no lattice site");
+  lat.radius.assign(lat.position.size(), spec.radius);
+  bond_nearest_neighbours(lat, d, spec.bond_tolerance);
+  return lat;
+}
+
+void bond_nearest_neighbours(Lattice& lat, double nominal_distance, double tolerance) {
+  if (!(tolerance >= 0.0 && tolerance < 0.2))
+    throw InputError(fmt::format("lattice: bond tolerance must lie in [0, 0.2), got {}", tolerance));
+  lat.bonds = find_pairs_in_range(lat.position, nominal_distance * (1.0 - tolerance),
+                                  nominal_distance * (1.0 + tolerance));
+  lat.rest_length.resize(lat.bonds.size());
+  for (std::size_t b = 0; b < lat.bonds.size(); ++b)
+    lat.rest_length[b] = (lat.position[lat.bonds[b][1]] - lat.position[lat.bonds[b][0]]).norm();
+}
+
+}  // namespace swarf

@@ -1,0 +1,71 @@
+// lattice_file.cpp: HDF5 reading and writing of a lattice (see lattice_file.h).
+#include "lattice_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "errors.h"
+#include "h5file.h"
+
+namespace swarf {
+
+void write_lattice(const std::string& path, const Lattice& lat) {
+  const std::string tmp = path + ".part";
+  {
+    H5File f(tmp, H5File::Mode::Create);
+    f.write("/particles/position", lat.position.empty() ? nullptr : lat.position[0].data(), lat.position.size(), 3);
+    f.write("/particles/radius", lat.radius.data(), lat.radius.size());
+    std::vector<std::int64_t> pairs(2 * lat.bonds.size());
+    for (std::size_t b = 0; b < lat.bonds.size(); ++b) {
+      pairs[2 * b] = lat.bonds[b][0];
+      pairs[2 * b + 1] = lat.bonds[b][1];
+    }
+    f.write("/bonds/pairs", pairs.data(), lat.bonds.size(), 2);
+    f.write("/bonds/rest_length", lat.rest_length.data(), lat.rest_length.size());
+    f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION + " fcc");
+    f.write_attribute("cell_edge", lat.cell_edge);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+Lattice read_lattice(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(fmt::format("lattice file '{}' does not exist", path));
+  H5File f(path, H5File::Mode::Read);
+  Lattice lat;
+  std::size_t rows = 0, cols = 0;
+  auto pos = f.read_doubles("/particles/position", rows, cols);
+  if (cols != 3) throw InputError(fmt::format("'{}': /particles/position must be N x 3, is {} x {}", path, rows, cols));
+  const std::size_t n = rows;
+  lat.position.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lat.position[i] = Vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
+    if (!lat.position[i].allFinite())
+      throw InputError(fmt::format("'{}': /particles/position row {} is not finite", path, i));
+  }
+  lat.radius = f.read_doubles("/particles/radius", rows, cols);
+  if (rows != n || cols != 1) throw InputError(fmt::format("'{}': /particles/radius must have {} entries", path, n));
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(lat.radius[i] > 0.0) || !std::isfinite(lat.radius[i]))
+      throw InputError(fmt::format("'{}': /particles/radius[{}] = {} is not a positive length", path, i, lat.radius[i]));
+  auto pairs = f.read_ints("/bonds/pairs", rows, cols);
+  if (cols != 2 && rows > 0) throw InputError(fmt::format("'{}': /bonds/pairs must be M x 2", path));
+  const std::size_t m = rows;
+  lat.bonds.resize(m);
+  for (std::size_t b = 0; b < m; ++b) {
+    std::int64_t i = pairs[2 * b], j = pairs[2 * b + 1];
+    if (i < 0 || j < 0 || i >= std::int64_t(n) || j >= std::int64_t(n) || i == j)
+      throw InputError(fmt::format("'{}': /bonds/pairs row {} = ({}, {}) is not a pair of distinct particles 0..{}",
+                                   path, b, i, j, n - 1));
+    lat.bonds[b] = {static_cast<std::int32_t>(std::min(i, j)), static_cast<std::int32_t>(std::max(i, j))};
+  }
+  lat.rest_length = f.read_doubles("/bonds/rest_length", rows, cols);
+  if (rows != m || cols != 1) throw InputError(fmt::format("'{}': /bonds/rest_length must have {} entries", path, m));
+  for (std::size_t b = 0; b < m; ++b)
+    if (!(lat.rest_length[b] > 0.0) || !std::isfinite(lat.rest_length[b]))
+      throw InputError(fmt::format("'{}': /bonds/rest_length[{}] = {} is not a positive length", path, b, lat.rest_length[b]));
+  if (f.has_attribute("cell_edge")) lat.cell_edge = f.read_double_attribute("cell_edge");
+  return lat;
+}
+
+}  // namespace swarf

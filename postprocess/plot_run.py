@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Plots of one swarf run (PNG): the stress-strain loop with the rod-law prediction for a
+uniaxial case, and the energy balance. Usage: plot_run.py RUN_DIR [SUMMARY_JSON].
+Prints 'wrote FILE' for every file written. Draws only columns swarf computed."""
+import csv, json, os, sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+
+def read_series(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head = rows[0]
+    cols = {h: [] for h in head}
+    for r in rows[1:]:
+        for h, v in zip(head, r):
+            cols[h].append(float(v))
+    return cols
+
+
+def main():
+    run = sys.argv[1]
+    summary = json.load(open(sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "summary.json")))
+    s = read_series(os.path.join(run, "series.csv"))
+    if "strain" in s:
+        fig, ax = plt.subplots(figsize=(7, 5), dpi=120)
+        ax.plot(s["strain"], [v / 1e6 for v in s["stress"]], "-", lw=1.6, label="swarf bar (grip force / cross-section)")
+        ax.plot(s["strain"], [v / 1e6 for v in s["stress_predicted"]], "--", lw=1.2, color="k",
+                label="rod law via FCC relations: 3 (E100/E) sigma_rod(eps/3)")
+        u = summary.get("uniaxial", {})
+        dev = u.get("deviation_percent", {})
+        if dev:
+            txt = "\n".join("%s: %+.2f %%" % (k.replace("_", " "), v) for k, v in dev.items())
+            ax.text(0.02, 0.98, "deviation from prediction\n" + txt, transform=ax.transAxes, va="top", fontsize=8,
+                    bbox=dict(boxstyle="round", fc="w", alpha=0.8))
+        ax.set_xlabel("nominal strain (grip separation change / gauge length) [1]")
+        ax.set_ylabel("nominal stress (grip force / initial cross-section) [MPa]")
+        ax.set_title("Uniaxial cyclic test along [100]: %s" % os.path.basename(summary.get("case_file", "")))
+        ax.grid(alpha=0.3)
+        ax.legend(loc="lower right", fontsize=8)
+        fig.tight_layout()
+        out = os.path.join(run, "stress_strain.png")
+        fig.savefig(out)
+        print("wrote stress_strain.png")
+    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=120)
+    t = [v * 1e6 for v in s["time"]]
+    for key, label in (("external_work", "external work"), ("kinetic_energy", "kinetic"),
+                       ("elastic_energy", "elastic (rods)"), ("plastic_work", "plastic work"),
+                       ("viscous_work", "viscous"), ("fracture_energy", "fracture"), ("energy_error", "balance error")):
+        ax.plot(t, s[key], label=label, lw=1.2)
+    ax.set_xlabel("time [us]")
+    ax.set_ylabel("energy [J]")
+    ax.set_title("Energy balance")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "energy.png"))
+    print("wrote energy.png")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,424 @@
+// case_config.cpp: reading and checking case files (see case_config.h).
+#include "case_config.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "errors.h"
+
+namespace swarf {
+namespace {
+
+std::string repr(const toml::node& n) {
+  std::ostringstream os;
+  if (auto s = n.as_string()) {
+    os << '"' << s->get() << '"';
+  } else {
+    n.visit([&](auto&& v) { os << v; });
+  }
+  std::string out = os.str();
+  if (out.size() > 80) out = out.substr(0, 77) + "...";
+  return out;
+}
+
+// Reads the keys of one table, remembers which were used and rejects the rest.
+class Reader {
+ public:
+  Reader(const toml::table* t, std::string prefix, const std::string& source,
+         const std::set<std::string>& overridden)
+      : t_(t), prefix_(std::move(prefix)), source_(source), overridden_(overridden) {}
+
+  bool present() const { return t_ != nullptr; }
+
+  [[noreturn]] void fail(const std::string& key, const toml::node* n, const std::string& problem) const {
+    const std::string full = prefix_.empty() ? key : prefix_ + "." + key;
+    std::string where = source_;
+    if (overridden_.count(full)) {
+      where += " (--set " + full + ")";
+    } else if (n && n->source().begin.line > 0) {
+      where += ":" + std::to_string(n->source().begin.line);
+    }
+    if (n) throw InputError(fmt::format("{}: key '{}' = {}: {}", where, full, repr(*n), problem));
+    throw InputError(fmt::format("{}: key '{}': {}", where, full, problem));
+  }
+
+  const toml::node* get(const std::string& key) {
+    if (!t_) return nullptr;
+    used_.insert(key);
+    return t_->get(key);
+  }
+
+  double number(const std::string& key, double def, const std::function<const char*(double)>& check = {}) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    double v;
+    if (auto f = n->as_floating_point()) v = f->get();
+    else if (auto i = n->as_integer()) v = static_cast<double>(i->get());
+    else fail(key, n, "must be a number");
+    if (std::isnan(v)) fail(key, n, "must not be nan");
+    if (check) {
+      if (const char* problem = check(v)) fail(key, n, problem);
+    }
+    return v;
+  }
+
+  int integer(const std::string& key, int def, int lo, int hi) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto i = n->as_integer();
+    if (!i) fail(key, n, "must be an integer");
+    if (i->get() < lo || i->get() > hi) fail(key, n, fmt::format("must lie in [{}, {}]", lo, hi));
+    return static_cast<int>(i->get());
+  }
+
+  bool boolean(const std::string& key, bool def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto b = n->as_boolean();
+    if (!b) fail(key, n, "must be true or false");
+    return b->get();
+  }
+
+  std::string string(const std::string& key, const std::string& def, const std::vector<std::string>& allowed = {}) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto s = n->as_string();
+    if (!s) fail(key, n, "must be a string");
+    if (!allowed.empty()) {
+      bool ok = false;
+      for (const auto& a : allowed) ok = ok || a == s->get();
+      if (!ok) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+        fail(key, n, "must be one of " + list);
+      }
+    }
+    return s->get();
+  }
+
+  std::vector<double> numbers(const std::string& key, const std::vector<double>& def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto a = n->as_array();
+    if (!a) fail(key, n, "must be an array of numbers");
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      if (auto f = e.as_floating_point()) out.push_back(f->get());
+      else if (auto i = e.as_integer()) out.push_back(static_cast<double>(i->get()));
+      else fail(key, n, "must be an array of numbers");
+      if (!std::isfinite(out.back())) fail(key, n, "entries must be finite");
+    }
+    return out;
+  }
+
+  std::array<double, 3> vec3(const std::string& key, const std::array<double, 3>& def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto v = numbers(key, {});
+    if (v.size() != 3) fail(key, n, "must be an array of three numbers");
+    return {v[0], v[1], v[2]};
+  }
+
+  std::array<int, 3> ivec3(const std::string& key, const std::array<int, 3>& def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto a = n->as_array();
+    if (!a || a->size() != 3) fail(key, n, "must be an array of three integers");
+    std::array<int, 3> out{};
+    for (int c = 0; c < 3; ++c) {
+      auto i = (*a)[c].as_integer();
+      if (!i || i->get() <= 0 || i->get() > 100000) fail(key, n, "must be three positive integers");
+      out[c] = static_cast<int>(i->get());
+    }
+    return out;
+  }
+
+  // Rejects every key that no reader asked for.
+  void finish() const {
+    if (!t_) return;
+    for (const auto& [k, v] : *t_) {
+      const std::string key(k.str());
+      if (!used_.count(key)) {
+        const std::string full = prefix_.empty() ? key : prefix_ + "." + key;
+        std::string where = source_;
+        if (overridden_.count(full)) where += " (--set " + full + ")";
+        else if (v.source().begin.line > 0) where += ":" + std::to_string(v.source().begin.line);
+        throw InputError(fmt::format("{}: unknown key '{}' (see docs/case-reference.md)", where, full));
+      }
+    }
+  }
+
+ private:
+  const toml::table* t_;
+  std::string prefix_;
+  const std::string& source_;
+  const std::set<std::string>& overridden_;
+  std::set<std::string> used_;
+};
+
+const char* positive(double v) { return v > 0.0 && std::isfinite(v) ? nullptr : "must be positive and finite"; }
+const char* positive_or_inf(double v) { return v > 0.0 ? nullptr : "must be positive (inf allowed)"; }
+const char* non_negative(double v) { return v >= 0.0 && std::isfinite(v) ? nullptr : "must be >= 0 and finite"; }
+
+// Applies one "a.b.c=value" override to the tree.
+void apply_override(toml::table& root, const std::string& arg, std::set<std::string>& overridden) {
+  const auto eq = arg.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(fmt::format("--set '{}': expected key=value (for example integrator.dt=2e-9)", arg));
+  const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    // A bare word is taken as a string: --set integrator.scheme=verlet
+    parsed.insert_or_assign("v", text);
+  }
+  std::vector<std::string> parts;
+  {
+    std::size_t start = 0;
+    while (true) {
+      auto dot = key.find('.', start);
+      parts.push_back(key.substr(start, dot - start));
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+  }
+  toml::node* cur = &root;
+  std::string path;
+  for (std::size_t p = 0; p + 1 < parts.size(); ++p) {
+    const std::string& part = parts[p];
+    path += (path.empty() ? "" : ".") + part;
+    if (part.empty()) throw InputError(fmt::format("--set '{}': empty key component", arg));
+    if (auto t = cur->as_table()) {
+      if (!t->contains(part)) t->insert(part, toml::table{});
+      cur = t->get(part);
+    } else if (auto a = cur->as_array()) {
+      char* end = nullptr;
+      long idx = std::strtol(part.c_str(), &end, 10);
+      if (*end || idx < 0 || static_cast<std::size_t>(idx) >= a->size())
+        throw InputError(fmt::format("--set '{}': '{}' is not an index of the array '{}'", arg, part, path));
+      cur = a->get(static_cast<std::size_t>(idx));
+    } else {
+      throw InputError(fmt::format("--set '{}': '{}' is not a table", arg, path));
+    }
+  }
+  auto t = cur->as_table();
+  if (!t) throw InputError(fmt::format("--set '{}': the parent of '{}' is not a table", arg, parts.back()));
+  t->insert_or_assign(parts.back(), *parsed.get("v"));
+  // Record the key as the reader will name it (array indices dropped: group.0.x -> group.x).
+  std::string named;
+  for (const auto& part : parts) {
+    if (!part.empty() && std::all_of(part.begin(), part.end(), ::isdigit)) continue;
+    named += (named.empty() ? "" : ".") + part;
+  }
+  overridden.insert(named);
+}
+
+void read_groups(const toml::table& root, const std::string& source, const std::set<std::string>& ov,
+                 CaseSettings& cs) {
+  const toml::node* n = root.get("group");
+  if (!n) return;
+  auto arr = n->as_array();
+  if (!arr || !arr->is_array_of_tables())
+    throw InputError(fmt::format("{}: 'group' must be an array of tables ([[group]])", source));
+  std::set<std::string> names;
+  for (std::size_t g = 0; g < arr->size(); ++g) {
+    Reader r((*arr)[g].as_table(), "group", source, ov);
+    GroupSettings gs;
+    gs.name = r.string("name", fmt::format("group{}", g));
+    if (!names.insert(gs.name).second) r.fail("name", r.get("name"), "two groups have this name");
+    gs.side = r.string("side", "", {"x-", "x+", "y-", "y+", "z-", "z+"});
+    gs.layers = r.integer("layers", 1, 1, 1000);
+    gs.box_min = r.vec3("box_min", gs.box_min);
+    gs.box_max = r.vec3("box_max", gs.box_max);
+    gs.dofs = r.string("dofs", "xyz", {"x", "y", "z", "xy", "xz", "yz", "xyz"});
+    gs.motion = r.string("motion", "fixed", {"fixed", "velocity", "table"});
+    gs.velocity = r.vec3("velocity", gs.velocity);
+    gs.table_time = r.numbers("table_time", {});
+    const toml::node* td = r.get("table_displacement");
+    if (td) {
+      auto a = td->as_array();
+      if (!a) r.fail("table_displacement", td, "must be an array of [x, y, z] displacements in m");
+      for (const auto& row : *a) {
+        auto ra = row.as_array();
+        if (!ra || ra->size() != 3) r.fail("table_displacement", td, "every entry must be [x, y, z] in m");
+        std::array<double, 3> v{};
+        for (int c = 0; c < 3; ++c) {
+          if (auto f = (*ra)[c].as_floating_point()) v[c] = f->get();
+          else if (auto i = (*ra)[c].as_integer()) v[c] = static_cast<double>(i->get());
+          else r.fail("table_displacement", td, "entries must be numbers");
+          if (!std::isfinite(v[c])) r.fail("table_displacement", td, "entries must be finite");
+        }
+        gs.table_displacement.push_back(v);
+      }
+    }
+    if (gs.motion == "velocity" && !r.get("velocity"))
+      r.fail("velocity", nullptr, "motion = \"velocity\" needs a velocity [vx, vy, vz] in m/s");
+    if (gs.motion == "table") {
+      if (gs.table_time.size() < 2 || gs.table_time.size() != gs.table_displacement.size())
+        r.fail("table_time", r.get("table_time"),
+               "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
+      if (gs.table_time[0] != 0.0) r.fail("table_time", r.get("table_time"), "must start at 0 s");
+      for (std::size_t k = 1; k < gs.table_time.size(); ++k)
+        if (!(gs.table_time[k] > gs.table_time[k - 1])) r.fail("table_time", r.get("table_time"), "must be strictly ascending");
+    }
+    r.finish();
+    cs.groups.push_back(gs);
+  }
+}
+
+}  // namespace
+
+CaseSettings parse_case(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
+                        const std::string& directory) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+  std::set<std::string> ov;
+  for (const auto& o : overrides) apply_override(root, o, ov);
+
+  CaseSettings cs;
+  cs.source = source;
+  cs.directory = directory;
+  cs.overrides = overrides;
+  {
+    std::ostringstream os;
+    os << root;
+    cs.effective_toml = os.str();
+  }
+  // Top level: only known tables.
+  const std::set<std::string> tables{"workpiece", "material", "rod", "integrator", "group", "uniaxial", "output"};
+  for (const auto& [k, v] : root) {
+    const std::string key(k.str());
+    if (!tables.count(key)) {
+      std::string where = source;
+      if (ov.count(key) || !v.source().begin.line) where += " (--set)";
+      else where += ":" + std::to_string(v.source().begin.line);
+      throw InputError(fmt::format("{}: unknown table or key '{}' (known: workpiece, material, rod, integrator, "
+                                   "group, uniaxial, output)", where, key));
+    }
+    if (key != "group" && !v.is_table())
+      throw InputError(fmt::format("{}: '{}' must be a table ([{}])", source, key, key));
+  }
+  auto table = [&](const char* name) -> const toml::table* { return root.get_as<toml::table>(name); };
+
+  {
+    Reader r(table("workpiece"), "workpiece", source, ov);
+    auto& w = cs.workpiece;
+    w.lattice_file = r.string("lattice_file", "");
+    w.cells = r.ivec3("cells", w.cells);
+    w.size = r.vec3("size", w.size);
+    w.radius = r.number("radius", w.radius, positive);
+    w.bond_tolerance = r.number("bond_tolerance", w.bond_tolerance,
+                                [](double v) { return v >= 0 && v < 0.2 ? nullptr : "must lie in [0, 0.2)"; });
+    const bool has_cells = r.get("cells") != nullptr, has_size = r.get("size") != nullptr;
+    if (!w.lattice_file.empty() && (has_cells || has_size))
+      r.fail("lattice_file", r.get("lattice_file"), "give either lattice_file or cells/size, not both");
+    if (has_cells && has_size) r.fail("size", r.get("size"), "give either cells or size, not both");
+    if (has_size)
+      for (double s : w.size)
+        if (!(s > 0.0) || !std::isfinite(s)) r.fail("size", r.get("size"), "must be three positive lengths in m");
+    if (w.lattice_file.empty() && !has_cells && !has_size)
+      r.fail("cells", nullptr, "the workpiece needs cells = [NX, NY, NZ], size = [LX, LY, LZ] (m) or lattice_file");
+    if (!w.lattice_file.empty()) {
+      std::filesystem::path p(w.lattice_file);
+      if (p.is_relative()) p = std::filesystem::path(directory) / p;
+      if (!std::filesystem::exists(p)) r.fail("lattice_file", r.get("lattice_file"), "file not found: " + p.string());
+      w.lattice_file = p.string();
+    }
+    r.finish();
+  }
+  {
+    Reader r(table("material"), "material", source, ov);
+    cs.material.density = r.number("density", cs.material.density, positive);
+    cs.material.mass_basis = r.string("mass_basis", cs.material.mass_basis, {"cell", "sphere"});
+    r.finish();
+  }
+  {
+    Reader r(table("rod"), "rod", source, ov);
+    auto& d = cs.rod;
+    d.youngs_modulus = r.number("youngs_modulus", d.youngs_modulus, positive);
+    d.area = r.number("area", d.area, non_negative);
+    d.yield_strain = r.number("yield_strain", d.yield_strain, positive_or_inf);
+    d.hardening_modulus = r.number("hardening_modulus", d.hardening_modulus, non_negative);
+    if (!(d.hardening_modulus < d.youngs_modulus))
+      r.fail("hardening_modulus", r.get("hardening_modulus"),
+             fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
+    d.tensile_strength = r.number("tensile_strength", d.tensile_strength, positive_or_inf);
+    d.damping_ratio = r.number("damping_ratio", d.damping_ratio,
+                               [](double v) { return v >= 0 && v <= 10 ? nullptr : "must lie in [0, 10]"; });
+    r.finish();
+  }
+  {
+    Reader r(table("integrator"), "integrator", source, ov);
+    auto& g = cs.integrator;
+    g.scheme = r.string("scheme", g.scheme, {"verlet", "newmark"});
+    if (g.scheme == "newmark") r.fail("scheme", r.get("scheme"), "the Newmark scheme is not implemented yet (issue 3)");
+    g.dt = r.number("dt", g.dt, non_negative);
+    g.dt_safety = r.number("dt_safety", g.dt_safety,
+                           [](double v) { return v > 0 && v <= 1 ? nullptr : "must lie in (0, 1]"; });
+    g.allow_unstable_dt = r.boolean("allow_unstable_dt", g.allow_unstable_dt);
+    g.end_time = r.number("end_time", g.end_time, non_negative);
+    g.max_step_displacement = r.number("max_step_displacement", g.max_step_displacement, positive);
+    r.finish();
+  }
+  read_groups(root, source, ov, cs);
+  if (const toml::table* ut = table("uniaxial")) {
+    Reader r(ut, "uniaxial", source, ov);
+    auto& u = cs.uniaxial;
+    u.enabled = true;
+    u.axis = r.string("axis", u.axis, {"x", "y", "z"});
+    u.grip_layers = r.integer("grip_layers", u.grip_layers, 1, 1000);
+    u.grip_dofs = r.string("grip_dofs", u.grip_dofs, {"axis", "xyz"});
+    u.strain_path = r.numbers("strain_path", u.strain_path);
+    if (u.strain_path.size() < 2 || u.strain_path[0] != 0.0)
+      r.fail("strain_path", r.get("strain_path"), "needs at least two turning points, the first 0");
+    for (double s : u.strain_path)
+      if (std::abs(s) >= 0.5) r.fail("strain_path", r.get("strain_path"), "strains must lie in (-0.5, 0.5)");
+    for (std::size_t k = 1; k < u.strain_path.size(); ++k)
+      if (u.strain_path[k] == u.strain_path[k - 1])
+        r.fail("strain_path", r.get("strain_path"), "consecutive turning points must differ");
+    u.strain_rate = r.number("strain_rate", u.strain_rate, positive);
+    r.finish();
+    for (const auto& g : cs.groups)
+      if (g.name == "grip_min" || g.name == "grip_max")
+        throw InputError(fmt::format("{}: group name '{}' is reserved for the [uniaxial] grips", source, g.name));
+  }
+  {
+    Reader r(table("output"), "output", source, ov);
+    auto& o = cs.output;
+    o.frame_interval = r.number("frame_interval", o.frame_interval, non_negative);
+    o.series_interval = r.number("series_interval", o.series_interval, non_negative);
+    o.vtk = r.boolean("vtk", o.vtk);
+    o.rods_in_vtk = r.boolean("rods_in_vtk", o.rods_in_vtk);
+    o.plots = r.boolean("plots", o.plots);
+    o.progress = r.boolean("progress", o.progress);
+    r.finish();
+  }
+  if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))
+    throw InputError(fmt::format("{}: key 'integrator.end_time' must be set (s) when there is no [uniaxial] path",
+                                 source));
+  return cs;
+}
+
+CaseSettings load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("case file '{}' cannot be read (missing or no permission)", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  auto dir = std::filesystem::path(path).parent_path();
+  return parse_case(ss.str(), path, overrides, dir.empty() ? "." : dir.string());
+}
+
+}  // namespace swarf

@@ -1,0 +1,111 @@
+// case_config.h: the case file (TOML) as settings structs with defaults and units.
+//
+// Every key of a case file maps to one field below; the comment gives the unit and the
+// meaning, and docs/case-reference.md documents the same keys for users. Reading rejects
+// unknown keys, wrong types and out-of-range values with the file, the key and the value.
+// Command-line overrides (--set key=value) are applied to the TOML tree before reading, so
+// they are checked exactly like keys in the file.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace swarf {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// [workpiece]: the bonded FCC block.
+struct WorkpieceSettings {
+  std::string lattice_file;               ///< HDF5 lattice from 'swarf lattice'; empty = generate
+  std::array<int, 3> cells{0, 0, 0};      ///< conventional FCC cells per axis (generate by cells)
+  std::array<double, 3> size{0, 0, 0};    ///< box size, m (generate by size, if cells not given)
+  double radius = 0.5e-3;                 ///< particle radius R, m (nearest-neighbour distance 2R)
+  double bond_tolerance = 1e-6;           ///< relative tolerance on the bond length 2R, 1
+};
+
+/// [material]: what the particles are made of.
+struct MaterialSettings {
+  double density = 7800.0;            ///< kg/m^3
+  std::string mass_basis = "cell";    ///< "cell": m = rho a^3/4 (bulk density right); "sphere": m = rho 4/3 pi R^3
+};
+
+/// [rod]: the rod law (paper eqs. 23-31) between bonded neighbours.
+struct RodSettings {
+  double youngs_modulus = 200e9;      ///< E of the rod, Pa
+  double area = 0.0;                  ///< cross-section A, m^2; 0 = pi R^2
+  double yield_strain = kInf;         ///< eps_y = sigma_02/E, 1; inf = elastic
+  double hardening_modulus = 0.0;     ///< slope k of the plastic branch, Pa, 0 <= k < E
+  double tensile_strength = kInf;     ///< sigma_max, Pa; inf = unbreakable
+  double damping_ratio = 0.0;         ///< viscous part as a fraction of critical damping of one rod between two particles, 1
+};
+
+/// [integrator]
+struct IntegratorSettings {
+  std::string scheme = "verlet";      ///< "verlet" (velocity Verlet); "newmark" comes with the implicit step
+  double dt = 0.0;                    ///< s; 0 = dt_safety * stable step
+  double dt_safety = 0.5;             ///< fraction of the stable step used when dt = 0, 1
+  bool allow_unstable_dt = false;     ///< run even if dt exceeds the stable step estimate
+  double end_time = 0.0;              ///< simulated time, s (the [uniaxial] path sets it when 0)
+  double max_step_displacement = 0.25;  ///< stop if a particle moves more than this many radii in one step, 1
+};
+
+/// [[group]]: particles selected by a side of the box or a region, fixed or moved.
+struct GroupSettings {
+  std::string name;
+  std::string side;                   ///< "x-", "x+", "y-", "y+", "z-", "z+" (lattice layers at that face), or empty
+  int layers = 1;                     ///< number of lattice layers taken at 'side'
+  std::array<double, 3> box_min{-kInf, -kInf, -kInf};  ///< region selection, m (used when side is empty)
+  std::array<double, 3> box_max{kInf, kInf, kInf};     ///< m
+  std::string dofs = "xyz";           ///< prescribed components ("x", "xz", "xyz", ...)
+  std::string motion = "fixed";       ///< "fixed", "velocity" or "table"
+  std::array<double, 3> velocity{0, 0, 0};             ///< m/s, motion = "velocity"
+  std::vector<double> table_time;                      ///< s, ascending, first 0, motion = "table"
+  std::vector<std::array<double, 3>> table_displacement;  ///< m, piecewise linear in time
+};
+
+/// [uniaxial]: a bar between two grips driven along a strain path (hysteresis test).
+struct UniaxialSettings {
+  bool enabled = false;               ///< true when the table is present
+  std::string axis = "x";             ///< bar axis: "x", "y" or "z"
+  int grip_layers = 1;                ///< lattice layers held by each grip
+  std::string grip_dofs = "axis";     ///< "axis": grips hold only the axial component (free lateral contraction); "xyz": clamped
+  std::vector<double> strain_path{0.0};  ///< turning points of the nominal strain, 1, first 0
+  double strain_rate = 10.0;          ///< |d strain/dt| of the grips, 1/s
+};
+
+/// [output]
+struct OutputSettings {
+  double frame_interval = 0.0;        ///< ParaView frame interval, s; 0 = first and last state only
+  double series_interval = 0.0;       ///< series.csv row interval, s; 0 = end_time/2000
+  bool vtk = true;                    ///< write the ParaView series
+  bool rods_in_vtk = true;            ///< include the rods as lines in each frame
+  bool plots = true;                  ///< write PNG plots at the end (needs python3-matplotlib)
+  bool progress = true;               ///< progress line on stderr
+};
+
+struct CaseSettings {
+  std::string source;                 ///< file name, or "<built-in>"
+  std::string directory;              ///< directory of the case file (relative paths resolve here)
+  WorkpieceSettings workpiece;
+  MaterialSettings material;
+  RodSettings rod;
+  IntegratorSettings integrator;
+  std::vector<GroupSettings> groups;
+  UniaxialSettings uniaxial;
+  OutputSettings output;
+  std::vector<std::string> overrides; ///< the --set arguments, in order
+  std::string effective_toml;         ///< the TOML tree after overrides, as read
+};
+
+/// Reads a case file and applies overrides ("dotted.key=value"). Throws InputError.
+CaseSettings load_case(const std::string& path, const std::vector<std::string>& overrides);
+/// Same, from TOML text (tests, built-in cases); 'source' names it in messages.
+CaseSettings parse_case(const std::string& text, const std::string& source,
+                        const std::vector<std::string>& overrides, const std::string& directory = ".");
+
+/// The built-in default case (until the cutting case exists: the hysteresis bar).
+extern const char* const kDefaultCaseToml;
+
+}  // namespace swarf

@@ -1,0 +1,64 @@
+// derived.cpp: the derived quantities and lattice relations (see derived.h).
+#include "derived.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "errors.h"
+#include "fcc_lattice.h"
+
+namespace swarf {
+
+Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
+  Derived d;
+  if (lat.position.empty()) throw InputError(cs.source + ": the workpiece has no particles");
+  d.radius = *std::min_element(lat.radius.begin(), lat.radius.end());
+  d.nn_distance = 2.0 * d.radius;
+  d.cell_edge = lat.cell_edge > 0 ? lat.cell_edge : std::sqrt(2.0) * d.nn_distance;
+  const double R = d.radius, rho = cs.material.density;
+  d.particle_mass = cs.material.mass_basis == "sphere" ? rho * 4.0 / 3.0 * M_PI * R * R * R
+                                                       : rho * std::pow(d.nn_distance, 3) / std::sqrt(2.0);
+  d.rod_area = cs.rod.area > 0 ? cs.rod.area : M_PI * R * R;
+  double l0 = d.nn_distance;
+  if (!lat.rest_length.empty()) l0 = *std::min_element(lat.rest_length.begin(), lat.rest_length.end());
+  const double E = cs.rod.youngs_modulus;
+  d.rod_stiffness = E * d.rod_area / l0;
+  const double kb = d.rod_stiffness, m = d.particle_mass, zeta = cs.rod.damping_ratio;
+  d.rod_damping = zeta * 2.0 * std::sqrt(kb * m / 2.0);
+  d.rod_viscosity = d.rod_damping * l0 / d.rod_area;
+  d.omega_max = std::sqrt(8.0 * kb / m);
+  d.dt_stable = 2.0 / d.omega_max * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  d.wave_speed = d.nn_distance * std::sqrt(kb / m);
+
+  const double a = d.cell_edge;
+  d.c11 = 2.0 * kb / a;
+  d.c12 = kb / a;
+  d.youngs_modulus_100 = 4.0 * kb / (3.0 * a);
+  d.poisson_ratio_100 = 1.0 / 3.0;
+  d.youngs_modulus_voigt = 2.0 * kb / a;
+  d.bulk_density = m / (a * a * a / 4.0);
+  d.bar_stress_factor = 3.0 * d.youngs_modulus_100 / E;
+  d.bar_yield_strain = 3.0 * cs.rod.yield_strain;
+  d.bar_yield_stress = d.youngs_modulus_100 * d.bar_yield_strain;
+  d.bar_hardening_tangent = d.youngs_modulus_100 * cs.rod.hardening_modulus / E;
+  d.bar_failure_stress = d.bar_stress_factor * cs.rod.tensile_strength;
+
+  d.law.youngs_modulus = E;
+  d.law.yield_strain = cs.rod.yield_strain;
+  d.law.hardening = cs.rod.hardening_modulus;
+  d.law.tensile_strength = cs.rod.tensile_strength;
+  d.law.viscosity = d.rod_viscosity;
+
+  const auto& g = cs.integrator;
+  d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
+  if (d.dt > d.dt_stable && !g.allow_unstable_dt)
+    throw InputError(fmt::format(
+        "{}: key 'integrator.dt' = {:.6g} s exceeds the stable step {:.6g} s of the explicit scheme "
+        "(sqrt(m/(2 kb)) with m = {:.4g} kg, kb = {:.4g} N/m, damping ratio {}); lower dt or set "
+        "integrator.allow_unstable_dt = true to run anyway",
+        cs.source, d.dt, d.dt_stable, m, kb, zeta));
+  return d;
+}
+
+}  // namespace swarf

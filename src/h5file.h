@@ -1,0 +1,44 @@
+// h5file.h: a small RAII wrapper over the HDF5 C API (serial library).
+//
+// Only what swarf needs: datasets of doubles and 64-bit integers shaped N or N x C, string
+// and numeric attributes on the root, reading back with shape checks. Every failure throws
+// InputError naming the file and the dataset, and HDF5's own error stack printing is off.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace swarf {
+
+class H5File {
+ public:
+  enum class Mode { Read, Create };
+  H5File(const std::string& path, Mode mode);
+  ~H5File();
+  H5File(const H5File&) = delete;
+  H5File& operator=(const H5File&) = delete;
+
+  const std::string& path() const { return path_; }
+
+  /// Writes a rows x cols dataset (cols = 1 writes a 1-D dataset). Intermediate groups are created.
+  void write(const std::string& name, const double* data, std::size_t rows, std::size_t cols = 1);
+  void write(const std::string& name, const std::int64_t* data, std::size_t rows, std::size_t cols = 1);
+  void write(const std::string& name, const std::uint8_t* data, std::size_t rows);
+  void write_attribute(const std::string& name, const std::string& value);
+  void write_attribute(const std::string& name, double value);
+
+  bool has(const std::string& name) const;
+  /// Reads a dataset; 'cols' receives 1 for 1-D datasets.
+  std::vector<double> read_doubles(const std::string& name, std::size_t& rows, std::size_t& cols) const;
+  std::vector<std::int64_t> read_ints(const std::string& name, std::size_t& rows, std::size_t& cols) const;
+  std::string read_string_attribute(const std::string& name) const;
+  bool has_attribute(const std::string& name) const;
+  double read_double_attribute(const std::string& name) const;
+
+ private:
+  std::string path_;
+  long long id_ = -1;  // hid_t
+};
+
+}  // namespace swarf

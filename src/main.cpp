@@ -1,0 +1,136 @@
+// main.cpp: the 'swarf' command line: lattice, rod, run, bench.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <iostream>
+#include <sstream>
+
+#include "bench.h"
+#include "case_config.h"
+#include "errors.h"
+#include "lattice_gen/fcc_lattice.h"
+#include "lattice_gen/lattice_file.h"
+#include "rod_driver.h"
+#include "run.h"
+
+namespace {
+
+std::vector<double> parse_list(const std::string& text, const char* option) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      out.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw swarf::InputError(fmt::format("{} '{}': '{}' is not a number", option, text, item));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"swarf: DEM simulation of orthogonal metal cutting (bonded FCC workpiece, Bauschinger rods)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("swarf ") + SWARF_VERSION);
+
+  // swarf lattice
+  auto* lat = app.add_subcommand("lattice", "Generate an FCC lattice with nearest-neighbour bonds (HDF5)");
+  std::string size_s, cells_s, lat_out;
+  double radius = 0, tol = 1e-6;
+  auto* o_size = lat->add_option("--size", size_s, "Box size LX,LY,LZ in m (every site in the closed box)");
+  auto* o_cells = lat->add_option("--cells", cells_s, "Conventional cells NX,NY,NZ (4 NX NY NZ particles)");
+  o_size->excludes(o_cells);
+  lat->add_option("--radius", radius, "Particle radius R in m (bond length 2R)")->required();
+  lat->add_option("--out", lat_out, "Output HDF5 file")->required();
+  lat->add_option("--bond-tolerance", tol, "Relative tolerance on the bond length 2R (default 1e-6)");
+
+  // swarf rod
+  auto* rod = app.add_subcommand("rod", "Drive one rod along a strain path; CSV on stdout");
+  swarf::RodLaw law;
+  law.yield_strain = swarf::kInf;
+  law.tensile_strength = swarf::kInf;
+  std::string path_s;
+  int steps = 100;
+  rod->add_option("--E", law.youngs_modulus, "Young's modulus of the rod, Pa")->required();
+  rod->add_option("--yield-strain", law.yield_strain, "Yield strain eps_y, 1 (default inf: elastic)");
+  rod->add_option("--hardening", law.hardening, "Hardening slope k, Pa (default 0)");
+  rod->add_option("--tensile-strength", law.tensile_strength, "Tensile strength sigma_max, Pa (default inf)");
+  rod->add_option("--path", path_s, "Strain turning points from 0, e.g. 0,0.004,-0.004,0.008")->required();
+  rod->add_option("--steps", steps, "Increments per segment (default 100)");
+
+  // swarf run
+  auto* run = app.add_subcommand("run", "Run a case (no case file: the built-in default case)");
+  swarf::RunOptions ro;
+  run->add_option("case", ro.case_path, "Case file (TOML); see docs/case-reference.md");
+  run->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
+  run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")->take_all();
+  run->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
+
+  // swarf bench
+  auto* bench = app.add_subcommand("bench", "Time named scenes (case files) for several thread counts");
+  swarf::BenchOptions bo;
+  std::string threads_s = "1,2";
+  bench->add_option("cases", bo.cases, "Scene case files, e.g. validation/bench/w1.toml")->required();
+  bench->add_option("--threads", threads_s, "Thread counts, comma separated (default 1,2)");
+  bench->add_option("--steps", bo.steps, "Steps (default: the case's end_time / dt)");
+  bench->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
+  bench->add_option("--set", bo.overrides, "Override a case key (repeatable)")->take_all();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  try {
+    if (*lat) {
+      swarf::FccSpec spec;
+      spec.radius = radius;
+      spec.bond_tolerance = tol;
+      if (!size_s.empty()) {
+        auto v = parse_list(size_s, "--size");
+        if (v.size() != 3) throw swarf::InputError("--size: needs three lengths LX,LY,LZ in m, got '" + size_s + "'");
+        spec.size = {v[0], v[1], v[2]};
+      } else if (!cells_s.empty()) {
+        auto v = parse_list(cells_s, "--cells");
+        if (v.size() != 3) throw swarf::InputError("--cells: needs three integers NX,NY,NZ, got '" + cells_s + "'");
+        for (int c = 0; c < 3; ++c) {
+          if (v[c] != std::floor(v[c]) || v[c] < 1 || v[c] > 1e5)
+            throw swarf::InputError("--cells: '" + cells_s + "' must be three positive integers");
+          spec.cells[c] = static_cast<int>(v[c]);
+        }
+      } else {
+        throw swarf::InputError("lattice: give --size LX,LY,LZ (m) or --cells NX,NY,NZ");
+      }
+      const auto lattice = swarf::generate_fcc(spec);
+      swarf::write_lattice(lat_out, lattice);
+      fmt::print("wrote {}: {} particles, {} bonds\n", lat_out, lattice.position.size(), lattice.bonds.size());
+    } else if (*rod) {
+      auto samples = swarf::drive_rod(law, parse_list(path_s, "--path"), steps);
+      swarf::write_rod_csv(std::cout, samples);
+    } else if (*run) {
+      swarf::run_case(ro);
+    } else if (*bench) {
+      bo.threads.clear();
+      for (double t : parse_list(threads_s, "--threads")) {
+        if (t < 1 || t != std::floor(t)) throw swarf::InputError("--threads: '" + threads_s + "' must be positive integers");
+        bo.threads.push_back(static_cast<int>(t));
+      }
+      swarf::run_bench(bo);
+    }
+  } catch (const swarf::InputError& e) {
+    fmt::print(stderr, "swarf: error: {}\n", e.what());
+    return 2;
+  } catch (const swarf::SimulationError& e) {
+    fmt::print(stderr, "swarf: simulation stopped: {}\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "swarf: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,167 @@
+// model.cpp: building particles, rods and groups from the settings (see model.h).
+#include "model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "errors.h"
+#include "lattice_file.h"
+
+namespace swarf {
+
+Vec3 Motion::displacement_at(double t) const {
+  switch (kind) {
+    case Kind::Fixed:
+      return Vec3::Zero();
+    case Kind::Velocity:
+      return velocity * t;
+    case Kind::Table: {
+      if (t <= time.front()) return displacement.front();
+      if (t >= time.back()) return displacement.back();
+      const auto it = std::upper_bound(time.begin(), time.end(), t);
+      const std::size_t k = static_cast<std::size_t>(it - time.begin());
+      const double s = (t - time[k - 1]) / (time[k] - time[k - 1]);
+      return displacement[k - 1] + s * (displacement[k] - displacement[k - 1]);
+    }
+  }
+  return Vec3::Zero();
+}
+
+std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const std::string& side, int layers,
+                                      double layer_spacing) {
+  const int c = side[0] - 'x';
+  const bool upper = side[1] == '+';
+  double ext = position[0][c];
+  for (const auto& p : position) ext = upper ? std::max(ext, p[c]) : std::min(ext, p[c]);
+  const double reach = (layers - 0.5) * layer_spacing;
+  std::vector<std::int32_t> out;
+  for (std::size_t i = 0; i < position.size(); ++i)
+    if (std::abs(position[i][c] - ext) < reach) out.push_back(static_cast<std::int32_t>(i));
+  return out;
+}
+
+static std::uint8_t dof_mask(const std::string& dofs) {
+  std::uint8_t m = 0;
+  for (char ch : dofs) m |= static_cast<std::uint8_t>(1u << (ch - 'x'));
+  return m;
+}
+
+Model build_model(const CaseSettings& cs) {
+  Model model;
+  model.settings = cs;
+  Lattice lat;
+  if (!cs.workpiece.lattice_file.empty()) {
+    lat = read_lattice(cs.workpiece.lattice_file);
+  } else {
+    FccSpec spec;
+    spec.radius = cs.workpiece.radius;
+    spec.cells = cs.workpiece.cells;
+    spec.size = cs.workpiece.size;
+    spec.bond_tolerance = cs.workpiece.bond_tolerance;
+    lat = generate_fcc(spec);
+  }
+  model.derived = compute_derived(cs, lat);
+  const Derived& d = model.derived;
+
+  auto& p = model.particles;
+  const std::size_t n = lat.position.size();
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.position[i] = lat.position[i];
+    p.initial_position[i] = lat.position[i];
+    p.radius[i] = lat.radius[i];
+    // Mass scales with R^3 for a lattice of mixed radii read from a file.
+    const double s = lat.radius[i] / d.radius;
+    p.mass[i] = d.particle_mass * s * s * s;
+    p.inv_mass[i] = 1.0 / p.mass[i];
+  }
+
+  auto& r = model.rods;
+  r.law = d.law;
+  r.area = d.rod_area;
+  r.ends = lat.bonds;
+  r.rest_length = lat.rest_length;
+  r.reset_state();
+  r.build_rows(n);
+
+  const double h = 0.5 * d.cell_edge;  // spacing of lattice layers along a cube axis
+  auto add_group = [&](const std::string& name, std::vector<std::int32_t> members, std::uint8_t dofs, Motion motion) {
+    if (members.empty()) throw InputError(fmt::format("{}: group '{}' selects no particle", cs.source, name));
+    for (auto i : members) {
+      if (p.group[i] >= 0)
+        throw InputError(fmt::format("{}: particle {} belongs to groups '{}' and '{}'; groups must not overlap",
+                                     cs.source, i, model.groups[p.group[i]].name, name));
+      p.group[i] = static_cast<std::int32_t>(model.groups.size());
+      p.prescribed[i] = dofs;
+    }
+    model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
+  };
+
+  for (const auto& gs : cs.groups) {
+    std::vector<std::int32_t> members;
+    if (!gs.side.empty()) {
+      members = select_side(lat.position, gs.side, gs.layers, h);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) {
+        bool in = true;
+        for (int c = 0; c < 3; ++c) in = in && lat.position[i][c] >= gs.box_min[c] && lat.position[i][c] <= gs.box_max[c];
+        if (in) members.push_back(static_cast<std::int32_t>(i));
+      }
+    }
+    Motion m;
+    if (gs.motion == "velocity") {
+      m.kind = Motion::Kind::Velocity;
+      m.velocity = Vec3(gs.velocity[0], gs.velocity[1], gs.velocity[2]);
+    } else if (gs.motion == "table") {
+      m.kind = Motion::Kind::Table;
+      m.time = gs.table_time;
+      for (const auto& u : gs.table_displacement) m.displacement.emplace_back(u[0], u[1], u[2]);
+    }
+    add_group(gs.name, std::move(members), dof_mask(gs.dofs), std::move(m));
+  }
+
+  if (cs.uniaxial.enabled) {
+    const auto& u = cs.uniaxial;
+    auto& info = model.uniaxial;
+    info.enabled = true;
+    info.axis = u.axis[0] - 'x';
+    const int ax = info.axis;
+    Vec3 lo = lat.position[0], hi = lat.position[0];
+    for (const auto& x : lat.position) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    info.gauge_length = (hi[ax] - lo[ax]) - 2.0 * (u.grip_layers - 1) * h;
+    if (!(info.gauge_length > 0.5 * h))
+      throw InputError(fmt::format("{}: key 'uniaxial.grip_layers' = {}: the grips leave no free bar between them",
+                                   cs.source, u.grip_layers));
+    info.cross_section = 1.0;
+    for (int c = 0; c < 3; ++c)
+      if (c != ax) info.cross_section *= (hi[c] - lo[c]) + h;
+    // Grip motion: each grip moves half the separation change, along the strain path.
+    Motion mmin, mmax;
+    mmin.kind = mmax.kind = Motion::Kind::Table;
+    double t = 0.0;
+    for (std::size_t k = 0; k < u.strain_path.size(); ++k) {
+      if (k > 0) t += std::abs(u.strain_path[k] - u.strain_path[k - 1]) / u.strain_rate;
+      const double half = 0.5 * u.strain_path[k] * info.gauge_length;
+      Vec3 e = Vec3::Zero();
+      e[ax] = half;
+      mmin.time.push_back(t);
+      mmax.time.push_back(t);
+      mmin.displacement.push_back(-e);
+      mmax.displacement.push_back(e);
+    }
+    const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
+    const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
+    info.grip_min = static_cast<int>(model.groups.size());
+    add_group("grip_min", select_side(lat.position, smin, u.grip_layers, h), dofs, mmin);
+    info.grip_max = static_cast<int>(model.groups.size());
+    add_group("grip_max", select_side(lat.position, smax, u.grip_layers, h), dofs, mmax);
+    if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
+  }
+  return model;
+}
+
+}  // namespace swarf

@@ -1,0 +1,65 @@
+// model.h: everything a run is made of, built from the case settings.
+//
+// The lattice becomes particles (structure of arrays) and rods (each stored once); the
+// [[group]] tables and the [uniaxial] grips become groups with a prescribed motion.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "case_config.h"
+#include "derived.h"
+#include "fcc_lattice.h"
+#include "particles.h"
+#include "rods.h"
+
+namespace swarf {
+
+/// Prescribed rigid translation of a group: fixed, constant velocity, or a piecewise-linear
+/// displacement table (constant past its last entry).
+struct Motion {
+  enum class Kind { Fixed, Velocity, Table };
+  Kind kind = Kind::Fixed;
+  Vec3 velocity = Vec3::Zero();     ///< m/s
+  std::vector<double> time;         ///< s
+  std::vector<Vec3> displacement;   ///< m
+
+  /// Displacement from the start position at time t, m.
+  Vec3 displacement_at(double t) const;
+};
+
+struct Group {
+  std::string name;
+  std::uint8_t dofs = 7;            ///< prescribed components, bit c = component c
+  Motion motion;
+  std::vector<std::int32_t> members;  ///< particle indices, ascending
+};
+
+/// The uniaxial test's geometry (when [uniaxial] is present).
+struct UniaxialInfo {
+  bool enabled = false;
+  int axis = 0;                     ///< 0, 1, 2
+  int grip_min = -1, grip_max = -1; ///< group indices
+  double gauge_length = 0;          ///< initial distance between the innermost gripped layers, m
+  double cross_section = 0;         ///< initial cross-section, m^2 (lattice extent + one layer spacing per side)
+};
+
+struct Model {
+  CaseSettings settings;
+  Derived derived;
+  Particles particles;
+  Rods rods;
+  std::vector<Group> groups;
+  UniaxialInfo uniaxial;
+  std::size_t lattice_cells[3] = {0, 0, 0};
+};
+
+/// Builds the model; throws InputError (naming the file and key) on anything inconsistent.
+Model build_model(const CaseSettings& cs);
+
+/// Selects the particles of 'layers' lattice layers at a face ("x-", "z+", ...).
+std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const std::string& side, int layers,
+                                      double layer_spacing);
+
+}  // namespace swarf

@@ -1,0 +1,35 @@
+// parallel.h: loops whose results do not depend on the number of threads.
+//
+// Work is cut into fixed-size blocks (independent of the thread count); a reduction sums
+// each block serially and then the block sums serially in block order, so the rounding is
+// the same for 1 or N threads. OpenMP static schedules hand out the blocks.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace swarf {
+
+inline constexpr std::size_t kBlock = 2048;
+
+inline std::size_t block_count(std::size_t n) { return (n + kBlock - 1) / kBlock; }
+
+/// Sum over i in [0, n) of f(i), bit-identical for any thread count.
+template <class F>
+double deterministic_sum(std::size_t n, F&& f) {
+  const std::size_t nb = block_count(n);
+  std::vector<double> part(nb, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    double s = 0.0;
+    const std::size_t end = std::min(n, (b + 1) * kBlock);
+    for (std::size_t i = b * kBlock; i < end; ++i) s += f(i);
+    part[b] = s;
+  }
+  double total = 0.0;
+  for (double s : part) total += s;
+  return total;
+}
+
+}  // namespace swarf

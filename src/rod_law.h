@@ -1,0 +1,70 @@
+// rod_law.h: the elastic-plastic-viscous rod law with the Bauschinger effect
+// (paper section 4.5, eqs. 23-31; physics notes section 4).
+//
+// The paper shifts the symmetric bilinear curve along h(eps) = k eps. That is exactly
+// 1-D linear kinematic hardening: the elastic-plastic stress stays inside the band
+//     k eps - (E - k) eps_y  <=  sigma  <=  k eps + (E - k) eps_y
+// and moves with slope E between its edges. The state is one number, the shift eps0
+// (sigma0 = k eps0, eq. 27); the stress is sigma = k eps0 + E (eps - eps0)  (eq. 29).
+// When the elastic trial leaves the band it is clamped to the band edge and the shift
+// follows from eq. 26: eps0 = (E eps - sigma) / (E - k).
+//
+// evaluate() is a pure function of (strain, strain rate, committed shift): it returns the
+// trial shift and a trial break flag and changes nothing, so that an implicit step can
+// iterate and commit only the converged state.
+#pragma once
+
+#include <cmath>
+
+namespace swarf {
+
+/// Parameters of one rod family. All SI units.
+struct RodLaw {
+  double youngs_modulus = 0.0;   ///< E of the rod, Pa
+  double yield_strain = 0.0;     ///< eps_y = sigma_02 / E, 1 (may be +inf: no plasticity)
+  double hardening = 0.0;        ///< slope k of the plastic branch, Pa, 0 <= k < E
+  double tensile_strength = 0.0; ///< sigma_max, Pa (may be +inf: unbreakable)
+  double viscosity = 0.0;        ///< eta: viscous stress = eta * strain rate, Pa s
+
+  /// Half-width of the elastic band in stress, (E - k) eps_y, Pa.
+  double band_half_width() const { return (youngs_modulus - hardening) * yield_strain; }
+};
+
+/// Result of one evaluation of the law. The shift and break flag are TRIAL values.
+struct RodResponse {
+  double stress = 0.0;       ///< elastic-plastic stress sigma, Pa (positive in tension)
+  double viscous_stress = 0.0; ///< eta * strain rate, Pa
+  double shift = 0.0;        ///< trial shift eps0 after this evaluation, 1
+  bool broken = false;       ///< sigma > sigma_max in tension: the rod fails
+};
+
+/// The law itself. 'shift' is the committed eps0 of the rod.
+inline RodResponse evaluate(const RodLaw& law, double strain, double strain_rate, double shift) {
+  const double E = law.youngs_modulus;
+  const double k = law.hardening;
+  RodResponse r;
+  r.shift = shift;
+  const double trial = k * shift + E * (strain - shift);
+  const double centre = k * strain;
+  const double half = law.band_half_width();
+  if (trial > centre + half) {
+    r.stress = centre + half;
+    r.shift = (E * strain - r.stress) / (E - k);
+  } else if (trial < centre - half) {
+    r.stress = centre - half;
+    r.shift = (E * strain - r.stress) / (E - k);
+  } else {
+    r.stress = trial;
+  }
+  r.viscous_stress = law.viscosity * strain_rate;
+  // Failure only in tension (eq. 31 and the paper's remark below it).
+  r.broken = strain > 0.0 && r.stress > law.tensile_strength;
+  return r;
+}
+
+/// Recoverable elastic energy density of a rod at stress sigma, J/m^3 (sigma^2 / 2E).
+inline double elastic_energy_density(const RodLaw& law, double stress) {
+  return 0.5 * stress * stress / law.youngs_modulus;
+}
+
+}  // namespace swarf

@@ -1,0 +1,259 @@
+// run.cpp: the run driver: case -> model -> time loop -> outputs (see run.h).
+#include "run.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "atomic_file.h"
+#include "errors.h"
+#include "postprocess/hysteresis.h"
+#include "postprocess/plots.h"
+#include "progress.h"
+#include "series.h"
+#include "simulation.h"
+#include "summary.h"
+#include "vtk_output.h"
+
+namespace swarf {
+
+int set_threads(int n) {
+  if (n > 0) omp_set_num_threads(n);
+  return omp_get_max_threads();
+}
+
+namespace {
+
+void print_setup(const Model& m, int threads) {
+  const Derived& d = m.derived;
+  fmt::print("swarf {}: case {}\n", SWARF_VERSION, m.settings.source);
+  fmt::print("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(),
+             threads);
+  for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
+  fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
+             d.particle_mass);
+  fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
+             d.rod_stiffness, d.rod_damping);
+  fmt::print("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} kg/m^3\n",
+             d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
+  fmt::print("  stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it); end time {:.4g} s\n", d.dt_stable, d.dt,
+             d.dt / d.dt_stable, m.settings.integrator.end_time);
+  if (m.uniaxial.enabled)
+    fmt::print("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
+               m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
+  std::fflush(stdout);
+}
+
+double deviation_percent(double measured, double predicted) { return 100.0 * (measured - predicted) / predicted; }
+
+}  // namespace
+
+void run_case(const RunOptions& opt) {
+  const CaseSettings cs = opt.case_path.empty() ? parse_case(kDefaultCaseToml, "<built-in default case>", opt.overrides)
+                                                : load_case(opt.case_path, opt.overrides);
+  Model model = build_model(cs);
+  const int threads = set_threads(opt.threads);
+  print_setup(model, threads);
+
+  namespace fs = std::filesystem;
+  const std::string dir = opt.out_dir;
+  fs::create_directories(dir);
+  // A previous summary would make this run look complete if it is interrupted.
+  fs::remove(fs::path(dir) / "summary.json");
+
+  Simulation sim(model);
+  const auto& settings = model.settings;
+  const double dt = sim.dt(), end_time = settings.integrator.end_time;
+  const long long n_steps = static_cast<long long>(std::ceil(end_time / dt - 1e-9));
+  const double series_interval = settings.output.series_interval > 0 ? settings.output.series_interval : end_time / 2000;
+  const long long series_every = std::max(1LL, static_cast<long long>(std::llround(series_interval / dt)));
+  const long long frame_every = settings.output.frame_interval > 0
+                                    ? std::max(1LL, static_cast<long long>(std::llround(settings.output.frame_interval / dt)))
+                                    : 0;
+
+  const UniaxialInfo& ux = model.uniaxial;
+  std::vector<std::string> cols{"time"};
+  if (ux.enabled) cols.insert(cols.end(), {"strain", "stress", "stress_predicted"});
+  cols.insert(cols.end(), {"step", "dt", "kinetic_energy", "elastic_energy", "external_work", "plastic_work",
+                           "viscous_work", "fracture_energy", "energy_error", "broken_rods", "broken_fraction"});
+  for (const auto& g : model.groups)
+    for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("reaction_{}_{}", g.name, c));
+  SeriesWriter series(dir + "/series.csv", cols);
+
+  std::unique_ptr<VtkSeries> vtk;
+  if (settings.output.vtk) vtk = std::make_unique<VtkSeries>(dir, settings.output.rods_in_vtk);
+
+  BarPrediction prediction(model.derived.law, model.derived.bar_stress_factor);
+  double predicted = 0.0;
+  std::vector<double> path_times;
+  if (ux.enabled) path_times = model.groups[ux.grip_max].motion.time;
+  auto bar_strain = [&](double t) {
+    const auto& gmin = model.groups[ux.grip_min].motion;
+    const auto& gmax = model.groups[ux.grip_max].motion;
+    return (gmax.displacement_at(t)[ux.axis] - gmin.displacement_at(t)[ux.axis]) / ux.gauge_length;
+  };
+  auto bar_stress = [&]() {
+    return 0.5 * (sim.group_reaction(ux.grip_max)[ux.axis] - sim.group_reaction(ux.grip_min)[ux.axis]) /
+           ux.cross_section;
+  };
+  // Samples kept for the loop analysis and the quasi-static check.
+  std::vector<double> s_strain, s_stress;
+  std::vector<int> s_segment;
+  double max_reaction = 0.0, max_mismatch = 0.0;
+
+  const double total_rods = std::max<double>(1.0, double(model.rods.size()));
+  auto write_row = [&]() {
+    std::vector<double> row{sim.time()};
+    if (ux.enabled) {
+      const double e = bar_strain(sim.time()), s = bar_stress();
+      row.insert(row.end(), {e, s, predicted});
+      int seg = 0;
+      while (seg + 2 < int(path_times.size()) && sim.time() > path_times[seg + 1]) ++seg;
+      s_strain.push_back(e);
+      s_stress.push_back(s);
+      s_segment.push_back(seg);
+      const double rmax = sim.group_reaction(ux.grip_max)[ux.axis], rmin = sim.group_reaction(ux.grip_min)[ux.axis];
+      max_reaction = std::max({max_reaction, std::abs(rmax), std::abs(rmin)});
+      max_mismatch = std::max(max_mismatch, std::abs(rmax + rmin));
+    }
+    const double ke = sim.kinetic_energy(), ee = sim.elastic_energy();
+    const auto& L = sim.ledger();
+    const double err = L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy);
+    row.insert(row.end(), {double(sim.steps()), dt, ke, ee, L.external_work, L.plastic_work, L.viscous_work,
+                           L.fracture_energy, err, double(sim.broken_rods()), double(sim.broken_rods()) / total_rods});
+    for (std::size_t g = 0; g < model.groups.size(); ++g)
+      for (int c = 0; c < 3; ++c) row.push_back(sim.group_reaction(g)[c]);
+    series.row(row);
+  };
+
+  Progress progress(settings.output.progress, end_time);
+  write_row();
+  if (vtk) vtk->write_frame(0.0, model.particles, model.rods);
+  const auto t0 = std::chrono::steady_clock::now();
+  double output_seconds = 0.0;
+  for (long long s = 1; s <= n_steps; ++s) {
+    sim.step();
+    if (ux.enabled) predicted = prediction.stress(bar_strain(sim.time()));
+    const bool last = s == n_steps;
+    if (s % series_every == 0 || last || (frame_every && s % frame_every == 0)) {
+      const auto o0 = std::chrono::steady_clock::now();
+      if (s % series_every == 0 || last) write_row();
+      if (vtk && ((frame_every && s % frame_every == 0) || last)) vtk->write_frame(sim.time(), model.particles, model.rods);
+      output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - o0).count();
+    }
+    progress.update(sim.time(), s);
+  }
+  progress.done(sim.time(), n_steps);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double step_seconds = wall - output_seconds;
+  series.finish();
+  write_results_h5(dir + "/results.h5", sim);
+
+  // Summary.
+  nlohmann::json sum;
+  sum["swarf_version"] = SWARF_VERSION;
+  sum["status"] = "completed";
+  sum["case_file"] = settings.source;
+  sum["overrides"] = settings.overrides;
+  sum["case"] = case_to_json(settings);
+  sum["derived"] = derived_to_json(model.derived);
+  sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
+  for (const auto& g : model.groups) sum["counts"]["group_" + g.name] = g.members.size();
+  const auto& L = sim.ledger();
+  const double ke = sim.kinetic_energy(), ee = sim.elastic_energy();
+  sum["run"] = {{"threads", threads},
+                {"steps", sim.steps()},
+                {"simulated_time_s", sim.time()},
+                {"wall_time_s", wall},
+                {"step_wall_time_s", step_seconds},
+                {"ns_per_particle_step", step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size()))}};
+  sum["results"] = {{"kinetic_energy_J", ke},
+                    {"elastic_energy_J", ee},
+                    {"external_work_J", L.external_work},
+                    {"plastic_work_J", L.plastic_work},
+                    {"viscous_work_J", L.viscous_work},
+                    {"fracture_energy_J", L.fracture_energy},
+                    {"energy_error_J", L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy)},
+                    {"broken_rods", sim.broken_rods()},
+                    {"broken_fraction", double(sim.broken_rods()) / total_rods}};
+  for (std::size_t g = 0; g < model.groups.size(); ++g) {
+    const Vec3 r = sim.group_reaction(g);
+    sum["results"]["reaction_" + model.groups[g].name + "_N"] = {r[0], r[1], r[2]};
+  }
+  if (ux.enabled) {
+    const Derived& d = model.derived;
+    const double ey = std::isfinite(d.bar_yield_strain) ? d.bar_yield_strain : 1.0;
+    const LoopMeasurement lm = analyze_loop(s_strain, s_stress, s_segment, ey);
+    nlohmann::json u;
+    u["axis"] = std::string(1, char('x' + ux.axis));
+    u["gauge_length_m"] = ux.gauge_length;
+    u["cross_section_m2"] = ux.cross_section;
+    u["predicted"] = {{"youngs_modulus_Pa", d.youngs_modulus_100},
+                      {"yield_stress_Pa", number(d.bar_yield_stress)},
+                      {"yield_strain", number(d.bar_yield_strain)},
+                      {"hardening_tangent_Pa", d.bar_hardening_tangent},
+                      {"reverse_elastic_range_Pa", number(2.0 * d.bar_yield_stress)}};
+    u["quasi_static"] = {{"max_grip_force_mismatch", max_reaction > 0 ? max_mismatch / max_reaction : 0.0},
+                         {"note", "max over samples of |F_grip_max + F_grip_min| / max |F_grip|: 0 when static"}};
+    if (lm.ok) {
+      u["measured"] = {{"youngs_modulus_Pa", lm.modulus},
+                       {"yield_stress_Pa", lm.yield_stress},
+                       {"yield_strain", lm.yield_strain},
+                       {"hardening_tangent_Pa", lm.hardening_tangent}};
+      u["deviation_percent"] = {{"youngs_modulus", deviation_percent(lm.modulus, d.youngs_modulus_100)},
+                                {"yield_stress", deviation_percent(lm.yield_stress, d.bar_yield_stress)},
+                                {"hardening_tangent", deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent)}};
+      if (lm.reverse_ok) {
+        const double range = lm.turn_stress - lm.reverse_yield_stress;
+        u["measured"]["turn_stress_Pa"] = lm.turn_stress;
+        u["measured"]["reverse_yield_stress_Pa"] = lm.reverse_yield_stress;
+        u["measured"]["reverse_elastic_range_Pa"] = range;
+        u["deviation_percent"]["reverse_elastic_range"] = deviation_percent(range, 2.0 * d.bar_yield_stress);
+      }
+    }
+    if (!lm.note.empty()) u["note"] = lm.note;
+    sum["uniaxial"] = u;
+    fmt::print("\n  uniaxial [100] bar          measured        predicted   deviation\n");
+    if (lm.ok) {
+      fmt::print("  Young's modulus   {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.modulus, d.youngs_modulus_100,
+                 deviation_percent(lm.modulus, d.youngs_modulus_100));
+      fmt::print("  yield stress      {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.yield_stress, d.bar_yield_stress,
+                 deviation_percent(lm.yield_stress, d.bar_yield_stress));
+      fmt::print("  hardening tangent {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.hardening_tangent,
+                 d.bar_hardening_tangent, deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent));
+      if (lm.reverse_ok)
+        fmt::print("  reverse elastic range {:>10.5g} Pa {:>14.5g} Pa   {:+.2f} %  (Bauschinger)\n",
+                   lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress,
+                   deviation_percent(lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress));
+    }
+    if (!lm.note.empty()) fmt::print("  note: {}\n", lm.note);
+    fmt::print("  quasi-static check: grip force mismatch {:.3g} of the peak grip force\n",
+               max_reaction > 0 ? max_mismatch / max_reaction : 0.0);
+  }
+  fmt::print("\n  steps {}, simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n", sim.steps(),
+             sim.time(), wall, step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size())), threads);
+  fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", sim.broken_rods(),
+             model.rods.size(), 100.0 * sim.broken_rods() / total_rods,
+             L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);
+
+  if (settings.output.plots) {
+    // The summary must exist for the plot script; it is rewritten below with the plot list.
+    write_text_atomic(dir + "/summary.json.plotting", sum.dump(2));
+    const PlotResult pr = make_plots(dir, dir + "/summary.json.plotting");
+    fs::remove(dir + "/summary.json.plotting");
+    sum["plots"] = pr.files;
+    if (!pr.ok) {
+      sum["plot_error"] = pr.message;
+      fmt::print(stderr, "swarf: warning: plots not written: {}\n", pr.message);
+    }
+  }
+  write_text_atomic(dir + "/summary.json", sum.dump(2) + "\n");
+  fmt::print("  outputs in {}: summary.json, series.csv, results.h5{}{}\n", dir,
+             vtk ? ", particles.pvd (ParaView)" : "", sum.contains("plots") && !sum["plots"].empty() ? ", PNG plots" : "");
+}
+
+}  // namespace swarf

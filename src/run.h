@@ -1,0 +1,23 @@
+// run.h: 'swarf run': a case from start to outputs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace swarf {
+
+struct RunOptions {
+  std::string case_path;                 ///< empty = the built-in default case
+  std::string out_dir = "swarf-out";
+  std::vector<std::string> overrides;    ///< --set key=value
+  int threads = 0;                       ///< 0 = OpenMP default
+};
+
+/// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView
+/// series and the plots. Throws InputError / SimulationError.
+void run_case(const RunOptions& options);
+
+/// Sets the OpenMP thread count (n > 0) and returns the count in effect.
+int set_threads(int n);
+
+}  // namespace swarf

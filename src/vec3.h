@@ -1,0 +1,8 @@
+// vec3.h: the 3-vector type used for particle fields (Eigen, double precision).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace swarf {
+using Vec3 = Eigen::Vector3d;
+}  // namespace swarf
