@@ -1,0 +1,140 @@
+// test_case_files.cpp: bad case files are rejected with the file, the key and the value
+// named; overrides are checked like keys in the file; the CLI exits non-zero.
+#include <gtest/gtest.h>
+
+#include "case_config.h"
+#include "errors.h"
+#include "model.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+const std::string kGood = R"([workpiece]
+cells = [4, 2, 2]
+radius = 0.5e-3
+
+[rod]
+youngs_modulus = 200e9
+yield_strain = 1e-3
+
+[integrator]
+end_time = 1e-5
+
+[[group]]
+name = "left"
+side = "x-"
+)";
+
+// Parses (and builds, which checks the step and the groups); returns the error message.
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    build_model(parse_case(text, "bad.toml", overrides));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_mentions(const std::string& msg, std::initializer_list<std::string> parts) {
+  ASSERT_FALSE(msg.empty()) << "no error raised";
+  for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' missing in: " << msg;
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return s.replace(pos, from.size(), to);
+}
+
+TEST(CaseFiles, GoodCaseParses) { EXPECT_EQ(error_of(kGood), ""); }
+
+TEST(CaseFiles, UnknownKey) {
+  expect_mentions(error_of(replace(kGood, "yield_strain", "yeild_strain")),
+                  {"bad.toml:7", "unknown key", "rod.yeild_strain"});
+}
+
+TEST(CaseFiles, UnknownTable) {
+  expect_mentions(error_of(kGood + "\n[solver]\nx = 1\n"), {"bad.toml", "solver"});
+}
+
+TEST(CaseFiles, WrongType) {
+  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = \"big\"")),
+                  {"bad.toml:3", "workpiece.radius", "\"big\"", "number"});
+}
+
+TEST(CaseFiles, NegativeRadius) {
+  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = -0.5e-3")),
+                  {"bad.toml:3", "workpiece.radius", "-0.0005", "positive"});
+}
+
+TEST(CaseFiles, HardeningNotBelowModulus) {
+  expect_mentions(error_of(replace(kGood, "yield_strain = 1e-3", "yield_strain = 1e-3\nhardening_modulus = 3e11")),
+                  {"rod.hardening_modulus", "300000000000", "below"});
+}
+
+TEST(CaseFiles, MissingLatticeFile) {
+  expect_mentions(error_of(replace(kGood, "cells = [4, 2, 2]", "lattice_file = \"nope.h5\"")),
+                  {"workpiece.lattice_file", "nope.h5", "not found"});
+}
+
+TEST(CaseFiles, LatticeFileAndCellsTogether) {
+  expect_mentions(error_of(replace(kGood, "cells = [4, 2, 2]", "cells = [4, 2, 2]\nlattice_file = \"x.h5\"")),
+                  {"lattice_file", "either"});
+}
+
+TEST(CaseFiles, UnstableStepRefused) {
+  // The stable step of this lattice is about 1.2e-7 s.
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-6")),
+                  {"integrator.dt", "stable step", "allow_unstable_dt"});
+  EXPECT_EQ(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-6\nallow_unstable_dt = true")), "");
+}
+
+TEST(CaseFiles, MissingEndTime) {
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "")), {"integrator.end_time"});
+}
+
+TEST(CaseFiles, SyntaxErrorNamesLine) {
+  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = = 0.5e-3")), {"bad.toml:3", "syntax"});
+}
+
+TEST(CaseFiles, BadEnumValue) {
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"left\"")), {"group.side", "\"left\"", "x-"});
+}
+
+TEST(CaseFiles, NewmarkNotYetImplemented) {
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"")),
+                  {"integrator.scheme", "newmark"});
+}
+
+TEST(CaseFiles, EmptyGroup) {
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "box_min = [1.0, 1.0, 1.0]")), {"left", "no particle"});
+}
+
+TEST(CaseFiles, OverridesApplyAndAreChecked) {
+  const CaseSettings cs = parse_case(kGood, "bad.toml", {"integrator.dt=2e-9", "group.0.motion=velocity",
+                                                         "group.0.velocity=[1, 2, 3]", "rod.damping_ratio=0.1"});
+  EXPECT_EQ(cs.integrator.dt, 2e-9);
+  EXPECT_EQ(cs.groups[0].motion, "velocity");
+  EXPECT_EQ(cs.groups[0].velocity[2], 3.0);
+  EXPECT_EQ(cs.rod.damping_ratio, 0.1);
+  expect_mentions(error_of(kGood, {"rod.yield_strain=-1"}), {"--set rod.yield_strain", "-1", "positive"});
+  expect_mentions(error_of(kGood, {"rod.yeild=1"}), {"--set rod.yeild", "unknown key"});
+  expect_mentions(error_of(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
+  expect_mentions(error_of(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});
+}
+
+TEST(CaseFiles, CliExitsWithTwoAndNamesTheProblem) {
+  test::TempDir dir("case_cli");
+  test::write_file(dir / "bad.toml", replace(kGood, "radius = 0.5e-3", "radius = -1.0"));
+  auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "bad.toml") + " --out " + (dir / "out"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("workpiece.radius"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.toml:3"), std::string::npos) << r.output;
+  r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "missing.toml") + " --out " + (dir / "out"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("missing.toml"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace swarf

@@ -1,0 +1,118 @@
+// test_outputs.cpp: a short uniaxial run through the CLI writes its outputs completely
+// (series, summary, HDF5, ParaView series readable by VTK's own reader, plots), and a run
+// that blows up stops with a message and leaves no file that looks complete.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkCellData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include "h5file.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+const char* kTiny = R"([workpiece]
+cells = [6, 2, 2]
+radius = 0.5e-3
+[rod]
+youngs_modulus = 200e9
+yield_strain = 1e-3
+hardening_modulus = 20e9
+damping_ratio = 0.1
+[uniaxial]
+axis = "x"
+strain_path = [0.0, 0.012, -0.006]
+strain_rate = 100.0
+[output]
+frame_interval = 6e-5
+)";
+
+TEST(Outputs, ShortUniaxialRunWritesEverything) {
+  test::TempDir dir("outputs");
+  test::write_file(dir / "tiny.toml", kTiny);
+  const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "tiny.toml") + " --out " +
+                                   (dir / "out") + " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("stable step"), std::string::npos);
+  EXPECT_NE(r.output.find("100.0%"), std::string::npos) << "progress line on stderr";
+
+  // series.csv: the named columns, one row per interval, time ascending.
+  const std::string csv = test::read_file(dir / "out/series.csv");
+  ASSERT_EQ(csv.rfind("time,strain,stress,stress_predicted,step,dt,", 0), 0u) << csv.substr(0, 200);
+  const long rows = std::count(csv.begin(), csv.end(), '\n') - 1;
+  EXPECT_GE(rows, 1500);  // default interval end_time/2000, rounded to whole steps
+
+  // summary.json: complete, with the derived quantities and the loop measurement.
+  const auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
+  EXPECT_EQ(sum["status"], "completed");
+  EXPECT_EQ(sum["counts"]["particles"], 96);
+  EXPECT_GT(sum["derived"]["dt_stable_s"].get<double>(), 0.0);
+  EXPECT_TRUE(sum["uniaxial"].contains("measured"));
+  EXPECT_EQ(sum["case"]["rod"]["yield_strain"], 1e-3);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/summary.json.part"));
+
+  // results.h5: the final state.
+  H5File h5(dir / "out/results.h5", H5File::Mode::Read);
+  std::size_t rows_h5 = 0, cols_h5 = 0;
+  auto pos = h5.read_doubles("/particles/position", rows_h5, cols_h5);
+  EXPECT_EQ(rows_h5, 96u);
+  EXPECT_EQ(cols_h5, 3u);
+  auto shift = h5.read_doubles("/bonds/plastic_shift", rows_h5, cols_h5);
+  bool plastic = false;
+  for (double s : shift) plastic = plastic || s != 0;
+  EXPECT_TRUE(plastic) << "the path goes beyond yield";
+
+  // particles.pvd: every file it lists exists and VTK's reader opens it with the arrays.
+  const std::string pvd = test::read_file(dir / "out/particles.pvd");
+  std::regex file_re("file=\"([^\"]+)\"");
+  int parts = 0;
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), file_re); it != std::sregex_iterator(); ++it) {
+    const std::string f = dir / ("out/" + (*it)[1].str());
+    ASSERT_TRUE(std::filesystem::exists(f)) << f;
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(f.c_str());
+    reader->Update();
+    vtkUnstructuredGrid* g = reader->GetOutput();
+    EXPECT_EQ(g->GetNumberOfPoints(), 96);
+    if (f.find("particles_") != std::string::npos) {
+      EXPECT_EQ(g->GetNumberOfCells(), 96);
+      EXPECT_NE(g->GetPointData()->GetArray("velocity"), nullptr);
+      EXPECT_NE(g->GetPointData()->GetArray("displacement"), nullptr);
+      EXPECT_NE(g->GetPointData()->GetArray("broken_fraction"), nullptr);
+    } else {
+      EXPECT_GT(g->GetNumberOfCells(), 96);
+      EXPECT_NE(g->GetCellData()->GetArray("stress"), nullptr);
+      EXPECT_NE(g->GetCellData()->GetArray("plastic_shift"), nullptr);
+      EXPECT_NE(g->GetCellData()->GetArray("state"), nullptr);
+    }
+    ++parts;
+  }
+  EXPECT_GE(parts, 2 * 3);
+
+  // Plots.
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/stress_strain.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/energy.png"));
+}
+
+TEST(Outputs, BlowUpStopsWithMessageAndNoCompleteLookingFiles) {
+  test::TempDir dir("blowup");
+  // Three times the stable step, forced: the lattice explodes within a few steps.
+  test::write_file(dir / "unstable.toml", std::string(kTiny) + "[integrator]\ndt_safety = 1.0\n");
+  const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "unstable.toml") + " --out " +
+                                   (dir / "out") + " --set integrator.dt=3.6e-7 --set integrator.allow_unstable_dt=true");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("unstable"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("particle"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/summary.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/series.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/results.h5"));
+}
+
+}  // namespace
+}  // namespace swarf
