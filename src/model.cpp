@@ -160,6 +160,11 @@ Model build_model(const CaseSettings& cs) {
     info.grip_max = static_cast<int>(model.groups.size());
     add_group("grip_max", select_side(lat.position, smax, u.grip_layers, h), dofs, mmax);
     if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
+    const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
+    for (std::size_t b = 0; b < r.size(); ++b) {
+      const double xi = lat.position[r.ends[b][0]][ax], xj = lat.position[r.ends[b][1]][ax];
+      if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
+    }
   }
   return model;
 }

@@ -43,6 +43,9 @@ struct UniaxialInfo {
   int grip_min = -1, grip_max = -1; ///< group indices
   double gauge_length = 0;          ///< initial distance between the innermost gripped layers, m
   double cross_section = 0;         ///< initial cross-section, m^2 (lattice extent + one layer spacing per side)
+  /// Rods crossing the plane halfway between the grips, with +1 if their end i lies on the
+  /// low side: the force they carry is the bar's internal force at mid-length.
+  std::vector<std::pair<std::int32_t, int>> midplane_rods;
 };
 
 struct Model {

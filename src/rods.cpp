@@ -12,7 +12,9 @@ void Rods::reset_state() {
   trial_shift.assign(m, 0.0);
   trial_broken.assign(m, 0);
   stress.assign(m, 0.0);
-  force.assign(m, Vec3::Zero());
+  force_coef.assign(m, 0.0);
+  inv_rest_length.resize(m);
+  for (std::size_t k = 0; k < m; ++k) inv_rest_length[k] = 1.0 / rest_length[k];
 }
 
 void Rods::build_rows(std::size_t n_particles) {
@@ -22,12 +24,12 @@ void Rods::build_rows(std::size_t n_particles) {
     ++row_start[e[1] + 1];
   }
   for (std::size_t p = 0; p < n_particles; ++p) row_start[p + 1] += row_start[p];
-  entries.assign(row_start.back(), 0);
+  entries.assign(row_start.back(), Entry{0, 0});
   std::vector<std::int32_t> fill(row_start.begin(), row_start.end() - 1);
   // Rods are visited in ascending order, so every row comes out sorted.
   for (std::size_t r = 0; r < ends.size(); ++r) {
-    entries[fill[ends[r][0]]++] = static_cast<std::int32_t>(2 * r);
-    entries[fill[ends[r][1]]++] = static_cast<std::int32_t>(2 * r + 1);
+    entries[fill[ends[r][0]]++] = Entry{static_cast<std::int32_t>(r), ends[r][1]};
+    entries[fill[ends[r][1]]++] = Entry{static_cast<std::int32_t>(r), ends[r][0]};
   }
 }
 

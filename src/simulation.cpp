@@ -89,8 +89,8 @@ namespace {
 // compile-time switch so the undamped lattice does not gather velocities.
 template <bool Viscous>
 void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
-               const double* rest_length, const double* shift, const std::uint8_t* intact, const Vec3* x, const Vec3* v,
-               double* trial_shift, std::uint8_t* trial_broken, double* stress, Vec3* force, double& viscous_power,
+               const double* rest_length, const double* inv_rest_length, const double* shift, const std::uint8_t* intact, const Vec3* x, const Vec3* v,
+               double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power,
                int& changed) {
   double visc = 0.0;
   int any = 0;
@@ -101,7 +101,7 @@ void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, 
     const double len = dx.norm();
     const double inv_len = 1.0 / len;
     const double l0 = rest_length[k];
-    const double inv_l0 = 1.0 / l0;
+    const double inv_l0 = inv_rest_length[k];
     const double strain = (len - l0) * inv_l0;
     double rate = 0.0;
     if constexpr (Viscous) rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
@@ -111,9 +111,9 @@ void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, 
     stress[k] = res.stress;
     any |= (res.shift != shift[k]) | res.broken;
     if (res.broken) {
-      force[k] = Vec3::Zero();
+      coef[k] = 0.0;
     } else {
-      force[k] = ((res.stress + res.viscous_stress) * A * inv_len) * dx;
+      coef[k] = (res.stress + res.viscous_stress) * A * inv_len;
       if constexpr (Viscous) visc += res.viscous_stress * rate * A * l0;
     }
   }
@@ -131,6 +131,7 @@ void Simulation::rod_forces() {
   const std::size_t m = r.size(), nb = block_count(m);
   const auto* ends = r.ends.data();
   const double* l0 = r.rest_length.data();
+  const double* inv_l0 = r.inv_rest_length.data();
   const double* shift = r.shift.data();
   const std::uint8_t* intact = r.intact.data();
   const Vec3* x = p.position.data();
@@ -138,7 +139,7 @@ void Simulation::rod_forces() {
   double* trial_shift = r.trial_shift.data();
   std::uint8_t* trial_broken = r.trial_broken.data();
   double* stress = r.stress.data();
-  Vec3* force = r.force.data();
+  double* coef = r.force_coef.data();
   double* block_visc = block_viscous_.data();
   int* block_changed = block_changed_.data();
   const bool viscous = law.viscosity != 0.0;
@@ -146,10 +147,10 @@ void Simulation::rod_forces() {
   for (std::size_t b = 0; b < nb; ++b) {
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
     if (viscous)
-      rod_block<true>(law, A, begin, end, ends, l0, shift, intact, x, v, trial_shift, trial_broken, stress, force,
+      rod_block<true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress, coef,
                       block_visc[b], block_changed[b]);
     else
-      rod_block<false>(law, A, begin, end, ends, l0, shift, intact, x, v, trial_shift, trial_broken, stress, force,
+      rod_block<false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress, coef,
                        block_visc[b], block_changed[b]);
   }
 }
@@ -161,11 +162,10 @@ void Simulation::gather() {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();
+    const Vec3 xi = p.position[i];
     for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
-      const std::int32_t code = r.entries[e];
-      const Vec3& fr = r.force[code >> 1];
-      if (code & 1) f -= fr;
-      else f += fr;
+      const Rods::Entry en = r.entries[e];
+      f += r.force_coef[en.rod] * (p.position[en.other] - xi);
     }
     p.force[i] = f;
     p.acceleration[i] = p.inv_mass[i] * f;

@@ -80,7 +80,7 @@ std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods&
     const int n = r.row_start[i + 1] - r.row_start[i];
     if (n == 0) continue;
     int broken = 0;
-    for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) broken += r.intact[r.entries[e] >> 1] ? 0 : 1;
+    for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) broken += r.intact[r.entries[e].rod] ? 0 : 1;
     out[i] = double(broken) / n;
   }
   return out;
