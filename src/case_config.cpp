@@ -2,6 +2,7 @@
 #include "case_config.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -48,6 +49,8 @@ class Reader {
     if (n) throw InputError(fmt::format("{}: key '{}' = {}: {}", where, full, repr(*n), problem));
     throw InputError(fmt::format("{}: key '{}': {}", where, full, problem));
   }
+
+  bool has(const std::string& key) const { return t_ && t_->contains(key); }
 
   const toml::node* get(const std::string& key) {
     if (!t_) return nullptr;
@@ -259,6 +262,22 @@ void read_groups(const toml::table& root, const std::string& source, const std::
         gs.table_displacement.push_back(v);
       }
     }
+    const bool has_box = r.has("box_min") || r.has("box_max");
+    if (!gs.side.empty() && has_box) r.fail("box_min", r.get("box_min") ? r.get("box_min") : r.get("box_max"),
+                                            "give either side (with layers) or box_min/box_max, not both");
+    if (gs.side.empty() && r.has("layers")) r.fail("layers", r.get("layers"), "layers needs side");
+    if (gs.side.empty() && !has_box) r.fail("side", nullptr, "a group needs side = \"x-\" ... or box_min/box_max (m)");
+    for (int c = 0; c < 3; ++c)
+      if (gs.box_min[c] > gs.box_max[c]) r.fail("box_min", r.get("box_min"), "must not exceed box_max");
+    if (gs.motion != "velocity" && r.has("velocity"))
+      r.fail("velocity", r.get("velocity"), "is only used with motion = \"velocity\"");
+    if (gs.motion != "table" && (r.has("table_time") || r.has("table_displacement")))
+      r.fail("table_time", r.get("table_time") ? r.get("table_time") : r.get("table_displacement"),
+             "is only used with motion = \"table\"");
+    for (char ch : gs.name)
+      if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
+        r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");
+    if (gs.name.empty()) r.fail("name", r.get("name"), "must not be empty");
     if (gs.motion == "velocity" && !r.get("velocity"))
       r.fail("velocity", nullptr, "motion = \"velocity\" needs a velocity [vx, vy, vz] in m/s");
     if (gs.motion == "table") {
@@ -266,6 +285,8 @@ void read_groups(const toml::table& root, const std::string& source, const std::
         r.fail("table_time", r.get("table_time"),
                "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
       if (gs.table_time[0] != 0.0) r.fail("table_time", r.get("table_time"), "must start at 0 s");
+      for (double u : gs.table_displacement[0])
+        if (u != 0.0) r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
       for (std::size_t k = 1; k < gs.table_time.size(); ++k)
         if (!(gs.table_time[k] > gs.table_time[k - 1])) r.fail("table_time", r.get("table_time"), "must be strictly ascending");
     }
@@ -323,6 +344,9 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     w.bond_tolerance = r.number("bond_tolerance", w.bond_tolerance,
                                 [](double v) { return v >= 0 && v < 0.2 ? nullptr : "must lie in [0, 0.2)"; });
     const bool has_cells = r.get("cells") != nullptr, has_size = r.get("size") != nullptr;
+    if (!w.lattice_file.empty() && (r.has("radius") || r.has("bond_tolerance")))
+      r.fail(r.has("radius") ? "radius" : "bond_tolerance", r.get(r.has("radius") ? "radius" : "bond_tolerance"),
+             "radii and bonds come from lattice_file; remove this key");
     if (!w.lattice_file.empty() && (has_cells || has_size))
       r.fail("lattice_file", r.get("lattice_file"), "give either lattice_file or cells/size, not both");
     if (has_cells && has_size) r.fail("size", r.get("size"), "give either cells or size, not both");
@@ -368,6 +392,8 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     g.dt = r.number("dt", g.dt, non_negative);
     g.dt_safety = r.number("dt_safety", g.dt_safety,
                            [](double v) { return v > 0 && v <= 1 ? nullptr : "must lie in (0, 1]"; });
+    if (r.has("dt") && r.has("dt_safety") && g.dt > 0)
+      r.fail("dt_safety", r.get("dt_safety"), "give either dt (s) or dt_safety (fraction of the stable step), not both");
     g.allow_unstable_dt = r.boolean("allow_unstable_dt", g.allow_unstable_dt);
     g.end_time = r.number("end_time", g.end_time, non_negative);
     g.max_step_displacement = r.number("max_step_displacement", g.max_step_displacement, positive);

@@ -22,7 +22,7 @@ struct Derived {
   double rod_damping = 0;          ///< c = zeta 2 sqrt(kb m/2), N s/m
   double rod_viscosity = 0;        ///< eta = c L0 / A, Pa s
   double omega_max = 0;            ///< sqrt(8 kb/m), rad/s
-  double dt_stable = 0;            ///< (2/omega_max)(sqrt(1+zeta^2) - zeta) = sqrt(m/(2 kb)) undamped, s
+  double dt_stable = 0;            ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
   double dt = 0;                   ///< step used, s
   double wave_speed = 0;           ///< longitudinal wave speed along [100], c_L = d sqrt(kb/m), m/s
   // Lattice relations (central springs kb, cubic cell a).

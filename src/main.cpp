@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   swarf::RunOptions ro;
   run->add_option("case", ro.case_path, "Case file (TOML); see docs/case-reference.md");
   run->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
-  run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")->take_all();
+  run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")->allow_extra_args(false);
   run->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
 
   // swarf bench
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   bench->add_option("--threads", threads_s, "Thread counts, comma separated (default 1,2)");
   bench->add_option("--steps", bo.steps, "Steps (default: the case's end_time / dt)");
   bench->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
-  bench->add_option("--set", bo.overrides, "Override a case key (repeatable)")->take_all();
+  bench->add_option("--set", bo.overrides, "Override a case key (repeatable)")->allow_extra_args(false);
 
   try {
     app.parse(argc, argv);

@@ -62,8 +62,12 @@ void run_case(const RunOptions& opt) {
   namespace fs = std::filesystem;
   const std::string dir = opt.out_dir;
   fs::create_directories(dir);
-  // A previous summary would make this run look complete if it is interrupted.
-  fs::remove(fs::path(dir) / "summary.json");
+  // Outputs of an earlier run in the same directory would mix with this one's (and a previous
+  // summary would make an interrupted run look complete).
+  for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",
+                           "particles.pvd", "stress_strain.png", "energy.png"})
+    fs::remove(fs::path(dir) / name);
+  fs::remove_all(fs::path(dir) / "frames");
 
   Simulation sim(model);
   const auto& settings = model.settings;
@@ -176,6 +180,7 @@ void run_case(const RunOptions& opt) {
   sum["run"] = {{"threads", threads},
                 {"steps", sim.steps()},
                 {"simulated_time_s", sim.time()},
+                {"end_time_s", end_time},
                 {"wall_time_s", wall},
                 {"step_wall_time_s", step_seconds},
                 {"ns_per_particle_step", step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size()))}};

@@ -17,6 +17,10 @@ Simulation::Simulation(Model& model) : m_(model) {
   group_u_old_.assign(ng, Vec3::Zero());
   group_u_new_.assign(ng, Vec3::Zero());
   reaction_.assign(ng, Vec3::Zero());
+  group_v_.assign(ng, Vec3::Zero());
+  group_mass_.assign(ng, 0.0);
+  for (std::size_t g = 0; g < ng; ++g)
+    for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
   rod_forces();
   gather();
@@ -211,6 +215,7 @@ void Simulation::commit() {
       if (r.trial_broken[k]) {
         r.intact[k] = 0;
         fracture[b] += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
+        r.stress[k] = 0.0;
         ++broke[b];
       }
     }
@@ -237,8 +242,15 @@ void Simulation::account() {
   compute_reactions(reaction_);
   for (std::size_t g = 0; g < m_.groups.size(); ++g) {
     const Vec3 du = group_u_new_[g] - group_u_old_[g];
-    for (int c = 0; c < 3; ++c)
-      if (m_.groups[g].dofs & (1u << c)) ledger_.external_work += 0.5 * (reaction_old_[g][c] + reaction_[g][c]) * du[c];
+    const Vec3 v = du / dt_;
+    for (int c = 0; c < 3; ++c) {
+      if (!(m_.groups[g].dofs & (1u << c))) continue;
+      // Work on the body through the reaction, plus the work that changes the prescribed
+      // particles' own kinetic energy (a grip that starts or reverses accelerates them).
+      ledger_.external_work += 0.5 * (reaction_old_[g][c] + reaction_[g][c]) * du[c];
+      ledger_.external_work += 0.5 * group_mass_[g] * (v[c] * v[c] - group_v_[g][c] * group_v_[g][c]);
+    }
+    group_v_[g] = v;
   }
   time_ += dt_;
   ++steps_;

@@ -72,6 +72,8 @@ class Simulation {
   std::vector<int> block_changed_;      // per rod block: a trial shift or break to commit
   std::vector<Vec3> group_u_old_, group_u_new_;  // group displacements at t and t + dt
   std::vector<Vec3> reaction_, reaction_old_;
+  std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
+  std::vector<double> group_mass_; // total mass of each group, kg
 };
 
 }  // namespace swarf
