@@ -21,6 +21,8 @@ std::string repr(const toml::node& n) {
   std::ostringstream os;
   if (auto s = n.as_string()) {
     os << '"' << s->get() << '"';
+  } else if (auto f = n.as_floating_point()) {
+    os << fmt::format("{}", f->get());
   } else {
     n.visit([&](auto&& v) { os << v; });
   }
@@ -263,8 +265,10 @@ void read_groups(const toml::table& root, const std::string& source, const std::
       }
     }
     const bool has_box = r.has("box_min") || r.has("box_max");
-    if (!gs.side.empty() && has_box) r.fail("box_min", r.get("box_min") ? r.get("box_min") : r.get("box_max"),
-                                            "give either side (with layers) or box_min/box_max, not both");
+    if (!gs.side.empty() && has_box) {
+      const char* key = r.has("box_min") ? "box_min" : "box_max";
+      r.fail(key, r.get(key), "give either side (with layers) or box_min/box_max, not both");
+    }
     if (gs.side.empty() && r.has("layers")) r.fail("layers", r.get("layers"), "layers needs side");
     if (gs.side.empty() && !has_box) r.fail("side", nullptr, "a group needs side = \"x-\" ... or box_min/box_max (m)");
     for (int c = 0; c < 3; ++c)
@@ -272,8 +276,10 @@ void read_groups(const toml::table& root, const std::string& source, const std::
     if (gs.motion != "velocity" && r.has("velocity"))
       r.fail("velocity", r.get("velocity"), "is only used with motion = \"velocity\"");
     if (gs.motion != "table" && (r.has("table_time") || r.has("table_displacement")))
-      r.fail("table_time", r.get("table_time") ? r.get("table_time") : r.get("table_displacement"),
-             "is only used with motion = \"table\"");
+    {
+      const char* key = r.has("table_time") ? "table_time" : "table_displacement";
+      r.fail(key, r.get(key), "is only used with motion = \"table\"");
+    }
     for (char ch : gs.name)
       if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
         r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");

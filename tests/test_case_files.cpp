@@ -74,13 +74,29 @@ TEST(CaseFiles, HardeningNotBelowModulus) {
 }
 
 TEST(CaseFiles, MissingLatticeFile) {
-  expect_mentions(error_of(replace(kGood, "cells = [4, 2, 2]", "lattice_file = \"nope.h5\"")),
+  expect_mentions(error_of(replace(kGood, "cells = [4, 2, 2]\nradius = 0.5e-3", "lattice_file = \"nope.h5\"")),
                   {"workpiece.lattice_file", "nope.h5", "not found"});
 }
 
 TEST(CaseFiles, LatticeFileAndCellsTogether) {
-  expect_mentions(error_of(replace(kGood, "cells = [4, 2, 2]", "cells = [4, 2, 2]\nlattice_file = \"x.h5\"")),
+  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "lattice_file = \"x.h5\"")),
                   {"lattice_file", "either"});
+}
+
+TEST(CaseFiles, RadiusWithLatticeFile) {
+  test::TempDir dir("case_lat");
+  test::write_file(dir / "x.h5", "");
+  const std::string text = replace(kGood, "cells = [4, 2, 2]", "lattice_file = \"" + (dir / "x.h5") + "\"");
+  expect_mentions(error_of(text), {"bad.toml:3", "workpiece.radius", "lattice_file"});
+}
+
+TEST(CaseFiles, IgnoredKeyCombinationsRejected) {
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nvelocity = [1.0, 0.0, 0.0]")),
+                  {"group.velocity", "motion = \"velocity\""});
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nbox_max = [1.0, 1.0, 1.0]")),
+                  {"group.box_max", "either"});
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-9\ndt_safety = 0.3")),
+                  {"integrator.dt_safety", "either"});
 }
 
 TEST(CaseFiles, UnstableStepRefused) {
