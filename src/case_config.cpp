@@ -398,8 +398,6 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     g.dt = r.number("dt", g.dt, non_negative);
     g.dt_safety = r.number("dt_safety", g.dt_safety,
                            [](double v) { return v > 0 && v <= 1 ? nullptr : "must lie in (0, 1]"; });
-    if (r.has("dt") && r.has("dt_safety") && g.dt > 0)
-      r.fail("dt_safety", r.get("dt_safety"), "give either dt (s) or dt_safety (fraction of the stable step), not both");
     g.allow_unstable_dt = r.boolean("allow_unstable_dt", g.allow_unstable_dt);
     g.end_time = r.number("end_time", g.end_time, non_negative);
     g.max_step_displacement = r.number("max_step_displacement", g.max_step_displacement, positive);
