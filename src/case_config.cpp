@@ -393,14 +393,31 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   {
     Reader r(table("integrator"), "integrator", source, ov);
     auto& g = cs.integrator;
-    g.scheme = r.string("scheme", g.scheme, {"verlet", "newmark"});
-    if (g.scheme == "newmark") r.fail("scheme", r.get("scheme"), "the Newmark scheme is not implemented yet (issue 3)");
+    g.scheme = r.string("scheme", g.scheme, {"auto", "verlet", "newmark"});
     g.dt = r.number("dt", g.dt, non_negative);
     g.dt_safety = r.number("dt_safety", g.dt_safety,
                            [](double v) { return v > 0 && v <= 1 ? nullptr : "must lie in (0, 1]"; });
     g.allow_unstable_dt = r.boolean("allow_unstable_dt", g.allow_unstable_dt);
     g.end_time = r.number("end_time", g.end_time, non_negative);
     g.max_step_displacement = r.number("max_step_displacement", g.max_step_displacement, positive);
+    g.beta = r.number("beta", g.beta, [](double v) { return v >= 0 && v <= 0.5 ? nullptr : "must lie in [0, 0.5]"; });
+    g.gamma = r.number("gamma", g.gamma, [](double v) { return v >= 0.5 && v <= 1 ? nullptr : "must lie in [0.5, 1]"; });
+    g.tolerance = r.number("tolerance", g.tolerance,
+                           [](double v) { return v > 0 && v < 1 ? nullptr : "must lie in (0, 1)"; });
+    g.max_iterations = r.integer("max_iterations", g.max_iterations, 2, 10000);
+    g.dt_min = r.number("dt_min", g.dt_min, non_negative);
+    g.dt_max = r.number("dt_max", g.dt_max, non_negative);
+    if (g.dt_min > 0 && g.dt_max > 0 && g.dt_min > g.dt_max)
+      r.fail("dt_min", r.get("dt_min"), fmt::format("must not exceed dt_max = {} s", g.dt_max));
+    g.iterations_grow = r.integer("iterations_grow", g.iterations_grow, 1, 10000);
+    g.iterations_shrink = r.integer("iterations_shrink", g.iterations_shrink, 2, 10000);
+    if (g.iterations_grow >= g.iterations_shrink)
+      r.fail("iterations_grow", r.get("iterations_grow"), "must be below iterations_shrink");
+    auto factor_above_1 = [](double v) { return v > 1 && v <= 10 ? nullptr : "must lie in (1, 10]"; };
+    auto factor_below_1 = [](double v) { return v > 0 && v < 1 ? nullptr : "must lie in (0, 1)"; };
+    g.grow_factor = r.number("grow_factor", g.grow_factor, factor_above_1);
+    g.shrink_factor = r.number("shrink_factor", g.shrink_factor, factor_below_1);
+    g.reject_factor = r.number("reject_factor", g.reject_factor, factor_below_1);
     r.finish();
   }
   read_groups(root, source, ov, cs);

@@ -43,12 +43,24 @@ struct RodSettings {
 
 /// [integrator]
 struct IntegratorSettings {
-  std::string scheme = "verlet";      ///< "verlet" (velocity Verlet); "newmark" comes with the implicit step
-  double dt = 0.0;                    ///< s; 0 = dt_safety * stable step
+  std::string scheme = "auto";        ///< "verlet", "newmark", or "auto": newmark if rods can break, else verlet
+  double dt = 0.0;                    ///< s; 0 = dt_safety * stable step (newmark: the first step)
   double dt_safety = 0.5;             ///< fraction of the stable step used when dt = 0, 1
   bool allow_unstable_dt = false;     ///< run even if dt exceeds the stable step estimate
   double end_time = 0.0;              ///< simulated time, s (the [uniaxial] path sets it when 0)
   double max_step_displacement = 0.25;  ///< stop if a particle moves more than this many radii in one step, 1
+  // Newmark (implicit) step, solved by fixed-point iteration on the new accelerations.
+  double beta = 0.25;                 ///< Newmark beta, 1
+  double gamma = 0.5;                 ///< Newmark gamma, 1
+  double tolerance = 1e-6;            ///< converged when max|f_k+1 - f_k| <= tolerance * force level (Simulation::gather), 1
+  int max_iterations = 25;            ///< sweeps before the step is rejected
+  double dt_min = 0.0;                ///< s; 0 = 1e-3 * stable step. Below it the run stops
+  double dt_max = 0.0;                ///< s; 0 = 0.8 x the stable step (the fixed-point limit for beta = 1/4 is 1x)
+  int iterations_grow = 4;            ///< a step that needed at most this many sweeps grows the next one
+  int iterations_shrink = 10;         ///< a step that needed at least this many sweeps shrinks the next one
+  double grow_factor = 1.2;           ///< 1
+  double shrink_factor = 0.7;         ///< 1
+  double reject_factor = 0.5;         ///< a rejected step is retried with dt times this, 1
 };
 
 /// [[group]]: particles selected by a side of the box or a region, fixed or moved.

@@ -55,7 +55,17 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.law.viscosity = d.rod_viscosity;
 
   const auto& g = cs.integrator;
+  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && std::isfinite(cs.rod.tensile_strength));
   d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
+  d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
+  // The sweep contracts by about (dt/dt_stable)^2 for beta = 1/4: 0.8 of the limit keeps it below 0.64.
+  d.dt_max = g.dt_max > 0 ? g.dt_max : 0.8 * d.dt_stable;
+  if (d.implicit) {
+    if (d.dt < d.dt_min || d.dt > d.dt_max)
+      throw InputError(fmt::format("{}: the first step dt = {:.6g} s lies outside [dt_min, dt_max] = [{:.6g}, {:.6g}] s "
+                                   "(integrator.dt, dt_min, dt_max)", cs.source, d.dt, d.dt_min, d.dt_max));
+    return d;  // the step control keeps the fixed-point iteration convergent
+  }
   if (d.dt > d.dt_stable && !g.allow_unstable_dt)
     throw InputError(fmt::format(
         "{}: key 'integrator.dt' = {:.6g} s exceeds the stable step {:.6g} s of the explicit scheme "

@@ -23,7 +23,10 @@ struct Derived {
   double rod_viscosity = 0;        ///< eta = c L0 / A, Pa s
   double omega_max = 0;            ///< sqrt(8 kb/m), rad/s
   double dt_stable = 0;            ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
-  double dt = 0;                   ///< step used, s
+  double dt = 0;                   ///< step used (newmark: the first step), s
+  bool implicit = false;           ///< the Newmark scheme (scheme "newmark", or "auto" with breakable rods)
+  double dt_min = 0;               ///< newmark: smallest step before the run stops, s
+  double dt_max = 0;               ///< newmark: largest step, s
   double wave_speed = 0;           ///< longitudinal wave speed along [100], c_L = d sqrt(kb/m), m/s
   // Lattice relations (central springs kb, cubic cell a).
   double c11 = 0;                  ///< 2 kb / a, Pa

@@ -75,6 +75,7 @@ Model build_model(const CaseSettings& cs) {
     const double s = lat.radius[i] / d.radius;
     p.mass[i] = d.particle_mass * s * s * s;
     p.inv_mass[i] = 1.0 / p.mass[i];
+    p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
   }
 
   auto& r = model.rods;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rotation.h"
 #include "vec3.h"
 
 namespace swarf {
@@ -24,6 +25,13 @@ struct Particles {
   std::vector<double> radius;          ///< m
   std::vector<std::uint8_t> prescribed;  ///< bitmask of prescribed components (1=x, 2=y, 4=z)
   std::vector<std::int32_t> group;     ///< index of the particle's group, -1 if none
+  // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
+  // so torques come from contacts; the machinery is here for them).
+  std::vector<Quat> orientation;       ///< unit quaternion, body to world
+  std::vector<Vec3> omega;             ///< body-frame angular velocity, rad/s
+  std::vector<Vec3> omega_dot;         ///< body-frame angular acceleration, rad/s^2
+  std::vector<Vec3> inertia;           ///< principal moments of inertia, kg m^2 (2/5 m R^2 for a sphere)
+  std::vector<Vec3> torque;            ///< world-frame torque of the last evaluation, N m
 
   std::size_t size() const { return position.size(); }
 
@@ -39,6 +47,11 @@ struct Particles {
     radius.resize(n, 0.0);
     prescribed.resize(n, 0);
     group.resize(n, -1);
+    orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));
+    omega.resize(n, Vec3::Zero());
+    omega_dot.resize(n, Vec3::Zero());
+    inertia.resize(n, Vec3::Zero());
+    torque.resize(n, Vec3::Zero());
   }
 };
 

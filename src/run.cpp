@@ -40,8 +40,10 @@ void print_setup(const Model& m, int threads) {
              d.rod_stiffness, d.rod_damping);
   fmt::print("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} kg/m^3\n",
              d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
-  fmt::print("  stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it); end time {:.4g} s\n", d.dt_stable, d.dt,
-             d.dt / d.dt_stable, m.settings.integrator.end_time);
+  fmt::print("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
+             d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
+             d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
+             m.settings.integrator.end_time);
   if (m.uniaxial.enabled)
     fmt::print("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
                m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
@@ -71,18 +73,14 @@ void run_case(const RunOptions& opt) {
 
   Simulation sim(model);
   const auto& settings = model.settings;
-  const double dt = sim.dt(), end_time = settings.integrator.end_time;
-  const long long n_steps = static_cast<long long>(std::ceil(end_time / dt - 1e-9));
+  const double end_time = settings.integrator.end_time;
   const double series_interval = settings.output.series_interval > 0 ? settings.output.series_interval : end_time / 2000;
-  const long long series_every = std::max(1LL, static_cast<long long>(std::llround(series_interval / dt)));
-  const long long frame_every = settings.output.frame_interval > 0
-                                    ? std::max(1LL, static_cast<long long>(std::llround(settings.output.frame_interval / dt)))
-                                    : 0;
+  const double frame_interval = settings.output.frame_interval;
 
   const UniaxialInfo& ux = model.uniaxial;
   std::vector<std::string> cols{"time"};
   if (ux.enabled) cols.insert(cols.end(), {"strain", "stress", "stress_predicted", "stress_midplane"});
-  cols.insert(cols.end(), {"step", "dt", "kinetic_energy", "elastic_energy", "external_work", "plastic_work",
+  cols.insert(cols.end(), {"step", "dt", "iterations", "kinetic_energy", "elastic_energy", "external_work", "plastic_work",
                            "viscous_work", "fracture_energy", "energy_error", "broken_rods", "broken_fraction"});
   for (const auto& g : model.groups)
     for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("reaction_{}_{}", g.name, c));
@@ -135,7 +133,7 @@ void run_case(const RunOptions& opt) {
     const double ke = sim.kinetic_energy(), ee = sim.elastic_energy();
     const auto& L = sim.ledger();
     const double err = L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy);
-    row.insert(row.end(), {double(sim.steps()), dt, ke, ee, L.external_work, L.plastic_work, L.viscous_work,
+    row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke, ee, L.external_work, L.plastic_work, L.viscous_work,
                            L.fracture_energy, err, double(sim.broken_rods()), double(sim.broken_rods()) / total_rods});
     for (std::size_t g = 0; g < model.groups.size(); ++g)
       for (int c = 0; c < 3; ++c) row.push_back(sim.group_reaction(g)[c]);
@@ -147,19 +145,26 @@ void run_case(const RunOptions& opt) {
   if (vtk) vtk->write_frame(0.0, model.particles, model.rods);
   const auto t0 = std::chrono::steady_clock::now();
   double output_seconds = 0.0;
-  for (long long s = 1; s <= n_steps; ++s) {
-    sim.step();
+  // Rows and frames are written at the first step that reaches each output time.
+  const double t_end = end_time * (1.0 - 1e-12);
+  double next_row = series_interval, next_frame = frame_interval > 0 ? frame_interval : HUGE_VAL;
+  while (sim.time() < t_end) {
+    sim.step(end_time - sim.time());
     if (ux.enabled) predicted = prediction.stress(bar_strain(sim.time()));
-    const bool last = s == n_steps;
-    if (s % series_every == 0 || last || (frame_every && s % frame_every == 0)) {
+    const bool last = sim.time() >= t_end;
+    const bool row = sim.time() >= next_row * (1.0 - 1e-12) || last;
+    const bool frame = vtk && (sim.time() >= next_frame * (1.0 - 1e-12) || last);
+    if (row || frame) {
       const auto o0 = std::chrono::steady_clock::now();
-      if (s % series_every == 0 || last) write_row();
-      if (vtk && ((frame_every && s % frame_every == 0) || last)) vtk->write_frame(sim.time(), model.particles, model.rods);
+      if (row) write_row();
+      if (frame) vtk->write_frame(sim.time(), model.particles, model.rods);
+      while (next_row <= sim.time() * (1.0 + 1e-12)) next_row += series_interval;
+      while (next_frame <= sim.time() * (1.0 + 1e-12)) next_frame += frame_interval;
       output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - o0).count();
     }
-    progress.update(sim.time(), s);
+    progress.update(sim.time(), sim.steps());
   }
-  progress.done(sim.time(), n_steps);
+  progress.done(sim.time(), sim.steps());
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double step_seconds = wall - output_seconds;
   series.finish();
@@ -177,8 +182,16 @@ void run_case(const RunOptions& opt) {
   for (const auto& g : model.groups) sum["counts"]["group_" + g.name] = g.members.size();
   const auto& L = sim.ledger();
   const double ke = sim.kinetic_energy(), ee = sim.elastic_energy();
+  const StepStats& st = sim.stats();
   sum["run"] = {{"threads", threads},
+                {"scheme", sim.implicit() ? "newmark" : "verlet"},
                 {"steps", sim.steps()},
+                {"steps_rejected", st.rejected},
+                {"iterations_per_step_mean", double(st.iterations) / double(std::max<std::int64_t>(1, st.accepted))},
+                {"iterations_per_step_max", st.max_iterations},
+                {"force_evaluations", st.force_evaluations},
+                {"force_evaluations_per_us", double(st.force_evaluations) / (sim.time() * 1e6)},
+                {"dt_last_s", sim.last_dt()},
                 {"simulated_time_s", sim.time()},
                 {"end_time_s", end_time},
                 {"wall_time_s", wall},
@@ -248,8 +261,13 @@ void run_case(const RunOptions& opt) {
     if (!lm.note.empty()) fmt::print("  note: {}\n", lm.note);
     fmt::print("  quasi-static check: grip and mid-plane stress differ by at most {:.3g} of the peak stress\n", qs);
   }
-  fmt::print("\n  steps {}, simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n", sim.steps(),
-             sim.time(), wall, step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size())), threads);
+  fmt::print("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n",
+             sim.steps(), sim.implicit() ? "newmark" : "verlet", sim.time(), wall,
+             step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size())), threads);
+  if (sim.implicit())
+    fmt::print("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",
+               st.rejected, double(st.iterations) / double(std::max<std::int64_t>(1, st.accepted)), st.max_iterations,
+               double(st.force_evaluations) / (sim.time() * 1e6));
   fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", sim.broken_rods(),
              model.rods.size(), 100.0 * sim.broken_rods() / total_rods,
              L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);

@@ -1,4 +1,4 @@
-// simulation.cpp: velocity Verlet with rods, stage by stage (see simulation.h).
+// simulation.cpp: the step function of both schemes, stage by stage (see simulation.h).
 #include "simulation.h"
 
 #include <cmath>
@@ -10,7 +10,9 @@
 namespace swarf {
 
 Simulation::Simulation(Model& model) : m_(model) {
-  dt_ = m_.derived.dt;
+  const Derived& d = m_.derived;
+  implicit_ = d.implicit;
+  dt_ = d.dt;
   block_viscous_.assign(block_count(m_.rods.size()), 0.0);
   block_changed_.assign(block_count(m_.rods.size()), 0);
   const std::size_t ng = m_.groups.size();
@@ -28,62 +30,188 @@ Simulation::Simulation(Model& model) : m_(model) {
   broken_ = m_.rods.broken_count();
 }
 
-void Simulation::step() {
-  predict();
-  rod_forces();
-  gather();
-  correct();
-  commit();
-  account();
+void Simulation::step(double max_dt) {
+  if (!implicit_) {
+    step_explicit();
+    return;
+  }
+  const auto& g = m_.settings.integrator;
+  save_state();
+  while (true) {
+    const double h = std::min(dt_, max_dt);
+    if (try_newmark(h)) {
+      commit();
+      account(h);
+      // Step size control from the number of sweeps (paper section 3.4).
+      const int it = stats_.last_iterations;
+      if (it <= g.iterations_grow) dt_ = std::min(dt_ * g.grow_factor, m_.derived.dt_max);
+      else if (it >= g.iterations_shrink) dt_ = std::max(dt_ * g.shrink_factor, m_.derived.dt_min);
+      return;
+    }
+    restore_state();
+    ++stats_.rejected;
+    dt_ = h * g.reject_factor;
+    if (dt_ < m_.derived.dt_min)
+      throw SimulationError(fmt::format(
+          "the Newmark step did not converge at t = {:.6g} s even with dt = {:.4g} s, below dt_min = {:.4g} s "
+          "(integrator.dt_min); {} sweeps allowed (integrator.max_iterations), tolerance {}",
+          time_, h, m_.derived.dt_min, g.max_iterations, g.tolerance));
+  }
 }
 
-void Simulation::predict() {
+void Simulation::step_explicit() {
+  const double h = dt_;
+  prescribe(h);
+  if (!kick_drift(h)) throw_too_far(h);
+  rod_forces();
+  gather();
+  kick(h);
+  if (rotations_) rotate(h, 0.0, 0.5);
+  commit();
+  account(h);
+  stats_.last_iterations = 1;
+  stats_.iterations += 1;
+  stats_.max_iterations = 1;
+}
+
+bool Simulation::try_newmark(double h) {
+  const auto& g = m_.settings.integrator;
+  prescribe(h);
+  int it = 0, growing = 0;
+  bool converged = false;
+  double previous = HUGE_VAL;
+  for (it = 1; it <= g.max_iterations; ++it) {
+    if (!place(h)) return false;
+    if (rotations_) rotate(h, g.beta, g.gamma);
+    rod_forces();
+    const double change = gather();
+    if (!std::isfinite(change)) return false;
+    if (change <= g.tolerance) {
+      converged = true;
+      break;
+    }
+    // A contraction shrinks the change every sweep; two growing sweeps in a row mean the
+    // step is beyond the fixed-point limit: give up early instead of sweeping on.
+    growing = change > previous ? growing + 1 : 0;
+    if (growing >= 2) return false;
+    previous = change;
+  }
+  if (!converged) return false;
+  if (!place(h)) return false;  // x+, v+ from the converged accelerations
+  if (rotations_) rotate(h, g.beta, g.gamma);
+  stats_.last_iterations = it;
+  stats_.iterations += it;
+  stats_.max_iterations = std::max(stats_.max_iterations, it);
+  return true;
+}
+
+void Simulation::prescribe(double h) {
   auto& p = m_.particles;
-  const double t_new = time_ + dt_;
+  const double t_new = time_ + h;
   for (std::size_t g = 0; g < m_.groups.size(); ++g) {
     group_u_old_[g] = m_.groups[g].motion.displacement_at(time_);
     group_u_new_[g] = m_.groups[g].motion.displacement_at(t_new);
   }
-  const double half = 0.5 * dt_, dt = dt_;
-  const double limit = m_.settings.integrator.max_step_displacement;
+  for (std::size_t g = 0; g < m_.groups.size(); ++g) {
+    const Vec3 v = (group_u_new_[g] - group_u_old_[g]) / h;
+    const std::uint8_t mask = m_.groups[g].dofs;
+    for (auto i : m_.groups[g].members)
+      for (int c = 0; c < 3; ++c)
+        if (mask & (1u << c)) {
+          p.position[i][c] = p.initial_position[i][c] + group_u_new_[g][c];
+          p.velocity[i][c] = v[c];
+        }
+  }
+}
+
+bool Simulation::kick_drift(double h) {
+  auto& p = m_.particles;
+  const double half = 0.5 * h;
+  const double limit2 = std::pow(m_.settings.integrator.max_step_displacement, 2);
   const std::size_t n = p.size();
   int bad = 0;
 #pragma omp parallel for schedule(static) reduction(max : bad)
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x_old = p.position[i];
-    if (p.prescribed[i] == 0) {
+    const std::uint8_t mask = p.prescribed[i];
+    Vec3 dx = Vec3::Zero();
+    if (mask == 0) {
       p.velocity[i] += half * p.acceleration[i];
-      p.position[i] += dt * p.velocity[i];
+      dx = h * p.velocity[i];
+      p.position[i] += dx;
     } else {
-      const std::int32_t g = p.group[i];
-      const std::uint8_t mask = p.prescribed[i];
       for (int c = 0; c < 3; ++c) {
-        if (mask & (1u << c)) {
-          p.position[i][c] = p.initial_position[i][c] + group_u_new_[g][c];
-          p.velocity[i][c] = (group_u_new_[g][c] - group_u_old_[g][c]) / dt;
-        } else {
-          p.velocity[i][c] += half * p.acceleration[i][c];
-          p.position[i][c] += dt * p.velocity[i][c];
+        if (mask & (1u << c)) continue;
+        p.velocity[i][c] += half * p.acceleration[i][c];
+        dx[c] = h * p.velocity[i][c];
+        p.position[i][c] += dx[c];
+      }
+    }
+    if (!(dx.squaredNorm() <= limit2 * p.radius[i] * p.radius[i])) bad = 1;  // also catches NaN
+  }
+  return bad == 0;
+}
+
+void Simulation::kick(double h) {
+  auto& p = m_.particles;
+  const double half = 0.5 * h;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t mask = p.prescribed[i];
+    if (mask == 0) {
+      p.velocity[i] += half * p.acceleration[i];
+    } else {
+      for (int c = 0; c < 3; ++c)
+        if (!(mask & (1u << c))) p.velocity[i][c] += half * p.acceleration[i][c];
+    }
+  }
+}
+
+bool Simulation::place(double h) {
+  auto& p = m_.particles;
+  const auto& g = m_.settings.integrator;
+  const double cx_n = h * h * (0.5 - g.beta), cx = h * h * g.beta;
+  const double cv_n = h * (1.0 - g.gamma), cv = h * g.gamma;
+  const double limit2 = std::pow(g.max_step_displacement, 2);
+  const std::size_t n = p.size();
+  int bad = 0;
+#pragma omp parallel for schedule(static) reduction(max : bad)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t mask = p.prescribed[i];
+    const Vec3 x = x_n_[i] + h * v_n_[i] + cx_n * a_n_[i] + cx * p.acceleration[i];
+    const Vec3 v = v_n_[i] + cv_n * a_n_[i] + cv * p.acceleration[i];
+    if (mask == 0) {
+      p.position[i] = x;
+      p.velocity[i] = v;
+    } else {
+      for (int c = 0; c < 3; ++c)
+        if (!(mask & (1u << c))) {
+          p.position[i][c] = x[c];
+          p.velocity[i][c] = v[c];
         }
-      }
     }
-    const double q = (p.position[i] - x_old).squaredNorm() / (p.radius[i] * p.radius[i]);
-    if (!(q <= limit * limit)) bad = 1;  // also catches NaN
+    if (!((p.position[i] - x_n_[i]).squaredNorm() <= limit2 * p.radius[i] * p.radius[i])) bad = 1;
   }
-  if (bad) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 v = p.velocity[i];
-      const double moved = v.norm() * dt / p.radius[i];
-      if (!(moved <= limit) || !p.position[i].allFinite()) {
-        throw SimulationError(fmt::format(
-            "unstable: particle {} (at {:.6g}, {:.6g}, {:.6g} m) moved {:.3g} radii in step {} at t = {:.6g} s "
-            "(limit integrator.max_step_displacement = {}); speed {:.4g} m/s. The step dt = {:.4g} s may be "
-            "too large for the loads, or the input drives the lattice too hard",
-            i, p.position[i][0], p.position[i][1], p.position[i][2], moved, steps_ + 1, t_new, limit, v.norm(), dt));
-      }
-    }
-    throw SimulationError(fmt::format("unstable: non-finite state in step {} at t = {:.6g} s", steps_ + 1, t_new));
+  return bad == 0;
+}
+
+void Simulation::rotate(double h, double beta, double gamma) {
+  auto& p = m_.particles;
+  const auto& g = m_.settings.integrator;
+  RotationSettings rs;
+  rs.beta = beta;
+  rs.gamma = gamma;
+  const bool from_saved = implicit_;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const RotState s = from_saved ? rot_n_[i] : RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
+    const RotStepResult r = rotation_step(s, p.torque[i], p.inertia[i], h, rs);
+    p.orientation[i] = r.state.q;
+    p.omega[i] = r.state.w;
+    p.omega_dot[i] = r.state.dw;
   }
+  (void)g;
 }
 
 namespace {
@@ -128,6 +256,7 @@ void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, 
 }  // namespace
 
 void Simulation::rod_forces() {
+  ++stats_.force_evaluations;
   auto& r = m_.rods;
   const auto& p = m_.particles;
   const RodLaw law = r.law;
@@ -159,37 +288,42 @@ void Simulation::rod_forces() {
   }
 }
 
-void Simulation::gather() {
+double Simulation::gather() {
   auto& p = m_.particles;
   const auto& r = m_.rods;
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
+  const double d = m_.derived.nn_distance;
+  // Convergence measure of the fixed-point iteration: the largest change of a particle's
+  // force between sweeps, relative to the largest force level in the body, which is the
+  // larger of the net forces and the sums of rod force magnitudes |sigma A| on a particle.
+  // Near equilibrium the net forces are small differences of large rod forces; measuring
+  // against them alone would ask for accuracy below the rounding of the sums.
+  double dmax = 0.0, fmax = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : dmax, fmax)
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();
+    double level = 0.0;
     const Vec3 xi = p.position[i];
     for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
       const Rods::Entry en = r.entries[e];
-      f += r.force_coef[en.rod] * (p.position[en.other] - xi);
+      const double c = r.force_coef[en.rod];
+      f += c * (p.position[en.other] - xi);
+      level += std::abs(c);
     }
+    Vec3 df = f - p.force[i];
+    Vec3 ff = f;
+    const std::uint8_t mask = p.prescribed[i];
+    if (mask)
+      for (int c = 0; c < 3; ++c)
+        if (mask & (1u << c)) df[c] = ff[c] = 0.0;
     p.force[i] = f;
     p.acceleration[i] = p.inv_mass[i] * f;
+    const double d2 = df.squaredNorm();
+    dmax = std::max(dmax, std::isnan(d2) ? HUGE_VAL : d2);
+    fmax = std::max({fmax, ff.squaredNorm(), level * level * d * d});
   }
-}
-
-void Simulation::correct() {
-  auto& p = m_.particles;
-  const double half = 0.5 * dt_;
-  const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t mask = p.prescribed[i];
-    if (mask == 0) {
-      p.velocity[i] += half * p.acceleration[i];
-    } else {
-      for (int c = 0; c < 3; ++c)
-        if (!(mask & (1u << c))) p.velocity[i][c] += half * p.acceleration[i][c];
-    }
-  }
+  if (dmax == 0.0) return 0.0;
+  return fmax > 0.0 ? std::sqrt(dmax / fmax) : HUGE_VAL;
 }
 
 void Simulation::commit() {
@@ -234,15 +368,15 @@ void Simulation::compute_reactions(std::vector<Vec3>& out) const {
     for (auto i : m_.groups[g].members) out[g] -= p.force[i];
 }
 
-void Simulation::account() {
+void Simulation::account(double h) {
   double visc = 0.0;
   for (double v : block_viscous_) visc += v;
-  ledger_.viscous_work += visc * dt_;
+  ledger_.viscous_work += visc * h;
   reaction_old_.swap(reaction_);
   compute_reactions(reaction_);
   for (std::size_t g = 0; g < m_.groups.size(); ++g) {
     const Vec3 du = group_u_new_[g] - group_u_old_[g];
-    const Vec3 v = du / dt_;
+    const Vec3 v = du / h;
     for (int c = 0; c < 3; ++c) {
       if (!(m_.groups[g].dofs & (1u << c))) continue;
       // Work on the body through the reaction, plus the work that changes the prescribed
@@ -252,13 +386,63 @@ void Simulation::account() {
     }
     group_v_[g] = v;
   }
-  time_ += dt_;
-  ++steps_;
+  time_ += h;
+  last_dt_ = h;
+  ++stats_.accepted;
+}
+
+void Simulation::save_state() {
+  const auto& p = m_.particles;
+  x_n_ = p.position;
+  v_n_ = p.velocity;
+  a_n_ = p.acceleration;
+  f_n_ = p.force;
+  if (rotations_) {
+    rot_n_.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) rot_n_[i] = RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
+  }
+}
+
+void Simulation::restore_state() {
+  auto& p = m_.particles;
+  p.position = x_n_;
+  p.velocity = v_n_;
+  p.acceleration = a_n_;
+  p.force = f_n_;
+  if (rotations_)
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      p.orientation[i] = rot_n_[i].q;
+      p.omega[i] = rot_n_[i].w;
+      p.omega_dot[i] = rot_n_[i].dw;
+    }
+}
+
+void Simulation::throw_too_far(double h) const {
+  const auto& p = m_.particles;
+  const double limit = m_.settings.integrator.max_step_displacement;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3 v = p.velocity[i];
+    const double moved = v.norm() * h / p.radius[i];
+    if (!(moved <= limit) || !p.position[i].allFinite())
+      throw SimulationError(fmt::format(
+          "unstable: particle {} (at {:.6g}, {:.6g}, {:.6g} m) moved {:.3g} radii in step {} at t = {:.6g} s "
+          "(limit integrator.max_step_displacement = {}); speed {:.4g} m/s. The step dt = {:.4g} s may be "
+          "too large for the loads, or the input drives the lattice too hard",
+          i, p.position[i][0], p.position[i][1], p.position[i][2], moved, stats_.accepted + 1, time_ + h, limit,
+          v.norm(), h));
+  }
+  throw SimulationError(fmt::format("unstable: non-finite state in step {} at t = {:.6g} s", stats_.accepted + 1,
+                                    time_ + h));
 }
 
 double Simulation::kinetic_energy() const {
   const auto& p = m_.particles;
-  return deterministic_sum(p.size(), [&](std::size_t i) { return 0.5 * p.mass[i] * p.velocity[i].squaredNorm(); });
+  const bool rot = rotations_;
+  return deterministic_sum(p.size(), [&](std::size_t i) {
+    double e = 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+    if (rot) e += rotational_energy(RotState{p.orientation[i], p.omega[i], p.omega_dot[i]}, p.inertia[i]);
+    return e;
+  });
 }
 
 double Simulation::elastic_energy() const {

@@ -1,20 +1,26 @@
 // simulation.h: the time loop's state and the step function with named stages.
 //
-// One step of velocity Verlet is, in order:
-//   predict       half kick v += dt/2 a, drift x += dt v; prescribed components follow
-//                 their group's motion at t + dt; a particle that moves more than
-//                 max_step_displacement radii stops the run
-//   rod_forces    every intact rod evaluated from its committed state: trial shift,
-//                 trial break flag, force (rate term from the half-step velocities)
-//   gather        per particle, the forces of its rods summed in fixed (rod) order
-//   correct       second half kick v += dt/2 a
-//   commit        plastic shifts and breakage of the converged evaluation written back
-//                 (for Verlet every evaluation is final; the Newmark step will iterate
-//                 rod_forces..correct and commit only after convergence)
-//   account       work of the grips, dissipation, time and step counters
+// Both schemes are Newmark's family, x+ = x + dt v + dt^2 ((1/2 - beta) a + beta a+),
+// v+ = v + dt ((1 - gamma) a + gamma a+), and share the stages:
+//   prescribe     group motions at t + dt (displacements and step velocities)
+//   rod_forces    every intact rod evaluated from its COMMITTED state: trial shift, trial
+//                 break flag, force coefficient
+//   gather        per particle, its rods' forces summed in fixed (rod) order; a = f/m
+//   commit        plastic shifts and breakage of the final evaluation written back
+//   account       work of the grips, dissipation, time and counters
+// Explicit (velocity Verlet = beta 0, gamma 1/2, one evaluation per step):
+//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, gather, kick (v += dt/2 a),
+//   rotate, commit, account
+// Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
+//   save, prescribe, then repeat { place (x, v from the latest a+), rotate, rod_forces,
+//   gather } until max|f_k+1 - f_k| <= tol * force level (see gather); then place once more with the final
+//   a+, commit, account. A step that does not converge (or diverges, or moves a particle too
+//   far) is rejected: everything is restored from the saved state, bit for bit, and retried
+//   with a smaller step. The number of sweeps drives the next step size (paper section 3.4).
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "model.h"
@@ -29,20 +35,40 @@ struct EnergyLedger {
   double fracture_energy = 0;   ///< elastic energy lost with broken rods
 };
 
+/// Counters of the step control.
+struct StepStats {
+  std::int64_t accepted = 0;          ///< steps taken
+  std::int64_t rejected = 0;          ///< steps rejected and retried
+  std::int64_t iterations = 0;        ///< fixed-point sweeps of accepted steps
+  std::int64_t force_evaluations = 0; ///< all rod-force evaluations, rejected steps included
+  int max_iterations = 0;             ///< most sweeps an accepted step needed
+  int last_iterations = 0;            ///< sweeps of the last accepted step
+};
+
 class Simulation {
  public:
   explicit Simulation(Model& model);
 
-  /// Advances one step of size dt(). Throws SimulationError when the state blows up.
-  void step();
+  /// Advances one step (Newmark: of at most max_dt, e.g. the time left to the end).
+  /// Throws SimulationError when the state blows up or the step falls below dt_min.
+  void step(double max_dt = std::numeric_limits<double>::infinity());
 
   double time() const { return time_; }
-  std::int64_t steps() const { return steps_; }
+  std::int64_t steps() const { return stats_.accepted; }
+  /// The step size the next step will try (explicit: the fixed step), s.
   double dt() const { return dt_; }
+  /// The size of the last accepted step, s.
+  double last_dt() const { return last_dt_; }
+  bool implicit() const { return implicit_; }
+  const StepStats& stats() const { return stats_; }
   const EnergyLedger& ledger() const { return ledger_; }
   std::size_t broken_rods() const { return broken_; }
 
-  double kinetic_energy() const;
+  /// Rotations are integrated only when on (set by a torque source, or by hand in tests).
+  bool rotations() const { return rotations_; }
+  void set_rotations(bool on) { rotations_ = on; }
+
+  double kinetic_energy() const;  ///< translational + rotational, J
   /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy() const;
   /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum
@@ -53,27 +79,44 @@ class Simulation {
   const Model& model() const { return m_; }
 
  private:
-  void predict();
-  void rod_forces();
-  void gather();
-  void correct();
-  void commit();
-  void account();
+  void step_explicit();
+  bool try_newmark(double h);  // true if converged (state advanced, not yet committed)
 
+  // Stages.
+  void prescribe(double h);
+  bool kick_drift(double h);   // explicit predictor; false if a particle moved too far
+  void kick(double h);         // explicit corrector
+  bool place(double h);        // Newmark positions and velocities from the latest a; false if too far
+  void rotate(double h, double beta, double gamma);
+  void rod_forces();
+  double gather();             // returns the sweep's relative force change (free components)
+  void commit();
+  void account(double h);
+
+  void save_state();
+  void restore_state();
+  [[noreturn]] void throw_too_far(double h) const;
   void compute_reactions(std::vector<Vec3>& out) const;
 
   Model& m_;
+  bool implicit_ = false;
+  bool rotations_ = false;
   double time_ = 0;
-  std::int64_t steps_ = 0;
   double dt_ = 0;
+  double last_dt_ = 0;
   std::size_t broken_ = 0;
   EnergyLedger ledger_;
+  StepStats stats_;
   std::vector<double> block_viscous_;   // per rod block, W
   std::vector<int> block_changed_;      // per rod block: a trial shift or break to commit
   std::vector<Vec3> group_u_old_, group_u_new_;  // group displacements at t and t + dt
   std::vector<Vec3> reaction_, reaction_old_;
   std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
   std::vector<double> group_mass_; // total mass of each group, kg
+  // Start-of-step state for Newmark (predictor and rejection).
+  std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
+  std::vector<RotState> rot_n_;
+  std::vector<double> saved_stress_, saved_coef_;
 };
 
 }  // namespace swarf

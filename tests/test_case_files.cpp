@@ -116,9 +116,17 @@ TEST(CaseFiles, BadEnumValue) {
   expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"left\"")), {"group.side", "\"left\"", "x-"});
 }
 
-TEST(CaseFiles, NewmarkNotYetImplemented) {
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"")),
-                  {"integrator.scheme", "newmark"});
+TEST(CaseFiles, NewmarkOptionsChecked) {
+  EXPECT_EQ(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"")), "");
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\nbeta = 0.7")),
+                  {"integrator.beta", "0.7", "[0, 0.5]"});
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt_min = 1e-6\ndt_max = 1e-7")),
+                  {"integrator.dt_min", "dt_max"});
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\niterations_grow = 12")),
+                  {"integrator.iterations_grow", "iterations_shrink"});
+  // A first step outside [dt_min, dt_max] of the implicit scheme is named.
+  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\ndt = 1e-3")),
+                  {"integrator.dt", "dt_max"});
 }
 
 TEST(CaseFiles, EmptyGroup) {
