@@ -52,7 +52,7 @@ struct IntegratorSettings {
   // Newmark (implicit) step, solved by fixed-point iteration on the new accelerations.
   double beta = 0.25;                 ///< Newmark beta, 1
   double gamma = 0.5;                 ///< Newmark gamma, 1
-  double tolerance = 1e-6;            ///< converged when max|f_k+1 - f_k| <= tolerance * force level (Simulation::gather), 1
+  double tolerance = 1e-6;            ///< converged when the force change or the position correction of a sweep is below this, relative (Simulation::gather), 1
   int max_iterations = 25;            ///< sweeps before the step is rejected
   double dt_min = 0.0;                ///< s; 0 = 1e-3 * stable step. Below it the run stops
   double dt_max = 0.0;                ///< s; 0 = 0.8 x the stable step (the fixed-point limit for beta = 1/4 is 1x)

@@ -13,7 +13,7 @@
 //   rotate, commit, account
 // Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
 //   save, prescribe, then repeat { place (x, v from the latest a+), rotate, rod_forces,
-//   gather } until max|f_k+1 - f_k| <= tol * force level (see gather); then place once more with the final
+//   gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
 //   a+, commit, account. A step that does not converge (or diverges, or moves a particle too
 //   far) is rejected: everything is restored from the saved state, bit for bit, and retried
 //   with a smaller step. The number of sweeps drives the next step size (paper section 3.4).
@@ -89,7 +89,9 @@ class Simulation {
   bool place(double h);        // Newmark positions and velocities from the latest a; false if too far
   void rotate(double h, double beta, double gamma);
   void rod_forces();
-  double gather();             // returns the sweep's relative force change (free components)
+  double gather();             // returns the sweep's relative force change (free components; implicit only)
+  template <bool Measure>
+  double gather_impl();
   void commit();
   void account(double h);
 
@@ -116,7 +118,8 @@ class Simulation {
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<RotState> rot_n_;
-  std::vector<double> saved_stress_, saved_coef_;
+  double sweep_dt_ = 0;             // step size of the current sweep, s
+  double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
 };
 
 }  // namespace swarf
