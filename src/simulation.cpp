@@ -30,6 +30,14 @@ Simulation::Simulation(Model& model) : m_(model) {
   broken_ = m_.rods.broken_count();
 }
 
+void Simulation::set_rotations(bool on) {
+  rotations_ = on;
+  if (!on) return;
+  auto& p = m_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    p.omega_dot[i] = euler_acceleration(to_body(p.orientation[i], p.torque[i]), p.omega[i], p.inertia[i]);
+}
+
 void Simulation::step(double max_dt) {
   if (!implicit_) {
     step_explicit();

@@ -66,7 +66,9 @@ class Simulation {
 
   /// Rotations are integrated only when on (set by a torque source, or by hand in tests).
   bool rotations() const { return rotations_; }
-  void set_rotations(bool on) { rotations_ = on; }
+  /// Turning rotations on makes the angular accelerations consistent with the current torques
+  /// and angular velocities (Euler's equations), as the Newmark update assumes.
+  void set_rotations(bool on);
 
   double kinetic_energy() const;  ///< translational + rotational, J
   /// Recoverable elastic energy of the intact rods, J.
