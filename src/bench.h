@@ -9,7 +9,7 @@ namespace swarf {
 struct BenchOptions {
   std::vector<std::string> cases;        ///< case files; the scene name is the file stem
   std::vector<int> threads{1, 2};
-  long long steps = 0;                   ///< 0 = end_time / dt of the case
+  long long steps = 0;                   ///< 0 = run to the case's end_time
   int repeats = 3;                       ///< the median of the repeats is reported
   std::vector<std::string> overrides;
 };

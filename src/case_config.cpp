@@ -172,6 +172,8 @@ const char* positive(double v) { return v > 0.0 && std::isfinite(v) ? nullptr : 
 const char* positive_or_inf(double v) { return v > 0.0 ? nullptr : "must be positive (inf allowed)"; }
 const char* non_negative(double v) { return v >= 0.0 && std::isfinite(v) ? nullptr : "must be >= 0 and finite"; }
 
+using Vec3Array = std::array<double, 3>;
+
 // Applies one "a.b.c=value" override to the tree.
 void apply_override(toml::table& root, const std::string& arg, std::set<std::string>& overridden) {
   const auto eq = arg.find('=');
@@ -226,6 +228,58 @@ void apply_override(toml::table& root, const std::string& arg, std::set<std::str
   overridden.insert(named);
 }
 
+// The motion keys shared by [[group]] and [[mesh]]: motion, velocity, table_time,
+// table_displacement, with their checks.
+void read_motion(Reader& r, std::string& motion, std::array<double, 3>& velocity, std::vector<double>& table_time,
+                 std::vector<std::array<double, 3>>& table_displacement) {
+    motion = r.string("motion", "fixed", {"fixed", "velocity", "table"});
+    velocity = r.vec3("velocity", velocity);
+    table_time = r.numbers("table_time", {});
+    const toml::node* td = r.get("table_displacement");
+    if (td) {
+      auto a = td->as_array();
+      if (!a) r.fail("table_displacement", td, "must be an array of [x, y, z] displacements in m");
+      for (const auto& row : *a) {
+        auto ra = row.as_array();
+        if (!ra || ra->size() != 3) r.fail("table_displacement", td, "every entry must be [x, y, z] in m");
+        std::array<double, 3> v{};
+        for (int c = 0; c < 3; ++c) {
+          if (auto f = (*ra)[c].as_floating_point()) v[c] = f->get();
+          else if (auto i = (*ra)[c].as_integer()) v[c] = static_cast<double>(i->get());
+          else r.fail("table_displacement", td, "entries must be numbers");
+          if (!std::isfinite(v[c])) r.fail("table_displacement", td, "entries must be finite");
+        }
+        table_displacement.push_back(v);
+      }
+    }
+    if (motion != "velocity" && r.has("velocity"))
+      r.fail("velocity", r.get("velocity"), "is only used with motion = \"velocity\"");
+    if (motion != "table" && (r.has("table_time") || r.has("table_displacement")))
+    {
+      const char* key = r.has("table_time") ? "table_time" : "table_displacement";
+      r.fail(key, r.get(key), "is only used with motion = \"table\"");
+    }
+    if (motion == "velocity" && !r.get("velocity"))
+      r.fail("velocity", nullptr, "motion = \"velocity\" needs a velocity [vx, vy, vz] in m/s");
+    if (motion == "table") {
+      if (table_time.size() < 2 || table_time.size() != table_displacement.size())
+        r.fail("table_time", r.get("table_time"),
+               "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
+      if (table_time[0] != 0.0) r.fail("table_time", r.get("table_time"), "must start at 0 s");
+      for (double u : table_displacement[0])
+        if (u != 0.0) r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
+      for (std::size_t k = 1; k < table_time.size(); ++k)
+        if (!(table_time[k] > table_time[k - 1])) r.fail("table_time", r.get("table_time"), "must be strictly ascending");
+    }
+}
+
+void check_name(Reader& r, const std::string& name) {
+  for (char ch : name)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
+      r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");
+  if (name.empty()) r.fail("name", r.get("name"), "must not be empty");
+}
+
 void read_groups(const toml::table& root, const std::string& source, const std::set<std::string>& ov,
                  CaseSettings& cs) {
   const toml::node* n = root.get("group");
@@ -244,26 +298,7 @@ void read_groups(const toml::table& root, const std::string& source, const std::
     gs.box_min = r.vec3("box_min", gs.box_min);
     gs.box_max = r.vec3("box_max", gs.box_max);
     gs.dofs = r.string("dofs", "xyz", {"x", "y", "z", "xy", "xz", "yz", "xyz"});
-    gs.motion = r.string("motion", "fixed", {"fixed", "velocity", "table"});
-    gs.velocity = r.vec3("velocity", gs.velocity);
-    gs.table_time = r.numbers("table_time", {});
-    const toml::node* td = r.get("table_displacement");
-    if (td) {
-      auto a = td->as_array();
-      if (!a) r.fail("table_displacement", td, "must be an array of [x, y, z] displacements in m");
-      for (const auto& row : *a) {
-        auto ra = row.as_array();
-        if (!ra || ra->size() != 3) r.fail("table_displacement", td, "every entry must be [x, y, z] in m");
-        std::array<double, 3> v{};
-        for (int c = 0; c < 3; ++c) {
-          if (auto f = (*ra)[c].as_floating_point()) v[c] = f->get();
-          else if (auto i = (*ra)[c].as_integer()) v[c] = static_cast<double>(i->get());
-          else r.fail("table_displacement", td, "entries must be numbers");
-          if (!std::isfinite(v[c])) r.fail("table_displacement", td, "entries must be finite");
-        }
-        gs.table_displacement.push_back(v);
-      }
-    }
+    read_motion(r, gs.motion, gs.velocity, gs.table_time, gs.table_displacement);
     const bool has_box = r.has("box_min") || r.has("box_max");
     if (!gs.side.empty() && has_box) {
       const char* key = r.has("box_min") ? "box_min" : "box_max";
@@ -273,32 +308,115 @@ void read_groups(const toml::table& root, const std::string& source, const std::
     if (gs.side.empty() && !has_box) r.fail("side", nullptr, "a group needs side = \"x-\" ... or box_min/box_max (m)");
     for (int c = 0; c < 3; ++c)
       if (gs.box_min[c] > gs.box_max[c]) r.fail("box_min", r.get("box_min"), "must not exceed box_max");
-    if (gs.motion != "velocity" && r.has("velocity"))
-      r.fail("velocity", r.get("velocity"), "is only used with motion = \"velocity\"");
-    if (gs.motion != "table" && (r.has("table_time") || r.has("table_displacement")))
-    {
-      const char* key = r.has("table_time") ? "table_time" : "table_displacement";
-      r.fail(key, r.get(key), "is only used with motion = \"table\"");
-    }
-    for (char ch : gs.name)
-      if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
-        r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");
-    if (gs.name.empty()) r.fail("name", r.get("name"), "must not be empty");
-    if (gs.motion == "velocity" && !r.get("velocity"))
-      r.fail("velocity", nullptr, "motion = \"velocity\" needs a velocity [vx, vy, vz] in m/s");
-    if (gs.motion == "table") {
-      if (gs.table_time.size() < 2 || gs.table_time.size() != gs.table_displacement.size())
-        r.fail("table_time", r.get("table_time"),
-               "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
-      if (gs.table_time[0] != 0.0) r.fail("table_time", r.get("table_time"), "must start at 0 s");
-      for (double u : gs.table_displacement[0])
-        if (u != 0.0) r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
-      for (std::size_t k = 1; k < gs.table_time.size(); ++k)
-        if (!(gs.table_time[k] > gs.table_time[k - 1])) r.fail("table_time", r.get("table_time"), "must be strictly ascending");
-    }
+    check_name(r, gs.name);
     r.finish();
     cs.groups.push_back(gs);
   }
+}
+
+std::string resolve(const std::string& file, const std::string& directory) {
+  std::filesystem::path p(file);
+  if (p.is_relative()) p = std::filesystem::path(directory) / p;
+  return p.string();
+}
+
+void read_contacts_and_bodies(const toml::table& root, const std::string& source, const std::string& directory,
+                              const std::set<std::string>& ov, CaseSettings& cs) {
+  if (const toml::table* t = root.get_as<toml::table>("contact")) {
+    Reader r(t, "contact", source, ov);
+    auto& c = cs.contact;
+    c.enabled = true;
+    c.youngs_modulus = r.number("youngs_modulus", c.youngs_modulus, positive);
+    c.poisson_ratio = r.number("poisson_ratio", c.poisson_ratio,
+                               [](double v) { return v > -1 && v < 0.5 ? nullptr : "must lie in (-1, 0.5)"; });
+    c.restitution = r.number("restitution", c.restitution,
+                             [](double v) { return v >= 0.01 && v <= 1 ? nullptr : "must lie in [0.01, 1]"; });
+    c.friction = r.number("friction", c.friction, non_negative);
+    c.friction_law = r.string("friction_law", c.friction_law, {"spring", "regularized", "none"});
+    c.regularization_speed = r.number("regularization_speed", c.regularization_speed, positive);
+    c.skin = r.number("skin", c.skin, [](double v) { return v > 0 && v <= 2 ? nullptr : "must lie in (0, 2]"; });
+    r.finish();
+  }
+  if (const toml::table* t = root.get_as<toml::table>("environment")) {
+    Reader r(t, "environment", source, ov);
+    cs.gravity = r.vec3("gravity", cs.gravity);
+    r.finish();
+  }
+  if (const toml::node* n = root.get("mesh")) {
+    auto arr = n->as_array();
+    if (!arr || !arr->is_array_of_tables())
+      throw InputError(fmt::format("{}: 'mesh' must be an array of tables ([[mesh]])", source));
+    std::set<std::string> names;
+    for (std::size_t k = 0; k < arr->size(); ++k) {
+      Reader r((*arr)[k].as_table(), "mesh", source, ov);
+      MeshSettings m;
+      m.name = r.string("name", fmt::format("mesh{}", k));
+      check_name(r, m.name);
+      if (!names.insert(m.name).second) r.fail("name", r.get("name"), "two meshes have this name");
+      m.file = r.string("file", "");
+      m.scale = r.number("scale", m.scale, positive);
+      m.origin = r.vec3("origin", m.origin);
+      m.edge1 = r.vec3("edge1", m.edge1);
+      m.edge2 = r.vec3("edge2", m.edge2);
+      if (const toml::node* dn = r.get("divisions")) {
+        auto v = r.numbers("divisions", {});
+        if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) ||
+            v[0] * v[1] > 1e7)
+          r.fail("divisions", dn, "must be two positive integers [n1, n2]");
+        m.divisions = {static_cast<int>(v[0]), static_cast<int>(v[1])};
+      }
+      read_motion(r, m.motion, m.velocity, m.table_time, m.table_displacement);
+      m.youngs_modulus = r.number("youngs_modulus", m.youngs_modulus, positive_or_inf);
+      m.poisson_ratio = r.number("poisson_ratio", m.poisson_ratio,
+                                 [](double v) { return v > -1 && v < 0.5 ? nullptr : "must lie in (-1, 0.5)"; });
+      const bool rect = r.has("edge1") || r.has("edge2") || r.has("origin") || r.has("divisions");
+      if (!m.file.empty() && rect)
+        r.fail("file", r.get("file"), "give either file or a rectangle (origin, edge1, edge2, divisions), not both");
+      if (m.file.empty() && !(r.has("edge1") && r.has("edge2")))
+        r.fail("file", nullptr, "a mesh needs file = \"...stl|obj\" or a rectangle: origin, edge1, edge2 (m)");
+      if (!m.file.empty()) {
+        m.file = resolve(m.file, directory);
+        if (!std::filesystem::exists(m.file)) r.fail("file", r.get("file"), "file not found: " + m.file);
+      } else {
+        const Vec3Array e1 = m.edge1, e2 = m.edge2;
+        const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+                     cz = e1[0] * e2[1] - e1[1] * e2[0];
+        if (!(cx * cx + cy * cy + cz * cz > 0.0)) r.fail("edge2", r.get("edge2"), "edge1 and edge2 must span a rectangle");
+      }
+      r.finish();
+      cs.meshes.push_back(m);
+    }
+  }
+  if (const toml::node* n = root.get("particle")) {
+    auto arr = n->as_array();
+    if (!arr || !arr->is_array_of_tables())
+      throw InputError(fmt::format("{}: 'particle' must be an array of tables ([[particle]])", source));
+    for (std::size_t k = 0; k < arr->size(); ++k) {
+      Reader r((*arr)[k].as_table(), "particle", source, ov);
+      ParticleSettings p;
+      p.position = r.vec3("position", p.position);
+      p.velocity = r.vec3("velocity", p.velocity);
+      p.angular_velocity = r.vec3("angular_velocity", p.angular_velocity);
+      p.radius = r.number("radius", 0.0, positive);
+      if (!r.has("radius")) r.fail("radius", nullptr, "every particle needs a radius in m");
+      if (!r.has("position")) r.fail("position", nullptr, "every particle needs a position [x, y, z] in m");
+      r.finish();
+      cs.particles.push_back(p);
+    }
+  }
+  if (const toml::table* t = root.get_as<toml::table>("particles")) {
+    Reader r(t, "particles", source, ov);
+    cs.particles_file.file = resolve(r.string("file", ""), directory);
+    cs.particles_file.radius = r.number("radius", 0.0, positive);
+    if (!r.has("file")) r.fail("file", nullptr, "[particles] needs file = \"...\" (columns id x y z vx vy vz)");
+    if (!r.has("radius")) r.fail("radius", nullptr, "[particles] needs radius in m");
+    if (!std::filesystem::exists(cs.particles_file.file))
+      r.fail("file", r.get("file"), "file not found: " + cs.particles_file.file);
+    r.finish();
+  }
+  if ((!cs.meshes.empty() || !cs.particles.empty() || !cs.particles_file.file.empty()) && !cs.contact.enabled)
+    throw InputError(fmt::format("{}: meshes and free particles interact only through contacts: add a [contact] "
+                                 "table (youngs_modulus, poisson_ratio, restitution, friction)", source));
 }
 
 }  // namespace
@@ -325,7 +443,9 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     cs.effective_toml = os.str();
   }
   // Top level: only known tables.
-  const std::set<std::string> tables{"workpiece", "material", "rod", "integrator", "group", "uniaxial", "output"};
+  const std::set<std::string> tables{"workpiece", "material", "rod",      "integrator", "group",       "uniaxial",
+                                     "contact",   "mesh",     "particle", "particles",  "environment", "output"};
+  const std::set<std::string> arrays_of_tables{"group", "mesh", "particle"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
     if (!tables.count(key)) {
@@ -333,16 +453,18 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
       if (ov.count(key) || !v.source().begin.line) where += " (--set)";
       else where += ":" + std::to_string(v.source().begin.line);
       throw InputError(fmt::format("{}: unknown table or key '{}' (known: workpiece, material, rod, integrator, "
-                                   "group, uniaxial, output)", where, key));
+                                   "group, uniaxial, contact, mesh, particle, particles, environment, output)",
+                                   where, key));
     }
-    if (key != "group" && !v.is_table())
+    if (!arrays_of_tables.count(key) && !v.is_table())
       throw InputError(fmt::format("{}: '{}' must be a table ([{}])", source, key, key));
   }
   auto table = [&](const char* name) -> const toml::table* { return root.get_as<toml::table>(name); };
 
-  {
+  if (table("workpiece")) {
     Reader r(table("workpiece"), "workpiece", source, ov);
     auto& w = cs.workpiece;
+    w.enabled = true;
     w.lattice_file = r.string("lattice_file", "");
     w.cells = r.ivec3("cells", w.cells);
     w.size = r.vec3("size", w.size);
@@ -400,7 +522,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     g.allow_unstable_dt = r.boolean("allow_unstable_dt", g.allow_unstable_dt);
     g.end_time = r.number("end_time", g.end_time, non_negative);
     g.max_step_displacement = r.number("max_step_displacement", g.max_step_displacement, positive);
-    g.beta = r.number("beta", g.beta, [](double v) { return v >= 0 && v <= 0.5 ? nullptr : "must lie in [0, 0.5]"; });
+    g.beta = r.number("beta", g.beta, [](double v) { return v > 0 && v <= 0.5 ? nullptr : "must lie in (0, 0.5] (beta = 0 is the explicit scheme: use scheme = \"verlet\")"; });
     g.gamma = r.number("gamma", g.gamma, [](double v) { return v >= 0.5 && v <= 1 ? nullptr : "must lie in [0.5, 1]"; });
     g.tolerance = r.number("tolerance", g.tolerance,
                            [](double v) { return v > 0 && v < 1 ? nullptr : "must lie in (0, 1)"; });
@@ -413,6 +535,8 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     g.iterations_shrink = r.integer("iterations_shrink", g.iterations_shrink, 2, 10000);
     if (g.iterations_grow >= g.iterations_shrink)
       r.fail("iterations_grow", r.get("iterations_grow"), "must be below iterations_shrink");
+    if (g.iterations_shrink > g.max_iterations)
+      r.fail("iterations_shrink", r.get("iterations_shrink"), "must not exceed max_iterations");
     auto factor_above_1 = [](double v) { return v > 1 && v <= 10 ? nullptr : "must lie in (1, 10]"; };
     auto factor_below_1 = [](double v) { return v > 0 && v < 1 ? nullptr : "must lie in (0, 1)"; };
     g.grow_factor = r.number("grow_factor", g.grow_factor, factor_above_1);
@@ -442,6 +566,11 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
       if (g.name == "grip_min" || g.name == "grip_max")
         throw InputError(fmt::format("{}: group name '{}' is reserved for the [uniaxial] grips", source, g.name));
   }
+  read_contacts_and_bodies(root, source, directory, ov, cs);
+  if (cs.uniaxial.enabled && !cs.workpiece.enabled)
+    throw InputError(fmt::format("{}: [uniaxial] needs a [workpiece] (the bar)", source));
+  if (!cs.workpiece.enabled && cs.particles.empty() && cs.particles_file.file.empty())
+    throw InputError(fmt::format("{}: no particles: give a [workpiece], [[particle]] tables or [particles] file", source));
   {
     Reader r(table("output"), "output", source, ov);
     auto& o = cs.output;

@@ -16,8 +16,9 @@ namespace swarf {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// [workpiece]: the bonded FCC block.
+/// [workpiece]: the bonded FCC block (optional when [[particle]] or [particles] give particles).
 struct WorkpieceSettings {
+  bool enabled = false;                   ///< true when the table is present
   std::string lattice_file;               ///< HDF5 lattice from 'swarf lattice'; empty = generate
   std::array<int, 3> cells{0, 0, 0};      ///< conventional FCC cells per axis (generate by cells)
   std::array<double, 3> size{0, 0, 0};    ///< box size, m (generate by size, if cells not given)
@@ -97,6 +98,49 @@ struct OutputSettings {
   bool progress = true;               ///< progress line on stderr
 };
 
+/// [contact]: Hertz contacts with friction between unbonded particles and with meshes.
+struct ContactSettings {
+  bool enabled = false;               ///< true when the table is present
+  double youngs_modulus = 200e9;      ///< E of the particles' material for contacts, Pa
+  double poisson_ratio = 0.3;         ///< nu of the particles, 1
+  double restitution = 0.5;           ///< normal coefficient of restitution, 1 (0.01..1)
+  double friction = 0.0;              ///< Coulomb coefficient mu, 1
+  std::string friction_law = "spring";  ///< "spring" (Cundall-Strack, capped by Coulomb), "regularized" (tanh slip law), "none"
+  double regularization_speed = 1e-3; ///< v0 in tanh(|v_t|/v0) of the regularized law, m/s
+  double skin = 0.2;                  ///< Verlet-list skin as a fraction of the largest radius, 1
+};
+
+/// [[mesh]]: a rigid triangle mesh (wall, tool) from a file or a built-in rectangle.
+struct MeshSettings {
+  std::string name;
+  std::string file;                   ///< .stl or .obj; empty = rectangle
+  double scale = 1.0;                 ///< coordinate factor applied to the file (e.g. 1e-3 for mm), 1
+  std::array<double, 3> origin{0, 0, 0};   ///< rectangle corner, m
+  std::array<double, 3> edge1{0, 0, 0};    ///< rectangle edge, m
+  std::array<double, 3> edge2{0, 0, 0};    ///< rectangle edge, m (normal = edge1 x edge2)
+  std::array<int, 2> divisions{1, 1};      ///< rectangle cells along edge1, edge2 (2 triangles each)
+  std::string motion = "fixed";       ///< "fixed", "velocity" or "table" (as groups)
+  std::array<double, 3> velocity{0, 0, 0};             ///< m/s
+  std::vector<double> table_time;                      ///< s
+  std::vector<std::array<double, 3>> table_displacement;  ///< m
+  double youngs_modulus = kInf;       ///< Pa; inf = rigid
+  double poisson_ratio = 0.3;         ///< 1
+};
+
+/// [[particle]]: a single free particle (contact tests, packings written by hand).
+struct ParticleSettings {
+  std::array<double, 3> position{0, 0, 0};          ///< m
+  std::array<double, 3> velocity{0, 0, 0};          ///< m/s
+  std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s (world frame)
+  double radius = 0.0;                              ///< m
+};
+
+/// [particles]: free particles from a text file (columns id x y z vx vy vz, SI units).
+struct ParticlesFileSettings {
+  std::string file;
+  double radius = 0.0;                ///< m
+};
+
 struct CaseSettings {
   std::string source;                 ///< file name, or "<built-in>"
   std::string directory;              ///< directory of the case file (relative paths resolve here)
@@ -106,6 +150,11 @@ struct CaseSettings {
   IntegratorSettings integrator;
   std::vector<GroupSettings> groups;
   UniaxialSettings uniaxial;
+  ContactSettings contact;
+  std::vector<MeshSettings> meshes;
+  std::vector<ParticleSettings> particles;
+  ParticlesFileSettings particles_file;
+  std::array<double, 3> gravity{0, 0, 0};  ///< [environment] gravity, m/s^2
   OutputSettings output;
   std::vector<std::string> overrides; ///< the --set arguments, in order
   std::string effective_toml;         ///< the TOML tree after overrides, as read

@@ -17,8 +17,10 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.nn_distance = 2.0 * d.radius;
   d.cell_edge = lat.cell_edge > 0 ? lat.cell_edge : std::sqrt(2.0) * d.nn_distance;
   const double R = d.radius, rho = cs.material.density;
-  d.particle_mass = cs.material.mass_basis == "sphere" ? rho * 4.0 / 3.0 * M_PI * R * R * R
-                                                       : rho * std::pow(d.nn_distance, 3) / std::sqrt(2.0);
+  // Free particles (no workpiece) are spheres; lattice particles follow mass_basis.
+  d.particle_mass = cs.material.mass_basis == "sphere" || !cs.workpiece.enabled
+                        ? rho * 4.0 / 3.0 * M_PI * R * R * R
+                        : rho * std::pow(d.nn_distance, 3) / std::sqrt(2.0);
   d.rod_area = cs.rod.area > 0 ? cs.rod.area : M_PI * R * R;
   double l0 = d.nn_distance;
   if (!lat.rest_length.empty()) l0 = *std::min_element(lat.rest_length.begin(), lat.rest_length.end());
@@ -32,7 +34,15 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   // with the frequency, and the zone-boundary mode (omega^2 = 8 kb/m) has twice the ratio of
   // the two-particle mode (omega^2 = 2 kb/m) that zeta refers to.
   const double zeta_max = 2.0 * zeta;
-  d.dt_stable = 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
+  d.dt_stable = lat.bonds.empty() ? HUGE_VAL : 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
+  if (cs.contact.enabled) {
+    // Contacts: a fifth of the Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
+    // smallest particle (rho the density of a solid sphere of that mass).
+    const double nu = cs.contact.poisson_ratio, G = cs.contact.youngs_modulus / (2.0 * (1.0 + nu));
+    const double rho_s = m / (4.0 / 3.0 * M_PI * R * R * R);
+    d.rayleigh_time = M_PI * R * std::sqrt(rho_s / G) / (0.1631 * nu + 0.8766);
+    d.dt_stable = std::min(d.dt_stable, 0.2 * d.rayleigh_time);
+  }
   d.wave_speed = d.nn_distance * std::sqrt(kb / m);
 
   const double a = d.cell_edge;
@@ -58,8 +68,9 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && std::isfinite(cs.rod.tensile_strength));
   d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
   d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
-  // The sweep contracts by about (dt/dt_stable)^2 for beta = 1/4: 0.8 of the limit keeps it below 0.64.
-  d.dt_max = g.dt_max > 0 ? g.dt_max : 0.8 * d.dt_stable;
+  // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64
+  // (0.8 of the stable step for beta = 1/4).
+  d.dt_max = g.dt_max > 0 ? g.dt_max : 0.4 / std::sqrt(g.beta) * d.dt_stable;
   if (d.implicit) {
     if (d.dt < d.dt_min || d.dt > d.dt_max)
       throw InputError(fmt::format("{}: the first step dt = {:.6g} s lies outside [dt_min, dt_max] = [{:.6g}, {:.6g}] s "

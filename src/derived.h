@@ -28,6 +28,7 @@ struct Derived {
   double dt_min = 0;               ///< newmark: smallest step before the run stops, s
   double dt_max = 0;               ///< newmark: largest step, s
   double wave_speed = 0;           ///< longitudinal wave speed along [100], c_L = d sqrt(kb/m), m/s
+  double rayleigh_time = 0;        ///< contacts: pi R sqrt(rho/G)/(0.1631 nu + 0.8766); the stable step uses 0.2 of it, s
   // Lattice relations (central springs kb, cubic cell a).
   double c11 = 0;                  ///< 2 kb / a, Pa
   double c12 = 0;                  ///< kb / a (= C44, Cauchy relation), Pa

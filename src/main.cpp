@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   std::string threads_s = "1,2";
   bench->add_option("cases", bo.cases, "Scene case files, e.g. validation/bench/w1.toml")->required();
   bench->add_option("--threads", threads_s, "Thread counts, comma separated (default 1,2)");
-  bench->add_option("--steps", bo.steps, "Steps (default: the case's end_time / dt)");
+  bench->add_option("--steps", bo.steps, "Steps (default: run to the case's end_time)");
   bench->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
   bench->add_option("--set", bo.overrides, "Override a case key (repeatable)")->allow_extra_args(false);
 

@@ -7,6 +7,8 @@
 
 #include "errors.h"
 #include "lattice_file.h"
+#include <fstream>
+#include <sstream>
 
 namespace swarf {
 
@@ -41,6 +43,37 @@ std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const s
   return out;
 }
 
+static Motion motion_from(const std::string& kind, const std::array<double, 3>& velocity,
+                          const std::vector<double>& time, const std::vector<std::array<double, 3>>& displacement) {
+  Motion m;
+  if (kind == "velocity") {
+    m.kind = Motion::Kind::Velocity;
+    m.velocity = Vec3(velocity[0], velocity[1], velocity[2]);
+  } else if (kind == "table") {
+    m.kind = Motion::Kind::Table;
+    m.time = time;
+    for (const auto& u : displacement) m.displacement.emplace_back(u[0], u[1], u[2]);
+  }
+  return m;
+}
+
+static TriangleMesh rectangle_mesh(const MeshSettings& ms) {
+  TriangleMesh m;
+  m.name = ms.name;
+  const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]), e1(ms.edge1[0], ms.edge1[1], ms.edge1[2]),
+      e2(ms.edge2[0], ms.edge2[1], ms.edge2[2]);
+  const int n1 = ms.divisions[0], n2 = ms.divisions[1];
+  for (int b = 0; b <= n2; ++b)
+    for (int a = 0; a <= n1; ++a) m.vertices.push_back(o + (double(a) / n1) * e1 + (double(b) / n2) * e2);
+  auto id = [&](int a, int b) { return b * (n1 + 1) + a; };
+  for (int b = 0; b < n2; ++b)
+    for (int a = 0; a < n1; ++a) {
+      m.triangles.push_back({id(a, b), id(a + 1, b), id(a + 1, b + 1)});
+      m.triangles.push_back({id(a, b), id(a + 1, b + 1), id(a, b + 1)});
+    }
+  return m;
+}
+
 static std::uint8_t dof_mask(const std::string& dofs) {
   std::uint8_t m = 0;
   for (char ch : dofs) m |= static_cast<std::uint8_t>(1u << (ch - 'x'));
@@ -51,7 +84,9 @@ Model build_model(const CaseSettings& cs) {
   Model model;
   model.settings = cs;
   Lattice lat;
-  if (!cs.workpiece.lattice_file.empty()) {
+  if (!cs.workpiece.enabled) {
+    // No workpiece: only free particles.
+  } else if (!cs.workpiece.lattice_file.empty()) {
     lat = read_lattice(cs.workpiece.lattice_file);
   } else {
     FccSpec spec;
@@ -60,6 +95,33 @@ Model build_model(const CaseSettings& cs) {
     spec.size = cs.workpiece.size;
     spec.bond_tolerance = cs.workpiece.bond_tolerance;
     lat = generate_fcc(spec);
+  }
+  model.lattice_particles = lat.position.size();
+  // Free particles follow the lattice (no bonds).
+  std::vector<Vec3> free_velocity, free_spin;
+  for (const auto& ps : cs.particles) {
+    lat.position.emplace_back(ps.position[0], ps.position[1], ps.position[2]);
+    lat.radius.push_back(ps.radius);
+    free_velocity.emplace_back(ps.velocity[0], ps.velocity[1], ps.velocity[2]);
+    free_spin.emplace_back(ps.angular_velocity[0], ps.angular_velocity[1], ps.angular_velocity[2]);
+  }
+  if (!cs.particles_file.file.empty()) {
+    std::ifstream in(cs.particles_file.file);
+    std::string line;
+    int lineno = 0;
+    while (std::getline(in, line)) {
+      ++lineno;
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream ls(line);
+      double id, x, y, z, vx, vy, vz;
+      if (!(ls >> id >> x >> y >> z >> vx >> vy >> vz) || !std::isfinite(x + y + z + vx + vy + vz))
+        throw InputError(fmt::format("{}:{}: expected 'id x y z vx vy vz' (SI units), got '{}'", cs.particles_file.file,
+                                     lineno, line.substr(0, 80)));
+      lat.position.emplace_back(x, y, z);
+      lat.radius.push_back(cs.particles_file.radius);
+      free_velocity.emplace_back(vx, vy, vz);
+      free_spin.emplace_back(Vec3::Zero());
+    }
   }
   model.derived = compute_derived(cs, lat);
   const Derived& d = model.derived;
@@ -76,6 +138,11 @@ Model build_model(const CaseSettings& cs) {
     p.mass[i] = d.particle_mass * s * s * s;
     p.inv_mass[i] = 1.0 / p.mass[i];
     p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
+  }
+  for (std::size_t k = 0; k < free_velocity.size(); ++k) {
+    const std::size_t i = model.lattice_particles + k;
+    p.velocity[i] = free_velocity[k];
+    p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
   }
 
   auto& r = model.rods;
@@ -110,16 +177,8 @@ Model build_model(const CaseSettings& cs) {
         if (in) members.push_back(static_cast<std::int32_t>(i));
       }
     }
-    Motion m;
-    if (gs.motion == "velocity") {
-      m.kind = Motion::Kind::Velocity;
-      m.velocity = Vec3(gs.velocity[0], gs.velocity[1], gs.velocity[2]);
-    } else if (gs.motion == "table") {
-      m.kind = Motion::Kind::Table;
-      m.time = gs.table_time;
-      for (const auto& u : gs.table_displacement) m.displacement.emplace_back(u[0], u[1], u[2]);
-    }
-    add_group(gs.name, std::move(members), dof_mask(gs.dofs), std::move(m));
+    add_group(gs.name, std::move(members), dof_mask(gs.dofs),
+              motion_from(gs.motion, gs.velocity, gs.table_time, gs.table_displacement));
   }
 
   if (cs.uniaxial.enabled) {
@@ -167,6 +226,36 @@ Model build_model(const CaseSettings& cs) {
       if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
     }
   }
+  for (const auto& ms : cs.meshes) {
+    MeshBody mb;
+    mb.name = ms.name;
+    if (!ms.file.empty()) {
+      mb.mesh = read_mesh(ms.file, ms.scale);
+      mb.mesh.name = ms.name;
+    } else {
+      mb.mesh = rectangle_mesh(ms);
+      mb.mesh.validate(cs.source + " [[mesh]] " + ms.name);
+    }
+    mb.youngs_modulus = ms.youngs_modulus;
+    mb.poisson_ratio = ms.poisson_ratio;
+    model.meshes.push_back(std::move(mb));
+    model.mesh_motion.push_back(motion_from(ms.motion, ms.velocity, ms.table_time, ms.table_displacement));
+  }
+  if (cs.contact.enabled) {
+    auto& c = model.contact;
+    c.youngs_modulus = cs.contact.youngs_modulus;
+    c.poisson_ratio = cs.contact.poisson_ratio;
+    c.alpha = restitution_to_alpha(cs.contact.restitution);
+    c.friction = cs.contact.friction;
+    c.law = cs.contact.friction_law == "spring"        ? FrictionLaw::Spring
+            : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
+                                                       : FrictionLaw::None;
+    c.regularization_speed = cs.contact.regularization_speed;
+    double rmax = 0;
+    for (double rr : p.radius) rmax = std::max(rmax, rr);
+    c.skin = cs.contact.skin * rmax;
+  }
+  model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
   return model;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case_config.h"
+#include "contacts.h"
 #include "derived.h"
 #include "fcc_lattice.h"
 #include "particles.h"
@@ -55,7 +56,11 @@ struct Model {
   Rods rods;
   std::vector<Group> groups;
   UniaxialInfo uniaxial;
-  std::size_t lattice_cells[3] = {0, 0, 0};
+  std::size_t lattice_particles = 0;  ///< particles 0..this-1 come from the workpiece; free ones follow
+  std::vector<MeshBody> meshes;       ///< rigid triangle meshes (placement updated by the simulation)
+  std::vector<Motion> mesh_motion;    ///< prescribed translation of each mesh
+  ContactParams contact;              ///< used when settings.contact.enabled
+  Vec3 gravity = Vec3::Zero();        ///< m/s^2
 };
 
 /// Builds the model; throws InputError (naming the file and key) on anything inconsistent.

@@ -80,10 +80,13 @@ void run_case(const RunOptions& opt) {
   const UniaxialInfo& ux = model.uniaxial;
   std::vector<std::string> cols{"time"};
   if (ux.enabled) cols.insert(cols.end(), {"strain", "stress", "stress_predicted", "stress_midplane"});
-  cols.insert(cols.end(), {"step", "dt", "iterations", "kinetic_energy", "elastic_energy", "external_work", "plastic_work",
-                           "viscous_work", "fracture_energy", "energy_error", "broken_rods", "broken_fraction"});
+  cols.insert(cols.end(), {"step", "dt", "iterations", "kinetic_energy", "elastic_energy", "potential_energy",
+                           "external_work", "plastic_work", "viscous_work", "fracture_energy", "energy_error",
+                           "broken_rods", "broken_fraction", "contacts"});
   for (const auto& g : model.groups)
     for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("reaction_{}_{}", g.name, c));
+  for (const auto& mb : model.meshes)
+    for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("force_{}_{}", mb.name, c));
   SeriesWriter series(dir + "/series.csv", cols);
 
   std::unique_ptr<VtkSeries> vtk;
@@ -130,13 +133,17 @@ void run_case(const RunOptions& opt) {
       max_stress = std::max(max_stress, std::abs(s));
       max_mismatch = std::max(max_mismatch, std::abs(s - s_mid));
     }
-    const double ke = sim.kinetic_energy(), ee = sim.elastic_energy();
+    const double ke = sim.kinetic_energy(), ee = sim.elastic_energy(), pe = sim.potential_energy();
     const auto& L = sim.ledger();
-    const double err = L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy);
-    row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke, ee, L.external_work, L.plastic_work, L.viscous_work,
-                           L.fracture_energy, err, double(sim.broken_rods()), double(sim.broken_rods()) / total_rods});
+    const double err = L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy);
+    row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke, ee, pe,
+                           L.external_work, L.plastic_work, L.viscous_work, L.fracture_energy, err,
+                           double(sim.broken_rods()), double(sim.broken_rods()) / total_rods,
+                           double(sim.contacts().enabled() ? sim.contacts().touching() : 0)});
     for (std::size_t g = 0; g < model.groups.size(); ++g)
       for (int c = 0; c < 3; ++c) row.push_back(sim.group_reaction(g)[c]);
+    for (std::size_t k = 0; k < model.meshes.size(); ++k)
+      for (int c = 0; c < 3; ++c) row.push_back(sim.mesh_force(k)[c]);
     series.row(row);
   };
 
@@ -181,7 +188,7 @@ void run_case(const RunOptions& opt) {
   sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
   for (const auto& g : model.groups) sum["counts"]["group_" + g.name] = g.members.size();
   const auto& L = sim.ledger();
-  const double ke = sim.kinetic_energy(), ee = sim.elastic_energy();
+  const double ke = sim.kinetic_energy(), ee = sim.elastic_energy(), pe = sim.potential_energy();
   const StepStats& st = sim.stats();
   sum["run"] = {{"threads", threads},
                 {"scheme", sim.implicit() ? "newmark" : "verlet"},
@@ -203,7 +210,8 @@ void run_case(const RunOptions& opt) {
                     {"plastic_work_J", L.plastic_work},
                     {"viscous_work_J", L.viscous_work},
                     {"fracture_energy_J", L.fracture_energy},
-                    {"energy_error_J", L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy)},
+                    {"potential_energy_J", pe},
+                    {"energy_error_J", L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy)},
                     {"broken_rods", sim.broken_rods()},
                     {"broken_fraction", double(sim.broken_rods()) / total_rods}};
   for (std::size_t g = 0; g < model.groups.size(); ++g) {
@@ -270,7 +278,7 @@ void run_case(const RunOptions& opt) {
                double(st.force_evaluations) / (sim.time() * 1e6));
   fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", sim.broken_rods(),
              model.rods.size(), 100.0 * sim.broken_rods() / total_rods,
-             L.external_work - (ke + ee + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);
+             L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);
 
   if (settings.output.plots) {
     // The summary must exist for the plot script; it is rewritten below with the plot list.

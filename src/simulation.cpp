@@ -23,9 +23,15 @@ Simulation::Simulation(Model& model) : m_(model) {
   group_mass_.assign(ng, 0.0);
   for (std::size_t g = 0; g < ng; ++g)
     for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
+  if (m_.settings.contact.enabled) {
+    contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes);
+    if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) rotations_ = true;
+  }
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
   rod_forces();
+  contact_forces(dt_);
   gather();
+  if (rotations_) set_rotations(true);
   compute_reactions(reaction_);
   broken_ = m_.rods.broken_count();
 }
@@ -61,9 +67,10 @@ void Simulation::step(double max_dt) {
     dt_ = h * g.reject_factor;
     if (dt_ < m_.derived.dt_min)
       throw SimulationError(fmt::format(
-          "the Newmark step did not converge at t = {:.6g} s even with dt = {:.4g} s, below dt_min = {:.4g} s "
-          "(integrator.dt_min); {} sweeps allowed (integrator.max_iterations), tolerance {}",
-          time_, h, m_.derived.dt_min, g.max_iterations, g.tolerance));
+          "the Newmark step did not converge at t = {:.6g} s with dt = {:.4g} s, and the next try ({:.4g} s) "
+          "would be below dt_min = {:.4g} s (integrator.dt_min); {} sweeps allowed (integrator.max_iterations), "
+          "tolerance {}",
+          time_, h, dt_, m_.derived.dt_min, g.max_iterations, g.tolerance));
   }
 }
 
@@ -72,6 +79,7 @@ void Simulation::step_explicit() {
   prescribe(h);
   if (!kick_drift(h)) throw_too_far(h);
   rod_forces();
+  contact_forces(h);
   gather();
   kick(h);
   if (rotations_) rotate(h, 0.0, 0.5);
@@ -92,6 +100,7 @@ bool Simulation::try_newmark(double h) {
     if (!place(h)) return false;
     if (rotations_) rotate(h, g.beta, g.gamma);
     rod_forces();
+    contact_forces(h);
     const double change = gather();
     if (!std::isfinite(change)) return false;
     if (change <= g.tolerance) {
@@ -114,9 +123,21 @@ bool Simulation::try_newmark(double h) {
   return true;
 }
 
+void Simulation::contact_forces(double h) {
+  if (!contacts_.enabled()) return;
+  contacts_.update_lists(m_.particles, m_.rods, rebuild_lists_);
+  rebuild_lists_ = false;
+  contacts_.evaluate(m_.particles, h);
+}
+
 void Simulation::prescribe(double h) {
   auto& p = m_.particles;
   const double t_new = time_ + h;
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    const Vec3 u_old = m_.mesh_motion[k].displacement_at(time_), u_new = m_.mesh_motion[k].displacement_at(t_new);
+    m_.meshes[k].offset = u_new;
+    m_.meshes[k].velocity = (u_new - u_old) / h;
+  }
   for (std::size_t g = 0; g < m_.groups.size(); ++g) {
     group_u_old_[g] = m_.groups[g].motion.displacement_at(time_);
     group_u_new_[g] = m_.groups[g].motion.displacement_at(t_new);
@@ -308,6 +329,8 @@ double Simulation::gather_impl() {
   const auto& r = m_.rods;
   const std::size_t n = p.size();
   const double d = m_.derived.nn_distance;
+  const bool contacts = contacts_.enabled();
+  const Vec3 gravity = m_.gravity;
   // Convergence measure of the fixed-point iteration: the largest change of a particle's
   // force between sweeps, relative to the largest force level in the body, which is the
   // larger of the net forces and the sums of rod force magnitudes |sigma A| on a particle.
@@ -325,6 +348,12 @@ double Simulation::gather_impl() {
       f += c * (p.position[en.other] - xi);
       if constexpr (Measure) level += std::abs(c);
     }
+    if (contacts) {
+      Vec3 tau = Vec3::Zero();
+      contacts_.add_to_particle(i, f, tau);
+      p.torque[i] = tau;
+    }
+    f += p.mass[i] * gravity;
     if constexpr (Measure) {
       Vec3 df = f - p.force[i];
       Vec3 ff = f;
@@ -386,7 +415,9 @@ void Simulation::commit() {
     ledger_.plastic_work += plastic[b];
     ledger_.fracture_energy += fracture[b];
     broken_ += broke[b];
+    if (broke[b]) rebuild_lists_ = true;
   }
+  if (contacts_.enabled()) contacts_.commit();
 }
 
 void Simulation::compute_reactions(std::vector<Vec3>& out) const {
@@ -477,8 +508,17 @@ double Simulation::elastic_energy() const {
   const auto& r = m_.rods;
   const double A = r.area;
   return deterministic_sum(r.size(), [&](std::size_t k) {
-    return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
-  });
+           return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
+         }) +
+         (contacts_.enabled() ? contacts_.elastic_energy() : 0.0);
+}
+
+double Simulation::potential_energy() const {
+  const auto& p = m_.particles;
+  const Vec3 g = m_.gravity;
+  if (g.squaredNorm() == 0.0) return 0.0;
+  return deterministic_sum(p.size(),
+                           [&](std::size_t i) { return -p.mass[i] * g.dot(p.position[i] - p.initial_position[i]); });
 }
 
 }  // namespace swarf

@@ -2,18 +2,20 @@
 //
 // Both schemes are Newmark's family, x+ = x + dt v + dt^2 ((1/2 - beta) a + beta a+),
 // v+ = v + dt ((1 - gamma) a + gamma a+), and share the stages:
-//   prescribe     group motions at t + dt (displacements and step velocities)
+//   prescribe     group and mesh motions at t + dt (displacements and step velocities)
 //   rod_forces    every intact rod evaluated from its COMMITTED state: trial shift, trial
 //                 break flag, force coefficient
+//   contact_forces  Verlet lists updated if needed; every contact evaluated from its
+//                 committed friction history (contacts.h)
 //   gather        per particle, its rods' forces summed in fixed (rod) order; a = f/m
 //   commit        plastic shifts and breakage of the final evaluation written back
 //   account       work of the grips, dissipation, time and counters
 // Explicit (velocity Verlet = beta 0, gamma 1/2, one evaluation per step):
-//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, gather, kick (v += dt/2 a),
+//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, contact_forces, gather, kick (v += dt/2 a),
 //   rotate, commit, account
 // Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
 //   save, prescribe, then repeat { place (x, v from the latest a+), rotate, rod_forces,
-//   gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
+//   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
 //   a+, commit, account. A step that does not converge (or diverges, or moves a particle too
 //   far) is rejected: everything is restored from the saved state, bit for bit, and retried
 //   with a smaller step. The number of sweeps drives the next step size (paper section 3.4).
@@ -71,8 +73,13 @@ class Simulation {
   void set_rotations(bool on);
 
   double kinetic_energy() const;  ///< translational + rotational, J
-  /// Recoverable elastic energy of the intact rods, J.
+  /// Recoverable elastic energy of the intact rods and the contacts, J.
   double elastic_energy() const;
+  /// Potential energy in gravity relative to the initial positions, J.
+  double potential_energy() const;
+  /// Force the particles exert on mesh m, N.
+  Vec3 mesh_force(std::size_t m) const { return contacts_.mesh_force(m); }
+  const ContactSystem& contacts() const { return contacts_; }
   /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum
   /// of the internal forces on its particles).
   Vec3 group_reaction(std::size_t g) const { return reaction_[g]; }
@@ -91,6 +98,7 @@ class Simulation {
   bool place(double h);        // Newmark positions and velocities from the latest a; false if too far
   void rotate(double h, double beta, double gamma);
   void rod_forces();
+  void contact_forces(double h);
   double gather();             // returns the sweep's relative force change (free components; implicit only)
   template <bool Measure>
   double gather_impl();
@@ -120,6 +128,8 @@ class Simulation {
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<RotState> rot_n_;
+  ContactSystem contacts_;
+  bool rebuild_lists_ = false;      // a rod broke: its pair becomes a contact candidate
   double sweep_dt_ = 0;             // step size of the current sweep, s
   double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
 };

@@ -119,7 +119,7 @@ TEST(CaseFiles, BadEnumValue) {
 TEST(CaseFiles, NewmarkOptionsChecked) {
   EXPECT_EQ(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"")), "");
   expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\nbeta = 0.7")),
-                  {"integrator.beta", "0.7", "[0, 0.5]"});
+                  {"integrator.beta", "0.7", "(0, 0.5]"});
   expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt_min = 1e-6\ndt_max = 1e-7")),
                   {"integrator.dt_min", "dt_max"});
   expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\niterations_grow = 12")),

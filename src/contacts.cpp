@@ -1,0 +1,406 @@
+// contacts.cpp: neighbour lists, contact laws and their bookkeeping (see contacts.h).
+#include "contacts.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "overlap_area.h"
+#include "parallel.h"
+#include "particles.h"
+#include "rods.h"
+
+namespace swarf {
+namespace {
+
+// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5).
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// True if particles i and j are joined by an intact rod.
+bool bonded(const Rods& rods, std::int32_t i, std::int32_t j) {
+  if (rods.row_start.empty()) return false;
+  for (std::int32_t e = rods.row_start[i]; e < rods.row_start[i + 1]; ++e)
+    if (rods.entries[e].other == j) return rods.intact[rods.entries[e].rod] != 0;
+  return false;
+}
+
+struct Grid {
+  Vec3 lo;
+  double cell = 1;
+  std::array<std::int64_t, 3> n{1, 1, 1};
+  std::vector<std::int64_t> start;     // counting-sort offsets per cell
+  std::vector<std::int32_t> items;
+
+  std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
+    std::array<std::int64_t, 3> c{};
+    for (int k = 0; k < 3; ++k) c[k] = std::clamp<std::int64_t>(std::int64_t(std::floor((p[k] - lo[k]) / cell)), 0, n[k] - 1);
+    return c;
+  }
+  std::int64_t linear(const std::array<std::int64_t, 3>& c) const { return (c[2] * n[1] + c[1]) * n[0] + c[0]; }
+};
+
+}  // namespace
+
+void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes) {
+  enabled_ = true;
+  prm_ = params;
+  meshes_ = meshes;
+  tri_mesh_.clear();
+  tri_local_.clear();
+  for (std::size_t m = 0; m < meshes->size(); ++m)
+    for (std::size_t t = 0; t < (*meshes)[m].mesh.triangles.size(); ++t) {
+      tri_mesh_.push_back(static_cast<std::int32_t>(m));
+      tri_local_.push_back(static_cast<std::int32_t>(t));
+    }
+  x_build_.clear();
+  prow_.assign(n_particles + 1, 0);
+  trow_.assign(n_particles + 1, 0);
+}
+
+void ContactSystem::update_lists(const Particles& p, const Rods& rods, bool force) {
+  if (!enabled_) return;
+  bool rebuild = force || x_build_.size() != p.size();
+  if (!rebuild) {
+    const double half = 0.5 * prm_.skin;
+    double mesh_move = 0.0;
+    for (std::size_t m = 0; m < meshes_->size(); ++m)
+      mesh_move = std::max(mesh_move, ((*meshes_)[m].offset - mesh_build_[m]).norm());
+    double worst = 0.0;
+    const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) reduction(max : worst)
+    for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, (p.position[i] - x_build_[i]).squaredNorm());
+    // A particle and a mesh moving towards each other each use up part of the skin.
+    rebuild = std::sqrt(worst) + mesh_move > half;
+  }
+  if (rebuild) build(p, rods);
+}
+
+void ContactSystem::build(const Particles& p, const Rods& rods) {
+  ++builds_;
+  const std::size_t n = p.size();
+  max_radius_ = 0;
+  Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
+  for (std::size_t i = 0; i < n; ++i) {
+    max_radius_ = std::max(max_radius_, p.radius[i]);
+    lo = lo.cwiseMin(p.position[i]);
+    hi = hi.cwiseMax(p.position[i]);
+  }
+  const double skin = prm_.skin;
+  Grid g;
+  g.cell = 2.0 * max_radius_ + skin;
+  // Keep the grid to about a few cells per particle even if particles fly far apart.
+  for (;;) {
+    for (int k = 0; k < 3; ++k) g.n[k] = std::max<std::int64_t>(1, std::int64_t((hi[k] - lo[k]) / g.cell) + 1);
+    if (double(g.n[0]) * double(g.n[1]) * double(g.n[2]) <= 8.0 * double(n) + 64.0) break;
+    g.cell *= 1.5;
+  }
+  g.lo = lo;
+  const std::size_t ncell = static_cast<std::size_t>(g.n[0] * g.n[1] * g.n[2]);
+  std::vector<std::int64_t> cell_id(n);
+  g.start.assign(ncell + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    cell_id[i] = g.linear(g.cell_of(p.position[i]));
+    ++g.start[cell_id[i] + 1];
+  }
+  for (std::size_t c = 1; c <= ncell; ++c) g.start[c] += g.start[c - 1];
+  g.items.assign(n, 0);
+  {
+    std::vector<std::int64_t> fill(g.start.begin(), g.start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) g.items[fill[cell_id[i]]++] = static_cast<std::int32_t>(i);
+  }
+
+  // Sphere-sphere candidates, i < j, per particle then concatenated in particle order.
+  std::vector<std::vector<std::int32_t>> cand(n);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = g.cell_of(p.position[i]);
+    auto& out = cand[i];
+    for (std::int64_t dz = -1; dz <= 1; ++dz)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+          const std::array<std::int64_t, 3> o{c[0] + dx, c[1] + dy, c[2] + dz};
+          if (o[0] < 0 || o[1] < 0 || o[2] < 0 || o[0] >= g.n[0] || o[1] >= g.n[1] || o[2] >= g.n[2]) continue;
+          const auto l = g.linear(o);
+          for (std::int64_t s = g.start[l]; s < g.start[l + 1]; ++s) {
+            const std::int32_t j = g.items[s];
+            if (j <= static_cast<std::int32_t>(i)) continue;
+            const double reach = p.radius[i] + p.radius[j] + skin;
+            if ((p.position[j] - p.position[i]).squaredNorm() > reach * reach) continue;
+            if (bonded(rods, static_cast<std::int32_t>(i), j)) continue;
+            out.push_back(j);
+          }
+        }
+    std::sort(out.begin(), out.end());
+  }
+  std::vector<Pair> pairs;
+  {
+    std::size_t total = 0;
+    for (const auto& c : cand) total += c.size();
+    pairs.reserve(total);
+    for (std::size_t i = 0; i < n; ++i)
+      for (auto j : cand[i]) pairs.push_back(Pair{static_cast<std::int32_t>(i), j, Vec3::Zero()});
+  }
+  // Carry the committed histories over (both lists sorted by (i, j)).
+  {
+    std::size_t k = 0;
+    for (auto& q : pairs) {
+      while (k < pairs_.size() && (pairs_[k].i < q.i || (pairs_[k].i == q.i && pairs_[k].j < q.j))) ++k;
+      if (k < pairs_.size() && pairs_[k].i == q.i && pairs_[k].j == q.j) q.history = pairs_[k].history;
+    }
+  }
+  pairs_.swap(pairs);
+
+  // Sphere-triangle candidates: each triangle is binned into the cells its box (grown by the
+  // reach) overlaps; each particle tests the triangles of its own cell.
+  std::vector<TriPair> tris;
+  if (!tri_mesh_.empty()) {
+    std::vector<std::vector<std::int32_t>> in_cell(ncell);
+    const double reach = max_radius_ + skin;
+    for (std::size_t t = 0; t < tri_mesh_.size(); ++t) {
+      const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
+      const auto& tri = mb.mesh.triangles[tri_local_[t]];
+      Vec3 tlo = Vec3::Constant(HUGE_VAL), thi = Vec3::Constant(-HUGE_VAL);
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 v = mb.mesh.vertices[tri[k]] + mb.offset;
+        tlo = tlo.cwiseMin(v);
+        thi = thi.cwiseMax(v);
+      }
+      tlo.array() -= reach;
+      thi.array() += reach;
+      bool outside = false;
+      for (int k = 0; k < 3; ++k) outside = outside || thi[k] < lo[k] || tlo[k] > hi[k];
+      if (outside) continue;
+      const auto c0 = g.cell_of(tlo), c1 = g.cell_of(thi);
+      for (std::int64_t z = c0[2]; z <= c1[2]; ++z)
+        for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+          for (std::int64_t x = c0[0]; x <= c1[0]; ++x) in_cell[g.linear({x, y, z})].push_back(static_cast<std::int32_t>(t));
+    }
+    std::vector<std::vector<std::int32_t>> tc(n);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& list = in_cell[cell_id[i]];
+      for (auto t : list) {
+        const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
+        const auto& tri = mb.mesh.triangles[tri_local_[t]];
+        const Vec3 q = closest_on_triangle(p.position[i], mb.mesh.vertices[tri[0]] + mb.offset,
+                                           mb.mesh.vertices[tri[1]] + mb.offset, mb.mesh.vertices[tri[2]] + mb.offset);
+        const double r = p.radius[i] + skin;
+        if ((q - p.position[i]).squaredNorm() <= r * r) tc[i].push_back(t);
+      }
+      std::sort(tc[i].begin(), tc[i].end());
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (auto t : tc[i]) tris.push_back(TriPair{static_cast<std::int32_t>(i), t, Vec3::Zero()});
+    std::size_t k = 0;
+    for (auto& q : tris) {
+      while (k < tris_.size() && (tris_[k].i < q.i || (tris_[k].i == q.i && tris_[k].tri < q.tri))) ++k;
+      if (k < tris_.size() && tris_[k].i == q.i && tris_[k].tri == q.tri) q.history = tris_[k].history;
+    }
+  }
+  tris_.swap(tris);
+
+  // Per-particle rows.
+  prow_.assign(n + 1, 0);
+  for (const auto& q : pairs_) {
+    ++prow_[q.i + 1];
+    ++prow_[q.j + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i) prow_[i + 1] += prow_[i];
+  pent_.assign(prow_.back(), 0);
+  {
+    std::vector<std::int32_t> fill(prow_.begin(), prow_.end() - 1);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      pent_[fill[pairs_[k].i]++] = static_cast<std::int32_t>(2 * k);
+      pent_[fill[pairs_[k].j]++] = static_cast<std::int32_t>(2 * k + 1);
+    }
+  }
+  trow_.assign(n + 1, 0);
+  for (const auto& q : tris_) ++trow_[q.i + 1];
+  for (std::size_t i = 0; i < n; ++i) trow_[i + 1] += trow_[i];
+  tent_.resize(tris_.size());
+  for (std::size_t k = 0; k < tris_.size(); ++k) tent_[k] = static_cast<std::int32_t>(k);  // tris_ sorted by particle
+
+  const std::size_t np = pairs_.size(), nt = tris_.size();
+  pf_.assign(np, Vec3::Zero());
+  pti_.assign(np, Vec3::Zero());
+  ptj_.assign(np, Vec3::Zero());
+  ph_.assign(np, Vec3::Zero());
+  pe_.assign(np, 0.0);
+  tf_.assign(nt, Vec3::Zero());
+  tti_.assign(nt, Vec3::Zero());
+  th_.assign(nt, Vec3::Zero());
+  te_.assign(nt, 0.0);
+  x_build_ = p.position;
+  mesh_build_.resize(meshes_->size());
+  for (std::size_t m = 0; m < meshes_->size(); ++m) mesh_build_[m] = (*meshes_)[m].offset;
+}
+
+void ContactSystem::evaluate(const Particles& p, double h) {
+  if (!enabled_) return;
+  const double mu = prm_.friction;
+  const FrictionLaw law = prm_.law;
+  const double E = prm_.youngs_modulus, nu = prm_.poisson_ratio;
+  const double G = E / (2.0 * (1.0 + nu));
+  const double inv_E_pp = 2.0 * (1.0 - nu * nu) / E;     // 1/E* of two particles
+  const double inv_G_pp = 2.0 * (2.0 - nu) / G;          // 1/G* (Mindlin)
+  const double alpha = prm_.alpha, v0 = prm_.regularization_speed;
+
+  // Tangential force on body j from the relative tangential velocity vt (j relative to i),
+  // the committed history and the normal force; returns the trial history through 'hist'.
+  auto friction = [&](const Vec3& n, const Vec3& vt, double fn, double kt, Vec3& hist) -> Vec3 {
+    if (law == FrictionLaw::None || mu == 0.0) {
+      hist = Vec3::Zero();
+      return Vec3::Zero();
+    }
+    if (law == FrictionLaw::Regularized) {
+      hist = Vec3::Zero();
+      const double s = vt.norm();
+      if (s == 0.0) return Vec3::Zero();
+      return (-mu * fn * std::tanh(s / v0) / s) * vt;
+    }
+    // Cundall-Strack spring: the history, kept in the tangent plane, grows with the slip.
+    Vec3 xi = hist - hist.dot(n) * n + h * vt;
+    Vec3 ft = -kt * xi;
+    const double cap = mu * fn, f = ft.norm();
+    if (f > cap) {
+      ft *= cap / f;
+      xi = kt > 0.0 ? Vec3(-ft / kt) : Vec3::Zero();
+    }
+    hist = xi;
+    return ft;
+  };
+
+  const std::size_t np = pairs_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::int32_t i = pairs_[k].i, j = pairs_[k].j;
+    const Vec3 d = p.position[j] - p.position[i];
+    const double ri = p.radius[i], rj = p.radius[j];
+    const double dist2 = d.squaredNorm(), sum = ri + rj;
+    if (dist2 >= sum * sum) {
+      pf_[k] = pti_[k] = ptj_[k] = ph_[k] = Vec3::Zero();
+      pe_[k] = 0.0;
+      continue;
+    }
+    const double dist = std::sqrt(dist2);
+    const Vec3 n = d / dist;
+    const double delta = sum - dist;
+    const double rstar = ri * rj / sum;
+    const double mstar = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+    HertzLaw hz;
+    hz.stiffness = 4.0 / 3.0 / inv_E_pp * std::sqrt(rstar);
+    hz.damping = alpha * std::sqrt(mstar * hz.stiffness);
+    const Vec3 wi = to_world(p.orientation[i], p.omega[i]), wj = to_world(p.orientation[j], p.omega[j]);
+    const Vec3 vrel = p.velocity[j] + wj.cross(-rj * n) - p.velocity[i] - wi.cross(ri * n);
+    const double vn = vrel.dot(n);
+    const double fn = hz.force(delta, -vn);
+    const Vec3 vt = vrel - vn * n;
+    const double kt = 8.0 / inv_G_pp * std::sqrt(rstar * delta);
+    Vec3 hist = pairs_[k].history;
+    const Vec3 ft_j = friction(n, vt, fn, kt, hist);
+    pf_[k] = -fn * n - ft_j;
+    pti_[k] = (ri * n).cross(-ft_j);
+    ptj_[k] = (-rj * n).cross(ft_j);
+    ph_[k] = hist;
+    pe_[k] = 0.4 * hz.stiffness * delta * delta * std::sqrt(delta);
+  }
+
+  const std::size_t nt = tris_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < nt; ++k) {
+    const std::int32_t i = tris_[k].i, t = tris_[k].tri;
+    const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
+    const auto& tri = mb.mesh.triangles[tri_local_[t]];
+    const double R = p.radius[i];
+    const SphereTriangleHit hit =
+        sphere_triangle(p.position[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
+                        mb.mesh.vertices[tri[2]] + mb.offset);
+    if (!hit.touching) {
+      tf_[k] = tti_[k] = th_[k] = Vec3::Zero();
+      te_[k] = 0.0;
+      continue;
+    }
+    const Vec3 n = hit.normal;  // from the wall towards the sphere
+    const double inv_E = inverse_effective_modulus(E, nu, mb.youngs_modulus, mb.poisson_ratio);
+    const double Gw = mb.youngs_modulus / (2.0 * (1.0 + mb.poisson_ratio));
+    const double inv_G = (2.0 - nu) / G + (std::isfinite(Gw) ? (2.0 - mb.poisson_ratio) / Gw : 0.0);
+    HertzLaw hz;
+    hz.stiffness = 4.0 / 3.0 / inv_E * std::sqrt(R);
+    hz.damping = alpha * std::sqrt(p.mass[i] * hz.stiffness);
+    const Vec3 wi = to_world(p.orientation[i], p.omega[i]);
+    const Vec3 vrel = p.velocity[i] + wi.cross(-R * n) - mb.velocity;  // sphere relative to the wall
+    const double vn = vrel.dot(n);
+    const double fn = hit.weight * hz.force(hit.overlap, -vn);
+    const Vec3 vt = vrel - vn * n;
+    const double kt = hit.weight * 8.0 / inv_G * std::sqrt(R * hit.overlap);
+    Vec3 hist = tris_[k].history;
+    // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
+    const Vec3 ft = friction(n, vt, fn, kt, hist);
+    tf_[k] = fn * n + ft;
+    tti_[k] = (-R * n).cross(ft);
+    th_[k] = hist;
+    te_[k] = hit.weight * 0.4 * hz.stiffness * hit.overlap * hit.overlap * std::sqrt(hit.overlap);
+  }
+}
+
+void ContactSystem::add_to_particle(std::size_t i, Vec3& force, Vec3& torque) const {
+  for (std::int32_t e = prow_[i]; e < prow_[i + 1]; ++e) {
+    const std::int32_t code = pent_[e], k = code >> 1;
+    if (code & 1) {
+      force -= pf_[k];
+      torque += ptj_[k];
+    } else {
+      force += pf_[k];
+      torque += pti_[k];
+    }
+  }
+  for (std::int32_t e = trow_[i]; e < trow_[i + 1]; ++e) {
+    force += tf_[tent_[e]];
+    torque += tti_[tent_[e]];
+  }
+}
+
+void ContactSystem::commit() {
+  for (std::size_t k = 0; k < pairs_.size(); ++k) pairs_[k].history = ph_[k];
+  for (std::size_t k = 0; k < tris_.size(); ++k) tris_[k].history = th_[k];
+}
+
+Vec3 ContactSystem::mesh_force(std::size_t m) const {
+  Vec3 f = Vec3::Zero();
+  for (std::size_t k = 0; k < tris_.size(); ++k)
+    if (tri_mesh_[tris_[k].tri] == static_cast<std::int32_t>(m)) f -= tf_[k];
+  return f;
+}
+
+double ContactSystem::elastic_energy() const {
+  double e = 0.0;
+  for (double v : pe_) e += v;
+  for (double v : te_) e += v;
+  return e;
+}
+
+std::size_t ContactSystem::touching() const {
+  std::size_t c = 0;
+  for (double v : pe_) c += v > 0.0;
+  for (double v : te_) c += v > 0.0;
+  return c;
+}
+
+}  // namespace swarf

@@ -1,0 +1,113 @@
+// contacts.h: Hertz contacts with friction between unbonded spheres and between spheres and
+// triangles (paper section 4; physics notes section 3).
+//
+// Neighbour search: cell lists build Verlet lists of candidate pairs within the contact
+// distance plus a skin; the lists are rebuilt when a particle (or a mesh) has moved more
+// than half the skin since the last build, so the search costs O(N) and happens rarely.
+// Bonded pairs are not contact pairs; a pair whose rod broke becomes one at the next build
+// (the break forces a rebuild). Lists are sorted, so results do not depend on threads.
+//
+// Each contact is evaluated as a pure function of the current state and its COMMITTED
+// friction history (the Cundall-Strack spring); the trial history is committed with the
+// rods after a step converged. Histories follow their pair across rebuilds.
+//
+// Sphere-triangle: each triangle in reach contributes (Ao/Ac) (Hertz force) along its normal,
+// Ao/Ac being the exact fraction of the sphere's cut circle inside the triangle
+// (overlap_area.h), so flat surfaces push the same however they are triangulated.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hertz.h"
+#include "mesh.h"
+#include "vec3.h"
+
+namespace swarf {
+
+struct Particles;
+struct Rods;
+
+enum class FrictionLaw { None, Spring, Regularized };
+
+/// Material and law parameters, derived once from [contact] and the meshes.
+struct ContactParams {
+  double youngs_modulus = 0, poisson_ratio = 0;  ///< particles, Pa and 1
+  double alpha = 0;                 ///< damping coefficient from the restitution (hertz.h), 1
+  double friction = 0;              ///< mu, 1
+  FrictionLaw law = FrictionLaw::None;
+  double regularization_speed = 1e-3;  ///< m/s
+  double skin = 0;                  ///< Verlet skin, m
+};
+
+/// A rigid triangle mesh with its current placement (rigid translation of the reference).
+struct MeshBody {
+  std::string name;
+  TriangleMesh mesh;          ///< reference vertices, m
+  double youngs_modulus = 0;  ///< Pa (inf = rigid)
+  double poisson_ratio = 0;   ///< 1
+  Vec3 offset = Vec3::Zero();    ///< current translation from the reference, m
+  Vec3 velocity = Vec3::Zero();  ///< current velocity, m/s
+};
+
+class ContactSystem {
+ public:
+  void setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes);
+  bool enabled() const { return enabled_; }
+
+  /// Rebuilds the Verlet lists if anything moved more than half the skin (or 'force').
+  void update_lists(const Particles& p, const Rods& rods, bool force);
+
+  /// Evaluates every contact at the current state over a step of size h (s) from the
+  /// committed histories; fills per-contact forces and torques and trial histories.
+  void evaluate(const Particles& p, double h);
+
+  /// Adds contact force and torque on particle i (fixed order), N and N m.
+  void add_to_particle(std::size_t i, Vec3& force, Vec3& torque) const;
+
+  /// Writes the trial histories back (after a converged step).
+  void commit();
+
+  /// Force the particles exert on mesh m (sum over its contacts, fixed order), N.
+  Vec3 mesh_force(std::size_t m) const;
+  /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
+  double elastic_energy() const;
+  /// Current number of touching sphere-sphere and sphere-triangle contacts.
+  std::size_t touching() const;
+  std::size_t list_builds() const { return builds_; }
+
+ private:
+  struct Pair {  // sphere-sphere, i < j
+    std::int32_t i, j;
+    Vec3 history = Vec3::Zero();  // committed tangential spring displacement, m
+  };
+  struct TriPair {  // sphere-triangle
+    std::int32_t i, tri;  // tri: global triangle index
+    Vec3 history = Vec3::Zero();
+  };
+  void build(const Particles& p, const Rods& rods);
+
+  bool enabled_ = false;
+  ContactParams prm_;
+  std::vector<MeshBody>* meshes_ = nullptr;
+  std::vector<std::int32_t> tri_mesh_, tri_local_;  // global triangle -> mesh, local index
+  double max_radius_ = 0;
+  std::size_t builds_ = 0;
+
+  std::vector<Pair> pairs_;
+  std::vector<TriPair> tris_;
+  // Per-contact results of the last evaluation.
+  std::vector<Vec3> pf_, pti_, ptj_, ph_;   // force on i, torque on i, torque on j, trial history
+  std::vector<double> pe_;                  // elastic energy
+  std::vector<Vec3> tf_, tti_, th_;         // force on the sphere, torque on it, trial history
+  std::vector<double> te_;
+  // Per-particle lists: pair index * 2 + side (0: i, 1: j); triangle contacts by index.
+  std::vector<std::int32_t> prow_, pent_, trow_, tent_;
+  // Reference state of the last build.
+  std::vector<Vec3> x_build_;
+  std::vector<Vec3> mesh_build_;
+};
+
+}  // namespace swarf

@@ -1,0 +1,82 @@
+// overlap_area.cpp: circle-triangle intersection area (see overlap_area.h).
+#include "overlap_area.h"
+
+#include <cmath>
+
+namespace swarf {
+namespace {
+
+inline double cross(const Vec2& u, const Vec2& v) { return u[0] * v[1] - u[1] * v[0]; }
+
+// Signed area of the sector of radius r from direction u to direction v (the shorter way).
+inline double sector(const Vec2& u, const Vec2& v, double r) {
+  return 0.5 * r * r * std::atan2(cross(u, v), u.dot(v));
+}
+
+}  // namespace
+
+double circle_wedge_area(const Vec2& a, const Vec2& b, double r) {
+  const double r2 = r * r;
+  const double a2 = a.squaredNorm(), b2 = b.squaredNorm();
+  const bool a_in = a2 <= r2, b_in = b2 <= r2;
+  if (a_in && b_in) return 0.5 * cross(a, b);
+  // Points a + t (b - a) on the circle: |d|^2 t^2 + 2 (a.d) t + |a|^2 - r^2 = 0.
+  const Vec2 d = b - a;
+  const double A = d.squaredNorm();
+  if (A == 0.0) return 0.0;
+  const double B = a.dot(d), C = a2 - r2;
+  const double disc = B * B - A * C;
+  if (a_in) {  // leaves the circle once
+    const double t = (-B + std::sqrt(std::max(0.0, disc))) / A;
+    const Vec2 p = a + t * d;
+    return 0.5 * cross(a, p) + sector(p, b, r);
+  }
+  if (b_in) {  // enters the circle once
+    const double t = (-B - std::sqrt(std::max(0.0, disc))) / A;
+    const Vec2 p = a + t * d;
+    return sector(a, p, r) + 0.5 * cross(p, b);
+  }
+  // Both outside: the segment may cross the circle twice.
+  if (disc > 0.0) {
+    const double s = std::sqrt(disc);
+    const double t1 = (-B - s) / A, t2 = (-B + s) / A;
+    if (t1 > 0.0 && t2 < 1.0) {
+      const Vec2 p1 = a + t1 * d, p2 = a + t2 * d;
+      return sector(a, p1, r) + 0.5 * cross(p1, p2) + sector(p2, b, r);
+    }
+  }
+  return sector(a, b, r);
+}
+
+double circle_triangle_area(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
+  const double s = circle_wedge_area(a, b, r) + circle_wedge_area(b, c, r) + circle_wedge_area(c, a, r);
+  return std::abs(s);
+}
+
+SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  SphereTriangleHit h;
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+  Vec3 n = e1.cross(e2);
+  const double n_len = n.norm();
+  if (!(n_len > 0.0)) return h;  // degenerate (meshes are checked on reading)
+  n /= n_len;
+  const double dist = (c - p0).dot(n);
+  if (std::abs(dist) >= R) return h;
+  const double rho2 = R * R - dist * dist;
+  const Vec3 centre = c - dist * n;
+  // In-plane coordinates relative to the circle centre.
+  const Vec3 u = e1 / e1.norm();
+  const Vec3 v = n.cross(u);
+  auto to2 = [&](const Vec3& p) { return Vec2((p - centre).dot(u), (p - centre).dot(v)); };
+  const double area = circle_triangle_area(to2(p0), to2(p1), to2(p2), std::sqrt(rho2));
+  if (!(area > 0.0)) return h;
+  h.touching = true;
+  h.distance = dist;
+  h.overlap = R - std::abs(dist);
+  h.weight = area / (M_PI * rho2);
+  h.normal = dist >= 0.0 ? n : Vec3(-n);
+  h.point = centre;
+  return h;
+}
+
+}  // namespace swarf
