@@ -36,9 +36,21 @@ Simulation::Simulation(Model& model) : m_(model) {
   broken_ = m_.rods.broken_count();
 }
 
+void Simulation::update_free_to_rotate() {
+  // Rods act at the centres and are fixed to the particles (paper section 4.5): a bonded
+  // particle turns with its body, not by itself; letting it spin would make it a free roller
+  // under friction. Only particles without intact rods rotate.
+  const auto& p = m_.particles;
+  const auto& r = m_.rods;
+  free_to_rotate_.assign(p.size(), 1);
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if (r.intact[k]) free_to_rotate_[r.ends[k][0]] = free_to_rotate_[r.ends[k][1]] = 0;
+}
+
 void Simulation::set_rotations(bool on) {
   rotations_ = on;
   if (!on) return;
+  update_free_to_rotate();
   auto& p = m_.particles;
   for (std::size_t i = 0; i < p.size(); ++i)
     p.omega_dot[i] = euler_acceleration(to_body(p.orientation[i], p.torque[i]), p.omega[i], p.inertia[i]);
@@ -240,6 +252,7 @@ void Simulation::rotate(double h, double beta, double gamma) {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (!free_to_rotate_[i]) continue;
     const RotState s = from_saved ? rot_n_[i] : RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
     const RotStepResult r = rotation_step(s, p.torque[i], p.inertia[i], h, rs);
     p.orientation[i] = r.state.q;
@@ -418,6 +431,7 @@ void Simulation::commit() {
     if (broke[b]) rebuild_lists_ = true;
   }
   if (contacts_.enabled()) contacts_.commit();
+  if (rebuild_lists_ && rotations_) update_free_to_rotate();
 }
 
 void Simulation::compute_reactions(std::vector<Vec3>& out) const {

@@ -105,6 +105,7 @@ class Simulation {
   void commit();
   void account(double h);
 
+  void update_free_to_rotate();
   void save_state();
   void restore_state();
   [[noreturn]] void throw_too_far(double h) const;
@@ -129,6 +130,7 @@ class Simulation {
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<RotState> rot_n_;
   ContactSystem contacts_;
+  std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods
   bool rebuild_lists_ = false;      // a rod broke: its pair becomes a contact candidate
   double sweep_dt_ = 0;             // step size of the current sweep, s
   double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2

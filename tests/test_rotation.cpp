@@ -128,11 +128,13 @@ TEST(Rotation, ConstantTorqueFollowsTheClosedForm) {
 }
 
 TEST(Rotation, SimulationStageSpinsParticles) {
-  // A lattice with the rotational stage on: free particles spin at constant rate (spheres,
-  // no torque), both schemes, and the kinetic energy includes rotation.
+  // With the rotational stage on, free spheres without torque spin at a constant rate, in
+  // both schemes, and the kinetic energy includes rotation.
   for (const char* scheme : {"verlet", "newmark"}) {
-    Model m = build_model(parse_case(std::string("[workpiece]\ncells = [1, 1, 1]\nradius = 0.5e-3\n"
-                                                 "[integrator]\nend_time = 1\nscheme = \"") + scheme + "\"\n",
+    // Free particles (bonded ones turn with their body and do not spin by themselves).
+    Model m = build_model(parse_case(std::string("[[particle]]\nposition = [0.0, 0.0, 0.0]\nradius = 0.5e-3\n"
+                                                 "[[particle]]\nposition = [0.01, 0.0, 0.0]\nradius = 0.5e-3\n"
+                                                 "[contact]\n[integrator]\nend_time = 1\nscheme = \"") + scheme + "\"\n",
                                      "spin", {}));
     for (auto& w : m.particles.omega) w = Vec3(0, 0, 100.0);
     Simulation sim(m);

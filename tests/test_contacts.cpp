@@ -1,0 +1,450 @@
+// test_contacts.cpp: circle-triangle overlap area against closed forms and Monte Carlo; a
+// flat surface pushes the same however it is triangulated; Hertz impacts against the closed
+// form; restitution; sticking and sliding friction; the neighbour search against brute force.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fmt/format.h>
+#include <random>
+
+#include "case_config.h"
+#include "contacts.h"
+#include "errors.h"
+#include "mesh.h"
+#include "model.h"
+#include "overlap_area.h"
+#include "particles.h"
+#include "rods.h"
+#include "simulation.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+// ---- overlap area -------------------------------------------------------------------------
+
+// Closed forms are exact up to rounding of atan2 and square roots: 1e-12 relative.
+constexpr double kAreaTol = 1e-12;
+
+TEST(OverlapArea, CircleInsideTriangle) {
+  const double r = 0.3;
+  EXPECT_NEAR(circle_triangle_area(Vec2(-5, -5), Vec2(5, -5), Vec2(0, 5), r), M_PI * r * r, kAreaTol);
+}
+
+TEST(OverlapArea, TriangleInsideCircle) {
+  EXPECT_NEAR(circle_triangle_area(Vec2(0.1, 0.1), Vec2(0.5, 0.1), Vec2(0.1, 0.4), 1.0), 0.5 * 0.4 * 0.3, kAreaTol);
+}
+
+TEST(OverlapArea, CentreOnAnEdgeGivesHalfTheCircle) {
+  EXPECT_NEAR(circle_triangle_area(Vec2(-5, 0), Vec2(5, 0), Vec2(0, 7), 0.5), 0.5 * M_PI * 0.25, kAreaTol);
+}
+
+TEST(OverlapArea, CentreOnARightAngledVertexGivesAQuarter) {
+  EXPECT_NEAR(circle_triangle_area(Vec2(0, 0), Vec2(9, 0), Vec2(0, 9), 1.0), 0.25 * M_PI, kAreaTol);
+}
+
+TEST(OverlapArea, OneEdgeCutsACircularSegment) {
+  // A huge triangle whose edge y = h cuts the circle: the part below the chord is inside.
+  const double r = 1.0, h = 0.4;
+  const double segment = r * r * std::acos(h / r) - h * std::sqrt(r * r - h * h);  // area above the chord
+  EXPECT_NEAR(circle_triangle_area(Vec2(-50, h), Vec2(50, h), Vec2(0, -80), r), M_PI * r * r - segment, kAreaTol);
+}
+
+TEST(OverlapArea, VertexInsideWithTwoEdgesCutting) {
+  // Wedge of 60 degrees with its apex at distance 0.5 from the centre on the x axis, opening
+  // away from the centre: compare with a fine polar integration (1e-7 relative).
+  const double r = 1.0;
+  const Vec2 apex(0.5, 0.0);
+  const Vec2 b = apex + 10.0 * Vec2(std::cos(M_PI / 6), std::sin(M_PI / 6));
+  const Vec2 c = apex + 10.0 * Vec2(std::cos(-M_PI / 6), std::sin(-M_PI / 6));
+  const double got = circle_triangle_area(apex, b, c, r);
+  // Integrate over x: the wedge between the lines y = +-(x - 0.5) tan 30, inside the circle.
+  const int n = 2000000;
+  double sum = 0.0;
+  const double t = std::tan(M_PI / 6);
+  for (int k = 0; k < n; ++k) {
+    const double x = 0.5 + (k + 0.5) * (0.5 / n);
+    const double half = std::min((x - 0.5) * t, std::sqrt(std::max(0.0, r * r - x * x)));
+    sum += 2.0 * half * (0.5 / n);
+  }
+  EXPECT_NEAR(got, sum, 1e-7 * sum);
+}
+
+TEST(OverlapArea, MatchesMonteCarloOnRandomTriangles) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec2 a(u(rng), u(rng)), b(u(rng), u(rng)), c(u(rng), u(rng));
+    const double r = 1.0;
+    const double exact = circle_triangle_area(a, b, c, r);
+    // Monte Carlo over the circle's bounding square: the standard error is
+    // sqrt(p (1-p) / N) * 4 r^2; 200000 samples give at most 4.5e-3; allow 5 sigma.
+    const int N = 200000;
+    int hits = 0;
+    auto side = [](const Vec2& p, const Vec2& q, const Vec2& x) {
+      return (q[0] - p[0]) * (x[1] - p[1]) - (q[1] - p[1]) * (x[0] - p[0]);
+    };
+    std::uniform_real_distribution<double> s(-r, r);
+    for (int k = 0; k < N; ++k) {
+      const Vec2 x(s(rng), s(rng));
+      if (x.squaredNorm() > r * r) continue;
+      const double d1 = side(a, b, x), d2 = side(b, c, x), d3 = side(c, a, x);
+      if ((d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0)) ++hits;
+    }
+    const double p = double(hits) / N, mc = 4.0 * r * r * p;
+    const double sigma = 4.0 * r * r * std::sqrt(std::max(p * (1 - p), 1e-12) / N);
+    EXPECT_NEAR(exact, mc, 5 * sigma + 1e-12) << "trial " << trial;
+  }
+}
+
+// ---- flat surfaces, however triangulated --------------------------------------------------
+
+// A square [-L, L]^2 in z = 0 made of 2 triangles, or of an irregular triangulation: a grid
+// whose interior vertices are jittered in the plane.
+TriangleMesh square(int n, double jitter, unsigned seed) {
+  TriangleMesh m;
+  m.name = "square";
+  const double L = 0.01;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  for (int b = 0; b <= n; ++b)
+    for (int a = 0; a <= n; ++a) {
+      double x = -L + 2 * L * a / n, y = -L + 2 * L * b / n;
+      if (a > 0 && a < n && b > 0 && b < n) {
+        x += u(rng) * 2 * L / n;
+        y += u(rng) * 2 * L / n;
+      }
+      m.vertices.emplace_back(x, y, 0.0);
+    }
+  auto id = [&](int a, int b) { return b * (n + 1) + a; };
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a) {
+      // Alternate the diagonal so the triangulation is irregular in shape too.
+      if ((a + b) % 2) {
+        m.triangles.push_back({id(a, b), id(a + 1, b), id(a + 1, b + 1)});
+        m.triangles.push_back({id(a, b), id(a + 1, b + 1), id(a, b + 1)});
+      } else {
+        m.triangles.push_back({id(a, b), id(a + 1, b), id(a, b + 1)});
+        m.triangles.push_back({id(a + 1, b), id(a + 1, b + 1), id(a, b + 1)});
+      }
+    }
+  m.validate("square");
+  return m;
+}
+
+// The force on one sphere (radius 1 mm) at 'centre' pressed into the mesh, with a velocity.
+Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& velocity) {
+  Particles p;
+  p.resize(1);
+  p.position[0] = centre;
+  p.velocity[0] = velocity;
+  p.radius[0] = 1e-3;
+  p.mass[0] = 3e-5;
+  p.inv_mass[0] = 1.0 / p.mass[0];
+  Rods rods;
+  rods.build_rows(1);
+  std::vector<MeshBody> meshes(1);
+  meshes[0].name = "square";
+  meshes[0].mesh = mesh;
+  meshes[0].youngs_modulus = kInf;
+  meshes[0].poisson_ratio = 0.3;
+  ContactParams prm;
+  prm.youngs_modulus = 70e9;
+  prm.poisson_ratio = 0.3;
+  prm.alpha = restitution_to_alpha(0.7);
+  prm.friction = 0.3;
+  prm.law = FrictionLaw::Spring;
+  prm.skin = 2e-4;
+  ContactSystem cs;
+  cs.setup(prm, 1, &meshes);
+  cs.update_lists(p, rods, true);
+  cs.evaluate(p, 1e-7);
+  Vec3 f = Vec3::Zero(), tau = Vec3::Zero();
+  cs.add_to_particle(0, f, tau);
+  return f;
+}
+
+TEST(FlatSurface, SameForceHoweverTriangulated) {
+  const TriangleMesh two = square(1, 0.0, 1), many = square(16, 0.3, 5);
+  ASSERT_EQ(two.triangles.size(), 2u);
+  ASSERT_EQ(many.triangles.size(), 512u);
+  const double delta = 2e-6;  // m
+  const Vec3 v(0.02, -0.01, -0.05);  // m/s: normal damping and tangential slip both act
+  // Over the middle of a face, over the 2-triangle diagonal, over a vertex and an edge of the
+  // irregular mesh (its vertex nearest the centre), and a general point.
+  std::vector<Vec2> spots{{0.0031, -0.0042}, {0.0, 0.0}, {0.0021, 0.0021}, {-0.0057, 0.0013}};
+  double nearest = 1e9;
+  Vec2 vertex(0, 0);
+  for (const auto& x : many.vertices)
+    if (Vec2(x[0], x[1]).norm() < nearest && std::abs(x[0]) < 0.009 && x[0] != 0.0) {
+      nearest = Vec2(x[0], x[1]).norm();
+      vertex = Vec2(x[0], x[1]);
+    }
+  spots.push_back(vertex);
+  const auto& tri = many.triangles[100];
+  const Vec3 mid = 0.5 * (many.vertices[tri[0]] + many.vertices[tri[1]]);
+  spots.emplace_back(mid[0], mid[1]);
+  for (const auto& s : spots) {
+    const Vec3 c(s[0], s[1], 1e-3 - delta);
+    const Vec3 f2 = force_on_sphere(two, c, v), fn = force_on_sphere(many, c, v);
+    ASSERT_GT(f2[2], 0.0);
+    EXPECT_LT((f2 - fn).norm(), 1e-9 * f2.norm()) << "at " << s.transpose() << ": " << f2.transpose() << " vs "
+                                                   << fn.transpose();
+  }
+}
+
+TEST(FlatSurface, NormalForceIsHertzOnARigidPlane) {
+  // At rest: F = 4/3 E/(1 - nu^2) sqrt(R) delta^(3/2) (rigid wall, the convention of hertz.h).
+  const double delta = 2e-6;
+  const Vec3 f = force_on_sphere(square(4, 0.2, 3), Vec3(0.001, 0.002, 1e-3 - delta), Vec3::Zero());
+  const double want = 4.0 / 3.0 * 70e9 / (1 - 0.09) * std::sqrt(1e-3) * std::pow(delta, 1.5);
+  EXPECT_NEAR(f[2], want, 1e-9 * want);
+  EXPECT_NEAR(f[0], 0.0, 1e-12 * want);
+}
+
+// ---- impacts ------------------------------------------------------------------------------
+
+std::string two_spheres(double v, double restitution, double dt) {
+  return fmt::format(R"([material]
+density = 2800.0
+[[particle]]
+position = [0.0, 0.0, 0.0]
+velocity = [{v}, 0.0, 0.0]
+radius = 0.01
+[[particle]]
+position = [0.0201, 0.0, 0.0]
+velocity = [-{v}, 0.0, 0.0]
+radius = 0.01
+[contact]
+youngs_modulus = 48e9
+poisson_ratio = 0.2
+restitution = {e}
+friction = 0.0
+[integrator]
+scheme = "verlet"
+dt = {dt:.17g}
+end_time = 1e-4
+)", fmt::arg("v", v), fmt::arg("e", restitution), fmt::arg("dt", dt));
+}
+
+TEST(Impact, TwoSpheresMatchTheHertzClosedForm) {
+  // Chung and Ooi test 1 (glass): R = 0.01 m, E = 48 GPa, nu = 0.2, rho = 2800, 10 m/s each.
+  const double v = 10.0;
+  const std::string text = two_spheres(v, 1.0, 2e-8);
+  Model m = build_model(parse_case(text, "impact", {}));
+  Simulation sim(m);
+  const double R = 0.01, E = 48e9, nu = 0.2, mass = m.particles.mass[0];
+  const double Es = E / (2 * (1 - nu * nu)), Rs = R / 2, ms = mass / 2, vr = 2 * v;
+  const double dmax = std::pow(15 * ms * vr * vr / (16 * Es * std::sqrt(Rs)), 0.4);
+  const double fmax = 4.0 / 3.0 * Es * std::sqrt(Rs) * std::pow(dmax, 1.5);
+  const double tc = 2.868 * std::pow(ms * ms / (Es * Es * Rs * vr), 0.2);
+  double peak_f = 0, peak_d = 0, t_on = -1, t_off = -1;
+  for (int k = 0; k < 5000 && t_off < 0; ++k) {
+    sim.step();
+    const double d = 2 * R - (m.particles.position[1] - m.particles.position[0]).norm();
+    if (d > 0 && t_on < 0) t_on = sim.time();
+    if (d <= 0 && t_on >= 0) t_off = sim.time();
+    peak_d = std::max(peak_d, d);
+    peak_f = std::max(peak_f, m.particles.force[1][0]);
+  }
+  // Step 20 ns against a contact time near 50 us: discretisation errors well below 0.5 %.
+  EXPECT_NEAR(peak_d, dmax, 5e-3 * dmax);
+  EXPECT_NEAR(peak_f, fmax, 5e-3 * fmax);
+  EXPECT_NEAR(t_off - t_on, tc, 5e-3 * tc);
+  // Elastic: the spheres leave with the speed they came with.
+  EXPECT_NEAR(m.particles.velocity[1][0], v, 1e-3 * v);
+}
+
+TEST(Impact, RestitutionIsTheSameAtEverySpeed) {
+  for (double e : {0.3, 0.8}) {
+    for (double v : {0.5, 5.0}) {
+      const std::string text = two_spheres(v, e, 5e-8);
+      Model m = build_model(parse_case(text, "e", {}));
+      Simulation sim(m);
+      // The gap of 0.1 mm closes at 2 v; the contact lasts below 0.2 ms at these speeds.
+      while (sim.time() < 1e-4 / (2 * v) + 3e-4) sim.step();
+      const double rebound = (m.particles.velocity[1][0] - m.particles.velocity[0][0]) / (2 * v);
+      // alpha(e) is solved to 1e-15 by bisection on an RK4 solution of the dimensionless
+      // impact; the simulation's own discretisation adds < 0.5 %.
+      EXPECT_NEAR(rebound, e, 5e-3) << "e " << e << " v " << v;
+    }
+  }
+}
+
+// ---- friction: a block on a tilted floor ---------------------------------------------------
+
+// A bonded block (2 x 2 x 1 cells, 16 particles) on a floor, gravity tilted by 'angle'.
+Model block_on_floor(double angle, double mu, const std::string& law) {
+  const double g = 9.81;
+  const std::string text = fmt::format(R"([workpiece]
+cells = [2, 2, 1]
+radius = 1e-3
+[material]
+density = 7800.0
+[rod]
+youngs_modulus = 5e9
+[contact]
+youngs_modulus = 5e9
+poisson_ratio = 0.3
+restitution = 0.2
+friction = {mu}
+friction_law = "{law}"
+regularization_speed = 1e-4
+[environment]
+gravity = [{gx:.17g}, 0.0, {gz:.17g}]
+[[mesh]]
+name = "floor"
+origin = [-0.02, -0.02, -0.0009999]
+edge1 = [0.04, 0.0, 0.0]
+edge2 = [0.0, 0.04, 0.0]
+divisions = [3, 3]
+[integrator]
+scheme = "verlet"
+end_time = 1
+)", fmt::arg("mu", mu), fmt::arg("law", law), fmt::arg("gx", g * std::sin(angle)), fmt::arg("gz", -g * std::cos(angle)));
+  return build_model(parse_case(text, "block", {}));
+}
+
+double mean_x(const Model& m) {
+  double s = 0;
+  for (const auto& x : m.particles.position) s += x[0];
+  return s / double(m.particles.size());
+}
+
+TEST(Friction, SpringHoldsBelowTheFrictionAngleAndSlidesAbove) {
+  const double mu = 0.4, g = 9.81, T = 0.02;
+  for (const double ratio : {0.5, 1.6}) {
+    const double angle = std::atan(ratio * mu);
+    Model m = block_on_floor(angle, mu, "spring");
+    Simulation sim(m);
+    const double x0 = mean_x(m);
+    while (sim.time() < T) sim.step();
+    const double moved = mean_x(m) - x0;
+    if (ratio < 1) {
+      // Sticking: only the elastic tangential springs give (micrometres at most).
+      EXPECT_LT(std::abs(moved), 2e-6) << "moved " << moved;
+    } else {
+      // Sliding: x = a t^2 / 2 with a = g (sin - mu cos); the block settles onto the floor in
+      // the first milliseconds, so allow 10 %.
+      const double a = g * (std::sin(angle) - mu * std::cos(angle));
+      EXPECT_NEAR(moved, 0.5 * a * T * T, 0.1 * 0.5 * a * T * T);
+    }
+  }
+}
+
+TEST(Friction, RegularizedLawSlidesAboveTheFrictionAngle) {
+  const double mu = 0.4, g = 9.81, T = 0.02, angle = std::atan(1.6 * mu);
+  Model m = block_on_floor(angle, mu, "regularized");
+  Simulation sim(m);
+  const double x0 = mean_x(m);
+  while (sim.time() < T) sim.step();
+  const double a = g * (std::sin(angle) - mu * std::cos(angle));
+  EXPECT_NEAR(mean_x(m) - x0, 0.5 * a * T * T, 0.1 * 0.5 * a * T * T);
+}
+
+// ---- neighbour search ---------------------------------------------------------------------
+
+TEST(NeighbourSearch, FindsExactlyTheOverlappingPairsOfBruteForce) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 0.02), ur(0.4e-3, 0.9e-3);
+  Particles p;
+  const std::size_t n = 3000;
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.position[i] = Vec3(u(rng), u(rng), 0.5 * u(rng));
+    p.radius[i] = ur(rng);
+    p.mass[i] = 1e-6;
+    p.inv_mass[i] = 1e6;
+  }
+  Rods rods;
+  rods.build_rows(n);
+  std::vector<MeshBody> meshes;
+  ContactParams prm;
+  prm.youngs_modulus = 1e9;
+  prm.poisson_ratio = 0.3;
+  prm.skin = 1e-4;
+  ContactSystem cs;
+  cs.setup(prm, n, &meshes);
+  cs.update_lists(p, rods, true);
+  cs.evaluate(p, 1e-7);
+  std::size_t brute = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if ((p.position[i] - p.position[j]).norm() < p.radius[i] + p.radius[j]) ++brute;
+  EXPECT_GT(brute, 100u);
+  EXPECT_EQ(cs.touching(), brute);
+  // Move every particle by less than half the skin: no rebuild, still exact.
+  std::uniform_real_distribution<double> small(-0.28e-4, 0.28e-4);
+  for (auto& x : p.position) x += Vec3(small(rng), small(rng), small(rng));
+  const std::size_t builds = cs.list_builds();
+  cs.update_lists(p, rods, false);
+  EXPECT_EQ(cs.list_builds(), builds);
+  cs.evaluate(p, 1e-7);
+  brute = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if ((p.position[i] - p.position[j]).norm() < p.radius[i] + p.radius[j]) ++brute;
+  EXPECT_EQ(cs.touching(), brute);
+}
+
+TEST(NeighbourSearch, BondedPairsAreNotContactsUntilTheRodBreaks) {
+  // A compressed bonded pair: the rod acts, not the contact; once the rod is broken the
+  // contact takes over.
+  Particles p;
+  p.resize(2);
+  p.position[1] = Vec3(1.9e-3, 0, 0);
+  p.radius = {1e-3, 1e-3};
+  p.mass = {1e-5, 1e-5};
+  p.inv_mass = {1e5, 1e5};
+  Rods rods;
+  rods.ends = {{0, 1}};
+  rods.rest_length = {2e-3};
+  rods.reset_state();
+  rods.build_rows(2);
+  std::vector<MeshBody> meshes;
+  ContactParams prm;
+  prm.youngs_modulus = 1e9;
+  prm.poisson_ratio = 0.3;
+  prm.skin = 1e-4;
+  ContactSystem cs;
+  cs.setup(prm, 2, &meshes);
+  cs.update_lists(p, rods, true);
+  cs.evaluate(p, 1e-7);
+  EXPECT_EQ(cs.touching(), 0u);
+  rods.intact[0] = 0;
+  cs.update_lists(p, rods, true);
+  cs.evaluate(p, 1e-7);
+  EXPECT_EQ(cs.touching(), 1u);
+}
+
+// ---- meshes -------------------------------------------------------------------------------
+
+TEST(Meshes, StlAndObjRoundTripAndBadMeshesAreRejected) {
+  test::TempDir dir("meshes");
+  const TriangleMesh sq = square(3, 0.2, 9);
+  write_stl(dir / "sq.stl", sq);
+  const TriangleMesh back = read_mesh(dir / "sq.stl");
+  EXPECT_EQ(back.triangles.size(), sq.triangles.size());
+  EXPECT_EQ(back.vertices.size(), sq.vertices.size());  // welded
+  test::write_file(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n");
+  EXPECT_EQ(read_mesh(dir / "t.obj").triangles.size(), 2u);
+  test::write_file(dir / "a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                                  "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n");
+  EXPECT_EQ(read_mesh(dir / "a.stl", 1e-3).vertices[1][0], 1e-3);
+  // Degenerate, empty, non-finite, missing, unknown format.
+  test::write_file(dir / "deg.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  test::write_file(dir / "empty.obj", "v 0 0 0\n");
+  test::write_file(dir / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
+  test::write_file(dir / "x.ply", "ply\n");
+  for (const char* f : {"deg.obj", "empty.obj", "nan.obj", "missing.stl", "x.ply"}) {
+    try {
+      read_mesh(dir / f);
+      ADD_FAILURE() << f << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(f), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace swarf
