@@ -215,6 +215,7 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
     }
   }
   tris_.swap(tris);
+  fill_constants(p);
 
   // Per-particle rows.
   prow_.assign(n + 1, 0);
@@ -243,24 +244,47 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
   ptj_.assign(np, Vec3::Zero());
   ph_.assign(np, Vec3::Zero());
   pe_.assign(np, 0.0);
+  ptouch_.assign(np, 0);
   tf_.assign(nt, Vec3::Zero());
   tti_.assign(nt, Vec3::Zero());
   th_.assign(nt, Vec3::Zero());
   te_.assign(nt, 0.0);
+  ttouch_.assign(nt, 0);
   x_build_ = p.position;
   mesh_build_.resize(meshes_->size());
   for (std::size_t m = 0; m < meshes_->size(); ++m) mesh_build_[m] = (*meshes_)[m].offset;
+}
+
+void ContactSystem::fill_constants(const Particles& p) {
+  const double E = prm_.youngs_modulus, nu = prm_.poisson_ratio;
+  const double G = E / (2.0 * (1.0 + nu));
+  const double inv_E_pp = 2.0 * (1.0 - nu * nu) / E;  // 1/E* of two particles
+  const double inv_G_pp = 2.0 * (2.0 - nu) / G;       // 1/G* (Mindlin)
+  for (auto& q : pairs_) {
+    const double ri = p.radius[q.i], rj = p.radius[q.j];
+    const double rstar = ri * rj / (ri + rj);
+    const double mstar = p.mass[q.i] * p.mass[q.j] / (p.mass[q.i] + p.mass[q.j]);
+    q.K = 4.0 / 3.0 / inv_E_pp * std::sqrt(rstar);
+    q.D = prm_.alpha * std::sqrt(mstar * q.K);
+    q.kt0 = 8.0 / inv_G_pp * std::sqrt(rstar);
+  }
+  for (auto& q : tris_) {
+    const MeshBody& mb = (*meshes_)[tri_mesh_[q.tri]];
+    const double R = p.radius[q.i];
+    const double inv_E = inverse_effective_modulus(E, nu, mb.youngs_modulus, mb.poisson_ratio);
+    const double Gw = mb.youngs_modulus / (2.0 * (1.0 + mb.poisson_ratio));
+    const double inv_G = (2.0 - nu) / G + (std::isfinite(Gw) ? (2.0 - mb.poisson_ratio) / Gw : 0.0);
+    q.K = 4.0 / 3.0 / inv_E * std::sqrt(R);
+    q.D = prm_.alpha * std::sqrt(p.mass[q.i] * q.K);
+    q.kt0 = 8.0 / inv_G * std::sqrt(R);
+  }
 }
 
 void ContactSystem::evaluate(const Particles& p, double h) {
   if (!enabled_) return;
   const double mu = prm_.friction;
   const FrictionLaw law = prm_.law;
-  const double E = prm_.youngs_modulus, nu = prm_.poisson_ratio;
-  const double G = E / (2.0 * (1.0 + nu));
-  const double inv_E_pp = 2.0 * (1.0 - nu * nu) / E;     // 1/E* of two particles
-  const double inv_G_pp = 2.0 * (2.0 - nu) / G;          // 1/G* (Mindlin)
-  const double alpha = prm_.alpha, v0 = prm_.regularization_speed;
+  const double v0 = prm_.regularization_speed;
 
   // Tangential force on body j from the relative tangential velocity vt (j relative to i),
   // the committed history and the normal force; returns the trial history through 'hist'.
@@ -288,42 +312,43 @@ void ContactSystem::evaluate(const Particles& p, double h) {
   };
 
   const std::size_t np = pairs_.size();
-#pragma omp parallel for schedule(static)
+  // Dynamic chunks: touching pairs cost far more than near misses, and they cluster (the
+  // bottom of a settling packing). Each pair writes only its own slots: order-free.
+#pragma omp parallel for schedule(dynamic, 1024)
   for (std::size_t k = 0; k < np; ++k) {
     const std::int32_t i = pairs_[k].i, j = pairs_[k].j;
     const Vec3 d = p.position[j] - p.position[i];
     const double ri = p.radius[i], rj = p.radius[j];
     const double dist2 = d.squaredNorm(), sum = ri + rj;
     if (dist2 >= sum * sum) {
-      pf_[k] = pti_[k] = ptj_[k] = ph_[k] = Vec3::Zero();
-      pe_[k] = 0.0;
+      ptouch_[k] = 0;  // the force slots of a near miss are not read
       continue;
     }
+    ptouch_[k] = 1;
     const double dist = std::sqrt(dist2);
-    const Vec3 n = d / dist;
+    const Vec3 n = (1.0 / dist) * d;
     const double delta = sum - dist;
-    const double rstar = ri * rj / sum;
-    const double mstar = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-    HertzLaw hz;
-    hz.stiffness = 4.0 / 3.0 / inv_E_pp * std::sqrt(rstar);
-    hz.damping = alpha * std::sqrt(mstar * hz.stiffness);
-    const Vec3 wi = to_world(p.orientation[i], p.omega[i]), wj = to_world(p.orientation[j], p.omega[j]);
+    const Pair& q = pairs_[k];
+    const HertzLaw hz{q.K, q.D};
+    const Vec3& wi = p.omega[i];
+    const Vec3& wj = p.omega[j];
     const Vec3 vrel = p.velocity[j] + wj.cross(-rj * n) - p.velocity[i] - wi.cross(ri * n);
     const double vn = vrel.dot(n);
+    const double root = std::sqrt(delta);
     const double fn = hz.force(delta, -vn);
     const Vec3 vt = vrel - vn * n;
-    const double kt = 8.0 / inv_G_pp * std::sqrt(rstar * delta);
+    const double kt = q.kt0 * root;
     Vec3 hist = pairs_[k].history;
     const Vec3 ft_j = friction(n, vt, fn, kt, hist);
     pf_[k] = -fn * n - ft_j;
     pti_[k] = (ri * n).cross(-ft_j);
     ptj_[k] = (-rj * n).cross(ft_j);
     ph_[k] = hist;
-    pe_[k] = 0.4 * hz.stiffness * delta * delta * std::sqrt(delta);
+    pe_[k] = 0.4 * hz.stiffness * delta * delta * root;
   }
 
   const std::size_t nt = tris_.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t k = 0; k < nt; ++k) {
     const std::int32_t i = tris_[k].i, t = tris_[k].tri;
     const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
@@ -333,23 +358,19 @@ void ContactSystem::evaluate(const Particles& p, double h) {
         sphere_triangle(p.position[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
                         mb.mesh.vertices[tri[2]] + mb.offset);
     if (!hit.touching) {
-      tf_[k] = tti_[k] = th_[k] = Vec3::Zero();
-      te_[k] = 0.0;
+      ttouch_[k] = 0;
       continue;
     }
+    ttouch_[k] = 1;
     const Vec3 n = hit.normal;  // from the wall towards the sphere
-    const double inv_E = inverse_effective_modulus(E, nu, mb.youngs_modulus, mb.poisson_ratio);
-    const double Gw = mb.youngs_modulus / (2.0 * (1.0 + mb.poisson_ratio));
-    const double inv_G = (2.0 - nu) / G + (std::isfinite(Gw) ? (2.0 - mb.poisson_ratio) / Gw : 0.0);
-    HertzLaw hz;
-    hz.stiffness = 4.0 / 3.0 / inv_E * std::sqrt(R);
-    hz.damping = alpha * std::sqrt(p.mass[i] * hz.stiffness);
-    const Vec3 wi = to_world(p.orientation[i], p.omega[i]);
+    const TriPair& q = tris_[k];
+    const HertzLaw hz{q.K, q.D};
+    const Vec3& wi = p.omega[i];
     const Vec3 vrel = p.velocity[i] + wi.cross(-R * n) - mb.velocity;  // sphere relative to the wall
     const double vn = vrel.dot(n);
     const double fn = hit.weight * hz.force(hit.overlap, -vn);
     const Vec3 vt = vrel - vn * n;
-    const double kt = hit.weight * 8.0 / inv_G * std::sqrt(R * hit.overlap);
+    const double kt = hit.weight * q.kt0 * std::sqrt(hit.overlap);
     Vec3 hist = tris_[k].history;
     // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
     const Vec3 ft = friction(n, vt, fn, kt, hist);
@@ -363,6 +384,7 @@ void ContactSystem::evaluate(const Particles& p, double h) {
 void ContactSystem::add_to_particle(std::size_t i, Vec3& force, Vec3& torque) const {
   for (std::int32_t e = prow_[i]; e < prow_[i + 1]; ++e) {
     const std::int32_t code = pent_[e], k = code >> 1;
+    if (!ptouch_[k]) continue;
     if (code & 1) {
       force -= pf_[k];
       torque += ptj_[k];
@@ -372,34 +394,46 @@ void ContactSystem::add_to_particle(std::size_t i, Vec3& force, Vec3& torque) co
     }
   }
   for (std::int32_t e = trow_[i]; e < trow_[i + 1]; ++e) {
-    force += tf_[tent_[e]];
-    torque += tti_[tent_[e]];
+    const std::int32_t k = tent_[e];
+    if (!ttouch_[k]) continue;
+    force += tf_[k];
+    torque += tti_[k];
   }
 }
 
 void ContactSystem::commit() {
-  for (std::size_t k = 0; k < pairs_.size(); ++k) pairs_[k].history = ph_[k];
-  for (std::size_t k = 0; k < tris_.size(); ++k) tris_[k].history = th_[k];
+  const std::size_t np = pairs_.size(), nt = tris_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) pairs_[k].history = ptouch_[k] ? ph_[k] : Vec3::Zero();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < nt; ++k) tris_[k].history = ttouch_[k] ? th_[k] : Vec3::Zero();
 }
 
 Vec3 ContactSystem::mesh_force(std::size_t m) const {
   Vec3 f = Vec3::Zero();
   for (std::size_t k = 0; k < tris_.size(); ++k)
-    if (tri_mesh_[tris_[k].tri] == static_cast<std::int32_t>(m)) f -= tf_[k];
+    if (ttouch_[k] && tri_mesh_[tris_[k].tri] == static_cast<std::int32_t>(m)) f -= tf_[k];
   return f;
 }
 
 double ContactSystem::elastic_energy() const {
   double e = 0.0;
-  for (double v : pe_) e += v;
-  for (double v : te_) e += v;
+  for (std::size_t k = 0; k < pe_.size(); ++k)
+    if (ptouch_[k]) e += pe_[k];
+  for (std::size_t k = 0; k < te_.size(); ++k)
+    if (ttouch_[k]) e += te_[k];
   return e;
 }
 
-std::size_t ContactSystem::touching() const {
+std::size_t ContactSystem::touching_pairs() const {
   std::size_t c = 0;
-  for (double v : pe_) c += v > 0.0;
-  for (double v : te_) c += v > 0.0;
+  for (auto t : ptouch_) c += t;
+  return c;
+}
+
+std::size_t ContactSystem::touching() const {
+  std::size_t c = touching_pairs();
+  for (auto t : ttouch_) c += t;
   return c;
 }
 

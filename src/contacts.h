@@ -76,17 +76,24 @@ class ContactSystem {
   double elastic_energy() const;
   /// Current number of touching sphere-sphere and sphere-triangle contacts.
   std::size_t touching() const;
+  /// Current number of touching sphere-sphere contacts.
+  std::size_t touching_pairs() const;
   std::size_t list_builds() const { return builds_; }
 
  private:
+  // Per-contact constants are computed when the list is built: the evaluation then needs
+  // no division for the material law (K, damping and tangential stiffness factor).
   struct Pair {  // sphere-sphere, i < j
     std::int32_t i, j;
     Vec3 history = Vec3::Zero();  // committed tangential spring displacement, m
+    double K = 0, D = 0, kt0 = 0;  // Hertz K (N/m^1.5), damping alpha sqrt(m* K), 8 G* sqrt(R*) (N/m^1.5)
   };
   struct TriPair {  // sphere-triangle
     std::int32_t i, tri;  // tri: global triangle index
     Vec3 history = Vec3::Zero();
+    double K = 0, D = 0, kt0 = 0;
   };
+  void fill_constants(const Particles& p);
   void build(const Particles& p, const Rods& rods);
 
   bool enabled_ = false;
@@ -103,6 +110,7 @@ class ContactSystem {
   std::vector<double> pe_;                  // elastic energy
   std::vector<Vec3> tf_, tti_, th_;         // force on the sphere, torque on it, trial history
   std::vector<double> te_;
+  std::vector<std::uint8_t> ptouch_, ttouch_;  // 1 if the contact touched in the last evaluation
   // Per-particle lists: pair index * 2 + side (0: i, 1: j); triangle contacts by index.
   std::vector<std::int32_t> prow_, pent_, trow_, tent_;
   // Reference state of the last build.

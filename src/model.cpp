@@ -138,6 +138,7 @@ Model build_model(const CaseSettings& cs) {
     p.mass[i] = d.particle_mass * s * s * s;
     p.inv_mass[i] = 1.0 / p.mass[i];
     p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
+    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
   }
   for (std::size_t k = 0; k < free_velocity.size(); ++k) {
     const std::size_t i = model.lattice_particles + k;

@@ -28,9 +28,10 @@ struct Particles {
   // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
   // so torques come from contacts; the machinery is here for them).
   std::vector<Quat> orientation;       ///< unit quaternion, body to world
-  std::vector<Vec3> omega;             ///< body-frame angular velocity, rad/s
-  std::vector<Vec3> omega_dot;         ///< body-frame angular acceleration, rad/s^2
+  std::vector<Vec3> omega;             ///< world-frame angular velocity, rad/s
+  std::vector<Vec3> omega_dot;         ///< world-frame angular acceleration, rad/s^2
   std::vector<Vec3> inertia;           ///< principal moments of inertia, kg m^2 (2/5 m R^2 for a sphere)
+  std::vector<double> inv_inertia;     ///< 1/I for isotropic inertia (spheres), 1/(kg m^2); 0 otherwise
   std::vector<Vec3> torque;            ///< world-frame torque of the last evaluation, N m
 
   std::size_t size() const { return position.size(); }
@@ -51,6 +52,7 @@ struct Particles {
     omega.resize(n, Vec3::Zero());
     omega_dot.resize(n, Vec3::Zero());
     inertia.resize(n, Vec3::Zero());
+    inv_inertia.resize(n, 0.0);
     torque.resize(n, Vec3::Zero());
   }
 };

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "vec3.h"
 
@@ -79,6 +80,37 @@ struct RotStepResult {
 /// fixed over the inner loop (the outer, force loop re-evaluates torques).
 RotStepResult rotation_step(const RotState& s, const Vec3& torque_world, const Vec3& inertia, double dt,
                             const RotationSettings& rs);
+
+/// The same update for a body with isotropic inertia I = 1/inv_I (a sphere), in the WORLD frame:
+/// there dw/dt = l/I holds in any frame, so no inner loop is needed. w and dw are world-frame;
+/// the orientation turns by the mean rate over the step (second order).
+inline void sphere_rotation_step(Quat& q, Vec3& w, Vec3& dw, const Vec3& torque_world, double inv_I, double h,
+                                 double gamma) {
+  const Vec3 dw_new = inv_I * torque_world;
+  const Vec3 w_new = w + h * ((1.0 - gamma) * dw + gamma * dw_new);
+  const Vec3 mid = 0.5 * (w + w_new);
+  const double t2 = 0.25 * h * h * mid.squaredNorm();  // (half the turn angle)^2
+  if (t2 > 0.0) {
+    double c, s_over_rate;  // cos(half), sin(half)/|mid|
+    if (t2 < 1e-4) {
+      // Small turns (the usual case) by their Taylor series, no division or root: the
+      // truncation is below half^6/5040 < 2e-16.
+      c = 1.0 - t2 * (0.5 - t2 / 24.0);
+      s_over_rate = 0.5 * h * (1.0 - t2 * (1.0 / 6.0 - t2 / 120.0));
+    } else {
+      const double half = std::sqrt(t2);
+      c = std::cos(half);
+      s_over_rate = 0.5 * h * std::sin(half) / half;
+    }
+    const Vec3 axis = s_over_rate * mid;
+    q = qmul(Quat(c, axis[0], axis[1], axis[2]), q);
+    // |q|^2 = 1 + e with e at rounding level; one Newton step for 1/sqrt restores |q| = 1
+    // to O(e^2) without a root.
+    q *= 0.5 * (3.0 - q.squaredNorm());
+  }
+  w = w_new;
+  dw = dw_new;
+}
 
 /// Kinetic energy of rotation, J, and angular momentum in the world frame, N m s.
 inline double rotational_energy(const RotState& s, const Vec3& I) {

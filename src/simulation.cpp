@@ -52,8 +52,10 @@ void Simulation::set_rotations(bool on) {
   if (!on) return;
   update_free_to_rotate();
   auto& p = m_.particles;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    p.omega_dot[i] = euler_acceleration(to_body(p.orientation[i], p.torque[i]), p.omega[i], p.inertia[i]);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Quat& q = p.orientation[i];
+    p.omega_dot[i] = to_world(q, euler_acceleration(to_body(q, p.torque[i]), to_body(q, p.omega[i]), p.inertia[i]));
+  }
 }
 
 void Simulation::step(double max_dt) {
@@ -253,11 +255,24 @@ void Simulation::rotate(double h, double beta, double gamma) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!free_to_rotate_[i]) continue;
+    // Start-of-step state (world frame): saved for Newmark, current for the explicit scheme.
     const RotState s = from_saved ? rot_n_[i] : RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
-    const RotStepResult r = rotation_step(s, p.torque[i], p.inertia[i], h, rs);
-    p.orientation[i] = r.state.q;
-    p.omega[i] = r.state.w;
-    p.omega_dot[i] = r.state.dw;
+    const Vec3& I = p.inertia[i];
+    if (I[0] == I[1] && I[1] == I[2]) {
+      Quat q = s.q;
+      Vec3 w = s.w, dw = s.dw;
+      sphere_rotation_step(q, w, dw, p.torque[i], p.inv_inertia[i], h, gamma);
+      p.orientation[i] = q;
+      p.omega[i] = w;
+      p.omega_dot[i] = dw;
+    } else {
+      // Euler's equations live in the body frame.
+      const RotState body{s.q, to_body(s.q, s.w), to_body(s.q, s.dw)};
+      const RotStepResult r = rotation_step(body, p.torque[i], I, h, rs);
+      p.orientation[i] = r.state.q;
+      p.omega[i] = to_world(r.state.q, r.state.w);
+      p.omega_dot[i] = to_world(r.state.q, r.state.dw);
+    }
   }
   (void)g;
 }
@@ -513,7 +528,10 @@ double Simulation::kinetic_energy() const {
   const bool rot = rotations_;
   return deterministic_sum(p.size(), [&](std::size_t i) {
     double e = 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
-    if (rot) e += rotational_energy(RotState{p.orientation[i], p.omega[i], p.omega_dot[i]}, p.inertia[i]);
+    if (rot) {
+      const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
+      e += 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
+    }
     return e;
   });
 }
