@@ -334,6 +334,8 @@ void read_contacts_and_bodies(const toml::table& root, const std::string& source
     c.friction = r.number("friction", c.friction, non_negative);
     c.friction_law = r.string("friction_law", c.friction_law, {"spring", "regularized", "none"});
     c.regularization_speed = r.number("regularization_speed", c.regularization_speed, positive);
+    c.tangential_damping = r.number("tangential_damping", c.tangential_damping,
+                                    [](double v) { return v >= 0 && v <= 10 ? nullptr : "must lie in [0, 10]"; });
     c.skin = r.number("skin", c.skin, [](double v) { return v > 0 && v <= 2 ? nullptr : "must lie in (0, 2]"; });
     r.finish();
   }

@@ -107,6 +107,7 @@ struct ContactSettings {
   double friction = 0.0;              ///< Coulomb coefficient mu, 1
   std::string friction_law = "spring";  ///< "spring" (Cundall-Strack, capped by Coulomb), "regularized" (tanh slip law), "none"
   double regularization_speed = 1e-3; ///< v0 in tanh(|v_t|/v0) of the regularized law, m/s
+  double tangential_damping = 0.0;    ///< spring law: tangential dashpot as a multiple of the normal damping coefficient, 1
   double skin = 0.2;                  ///< Verlet-list skin as a fraction of the largest radius, 1
 };
 

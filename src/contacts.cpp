@@ -285,10 +285,11 @@ void ContactSystem::evaluate(const Particles& p, double h) {
   const double mu = prm_.friction;
   const FrictionLaw law = prm_.law;
   const double v0 = prm_.regularization_speed;
+  const double eta_ratio = prm_.tangential_damping;
 
   // Tangential force on body j from the relative tangential velocity vt (j relative to i),
   // the committed history and the normal force; returns the trial history through 'hist'.
-  auto friction = [&](const Vec3& n, const Vec3& vt, double fn, double kt, Vec3& hist) -> Vec3 {
+  auto friction = [&](const Vec3& n, const Vec3& vt, double fn, double kt, double eta, Vec3& hist) -> Vec3 {
     if (law == FrictionLaw::None || mu == 0.0) {
       hist = Vec3::Zero();
       return Vec3::Zero();
@@ -299,13 +300,14 @@ void ContactSystem::evaluate(const Particles& p, double h) {
       if (s == 0.0) return Vec3::Zero();
       return (-mu * fn * std::tanh(s / v0) / s) * vt;
     }
-    // Cundall-Strack spring: the history, kept in the tangent plane, grows with the slip.
+    // Cundall-Strack spring with a dashpot: the history, kept in the tangent plane, grows
+    // with the slip; when the force exceeds Coulomb's cap the spring is reset to it.
     Vec3 xi = hist - hist.dot(n) * n + h * vt;
-    Vec3 ft = -kt * xi;
+    Vec3 ft = -kt * xi - eta * vt;
     const double cap = mu * fn, f = ft.norm();
     if (f > cap) {
       ft *= cap / f;
-      xi = kt > 0.0 ? Vec3(-ft / kt) : Vec3::Zero();
+      xi = kt > 0.0 ? Vec3(-(ft + eta * vt) / kt) : Vec3::Zero();
     }
     hist = xi;
     return ft;
@@ -339,7 +341,7 @@ void ContactSystem::evaluate(const Particles& p, double h) {
     const Vec3 vt = vrel - vn * n;
     const double kt = q.kt0 * root;
     Vec3 hist = pairs_[k].history;
-    const Vec3 ft_j = friction(n, vt, fn, kt, hist);
+    const Vec3 ft_j = friction(n, vt, fn, kt, eta_ratio * q.D * std::sqrt(root), hist);
     pf_[k] = -fn * n - ft_j;
     pti_[k] = (ri * n).cross(-ft_j);
     ptj_[k] = (-rj * n).cross(ft_j);
@@ -373,7 +375,7 @@ void ContactSystem::evaluate(const Particles& p, double h) {
     const double kt = hit.weight * q.kt0 * std::sqrt(hit.overlap);
     Vec3 hist = tris_[k].history;
     // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
-    const Vec3 ft = friction(n, vt, fn, kt, hist);
+    const Vec3 ft = friction(n, vt, fn, kt, hit.weight * eta_ratio * q.D * std::sqrt(std::sqrt(hit.overlap)), hist);
     tf_[k] = fn * n + ft;
     tti_[k] = (-R * n).cross(ft);
     th_[k] = hist;

@@ -39,6 +39,7 @@ struct ContactParams {
   double friction = 0;              ///< mu, 1
   FrictionLaw law = FrictionLaw::None;
   double regularization_speed = 1e-3;  ///< m/s
+  double tangential_damping = 0;    ///< tangential dashpot as a multiple of the normal one, 1
   double skin = 0;                  ///< Verlet skin, m
 };
 

@@ -252,6 +252,7 @@ Model build_model(const CaseSettings& cs) {
             : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
                                                        : FrictionLaw::None;
     c.regularization_speed = cs.contact.regularization_speed;
+    c.tangential_damping = cs.contact.tangential_damping;
     double rmax = 0;
     for (double rr : p.radius) rmax = std::max(rmax, rr);
     c.skin = cs.contact.skin * rmax;

@@ -80,7 +80,8 @@ void run_case(const RunOptions& opt) {
   const UniaxialInfo& ux = model.uniaxial;
   std::vector<std::string> cols{"time"};
   if (ux.enabled) cols.insert(cols.end(), {"strain", "stress", "stress_predicted", "stress_midplane"});
-  cols.insert(cols.end(), {"step", "dt", "iterations", "kinetic_energy", "elastic_energy", "potential_energy",
+  cols.insert(cols.end(), {"step", "dt", "iterations", "kinetic_energy", "rotational_energy", "elastic_energy",
+                           "potential_energy",
                            "external_work", "plastic_work", "viscous_work", "fracture_energy", "energy_error",
                            "broken_rods", "broken_fraction", "contacts"});
   for (const auto& g : model.groups)
@@ -136,7 +137,8 @@ void run_case(const RunOptions& opt) {
     const double ke = sim.kinetic_energy(), ee = sim.elastic_energy(), pe = sim.potential_energy();
     const auto& L = sim.ledger();
     const double err = L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy);
-    row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke, ee, pe,
+    row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke,
+                           sim.rotational_energy(), ee, pe,
                            L.external_work, L.plastic_work, L.viscous_work, L.fracture_energy, err,
                            double(sim.broken_rods()), double(sim.broken_rods()) / total_rods,
                            double(sim.contacts().enabled() ? sim.contacts().touching() : 0)});

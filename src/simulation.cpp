@@ -527,12 +527,16 @@ double Simulation::kinetic_energy() const {
   const auto& p = m_.particles;
   const bool rot = rotations_;
   return deterministic_sum(p.size(), [&](std::size_t i) {
-    double e = 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
-    if (rot) {
-      const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
-      e += 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
-    }
-    return e;
+    return 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+  }) + (rot ? rotational_energy() : 0.0);
+}
+
+double Simulation::rotational_energy() const {
+  if (!rotations_) return 0.0;
+  const auto& p = m_.particles;
+  return deterministic_sum(p.size(), [&](std::size_t i) {
+    const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
+    return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
   });
 }
 

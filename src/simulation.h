@@ -73,6 +73,7 @@ class Simulation {
   void set_rotations(bool on);
 
   double kinetic_energy() const;  ///< translational + rotational, J
+  double rotational_energy() const;  ///< rotational part of the kinetic energy, J
   /// Recoverable elastic energy of the intact rods and the contacts, J.
   double elastic_energy() const;
   /// Potential energy in gravity relative to the initial positions, J.

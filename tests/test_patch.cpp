@@ -72,7 +72,9 @@ void check(const Eigen::Matrix3d& H) {
   const double want = closed_form_energy(r.model, eps);
   EXPECT_NEAR(r.energy, want, 1e-4 * std::abs(want));
   // The test can fail: the surfaces do carry unbalanced forces under a non-rigid deformation.
-  if (eps.norm() > 0) EXPECT_GT(r.max_surface_force, 1e-2 * rod_force);
+  if (eps.norm() > 0) {
+    EXPECT_GT(r.max_surface_force, 1e-2 * rod_force);
+  }
 }
 
 TEST(Patch, UniaxialStrainGivesC11) {
