@@ -47,9 +47,11 @@ def main():
     fig, ax = plt.subplots(figsize=(7, 4.5), dpi=120)
     t = [v * 1e6 for v in s["time"]]
     for key, label in (("external_work", "external work"), ("kinetic_energy", "kinetic"),
-                       ("elastic_energy", "elastic (rods)"), ("plastic_work", "plastic work"),
+                       ("rotational_energy", "rotational (part of kinetic)"), ("potential_energy", "potential (gravity)"),
+                       ("elastic_energy", "elastic (rods and contacts)"), ("plastic_work", "plastic work"),
                        ("viscous_work", "viscous"), ("fracture_energy", "fracture"), ("energy_error", "balance error")):
-        ax.plot(t, s[key], label=label, lw=1.2)
+        if key in s:
+            ax.plot(t, s[key], label=label, lw=1.2)
     ax.set_xlabel("time [us]")
     ax.set_ylabel("energy [J]")
     ax.set_title("Energy balance")

@@ -142,6 +142,11 @@ Model build_model(const CaseSettings& cs) {
   }
   for (std::size_t k = 0; k < free_velocity.size(); ++k) {
     const std::size_t i = model.lattice_particles + k;
+    // Free particles are solid spheres whatever the lattice's mass basis.
+    p.mass[i] = cs.material.density * 4.0 / 3.0 * M_PI * std::pow(p.radius[i], 3);
+    p.inv_mass[i] = 1.0 / p.mass[i];
+    p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
+    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
     p.velocity[i] = free_velocity[k];
     p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
   }

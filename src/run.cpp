@@ -121,6 +121,7 @@ void run_case(const RunOptions& opt) {
   };
 
   const double total_rods = std::max<double>(1.0, double(model.rods.size()));
+  double e0 = 0.0;  // initial kinetic + elastic + potential energy, J
   auto write_row = [&]() {
     std::vector<double> row{sim.time()};
     if (ux.enabled) {
@@ -136,7 +137,7 @@ void run_case(const RunOptions& opt) {
     }
     const double ke = sim.kinetic_energy(), ee = sim.elastic_energy(), pe = sim.potential_energy();
     const auto& L = sim.ledger();
-    const double err = L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy);
+    const double err = L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy);
     row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke,
                            sim.rotational_energy(), ee, pe,
                            L.external_work, L.plastic_work, L.viscous_work, L.fracture_energy, err,
@@ -150,6 +151,8 @@ void run_case(const RunOptions& opt) {
   };
 
   Progress progress(settings.output.progress, end_time);
+  // The balance counts changes from the initial state (free particles may start moving).
+  e0 = sim.kinetic_energy() + sim.elastic_energy() + sim.potential_energy();
   write_row();
   if (vtk) vtk->write_frame(0.0, model.particles, model.rods);
   const auto t0 = std::chrono::steady_clock::now();
@@ -213,7 +216,7 @@ void run_case(const RunOptions& opt) {
                     {"viscous_work_J", L.viscous_work},
                     {"fracture_energy_J", L.fracture_energy},
                     {"potential_energy_J", pe},
-                    {"energy_error_J", L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy)},
+                    {"energy_error_J", L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy)},
                     {"broken_rods", sim.broken_rods()},
                     {"broken_fraction", double(sim.broken_rods()) / total_rods}};
   for (std::size_t g = 0; g < model.groups.size(); ++g) {
@@ -280,7 +283,7 @@ void run_case(const RunOptions& opt) {
                double(st.force_evaluations) / (sim.time() * 1e6));
   fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", sim.broken_rods(),
              model.rods.size(), 100.0 * sim.broken_rods() / total_rods,
-             L.external_work - (ke + ee + pe + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);
+             L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);
 
   if (settings.output.plots) {
     // The summary must exist for the plot script; it is rewritten below with the plot list.
