@@ -155,15 +155,18 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
     for (const auto& c : cand) total += c.size();
     pairs.reserve(total);
     for (std::size_t i = 0; i < n; ++i)
-      for (auto j : cand[i]) pairs.push_back(Pair{static_cast<std::int32_t>(i), j, Vec3::Zero()});
+      for (auto j : cand[i]) pairs.push_back(Pair{static_cast<std::int32_t>(i), j});
   }
   // Carry the committed histories over (both lists sorted by (i, j)).
   {
+    std::vector<Vec3> hist(pairs.size(), Vec3::Zero());
     std::size_t k = 0;
-    for (auto& q : pairs) {
+    for (std::size_t m = 0; m < pairs.size(); ++m) {
+      const Pair& q = pairs[m];
       while (k < pairs_.size() && (pairs_[k].i < q.i || (pairs_[k].i == q.i && pairs_[k].j < q.j))) ++k;
-      if (k < pairs_.size() && pairs_[k].i == q.i && pairs_[k].j == q.j) q.history = pairs_[k].history;
+      if (k < pairs_.size() && pairs_[k].i == q.i && pairs_[k].j == q.j) hist[m] = phist_[k];
     }
+    phist_.swap(hist);
   }
   pairs_.swap(pairs);
 
@@ -260,13 +263,16 @@ void ContactSystem::fill_constants(const Particles& p) {
   const double G = E / (2.0 * (1.0 + nu));
   const double inv_E_pp = 2.0 * (1.0 - nu * nu) / E;  // 1/E* of two particles
   const double inv_G_pp = 2.0 * (2.0 - nu) / G;       // 1/G* (Mindlin)
-  for (auto& q : pairs_) {
+  pconst_.resize(pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const Pair& q = pairs_[k];
+    PairConstants& c = pconst_[k];
     const double ri = p.radius[q.i], rj = p.radius[q.j];
     const double rstar = ri * rj / (ri + rj);
     const double mstar = p.mass[q.i] * p.mass[q.j] / (p.mass[q.i] + p.mass[q.j]);
-    q.K = 4.0 / 3.0 / inv_E_pp * std::sqrt(rstar);
-    q.D = prm_.alpha * std::sqrt(mstar * q.K);
-    q.kt0 = 8.0 / inv_G_pp * std::sqrt(rstar);
+    c.K = 4.0 / 3.0 / inv_E_pp * std::sqrt(rstar);
+    c.D = prm_.alpha * std::sqrt(mstar * c.K);
+    c.kt0 = 8.0 / inv_G_pp * std::sqrt(rstar);
   }
   for (auto& q : tris_) {
     const MeshBody& mb = (*meshes_)[tri_mesh_[q.tri]];
@@ -330,7 +336,7 @@ void ContactSystem::evaluate(const Particles& p, double h) {
     const double dist = std::sqrt(dist2);
     const Vec3 n = (1.0 / dist) * d;
     const double delta = sum - dist;
-    const Pair& q = pairs_[k];
+    const PairConstants& q = pconst_[k];
     const HertzLaw hz{q.K, q.D};
     const Vec3& wi = p.omega[i];
     const Vec3& wj = p.omega[j];
@@ -340,7 +346,7 @@ void ContactSystem::evaluate(const Particles& p, double h) {
     const double fn = hz.force(delta, -vn);
     const Vec3 vt = vrel - vn * n;
     const double kt = q.kt0 * root;
-    Vec3 hist = pairs_[k].history;
+    Vec3 hist = phist_[k];
     const Vec3 ft_j = friction(n, vt, fn, kt, eta_ratio * q.D * std::sqrt(root), hist);
     pf_[k] = -fn * n - ft_j;
     pti_[k] = (ri * n).cross(-ft_j);
@@ -406,7 +412,7 @@ void ContactSystem::add_to_particle(std::size_t i, Vec3& force, Vec3& torque) co
 void ContactSystem::commit() {
   const std::size_t np = pairs_.size(), nt = tris_.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) pairs_[k].history = ptouch_[k] ? ph_[k] : Vec3::Zero();
+  for (std::size_t k = 0; k < np; ++k) phist_[k] = ptouch_[k] ? ph_[k] : Vec3::Zero();
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < nt; ++k) tris_[k].history = ttouch_[k] ? th_[k] : Vec3::Zero();
 }

@@ -84,9 +84,12 @@ class ContactSystem {
  private:
   // Per-contact constants are computed when the list is built: the evaluation then needs
   // no division for the material law (K, damping and tangential stiffness factor).
-  struct Pair {  // sphere-sphere, i < j
+  // Sphere-sphere pairs: the indices alone in one array (8 bytes, all that a near miss
+  // reads), their constants and committed histories in others.
+  struct Pair {  // i < j
     std::int32_t i, j;
-    Vec3 history = Vec3::Zero();  // committed tangential spring displacement, m
+  };
+  struct PairConstants {
     double K = 0, D = 0, kt0 = 0;  // Hertz K (N/m^1.5), damping alpha sqrt(m* K), 8 G* sqrt(R*) (N/m^1.5)
   };
   struct TriPair {  // sphere-triangle
@@ -105,6 +108,8 @@ class ContactSystem {
   std::size_t builds_ = 0;
 
   std::vector<Pair> pairs_;
+  std::vector<PairConstants> pconst_;
+  std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
   // Per-contact results of the last evaluation.
   std::vector<Vec3> pf_, pti_, ptj_, ph_;   // force on i, torque on i, torque on j, trial history

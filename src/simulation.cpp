@@ -95,8 +95,7 @@ void Simulation::step_explicit() {
   rod_forces();
   contact_forces(h);
   gather();
-  kick(h);
-  if (rotations_) rotate(h, 0.0, 0.5);
+  kick(h);  // (rotations included: the explicit update needs only this step's torque)
   commit();
   account(h);
   stats_.last_iterations = 1;
@@ -199,6 +198,7 @@ void Simulation::kick(double h) {
   auto& p = m_.particles;
   const double half = 0.5 * h;
   const std::size_t n = p.size();
+  const bool rot = rotations_;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t mask = p.prescribed[i];
@@ -208,6 +208,31 @@ void Simulation::kick(double h) {
       for (int c = 0; c < 3; ++c)
         if (!(mask & (1u << c))) p.velocity[i][c] += half * p.acceleration[i][c];
     }
+    if (rot && free_to_rotate_[i]) rotate_one(i, h, 0.0, 0.5);
+  }
+}
+
+void Simulation::rotate_one(std::size_t i, double h, double beta, double gamma) {
+  auto& p = m_.particles;
+  // Start-of-step state (world frame): saved for Newmark, current for the explicit scheme.
+  const RotState s = implicit_ ? rot_n_[i] : RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
+  if (p.inv_inertia[i] > 0.0) {  // isotropic inertia: a sphere
+    Quat q = s.q;
+    Vec3 w = s.w, dw = s.dw;
+    sphere_rotation_step(q, w, dw, p.torque[i], p.inv_inertia[i], h, gamma);
+    p.orientation[i] = q;
+    p.omega[i] = w;
+    p.omega_dot[i] = dw;
+  } else {
+    // Euler's equations live in the body frame.
+    RotationSettings rs;
+    rs.beta = beta;
+    rs.gamma = gamma;
+    const RotState body{s.q, to_body(s.q, s.w), to_body(s.q, s.dw)};
+    const RotStepResult r = rotation_step(body, p.torque[i], p.inertia[i], h, rs);
+    p.orientation[i] = r.state.q;
+    p.omega[i] = to_world(r.state.q, r.state.w);
+    p.omega_dot[i] = to_world(r.state.q, r.state.dw);
   }
 }
 
@@ -245,36 +270,10 @@ bool Simulation::place(double h) {
 }
 
 void Simulation::rotate(double h, double beta, double gamma) {
-  auto& p = m_.particles;
-  const auto& g = m_.settings.integrator;
-  RotationSettings rs;
-  rs.beta = beta;
-  rs.gamma = gamma;
-  const bool from_saved = implicit_;
-  const std::size_t n = p.size();
+  const std::size_t n = m_.particles.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!free_to_rotate_[i]) continue;
-    // Start-of-step state (world frame): saved for Newmark, current for the explicit scheme.
-    const RotState s = from_saved ? rot_n_[i] : RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
-    const Vec3& I = p.inertia[i];
-    if (I[0] == I[1] && I[1] == I[2]) {
-      Quat q = s.q;
-      Vec3 w = s.w, dw = s.dw;
-      sphere_rotation_step(q, w, dw, p.torque[i], p.inv_inertia[i], h, gamma);
-      p.orientation[i] = q;
-      p.omega[i] = w;
-      p.omega_dot[i] = dw;
-    } else {
-      // Euler's equations live in the body frame.
-      const RotState body{s.q, to_body(s.q, s.w), to_body(s.q, s.dw)};
-      const RotStepResult r = rotation_step(body, p.torque[i], I, h, rs);
-      p.orientation[i] = r.state.q;
-      p.omega[i] = to_world(r.state.q, r.state.w);
-      p.omega_dot[i] = to_world(r.state.q, r.state.dw);
-    }
-  }
-  (void)g;
+  for (std::size_t i = 0; i < n; ++i)
+    if (free_to_rotate_[i]) rotate_one(i, h, beta, gamma);
 }
 
 namespace {

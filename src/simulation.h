@@ -11,8 +11,8 @@
 //   commit        plastic shifts and breakage of the final evaluation written back
 //   account       work of the grips, dissipation, time and counters
 // Explicit (velocity Verlet = beta 0, gamma 1/2, one evaluation per step):
-//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, contact_forces, gather, kick (v += dt/2 a),
-//   rotate, commit, account
+//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, contact_forces, gather,
+//   kick (v += dt/2 a, and the rotation update), commit, account
 // Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
 //   save, prescribe, then repeat { place (x, v from the latest a+), rotate, rod_forces,
 //   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
@@ -98,6 +98,7 @@ class Simulation {
   void kick(double h);         // explicit corrector
   bool place(double h);        // Newmark positions and velocities from the latest a; false if too far
   void rotate(double h, double beta, double gamma);
+  void rotate_one(std::size_t i, double h, double beta, double gamma);
   void rod_forces();
   void contact_forces(double h);
   double gather();             // returns the sweep's relative force change (free components; implicit only)
