@@ -9,7 +9,10 @@
 #include "errors.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
+#include "mesh.h"
 #include "rod_driver.h"
+#include "tool_paths/tool_geometry.h"
+#include "vtk_output.h"
 #include "run.h"
 
 namespace {
@@ -70,6 +73,18 @@ int main(int argc, char** argv) {
   run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")->allow_extra_args(false);
   run->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
 
+  // swarf tool
+  auto* tool = app.add_subcommand("tool", "Generate the cutting tool mesh (STL, and VTP for ParaView)");
+  swarf::ToolSpec ts;
+  std::string tool_out, tool_vtp;
+  tool->add_option("--rake-angle", ts.rake_angle_deg, "Rake angle alpha, deg (default 0)");
+  tool->add_option("--clearance-angle", ts.clearance_angle_deg, "Clearance angle gamma, deg (default 7)");
+  tool->add_option("--edge-radius", ts.edge_radius, "Cutting-edge radius, m (default 0: sharp)");
+  tool->add_option("--width", ts.width, "Width along the edge, m")->required();
+  tool->add_option("--face-length", ts.face_length, "Length of the rake and flank faces, m")->required();
+  tool->add_option("--out", tool_out, "Output STL file")->required();
+  tool->add_option("--vtp", tool_vtp, "Also write this VTP file");
+
   // swarf bench
   auto* bench = app.add_subcommand("bench", "Time named scenes (case files) for several thread counts");
   swarf::BenchOptions bo;
@@ -114,6 +129,12 @@ int main(int argc, char** argv) {
       swarf::write_rod_csv(std::cout, samples);
     } else if (*run) {
       swarf::run_case(ro);
+    } else if (*tool) {
+      const auto mesh = swarf::make_tool(ts);
+      swarf::write_stl(tool_out, mesh);
+      if (!tool_vtp.empty()) swarf::write_vtp(tool_vtp, mesh);
+      fmt::print("wrote {}{}: {} triangles, {} vertices\n", tool_out, tool_vtp.empty() ? "" : " and " + tool_vtp,
+                 mesh.triangles.size(), mesh.vertices.size());
     } else if (*bench) {
       bo.threads.clear();
       for (double t : parse_list(threads_s, "--threads")) {

@@ -13,7 +13,11 @@
 #include <vtkPoints.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
+
+#include "mesh.h"
 
 #include "atomic_file.h"
 #include "errors.h"
@@ -73,6 +77,26 @@ void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
 }
 
 }  // namespace
+
+void write_vtp(const std::string& path, const TriangleMesh& mesh) {
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& v : mesh.vertices) pts->InsertNextPoint(v.data());
+  vtkNew<vtkCellArray> tris;
+  for (const auto& t : mesh.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    tris->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(pts);
+  poly->SetPolys(tris);
+  vtkNew<vtkXMLPolyDataWriter> w;
+  const std::string tmp = path + ".part.vtp";
+  w->SetFileName(tmp.c_str());
+  w->SetInputData(poly);
+  if (w->Write() != 1) throw InputError("cannot write VTK file '" + path + "'");
+  std::filesystem::rename(tmp, path);
+}
 
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r) {
   std::vector<double> out(p.size(), 0.0);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh.h"
 #include "particles.h"
 #include "rods.h"
 
@@ -28,6 +29,9 @@ class VtkSeries {
   bool with_rods_;
   std::vector<double> times_;
 };
+
+/// Writes a triangle mesh as a VTK XML polydata file (.vtp), atomically.
+void write_vtp(const std::string& path, const TriangleMesh& mesh);
 
 /// Fraction of each particle's rods that are broken (0 for a particle without rods).
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r);
