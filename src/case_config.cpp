@@ -367,18 +367,32 @@ void read_contacts_and_bodies(const toml::table& root, const std::string& source
           r.fail("divisions", dn, "must be two positive integers [n1, n2]");
         m.divisions = {static_cast<int>(v[0]), static_cast<int>(v[1])};
       }
+      m.tool = r.has("rake_angle");
+      m.rake_angle = r.number("rake_angle", m.rake_angle);
+      m.clearance_angle = r.number("clearance_angle", m.clearance_angle);
+      m.edge_radius = r.number("edge_radius", m.edge_radius, non_negative);
+      m.width = r.number("width", m.width, non_negative);
+      m.face_length = r.number("face_length", m.face_length, non_negative);
+      for (const char* key : {"clearance_angle", "edge_radius", "width", "face_length"})
+        if (!m.tool && r.has(key)) r.fail(key, r.get(key), "is a tool key: give rake_angle (deg) to make a tool");
+      if (m.tool && (!r.has("width") || !r.has("face_length")))
+        r.fail("rake_angle", r.get("rake_angle"), "a tool needs width (m) and face_length (m) too");
       read_motion(r, m.motion, m.velocity, m.table_time, m.table_displacement);
       m.youngs_modulus = r.number("youngs_modulus", m.youngs_modulus, positive_or_inf);
       m.poisson_ratio = r.number("poisson_ratio", m.poisson_ratio,
                                  [](double v) { return v > -1 && v < 0.5 ? nullptr : "must lie in (-1, 0.5)"; });
-      const bool rect = r.has("edge1") || r.has("edge2") || r.has("origin") || r.has("divisions");
-      if (!m.file.empty() && rect)
-        r.fail("file", r.get("file"), "give either file or a rectangle (origin, edge1, edge2, divisions), not both");
-      if (m.file.empty() && !(r.has("edge1") && r.has("edge2")))
-        r.fail("file", nullptr, "a mesh needs file = \"...stl|obj\" or a rectangle: origin, edge1, edge2 (m)");
+      const bool rect = r.has("edge1") || r.has("edge2") || r.has("divisions");
+      if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) > 1)
+        r.fail("file", r.get("file") ? r.get("file") : r.get("rake_angle"),
+               "give one of: file, a rectangle (edge1, edge2, divisions) or a tool (rake_angle, ...)");
+      if (m.file.empty() && !m.tool && !(r.has("edge1") && r.has("edge2")))
+        r.fail("file", nullptr,
+               "a mesh needs file = \"...stl|obj\", a rectangle (origin, edge1, edge2 in m) or a tool (rake_angle, ...)");
       if (!m.file.empty()) {
         m.file = resolve(m.file, directory);
         if (!std::filesystem::exists(m.file)) r.fail("file", r.get("file"), "file not found: " + m.file);
+      } else if (m.tool) {
+        // checked by the generator (names the angle or size)
       } else {
         const Vec3Array e1 = m.edge1, e2 = m.edge2;
         const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],

@@ -120,6 +120,13 @@ struct MeshSettings {
   std::array<double, 3> edge1{0, 0, 0};    ///< rectangle edge, m
   std::array<double, 3> edge2{0, 0, 0};    ///< rectangle edge, m (normal = edge1 x edge2)
   std::array<int, 2> divisions{1, 1};      ///< rectangle cells along edge1, edge2 (2 triangles each)
+  // Generated cutting tool (tool_geometry.h), placed with its sharp tip at 'origin':
+  bool tool = false;                  ///< true when rake_angle is given
+  double rake_angle = 0.0;            ///< deg
+  double clearance_angle = 7.0;       ///< deg
+  double edge_radius = 0.0;           ///< m
+  double width = 0.0;                 ///< m
+  double face_length = 0.0;           ///< m
   std::string motion = "fixed";       ///< "fixed", "velocity" or "table" (as groups)
   std::array<double, 3> velocity{0, 0, 0};             ///< m/s
   std::vector<double> table_time;                      ///< s

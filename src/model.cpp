@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "lattice_file.h"
+#include "tool_geometry.h"
 #include <fstream>
 #include <sstream>
 
@@ -238,6 +239,21 @@ Model build_model(const CaseSettings& cs) {
     if (!ms.file.empty()) {
       mb.mesh = read_mesh(ms.file, ms.scale);
       mb.mesh.name = ms.name;
+    } else if (ms.tool) {
+      ToolSpec ts;
+      ts.rake_angle_deg = ms.rake_angle;
+      ts.clearance_angle_deg = ms.clearance_angle;
+      ts.edge_radius = ms.edge_radius;
+      ts.width = ms.width;
+      ts.face_length = ms.face_length;
+      try {
+        mb.mesh = make_tool(ts);
+      } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: [[mesh]] '{}': {}", cs.source, ms.name, e.what()));
+      }
+      mb.mesh.name = ms.name;
+      const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]);
+      for (auto& v : mb.mesh.vertices) v += o;
     } else {
       mb.mesh = rectangle_mesh(ms);
       mb.mesh.validate(cs.source + " [[mesh]] " + ms.name);

@@ -8,6 +8,8 @@
 #include "errors.h"
 #include "test_helpers.h"
 #include "tool_geometry.h"
+#include "case_config.h"
+#include "model.h"
 #include "vtk_output.h"
 
 namespace swarf {
@@ -111,6 +113,44 @@ TEST(Tool, CliWritesStlAndVtp) {
                                      " tool --rake-angle 80 --width 5e-3 --face-length 2e-3 --out " + (dir / "x.stl"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("rake"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+TEST(Tool, AsAMeshInACase) {
+  const std::string base = R"([workpiece]
+cells = [4, 2, 2]
+radius = 1e-4
+[contact]
+[integrator]
+end_time = 1e-6
+[[mesh]]
+name = "tool"
+)";
+  const Model m = build_model(parse_case(base + "rake_angle = 10.0\nwidth = 1e-3\nface_length = 1e-3\n"
+                                                "origin = [-1e-4, 2e-4, 1e-3]\n",
+                                         "cut", {}));
+  ASSERT_EQ(m.meshes.size(), 1u);
+  // The sharp tip sits at the origin given: the lowest vertex of the flank/rake wedge.
+  double zmin = 1;
+  for (const auto& v : m.meshes[0].mesh.vertices) zmin = std::min(zmin, v[2]);
+  EXPECT_NEAR(zmin, 1e-3, 1e-15);
+  try {
+    build_model(parse_case(base + "clearance_angle = 5.0\nedge1 = [1.0, 0.0, 0.0]\nedge2 = [0.0, 1.0, 0.0]\n", "cut", {}));
+    ADD_FAILURE() << "a tool key without rake_angle was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mesh.clearance_angle"), std::string::npos) << e.what();
+  }
+  try {
+    build_model(parse_case(base + "rake_angle = 70.0\nwidth = 1e-3\nface_length = 1e-3\n", "cut", {}));
+    ADD_FAILURE() << "an impossible tool was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tool"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
