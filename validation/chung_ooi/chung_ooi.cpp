@@ -6,6 +6,7 @@
 // Tests 1-3 compare with the analytic Hertz impact; tests 4-8 (oblique impacts, spin, two
 // spheres of equal and different size) with the rigid-body impulse theory where the contact
 // slides throughout, and show the sticking regime (governed by tangential compliance) as is.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
@@ -37,6 +38,26 @@ std::string contact_table(const Material& m, double e, double mu) {
                      m.rho, m.E, m.nu, e, mu);
 }
 
+// Steps a model until the contact measured by 'overlap' (m) has opened and closed again;
+// records the contact time, the peak overlap and the peak of 'force' (N).
+template <class Overlap, class Force>
+ImpactResult run_impact(Simulation& sim, Overlap overlap, Force force) {
+  ImpactResult r;
+  double t_on = -1;
+  for (long k = 0; k < 100000000; ++k) {
+    sim.step();
+    const double d = overlap();
+    if (d > 0 && t_on < 0) t_on = sim.time();
+    r.peak_overlap = std::max(r.peak_overlap, d);
+    r.peak_force = std::max(r.peak_force, force());
+    if (d <= 0 && t_on >= 0) {
+      r.contact_time = sim.time() - t_on;
+      break;
+    }
+  }
+  return r;
+}
+
 // Two identical spheres, radius R, approaching at +-v along x (test 1).
 ImpactResult two_spheres(const Material& m, double R, double v, double dt) {
   const std::string text = contact_table(m, 1.0, 0.0) +
@@ -46,20 +67,10 @@ ImpactResult two_spheres(const Material& m, double R, double v, double dt) {
                                        fmt::arg("v", v), fmt::arg("R", R), fmt::arg("x", 2 * R * 1.0001), fmt::arg("dt", dt));
   Model model = build_model(parse_case(text, "chung_ooi test 1", {}));
   Simulation sim(model);
-  ImpactResult r;
-  double t_on = -1;
-  for (long k = 0; k < 100000000; ++k) {
-    sim.step();
-    const double d = 2 * R - (model.particles.position[1] - model.particles.position[0]).norm();
-    if (d > 0 && t_on < 0) t_on = sim.time();
-    r.peak_overlap = std::max(r.peak_overlap, d);
-    r.peak_force = std::max(r.peak_force, model.particles.force[1][0]);
-    if (d <= 0 && t_on >= 0) {
-      r.contact_time = sim.time() - t_on;
-      break;
-    }
-  }
-  r.v_after = model.particles.velocity[1];
+  const auto& p = model.particles;
+  ImpactResult r = run_impact(
+      sim, [&] { return 2 * R - (p.position[1] - p.position[0]).norm(); }, [&] { return p.force[1][0]; });
+  r.v_after = p.velocity[1];
   return r;
 }
 
@@ -77,21 +88,10 @@ ImpactResult sphere_on_plane(const Material& m, double R, double vn, double vt, 
                   fmt::arg("o", -L / 2), fmt::arg("L", L), fmt::arg("dt", dt), fmt::arg("wy", spin_y));
   Model model = build_model(parse_case(text, "chung_ooi sphere on plane", {}));
   Simulation sim(model);
-  ImpactResult r;
-  double t_on = -1;
-  for (long k = 0; k < 100000000; ++k) {
-    sim.step();
-    const double d = R - model.particles.position[0][2];
-    if (d > 0 && t_on < 0) t_on = sim.time();
-    r.peak_overlap = std::max(r.peak_overlap, d);
-    r.peak_force = std::max(r.peak_force, model.particles.force[0][2]);
-    if (d <= 0 && t_on >= 0) {
-      r.contact_time = sim.time() - t_on;
-      break;
-    }
-  }
-  r.v_after = model.particles.velocity[0];
-  r.w_after = model.particles.omega[0];
+  const auto& p = model.particles;
+  ImpactResult r = run_impact(sim, [&] { return R - p.position[0][2]; }, [&] { return p.force[0][2]; });
+  r.v_after = p.velocity[0];
+  r.w_after = p.omega[0];
   return r;
 }
 
@@ -108,19 +108,11 @@ ImpactResult two_spheres_oblique(const Material& m, double R1, double R2, double
                   fmt::arg("vz", -vn), fmt::arg("dt", dt));
   Model model = build_model(parse_case(text, "chung_ooi two spheres oblique", {}));
   Simulation sim(model);
-  ImpactResult r;
-  double t_on = -1;
-  for (long k = 0; k < 100000000; ++k) {
-    sim.step();
-    const double d = R1 + R2 - (model.particles.position[1] - model.particles.position[0]).norm();
-    if (d > 0 && t_on < 0) t_on = sim.time();
-    if (d <= 0 && t_on >= 0) {
-      r.contact_time = sim.time() - t_on;
-      break;
-    }
-  }
-  r.v_after = model.particles.velocity[1] - model.particles.velocity[0];  // relative velocity after
-  r.w_after = model.particles.omega[1];
+  const auto& p = model.particles;
+  ImpactResult r = run_impact(
+      sim, [&] { return R1 + R2 - (p.position[1] - p.position[0]).norm(); }, [&] { return p.force[1][2]; });
+  r.v_after = p.velocity[1] - p.velocity[0];  // relative velocity after
+  r.w_after = p.omega[1];
   return r;
 }
 
@@ -138,6 +130,20 @@ Hertz hertz(double Estar, double Rstar, double mstar, double v) {
 }
 
 double pct(double got, double want) { return 100.0 * (got - want) / want; }
+
+// The three rows (contact time, peak force, peak overlap) of tests 1 and 2; returns the
+// largest absolute deviation in percent.
+double hertz_rows(std::string& md, const char* name, const ImpactResult& r, const Hertz& h) {
+  const double d[3] = {pct(r.contact_time, h.contact_time), pct(r.peak_force, h.peak_force),
+                       pct(r.peak_overlap, h.peak_overlap)};
+  md += fmt::format("| {} | contact time (us) | {:.4f} | {:.4f} | {:+.3f} |\n", name, r.contact_time * 1e6,
+                    h.contact_time * 1e6, d[0]);
+  md += fmt::format("| {} | peak force (kN) | {:.4f} | {:.4f} | {:+.3f} |\n", name, r.peak_force / 1e3,
+                    h.peak_force / 1e3, d[1]);
+  md += fmt::format("| {} | peak overlap (um) | {:.4f} | {:.4f} | {:+.3f} |\n", name, r.peak_overlap * 1e6,
+                    h.peak_overlap * 1e6, d[2]);
+  return std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+}
 
 }  // namespace
 
@@ -157,13 +163,7 @@ int main(int argc, char** argv) {
     const double R = 0.01, v = 10.0;
     const double mass = m.rho * 4.0 / 3.0 * M_PI * R * R * R;
     const Hertz h = hertz(m.E / (2 * (1 - m.nu * m.nu)), R / 2, mass / 2, 2 * v);
-    const ImpactResult r = two_spheres(m, R, v, h.contact_time / 2000);
-    md += fmt::format("| {} | contact time (us) | {:.4f} | {:.4f} | {:+.3f} |\n", m.name, r.contact_time * 1e6,
-                      h.contact_time * 1e6, check(pct(r.contact_time, h.contact_time)));
-    md += fmt::format("| {} | peak force (kN) | {:.4f} | {:.4f} | {:+.3f} |\n", m.name, r.peak_force / 1e3,
-                      h.peak_force / 1e3, check(pct(r.peak_force, h.peak_force)));
-    md += fmt::format("| {} | peak overlap (um) | {:.4f} | {:.4f} | {:+.3f} |\n", m.name, r.peak_overlap * 1e6,
-                      h.peak_overlap * 1e6, check(pct(r.peak_overlap, h.peak_overlap)));
+    check(hertz_rows(md, m.name, two_spheres(m, R, v, h.contact_time / 2000), h));
   }
 
   // Test 2: sphere on a rigid plane, R = 0.1 m, 0.2 m/s.
@@ -173,13 +173,7 @@ int main(int argc, char** argv) {
     const double R = 0.1, v = 0.2;
     const double mass = m.rho * 4.0 / 3.0 * M_PI * R * R * R;
     const Hertz h = hertz(m.E / (1 - m.nu * m.nu), R, mass, v);
-    const ImpactResult r = sphere_on_plane(m, R, v, 0.0, 1.0, 0.0, h.contact_time / 2000);
-    md += fmt::format("| {} | contact time (us) | {:.3f} | {:.3f} | {:+.3f} |\n", m.name, r.contact_time * 1e6,
-                      h.contact_time * 1e6, check(pct(r.contact_time, h.contact_time)));
-    md += fmt::format("| {} | peak force (kN) | {:.4f} | {:.4f} | {:+.3f} |\n", m.name, r.peak_force / 1e3,
-                      h.peak_force / 1e3, check(pct(r.peak_force, h.peak_force)));
-    md += fmt::format("| {} | peak overlap (um) | {:.4f} | {:.4f} | {:+.3f} |\n", m.name, r.peak_overlap * 1e6,
-                      h.peak_overlap * 1e6, check(pct(r.peak_overlap, h.peak_overlap)));
+    check(hertz_rows(md, m.name, sphere_on_plane(m, R, v, 0.0, 1.0, 0.0, h.contact_time / 2000), h));
   }
 
   // Test 3: restitution sweep (aluminium oxide sphere, R = 2.55 mm, 3.9 m/s onto the plane).
