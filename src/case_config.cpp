@@ -511,11 +511,29 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     Reader r(table("material"), "material", source, ov);
     cs.material.density = r.number("density", cs.material.density, positive);
     cs.material.mass_basis = r.string("mass_basis", cs.material.mass_basis, {"cell", "sphere"});
+    auto& mt = cs.material;
+    mt.macroscopic = r.has("youngs_modulus");
+    mt.youngs_modulus = r.number("youngs_modulus", mt.youngs_modulus, positive);
+    mt.yield_stress = r.number("yield_stress", mt.yield_stress, positive_or_inf);
+    mt.hardening_modulus = r.number("hardening_modulus", mt.hardening_modulus, non_negative);
+    mt.tensile_strength = r.number("tensile_strength", mt.tensile_strength, positive_or_inf);
+    mt.poisson_ratio = r.number("poisson_ratio", mt.poisson_ratio,
+                                [](double v) { return v > -1 && v < 0.5 ? nullptr : "must lie in (-1, 0.5)"; });
+    if (!mt.macroscopic)
+      for (const char* key : {"yield_stress", "hardening_modulus", "tensile_strength", "poisson_ratio"})
+        if (r.has(key)) r.fail(key, r.get(key), "macroscopic properties need material.youngs_modulus (Pa) too");
+    if (mt.macroscopic && !(mt.hardening_modulus < mt.youngs_modulus))
+      r.fail("hardening_modulus", r.get("hardening_modulus"),
+             fmt::format("must be below material.youngs_modulus = {} Pa", mt.youngs_modulus));
     r.finish();
   }
   {
     Reader r(table("rod"), "rod", source, ov);
     auto& d = cs.rod;
+    if (cs.material.macroscopic)
+      for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength"})
+        if (r.has(key))
+          r.fail(key, r.get(key), "the rod law comes from the [material] properties here; give one or the other");
     d.youngs_modulus = r.number("youngs_modulus", d.youngs_modulus, positive);
     d.area = r.number("area", d.area, non_negative);
     d.yield_strain = r.number("yield_strain", d.yield_strain, positive_or_inf);

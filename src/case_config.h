@@ -30,6 +30,14 @@ struct WorkpieceSettings {
 struct MaterialSettings {
   double density = 7800.0;            ///< kg/m^3
   std::string mass_basis = "cell";    ///< "cell": m = rho a^3/4 (bulk density right); "sphere": m = rho 4/3 pi R^3
+  // Macroscopic properties along a cube axis [100]; when youngs_modulus is given, swarf
+  // derives the rod parameters from them through the FCC lattice relations (derived.h).
+  bool macroscopic = false;           ///< true when youngs_modulus is given here
+  double youngs_modulus = 0.0;        ///< E along [100], Pa
+  double yield_stress = kInf;         ///< uniaxial yield stress along [100], Pa; inf = elastic
+  double hardening_modulus = 0.0;     ///< tangent after yield, Pa
+  double tensile_strength = kInf;     ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
+  double poisson_ratio = -1.0;        ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
 };
 
 /// [rod]: the rod law (paper eqs. 23-31) between bonded neighbours.

@@ -24,7 +24,21 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.rod_area = cs.rod.area > 0 ? cs.rod.area : M_PI * R * R;
   double l0 = d.nn_distance;
   if (!lat.rest_length.empty()) l0 = *std::min_element(lat.rest_length.begin(), lat.rest_length.end());
-  const double E = cs.rod.youngs_modulus;
+  // The rod law: given directly, or derived from macroscopic properties along [100]
+  // (physics notes section 5): E100 = 4 kb/(3a), every rod strained by eps/3 in magnitude
+  // under uniaxial stress, so sigma_y = 3 E100 eps_y, H = E100 k/E, sigma_f = 3 (E100/E) sigma_max.
+  RodSettings rod = cs.rod;
+  const double a_cell = d.cell_edge;
+  if (cs.material.macroscopic) {
+    const auto& mt = cs.material;
+    const double kb = 3.0 * a_cell * mt.youngs_modulus / 4.0;
+    rod.youngs_modulus = kb * l0 / d.rod_area;
+    rod.yield_strain = mt.yield_stress / (3.0 * mt.youngs_modulus);
+    rod.hardening_modulus = mt.hardening_modulus * rod.youngs_modulus / mt.youngs_modulus;
+    rod.tensile_strength = mt.tensile_strength * rod.youngs_modulus / (3.0 * mt.youngs_modulus);
+    d.converted = true;
+  }
+  const double E = rod.youngs_modulus;
   d.rod_stiffness = E * d.rod_area / l0;
   const double kb = d.rod_stiffness, m = d.particle_mass, zeta = cs.rod.damping_ratio;
   d.rod_damping = zeta * 2.0 * std::sqrt(kb * m / 2.0);
@@ -53,19 +67,19 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.youngs_modulus_voigt = 2.0 * kb / a;
   d.bulk_density = m / (a * a * a / 4.0);
   d.bar_stress_factor = 3.0 * d.youngs_modulus_100 / E;
-  d.bar_yield_strain = 3.0 * cs.rod.yield_strain;
+  d.bar_yield_strain = 3.0 * rod.yield_strain;
   d.bar_yield_stress = d.youngs_modulus_100 * d.bar_yield_strain;
-  d.bar_hardening_tangent = d.youngs_modulus_100 * cs.rod.hardening_modulus / E;
-  d.bar_failure_stress = d.bar_stress_factor * cs.rod.tensile_strength;
+  d.bar_hardening_tangent = d.youngs_modulus_100 * rod.hardening_modulus / E;
+  d.bar_failure_stress = d.bar_stress_factor * rod.tensile_strength;
 
   d.law.youngs_modulus = E;
-  d.law.yield_strain = cs.rod.yield_strain;
-  d.law.hardening = cs.rod.hardening_modulus;
-  d.law.tensile_strength = cs.rod.tensile_strength;
+  d.law.yield_strain = rod.yield_strain;
+  d.law.hardening = rod.hardening_modulus;
+  d.law.tensile_strength = rod.tensile_strength;
   d.law.viscosity = d.rod_viscosity;
 
   const auto& g = cs.integrator;
-  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && std::isfinite(cs.rod.tensile_strength));
+  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && std::isfinite(rod.tensile_strength));
   d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
   d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
   // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64

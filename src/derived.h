@@ -44,6 +44,7 @@ struct Derived {
   double bar_stress_factor = 0;    ///< 3 E100 / E: sigma_bar = factor * sigma_rod(eps_bar/3), 1
 
   RodLaw law;                      ///< the rod law with the viscosity filled in
+  bool converted = false;          ///< the rod law was derived from [material] macroscopic properties
 };
 
 /// Computes everything from the settings and the lattice (radii, rest lengths). Throws

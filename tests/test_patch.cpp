@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "case_config.h"
+#include "errors.h"
 #include "model.h"
 #include "simulation.h"
 
@@ -119,6 +120,46 @@ TEST(Patch, Youngs100FromTheCubicConstants) {
   const double c11 = m.derived.c11, c12 = m.derived.c12;
   EXPECT_NEAR(m.derived.youngs_modulus_100, (c11 - c12) * (c11 + 2 * c12) / (c11 + c12),
               1e-14 * m.derived.youngs_modulus_100);
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Rod parameters derived from macroscopic [100] properties reproduce them through the
+// lattice relations (the same relations the hysteresis bar is measured against).
+TEST(MaterialConversion, RodLawFromMacroscopicProperties) {
+  const char* text = R"(
+[workpiece]
+cells = [3, 3, 3]
+radius = 0.1e-3
+[material]
+density = 7800.0
+youngs_modulus = 210e9
+yield_stress = 400e6
+hardening_modulus = 2e9
+tensile_strength = 600e6
+[integrator]
+end_time = 1e-6
+)";
+  const Model m = build_model(parse_case(text, "macro", {}));
+  const Derived& d = m.derived;
+  EXPECT_TRUE(d.converted);
+  EXPECT_NEAR(d.youngs_modulus_100, 210e9, 1e-12 * 210e9);
+  EXPECT_NEAR(d.bar_yield_stress, 400e6, 1e-12 * 400e6);
+  EXPECT_NEAR(d.bar_hardening_tangent, 2e9, 1e-12 * 2e9);
+  EXPECT_NEAR(d.bar_failure_stress, 600e6, 1e-12 * 600e6);
+  // kb = 3 a E100 / 4 and the rod modulus E = kb L0 / A.
+  EXPECT_NEAR(d.rod_stiffness, 0.75 * d.cell_edge * 210e9, 1e-12 * d.rod_stiffness);
+  // Giving the rod law as well is refused.
+  try {
+    build_model(parse_case(std::string(text) + "[rod]\nyield_strain = 1e-3\n", "macro", {}));
+    ADD_FAILURE() << "rod law and material properties both accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("rod.yield_strain"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
