@@ -101,6 +101,21 @@ void run_case(const RunOptions& opt) {
     for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("reaction_{}_{}", g.name, c));
   for (const auto& mb : model.meshes)
     for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("force_{}_{}", mb.name, c));
+  // The first generated tool: cutting force Fc (against the cutting direction +x of the tool
+  // frame) and thrust force Ft (+z, away from the workpiece), per unit width of the workpiece.
+  int tool_mesh = -1;
+  for (std::size_t k = 0; k < settings.meshes.size() && tool_mesh < 0; ++k)
+    if (settings.meshes[k].tool) tool_mesh = static_cast<int>(k);
+  double work_width = 0.0;  // m, lattice extent along y plus one layer spacing
+  if (tool_mesh >= 0 && model.lattice_particles > 0) {
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (std::size_t i = 0; i < model.lattice_particles; ++i) {
+      lo = std::min(lo, model.particles.initial_position[i][1]);
+      hi = std::max(hi, model.particles.initial_position[i][1]);
+    }
+    work_width = hi - lo + 0.5 * model.derived.cell_edge;
+    cols.insert(cols.end(), {"cutting_force_per_width", "thrust_force_per_width"});
+  }
   SeriesWriter series(dir + "/series.csv", cols);
 
   std::unique_ptr<VtkSeries> vtk;
@@ -160,6 +175,11 @@ void run_case(const RunOptions& opt) {
       for (int c = 0; c < 3; ++c) row.push_back(sim.group_reaction(g)[c]);
     for (std::size_t k = 0; k < model.meshes.size(); ++k)
       for (int c = 0; c < 3; ++c) row.push_back(sim.mesh_force(k)[c]);
+    if (work_width > 0) {
+      const Vec3 f = sim.mesh_force(tool_mesh);
+      row.push_back(-f[0] / work_width);
+      row.push_back(f[2] / work_width);
+    }
     series.row(row);
   };
 

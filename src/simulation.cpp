@@ -473,6 +473,18 @@ void Simulation::account(double h) {
     }
     group_v_[g] = v;
   }
+  // Moving meshes (tools) work on the particles: minus the force the particles exert on the
+  // mesh times its displacement (trapezoid over the step).
+  if (contacts_.enabled()) {
+    mesh_force_old_.resize(m_.meshes.size(), Vec3::Zero());
+    for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+      if (m_.mesh_motion[k].kind == Motion::Kind::Fixed) continue;
+      const Vec3 f = contacts_.mesh_force(k);
+      const Vec3 du = m_.meshes[k].velocity * h;
+      ledger_.external_work -= 0.5 * (mesh_force_old_[k] + f).dot(du);
+      mesh_force_old_[k] = f;
+    }
+  }
   time_ += h;
   last_dt_ = h;
   ++stats_.accepted;

@@ -128,6 +128,7 @@ class Simulation {
   std::vector<Vec3> reaction_, reaction_old_;
   std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
   std::vector<double> group_mass_; // total mass of each group, kg
+  std::vector<Vec3> mesh_force_old_;  // force on each moving mesh at the start of the step, N
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<RotState> rot_n_;
