@@ -48,7 +48,7 @@ def main():
     t = [v * 1e6 for v in s["time"]]
     for key, label in (("external_work", "external work"), ("kinetic_energy", "kinetic"),
                        ("rotational_energy", "rotational (part of kinetic)"), ("potential_energy", "potential (gravity)"),
-                       ("elastic_energy", "elastic (rods and contacts)"), ("plastic_work", "plastic work"),
+                       ("elastic_energy", "elastic (rods)"), ("contact_work", "taken up by contacts"), ("plastic_work", "plastic work"),
                        ("viscous_work", "viscous"), ("fracture_energy", "fracture"), ("energy_error", "balance error")):
         if key in s:
             ax.plot(t, s[key], label=label, lw=1.2)

@@ -94,7 +94,7 @@ void run_case(const RunOptions& opt) {
   std::vector<std::string> cols{"time"};
   if (ux.enabled) cols.insert(cols.end(), {"strain", "stress", "stress_predicted", "stress_midplane"});
   cols.insert(cols.end(), {"step", "dt", "iterations", "kinetic_energy", "rotational_energy", "elastic_energy",
-                           "potential_energy",
+                           "contact_energy", "contact_work", "potential_energy",
                            "external_work", "plastic_work", "viscous_work", "fracture_energy", "energy_error",
                            "broken_rods", "broken_fraction", "contacts"});
   for (const auto& g : model.groups)
@@ -165,9 +165,10 @@ void run_case(const RunOptions& opt) {
     }
     const double ke = sim.kinetic_energy(), ee = sim.elastic_energy(), pe = sim.potential_energy();
     const auto& L = sim.ledger();
-    const double err = L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy);
+    const double err =
+        L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work);
     row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke,
-                           sim.rotational_energy(), ee, pe,
+                           sim.rotational_energy(), ee, sim.contact_energy(), L.contact_work, pe,
                            L.external_work, L.plastic_work, L.viscous_work, L.fracture_energy, err,
                            double(sim.broken_rods()), double(sim.broken_rods()) / total_rods,
                            double(sim.contacts().enabled() ? sim.contacts().touching() : 0)});
@@ -249,7 +250,10 @@ void run_case(const RunOptions& opt) {
                     {"viscous_work_J", L.viscous_work},
                     {"fracture_energy_J", L.fracture_energy},
                     {"potential_energy_J", pe},
-                    {"energy_error_J", L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy)},
+                    {"contact_energy_J", sim.contact_energy()},
+                    {"contact_work_J", L.contact_work},
+                    {"energy_error_J", L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work +
+                                                          L.fracture_energy + L.contact_work)},
                     {"broken_rods", sim.broken_rods()},
                     {"broken_fraction", double(sim.broken_rods()) / total_rods}};
   for (std::size_t g = 0; g < model.groups.size(); ++g) {
@@ -316,7 +320,8 @@ void run_case(const RunOptions& opt) {
                double(st.force_evaluations) / (sim.time() * 1e6));
   fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", sim.broken_rods(),
              model.rods.size(), 100.0 * sim.broken_rods() / total_rods,
-             L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy), L.external_work);
+             L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work),
+             L.external_work);
 
   if (settings.output.plots) {
     // The summary must exist for the plot script; it is rewritten below with the plot list.

@@ -24,6 +24,7 @@ Simulation::Simulation(Model& model) : m_(model) {
   for (std::size_t g = 0; g < ng; ++g)
     for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
   if (m_.settings.contact.enabled) {
+    contact_force_.assign(m_.particles.size(), Vec3::Zero());
     contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes);
     if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) rotations_ = true;
   }
@@ -34,6 +35,22 @@ Simulation::Simulation(Model& model) : m_(model) {
   if (rotations_) set_rotations(true);
   compute_reactions(reaction_);
   broken_ = m_.rods.broken_count();
+  if (contacts_.enabled()) {
+    mesh_force_old_.assign(m_.meshes.size(), Vec3::Zero());
+    for (std::size_t k = 0; k < m_.meshes.size(); ++k) mesh_force_old_[k] = contacts_.mesh_force(k);
+    contact_power_old_ = contact_power();
+  }
+}
+
+double Simulation::contact_power() const {
+  // Power of the contact forces on the particles (forces and torques) and on the meshes.
+  const auto& p = m_.particles;
+  const bool rot = rotations_;
+  double power = deterministic_sum(p.size(), [&](std::size_t i) {
+    return contact_force_[i].dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
+  });
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) power += mesh_force_old_[k].dot(m_.meshes[k].velocity);
+  return power;
 }
 
 void Simulation::update_free_to_rotate() {
@@ -376,8 +393,10 @@ double Simulation::gather_impl() {
       if constexpr (Measure) level += std::abs(c);
     }
     if (contacts) {
-      Vec3 tau = Vec3::Zero();
-      contacts_.add_to_particle(i, f, tau);
+      Vec3 fc = Vec3::Zero(), tau = Vec3::Zero();
+      contacts_.add_to_particle(i, fc, tau);
+      f += fc;
+      contact_force_[i] = fc;
       p.torque[i] = tau;
     }
     f += p.mass[i] * gravity;
@@ -476,14 +495,17 @@ void Simulation::account(double h) {
   // Moving meshes (tools) work on the particles: minus the force the particles exert on the
   // mesh times its displacement (trapezoid over the step).
   if (contacts_.enabled()) {
-    mesh_force_old_.resize(m_.meshes.size(), Vec3::Zero());
     for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-      if (m_.mesh_motion[k].kind == Motion::Kind::Fixed) continue;
       const Vec3 f = contacts_.mesh_force(k);
       const Vec3 du = m_.meshes[k].velocity * h;
       ledger_.external_work -= 0.5 * (mesh_force_old_[k] + f).dot(du);
       mesh_force_old_[k] = f;
     }
+    // What the contacts take up (stored + dissipated): minus the power of their forces,
+    // trapezoid over the step.
+    const double power = contact_power();
+    ledger_.contact_work -= 0.5 * (contact_power_old_ + power) * h;
+    contact_power_old_ = power;
   }
   time_ += h;
   last_dt_ = h;
@@ -555,9 +577,8 @@ double Simulation::elastic_energy() const {
   const auto& r = m_.rods;
   const double A = r.area;
   return deterministic_sum(r.size(), [&](std::size_t k) {
-           return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
-         }) +
-         (contacts_.enabled() ? contacts_.elastic_energy() : 0.0);
+    return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
+  });
 }
 
 double Simulation::potential_energy() const {

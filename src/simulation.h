@@ -35,6 +35,8 @@ struct EnergyLedger {
   double plastic_work = 0;      ///< sum of sigma d(eps_p) A L0 over commits
   double viscous_work = 0;      ///< dissipated by the rods' viscous part
   double fracture_energy = 0;   ///< elastic energy lost with broken rods
+  double contact_work = 0;      ///< taken up by the contacts: -integral of the contact forces' power on
+                                ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
 };
 
 /// Counters of the step control.
@@ -74,8 +76,10 @@ class Simulation {
 
   double kinetic_energy() const;  ///< translational + rotational, J
   double rotational_energy() const;  ///< rotational part of the kinetic energy, J
-  /// Recoverable elastic energy of the intact rods and the contacts, J.
+  /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy() const;
+  /// Elastic energy stored in the contacts now (Hertz, normal part), J.
+  double contact_energy() const { return contacts_.enabled() ? contacts_.elastic_energy() : 0.0; }
   /// Potential energy in gravity relative to the initial positions, J.
   double potential_energy() const;
   /// Force the particles exert on mesh m, N.
@@ -129,6 +133,9 @@ class Simulation {
   std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
   std::vector<double> group_mass_; // total mass of each group, kg
   std::vector<Vec3> mesh_force_old_;  // force on each moving mesh at the start of the step, N
+  std::vector<Vec3> contact_force_;   // contact part of each particle's force, N
+  double contact_power_old_ = 0;      // power of the contact forces at the start of the step, W
+  double contact_power() const;
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<RotState> rot_n_;
