@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
@@ -228,49 +229,100 @@ void apply_override(toml::table& root, const std::string& arg, std::set<std::str
   overridden.insert(named);
 }
 
-// The motion keys shared by [[group]] and [[mesh]]: motion, velocity, table_time,
-// table_displacement, with their checks.
-void read_motion(Reader& r, std::string& motion, std::array<double, 3>& velocity, std::vector<double>& table_time,
-                 std::vector<std::array<double, 3>>& table_displacement) {
-    motion = r.string("motion", "fixed", {"fixed", "velocity", "table"});
-    velocity = r.vec3("velocity", velocity);
-    table_time = r.numbers("table_time", {});
-    const toml::node* td = r.get("table_displacement");
-    if (td) {
-      auto a = td->as_array();
-      if (!a) r.fail("table_displacement", td, "must be an array of [x, y, z] displacements in m");
-      for (const auto& row : *a) {
-        auto ra = row.as_array();
-        if (!ra || ra->size() != 3) r.fail("table_displacement", td, "every entry must be [x, y, z] in m");
-        std::array<double, 3> v{};
-        for (int c = 0; c < 3; ++c) {
-          if (auto f = (*ra)[c].as_floating_point()) v[c] = f->get();
-          else if (auto i = (*ra)[c].as_integer()) v[c] = static_cast<double>(i->get());
-          else r.fail("table_displacement", td, "entries must be numbers");
-          if (!std::isfinite(v[c])) r.fail("table_displacement", td, "entries must be finite");
-        }
-        table_displacement.push_back(v);
-      }
+std::string resolve(const std::string& file, const std::string& directory) {
+  std::filesystem::path p(file);
+  if (p.is_relative()) p = std::filesystem::path(directory) / p;
+  return p.string();
+}
+
+// Reads an array of [x, y, z] triples (unit for messages).
+std::vector<std::array<double, 3>> read_triples(Reader& r, const std::string& key, const char* unit) {
+  std::vector<std::array<double, 3>> out;
+  const toml::node* td = r.get(key);
+  if (!td) return out;
+  auto a = td->as_array();
+  if (!a) r.fail(key, td, fmt::format("must be an array of [x, y, z] in {}", unit));
+  for (const auto& row : *a) {
+    auto ra = row.as_array();
+    if (!ra || ra->size() != 3) r.fail(key, td, fmt::format("every entry must be [x, y, z] in {}", unit));
+    std::array<double, 3> v{};
+    for (int c = 0; c < 3; ++c) {
+      if (auto f = (*ra)[c].as_floating_point()) v[c] = f->get();
+      else if (auto i = (*ra)[c].as_integer()) v[c] = static_cast<double>(i->get());
+      else r.fail(key, td, "entries must be numbers");
+      if (!std::isfinite(v[c])) r.fail(key, td, "entries must be finite");
     }
-    if (motion != "velocity" && r.has("velocity"))
-      r.fail("velocity", r.get("velocity"), "is only used with motion = \"velocity\"");
-    if (motion != "table" && (r.has("table_time") || r.has("table_displacement")))
-    {
-      const char* key = r.has("table_time") ? "table_time" : "table_displacement";
-      r.fail(key, r.get(key), "is only used with motion = \"table\"");
+    out.push_back(v);
+  }
+  return out;
+}
+
+// Reads a CSV velocity table 'time,vx,vy,vz' (header line first) for motion = "velocity_table".
+void read_velocity_csv(Reader& r, const std::string& path, MotionSettings& m) {
+  std::ifstream in(path);
+  if (!in) r.fail("velocity_file", r.get("velocity_file"), "file not found or unreadable: " + path);
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (lineno == 1 || line.empty()) continue;  // header
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream ls(line);
+    double t, vx, vy, vz;
+    if (!(ls >> t >> vx >> vy >> vz) || !std::isfinite(t + vx + vy + vz))
+      r.fail("velocity_file", r.get("velocity_file"),
+             fmt::format("{}:{}: expected 'time,vx,vy,vz' in s and m/s", path, lineno));
+    m.table_time.push_back(t);
+    m.table_velocity.push_back({vx, vy, vz});
+  }
+}
+
+// The motion keys shared by [[group]] and [[mesh]], with their checks.
+void read_motion(Reader& r, const std::string& directory, MotionSettings& m) {
+  m.kind = r.string("motion", "fixed", {"fixed", "velocity", "ramp", "table", "velocity_table"});
+  m.velocity = r.vec3("velocity", m.velocity);
+  m.ramp_time = r.number("ramp_time", m.ramp_time, positive);
+  m.table_time = r.numbers("table_time", {});
+  m.table_displacement = read_triples(r, "table_displacement", "m");
+  m.table_velocity = read_triples(r, "table_velocity", "m/s");
+  m.velocity_file = r.string("velocity_file", "");
+  // Every key only where the motion uses it.
+  const std::map<std::string, std::vector<std::string>> uses{
+      {"velocity", {"velocity", "ramp"}},     {"ramp_time", {"ramp"}},
+      {"table_time", {"table", "velocity_table"}}, {"table_displacement", {"table"}},
+      {"table_velocity", {"velocity_table"}}, {"velocity_file", {"velocity_table"}}};
+  for (const auto& [key, kinds] : uses)
+    if (r.has(key) && std::find(kinds.begin(), kinds.end(), m.kind) == kinds.end())
+      r.fail(key, r.get(key), fmt::format("is not used with motion = \"{}\"", m.kind));
+  if ((m.kind == "velocity" || m.kind == "ramp") && !r.has("velocity"))
+    r.fail("velocity", nullptr, fmt::format("motion = \"{}\" needs a velocity [vx, vy, vz] in m/s", m.kind));
+  if (m.kind == "ramp" && !r.has("ramp_time"))
+    r.fail("ramp_time", nullptr, "motion = \"ramp\" needs ramp_time in s");
+  if (m.kind == "velocity_table") {
+    if (!m.velocity_file.empty()) {
+      if (r.has("table_time") || r.has("table_velocity"))
+        r.fail("velocity_file", r.get("velocity_file"), "give either velocity_file or table_time/table_velocity");
+      read_velocity_csv(r, resolve(m.velocity_file, directory), m);
     }
-    if (motion == "velocity" && !r.get("velocity"))
-      r.fail("velocity", nullptr, "motion = \"velocity\" needs a velocity [vx, vy, vz] in m/s");
-    if (motion == "table") {
-      if (table_time.size() < 2 || table_time.size() != table_displacement.size())
-        r.fail("table_time", r.get("table_time"),
-               "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
-      if (table_time[0] != 0.0) r.fail("table_time", r.get("table_time"), "must start at 0 s");
-      for (double u : table_displacement[0])
-        if (u != 0.0) r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
-      for (std::size_t k = 1; k < table_time.size(); ++k)
-        if (!(table_time[k] > table_time[k - 1])) r.fail("table_time", r.get("table_time"), "must be strictly ascending");
-    }
+    if (m.table_time.size() < 2 || m.table_time.size() != m.table_velocity.size())
+      r.fail("table_time", r.get("table_time"),
+             "motion = \"velocity_table\" needs table_time (s) and table_velocity (m/s) of equal length >= 2, "
+             "or velocity_file");
+  }
+  if (m.kind == "table") {
+    if (m.table_time.size() < 2 || m.table_time.size() != m.table_displacement.size())
+      r.fail("table_time", r.get("table_time"),
+             "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
+    for (double u : m.table_displacement[0])
+      if (u != 0.0)
+        r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
+  }
+  if (m.kind == "table" || m.kind == "velocity_table") {
+    const char* key = r.has("table_time") ? "table_time" : "velocity_file";
+    if (m.table_time[0] != 0.0) r.fail(key, r.get(key), "the table must start at 0 s");
+    for (std::size_t k = 1; k < m.table_time.size(); ++k)
+      if (!(m.table_time[k] > m.table_time[k - 1])) r.fail(key, r.get(key), "times must be strictly ascending");
+  }
 }
 
 void check_name(Reader& r, const std::string& name) {
@@ -280,7 +332,8 @@ void check_name(Reader& r, const std::string& name) {
   if (name.empty()) r.fail("name", r.get("name"), "must not be empty");
 }
 
-void read_groups(const toml::table& root, const std::string& source, const std::set<std::string>& ov,
+void read_groups(const toml::table& root, const std::string& source, const std::string& directory,
+                 const std::set<std::string>& ov,
                  CaseSettings& cs) {
   const toml::node* n = root.get("group");
   if (!n) return;
@@ -298,7 +351,7 @@ void read_groups(const toml::table& root, const std::string& source, const std::
     gs.box_min = r.vec3("box_min", gs.box_min);
     gs.box_max = r.vec3("box_max", gs.box_max);
     gs.dofs = r.string("dofs", "xyz", {"x", "y", "z", "xy", "xz", "yz", "xyz"});
-    read_motion(r, gs.motion, gs.velocity, gs.table_time, gs.table_displacement);
+    read_motion(r, directory, gs.motion);
     const bool has_box = r.has("box_min") || r.has("box_max");
     if (!gs.side.empty() && has_box) {
       const char* key = r.has("box_min") ? "box_min" : "box_max";
@@ -312,12 +365,6 @@ void read_groups(const toml::table& root, const std::string& source, const std::
     r.finish();
     cs.groups.push_back(gs);
   }
-}
-
-std::string resolve(const std::string& file, const std::string& directory) {
-  std::filesystem::path p(file);
-  if (p.is_relative()) p = std::filesystem::path(directory) / p;
-  return p.string();
 }
 
 void read_contacts_and_bodies(const toml::table& root, const std::string& source, const std::string& directory,
@@ -377,7 +424,7 @@ void read_contacts_and_bodies(const toml::table& root, const std::string& source
         if (!m.tool && r.has(key)) r.fail(key, r.get(key), "is a tool key: give rake_angle (deg) to make a tool");
       if (m.tool && (!r.has("width") || !r.has("face_length")))
         r.fail("rake_angle", r.get("rake_angle"), "a tool needs width (m) and face_length (m) too");
-      read_motion(r, m.motion, m.velocity, m.table_time, m.table_displacement);
+      read_motion(r, directory, m.motion);
       m.youngs_modulus = r.number("youngs_modulus", m.youngs_modulus, positive_or_inf);
       m.poisson_ratio = r.number("poisson_ratio", m.poisson_ratio,
                                  [](double v) { return v > -1 && v < 0.5 ? nullptr : "must lie in (-1, 0.5)"; });
@@ -578,7 +625,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     g.reject_factor = r.number("reject_factor", g.reject_factor, factor_below_1);
     r.finish();
   }
-  read_groups(root, source, ov, cs);
+  read_groups(root, source, directory, ov, cs);
   if (const toml::table* ut = table("uniaxial")) {
     Reader r(ut, "uniaxial", source, ov);
     auto& u = cs.uniaxial;

@@ -72,6 +72,17 @@ struct IntegratorSettings {
   double reject_factor = 0.5;         ///< a rejected step is retried with dt times this, 1
 };
 
+/// The prescribed translation of a group or a mesh (keys shared by [[group]] and [[mesh]]).
+struct MotionSettings {
+  std::string kind = "fixed";         ///< key 'motion': "fixed", "velocity", "ramp", "table" or "velocity_table"
+  std::array<double, 3> velocity{0, 0, 0};             ///< m/s ("velocity"; the final velocity of "ramp")
+  double ramp_time = 0.0;             ///< s: "ramp" reaches 'velocity' linearly in this time
+  std::vector<double> table_time;                      ///< s, ascending, first 0 ("table", "velocity_table")
+  std::vector<std::array<double, 3>> table_displacement;  ///< m, piecewise linear in time ("table")
+  std::vector<std::array<double, 3>> table_velocity;      ///< m/s, piecewise linear in time ("velocity_table")
+  std::string velocity_file;          ///< CSV 'time,vx,vy,vz' (s, m/s) for "velocity_table" instead of the arrays
+};
+
 /// [[group]]: particles selected by a side of the box or a region, fixed or moved.
 struct GroupSettings {
   std::string name;
@@ -80,10 +91,7 @@ struct GroupSettings {
   std::array<double, 3> box_min{-kInf, -kInf, -kInf};  ///< region selection, m (used when side is empty)
   std::array<double, 3> box_max{kInf, kInf, kInf};     ///< m
   std::string dofs = "xyz";           ///< prescribed components ("x", "xz", "xyz", ...)
-  std::string motion = "fixed";       ///< "fixed", "velocity" or "table"
-  std::array<double, 3> velocity{0, 0, 0};             ///< m/s, motion = "velocity"
-  std::vector<double> table_time;                      ///< s, ascending, first 0, motion = "table"
-  std::vector<std::array<double, 3>> table_displacement;  ///< m, piecewise linear in time
+  MotionSettings motion;
 };
 
 /// [uniaxial]: a bar between two grips driven along a strain path (hysteresis test).
@@ -135,10 +143,7 @@ struct MeshSettings {
   double edge_radius = 0.0;           ///< m
   double width = 0.0;                 ///< m
   double face_length = 0.0;           ///< m
-  std::string motion = "fixed";       ///< "fixed", "velocity" or "table" (as groups)
-  std::array<double, 3> velocity{0, 0, 0};             ///< m/s
-  std::vector<double> table_time;                      ///< s
-  std::vector<std::array<double, 3>> table_displacement;  ///< m
+  MotionSettings motion;              ///< as for groups
   double youngs_modulus = kInf;       ///< Pa; inf = rigid
   double poisson_ratio = 0.3;         ///< 1
 };

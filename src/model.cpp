@@ -19,6 +19,17 @@ Vec3 Motion::displacement_at(double t) const {
       return Vec3::Zero();
     case Kind::Velocity:
       return velocity * t;
+    case Kind::Ramp:
+      return t < ramp_time ? Vec3(velocity * (0.5 * t * t / ramp_time)) : Vec3(velocity * (t - 0.5 * ramp_time));
+    case Kind::VelocityTable: {
+      if (t <= 0.0) return Vec3::Zero();
+      if (t >= time.back()) return displacement.back() + table_velocity.back() * (t - time.back());
+      const auto it = std::upper_bound(time.begin(), time.end(), t);
+      const std::size_t k = static_cast<std::size_t>(it - time.begin()) - 1;
+      const double s = t - time[k], span = time[k + 1] - time[k];
+      const Vec3 slope = (table_velocity[k + 1] - table_velocity[k]) / span;
+      return displacement[k] + table_velocity[k] * s + slope * (0.5 * s * s);
+    }
     case Kind::Table: {
       if (t <= time.front()) return displacement.front();
       if (t >= time.back()) return displacement.back();
@@ -44,16 +55,27 @@ std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const s
   return out;
 }
 
-static Motion motion_from(const std::string& kind, const std::array<double, 3>& velocity,
-                          const std::vector<double>& time, const std::vector<std::array<double, 3>>& displacement) {
+static Motion motion_from(const MotionSettings& ms) {
   Motion m;
-  if (kind == "velocity") {
+  auto vec = [](const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); };
+  m.velocity = vec(ms.velocity);
+  m.time = ms.table_time;
+  if (ms.kind == "velocity") {
     m.kind = Motion::Kind::Velocity;
-    m.velocity = Vec3(velocity[0], velocity[1], velocity[2]);
-  } else if (kind == "table") {
+  } else if (ms.kind == "ramp") {
+    m.kind = Motion::Kind::Ramp;
+    m.ramp_time = ms.ramp_time;
+  } else if (ms.kind == "table") {
     m.kind = Motion::Kind::Table;
-    m.time = time;
-    for (const auto& u : displacement) m.displacement.emplace_back(u[0], u[1], u[2]);
+    for (const auto& u : ms.table_displacement) m.displacement.push_back(vec(u));
+  } else if (ms.kind == "velocity_table") {
+    m.kind = Motion::Kind::VelocityTable;
+    // Displacement at each table time: the exact integral of the piecewise-linear velocity.
+    m.displacement.push_back(Vec3::Zero());
+    for (const auto& v : ms.table_velocity) m.table_velocity.push_back(vec(v));
+    for (std::size_t k = 1; k < m.time.size(); ++k)
+      m.displacement.push_back(m.displacement.back() +
+                               0.5 * (m.table_velocity[k - 1] + m.table_velocity[k]) * (m.time[k] - m.time[k - 1]));
   }
   return m;
 }
@@ -185,7 +207,7 @@ Model build_model(const CaseSettings& cs) {
       }
     }
     add_group(gs.name, std::move(members), dof_mask(gs.dofs),
-              motion_from(gs.motion, gs.velocity, gs.table_time, gs.table_displacement));
+              motion_from(gs.motion));
   }
 
   if (cs.uniaxial.enabled) {
@@ -261,7 +283,7 @@ Model build_model(const CaseSettings& cs) {
     mb.youngs_modulus = ms.youngs_modulus;
     mb.poisson_ratio = ms.poisson_ratio;
     model.meshes.push_back(std::move(mb));
-    model.mesh_motion.push_back(motion_from(ms.motion, ms.velocity, ms.table_time, ms.table_displacement));
+    model.mesh_motion.push_back(motion_from(ms.motion));
   }
   if (cs.contact.enabled) {
     auto& c = model.contact;

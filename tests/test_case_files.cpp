@@ -92,7 +92,7 @@ TEST(CaseFiles, RadiusWithLatticeFile) {
 
 TEST(CaseFiles, IgnoredKeyCombinationsRejected) {
   expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nvelocity = [1.0, 0.0, 0.0]")),
-                  {"group.velocity", "motion = \"velocity\""});
+                  {"group.velocity", "not used with motion = \"fixed\""});
   expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nbox_max = [1.0, 1.0, 1.0]")),
                   {"group.box_max", "either"});
 }
@@ -137,13 +137,56 @@ TEST(CaseFiles, OverridesApplyAndAreChecked) {
   const CaseSettings cs = parse_case(kGood, "bad.toml", {"integrator.dt=2e-9", "group.0.motion=velocity",
                                                          "group.0.velocity=[1, 2, 3]", "rod.damping_ratio=0.1"});
   EXPECT_EQ(cs.integrator.dt, 2e-9);
-  EXPECT_EQ(cs.groups[0].motion, "velocity");
-  EXPECT_EQ(cs.groups[0].velocity[2], 3.0);
+  EXPECT_EQ(cs.groups[0].motion.kind, "velocity");
+  EXPECT_EQ(cs.groups[0].motion.velocity[2], 3.0);
   EXPECT_EQ(cs.rod.damping_ratio, 0.1);
   expect_mentions(error_of(kGood, {"rod.yield_strain=-1"}), {"--set rod.yield_strain", "-1", "positive"});
   expect_mentions(error_of(kGood, {"rod.yeild=1"}), {"--set rod.yeild", "unknown key"});
   expect_mentions(error_of(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
   expect_mentions(error_of(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});
+}
+
+TEST(Motions, RampAndVelocityTableIntegrateExactly) {
+  test::TempDir dir("motions");
+  test::write_file(dir / "v.csv", "time,vx,vy,vz\n0,0,0,0\n1e-3,2.0,0,0\n3e-3,2.0,0,-1.0\n");
+  const std::string text = replace(kGood, "side = \"x-\"", R"(side = "x-"
+motion = "ramp"
+velocity = [3.0, 0.0, 0.0]
+ramp_time = 2e-3
+[[group]]
+name = "right"
+side = "x+"
+motion = "velocity_table"
+velocity_file = "v.csv"
+[[mesh]]
+name = "m"
+origin = [0.0, 0.0, 1.0]
+edge1 = [1.0, 0.0, 0.0]
+edge2 = [0.0, 1.0, 0.0]
+motion = "velocity_table"
+table_time = [0.0, 1e-3]
+table_velocity = [[1.0, 0.0, 0.0], [3.0, 0.0, 0.0]]
+[contact]
+)");
+  const Model m = build_model(parse_case(text, "motions", {}, dir.str()));
+  // Ramp: u = v t^2 / (2 T) up to T, then v (t - T/2).
+  EXPECT_NEAR(m.groups[0].motion.displacement_at(1e-3)[0], 3.0 * 1e-6 / 4e-3, 1e-15);
+  EXPECT_NEAR(m.groups[0].motion.displacement_at(5e-3)[0], 3.0 * (5e-3 - 1e-3), 1e-15);
+  // Velocity table from CSV: exact integral of the piecewise-linear velocity; the last velocity holds.
+  const Vec3 u = m.groups[1].motion.displacement_at(2e-3);
+  EXPECT_NEAR(u[0], 0.5 * 2.0 * 1e-3 + 2.0 * 1e-3, 1e-15);
+  EXPECT_NEAR(u[2], -0.5 * 1.0 * 1e-3 * 0.5, 1e-15);  // vz ramps 0 -> -1 over 2 ms: at 1 ms in, -0.25 m/s mean
+  EXPECT_NEAR(m.groups[1].motion.displacement_at(4e-3)[2], -1.0 * 2e-3 / 2 - 1.0 * 1e-3, 1e-15);
+  // Inline velocity table on a mesh: 1 -> 3 m/s over 1 ms covers 2 mm.
+  EXPECT_NEAR(m.mesh_motion[0].displacement_at(1e-3)[0], 2e-3, 1e-15);
+  // Keys of another motion are refused, and a table must start at 0 s.
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nmotion = \"velocity\"\n"
+                                                             "velocity = [1.0, 0.0, 0.0]\nramp_time = 1e-3")),
+                  {"group.ramp_time", "not used with motion = \"velocity\""});
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nmotion = \"velocity_table\"\n"
+                                                             "table_time = [1e-3, 2e-3]\n"
+                                                             "table_velocity = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]")),
+                  {"group.table_time", "start at 0 s"});
 }
 
 TEST(CaseFiles, CliExitsWithTwoAndNamesTheProblem) {
