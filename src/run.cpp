@@ -188,7 +188,7 @@ void run_case(const RunOptions& opt) {
   // The balance counts changes from the initial state (free particles may start moving).
   e0 = sim.kinetic_energy() + sim.elastic_energy() + sim.potential_energy();
   write_row();
-  if (vtk) vtk->write_frame(0.0, model.particles, model.rods);
+  if (vtk) vtk->write_frame(0.0, model.particles, model.rods, model.meshes);
   const auto t0 = std::chrono::steady_clock::now();
   double output_seconds = 0.0;
   // Rows and frames are written at the first step that reaches each output time.
@@ -203,7 +203,7 @@ void run_case(const RunOptions& opt) {
     if (row || frame) {
       const auto o0 = std::chrono::steady_clock::now();
       if (row) write_row();
-      if (frame) vtk->write_frame(sim.time(), model.particles, model.rods);
+      if (frame) vtk->write_frame(sim.time(), model.particles, model.rods, model.meshes);
       while (next_row <= sim.time() * (1.0 + 1e-12)) next_row += series_interval;
       while (next_frame <= sim.time() * (1.0 + 1e-12)) next_frame += frame_interval;
       output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - o0).count();

@@ -114,8 +114,15 @@ VtkSeries::VtkSeries(const std::string& dir, bool with_rods) : dir_(dir), with_r
   std::filesystem::create_directories(std::filesystem::path(dir) / "frames");
 }
 
-void VtkSeries::write_frame(double t, const Particles& p, const Rods& r) {
+void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes) {
   const std::size_t k = times_.size();
+  mesh_names_.clear();
+  for (const auto& mb : meshes) {
+    TriangleMesh placed = mb.mesh;
+    for (auto& v : placed.vertices) v += mb.offset;
+    write_vtp(fmt::format("{}/frames/mesh_{}_{:05d}.vtp", dir_, mb.name, k), placed);
+    mesh_names_.push_back(mb.name);
+  }
   auto pts = points_of(p);
   {
     vtkNew<vtkUnstructuredGrid> grid;
@@ -173,6 +180,9 @@ void VtkSeries::write_pvd() const {
     if (with_rods_)
       x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"1\" name=\"rods\" file=\"frames/rods_{:05d}.vtu\"/>\n",
                        times_[k], k);
+    for (std::size_t m = 0; m < mesh_names_.size(); ++m)
+      x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"frames/mesh_{}_{:05d}.vtp\"/>\n",
+                       times_[k], m + 2, mesh_names_[m], mesh_names_[m], k);
   }
   x += "  </Collection>\n</VTKFile>\n";
   write_text_atomic(dir_ + "/particles.pvd", x);

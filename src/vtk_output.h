@@ -2,14 +2,16 @@
 //
 // Each frame is two unstructured grids: the particles as vertices (point data velocity m/s,
 // displacement m, radius m, broken_fraction 1, group) and the rods as lines between them
-// (cell data stress Pa, strain 1, plastic_shift 1, state 1 = intact / 0 = broken). The
-// .pvd lists both as parts 0 and 1 of every time step; ParaView opens it as one series.
+// (cell data stress Pa, strain 1, plastic_shift 1, state 1 = intact / 0 = broken), and each
+// triangle mesh (walls, tools) as polydata at its current position. The .pvd lists them as
+// parts 0, 1, 2, ... of every time step; ParaView opens it as one series.
 // The .pvd is rewritten (atomically) after every frame.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "contacts.h"
 #include "mesh.h"
 #include "particles.h"
 #include "rods.h"
@@ -19,8 +21,9 @@ namespace swarf {
 class VtkSeries {
  public:
   VtkSeries(const std::string& dir, bool with_rods);
-  /// Writes frame number 'frames()' at simulated time t (s).
-  void write_frame(double t, const Particles& p, const Rods& r);
+  /// Writes frame number 'frames()' at simulated time t (s): particles, rods and each mesh at
+  /// its current placement (reference vertices + offset).
+  void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {});
   std::size_t frames() const { return times_.size(); }
 
  private:
@@ -28,6 +31,7 @@ class VtkSeries {
   std::string dir_;
   bool with_rods_;
   std::vector<double> times_;
+  std::vector<std::string> mesh_names_;
 };
 
 /// Writes a triangle mesh as a VTK XML polydata file (.vtp), atomically.

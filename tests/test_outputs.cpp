@@ -116,3 +116,52 @@ TEST(Outputs, BlowUpStopsWithMessageAndNoCompleteLookingFiles) {
 
 }  // namespace
 }  // namespace swarf
+
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+
+namespace swarf {
+namespace {
+
+TEST(Outputs, MeshesMoveInTheParaViewSeries) {
+  test::TempDir dir("mesh_frames");
+  test::write_file(dir / "m.toml", R"([[particle]]
+position = [0.0, 0.0, 0.01]
+radius = 1e-3
+[contact]
+[[mesh]]
+name = "plate"
+origin = [0.0, 0.0, 0.0]
+edge1 = [0.01, 0.0, 0.0]
+edge2 = [0.0, 0.01, 0.0]
+motion = "velocity"
+velocity = [2.0, 0.0, 0.0]
+[integrator]
+end_time = 1e-4
+[output]
+frame_interval = 5e-5
+plots = false
+)");
+  const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "m.toml") + " --out " + (dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string pvd = test::read_file(dir / "out/particles.pvd");
+  EXPECT_NE(pvd.find("name=\"plate\""), std::string::npos) << pvd;
+  // The last frame (at the end time, which the fixed explicit step reaches or passes by less
+  // than a step) shows the plate moved by 2 m/s times that time.
+  double t_last = 0;
+  std::regex ts_re("timestep=\"([^\"]+)\"");
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), ts_re); it != std::sregex_iterator(); ++it)
+    t_last = std::stod((*it)[1].str());
+  EXPECT_NEAR(t_last, 1e-4, 1e-6);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  const std::string last = dir / "out/frames/mesh_plate_00002.vtp";
+  ASSERT_TRUE(std::filesystem::exists(last));
+  reader->SetFileName(last.c_str());
+  reader->Update();
+  double x[3];
+  reader->GetOutput()->GetPoint(0, x);
+  EXPECT_NEAR(x[0], 2.0 * t_last, 1e-12);
+}
+
+}  // namespace
+}  // namespace swarf
