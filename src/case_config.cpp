@@ -661,6 +661,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     o.rods_in_vtk = r.boolean("rods_in_vtk", o.rods_in_vtk);
     o.plots = r.boolean("plots", o.plots);
     o.progress = r.boolean("progress", o.progress);
+    o.steady_from = r.number("steady_from", o.steady_from, non_negative);
     r.finish();
   }
   if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))

@@ -112,6 +112,7 @@ struct OutputSettings {
   bool rods_in_vtk = true;            ///< include the rods as lines in each frame
   bool plots = true;                  ///< write PNG plots at the end (needs python3-matplotlib)
   bool progress = true;               ///< progress line on stderr
+  double steady_from = -1.0;          ///< cutting: force statistics over rows with time >= this, s; < 0 = half the end time
 };
 
 /// [contact]: Hertz contacts with friction between unbonded particles and with meshes.

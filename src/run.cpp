@@ -150,6 +150,7 @@ void run_case(const RunOptions& opt) {
 
   const double total_rods = std::max<double>(1.0, double(model.rods.size()));
   double e0 = 0.0;  // initial kinetic + elastic + potential energy, J
+  std::vector<double> cut_time, cut_fc, cut_ft;  // samples of the forces per width (N/m) for the statistics
   auto write_row = [&]() {
     std::vector<double> row{sim.time()};
     if (ux.enabled) {
@@ -180,6 +181,9 @@ void run_case(const RunOptions& opt) {
       const Vec3 f = sim.mesh_force(tool_mesh);
       row.push_back(-f[0] / work_width);
       row.push_back(f[2] / work_width);
+      cut_time.push_back(sim.time());
+      cut_fc.push_back(-f[0] / work_width);
+      cut_ft.push_back(f[2] / work_width);
     }
     series.row(row);
   };
@@ -323,6 +327,35 @@ void run_case(const RunOptions& opt) {
              L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work),
              L.external_work);
 
+  if (work_width > 0) {
+    // Mean and fluctuation of the forces per width over the steady part of the cut.
+    const double from = settings.output.steady_from >= 0 ? settings.output.steady_from : 0.5 * end_time;
+    auto stats = [&](const std::vector<double>& v) {
+      double n = 0, sum = 0, sum2 = 0;
+      for (std::size_t k = 0; k < v.size(); ++k)
+        if (cut_time[k] >= from) {
+          n += 1;
+          sum += v[k];
+          sum2 += v[k] * v[k];
+        }
+      const double mean = n > 0 ? sum / n : 0.0;
+      const double var = n > 1 ? std::max(0.0, (sum2 - n * mean * mean) / (n - 1)) : 0.0;
+      return std::make_tuple(mean, std::sqrt(var), n);
+    };
+    const auto [fc, fc_sd, nc] = stats(cut_fc);
+    const auto [ft, ft_sd, nt] = stats(cut_ft);
+    sum["cutting"] = {{"tool_mesh", settings.meshes[tool_mesh].name},
+                      {"width_m", work_width},
+                      {"steady_from_s", from},
+                      {"steady_samples", nc},
+                      {"cutting_force_per_width_mean_N_per_m", fc},
+                      {"cutting_force_per_width_std_N_per_m", fc_sd},
+                      {"thrust_force_per_width_mean_N_per_m", ft},
+                      {"thrust_force_per_width_std_N_per_m", ft_sd}};
+    fmt::print("\n  cutting (steady part, t >= {:.4g} s, {} rows): Fc/w = {:.4g} +- {:.3g} N/m, Ft/w = {:.4g} +- {:.3g} N/m\n",
+               from, nc, fc, fc_sd, ft, ft_sd);
+    (void)nt;
+  }
   if (settings.output.plots) {
     // The summary must exist for the plot script; it is rewritten below with the plot list.
     write_text_atomic(dir + "/summary.json.plotting", sum.dump(2));

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <regex>
+#include <sstream>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkCellData.h>
@@ -161,6 +163,76 @@ plots = false
   double x[3];
   reader->GetOutput()->GetPoint(0, x);
   EXPECT_NEAR(x[0], 2.0 * t_last, 1e-12);
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+TEST(Outputs, CuttingForceStatisticsMatchTheSeries) {
+  test::TempDir dir("cut_stats");
+  test::write_file(dir / "c.toml", R"([workpiece]
+cells = [6, 2, 3]
+radius = 1e-4
+[rod]
+tensile_strength = 3e8
+[contact]
+friction = 0.3
+[[group]]
+name = "base"
+side = "z-"
+[[mesh]]
+name = "tool"
+rake_angle = 10.0
+width = 1.2e-3
+face_length = 1e-3
+origin = [-0.05e-3, 0.14e-3, 0.5e-3]
+motion = "velocity"
+velocity = [5.0, 0.0, 0.0]
+[integrator]
+end_time = 4e-5
+[output]
+vtk = false
+plots = false
+steady_from = 2e-5
+series_interval = 1e-6
+)");
+  const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
+  ASSERT_TRUE(sum.contains("cutting")) << sum.dump();
+  // Recompute the mean over t >= steady_from from series.csv.
+  std::istringstream csv(test::read_file(dir / "out/series.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> head;
+  {
+    std::istringstream hs(line);
+    std::string h;
+    while (std::getline(hs, h, ',')) head.push_back(h);
+  }
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  };
+  const std::size_t ct = col("time"), cf = col("cutting_force_per_width");
+  ASSERT_LT(cf, head.size());
+  double s = 0;
+  int n = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    std::istringstream ls(line);
+    std::string x;
+    while (std::getline(ls, x, ',')) v.push_back(std::stod(x));
+    if (v[ct] >= 2e-5) {
+      s += v[cf];
+      ++n;
+    }
+  }
+  EXPECT_EQ(sum["cutting"]["steady_samples"].get<double>(), n);
+  EXPECT_NEAR(sum["cutting"]["cutting_force_per_width_mean_N_per_m"].get<double>(), s / n, 1e-9 * std::abs(s / n));
+  EXPECT_GT(s / n, 0.0);  // the tool is cutting: the workpiece pushes back against the motion
 }
 
 }  // namespace
