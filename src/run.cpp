@@ -11,6 +11,7 @@
 
 #include "atomic_file.h"
 #include "errors.h"
+#include "postprocess/chip.h"
 #include "postprocess/hysteresis.h"
 #include "postprocess/plots.h"
 #include "progress.h"
@@ -355,6 +356,38 @@ void run_case(const RunOptions& opt) {
     fmt::print("\n  cutting (steady part, t >= {:.4g} s, {} rows): Fc/w = {:.4g} +- {:.3g} N/m, Ft/w = {:.4g} +- {:.3g} N/m\n",
                from, nc, fc, fc_sd, ft, ft_sd);
     (void)nt;
+    // The chip at the end of the run.
+    const auto& ms = settings.meshes[tool_mesh];
+    ChipInput ci;
+    ci.radius = model.derived.radius;
+    ci.uncut_surface_z = -HUGE_VAL;
+    for (std::size_t i = 0; i < model.lattice_particles; ++i) {
+      ci.position.push_back(model.particles.position[i]);
+      ci.uncut_surface_z = std::max(ci.uncut_surface_z, model.particles.initial_position[i][2]);
+    }
+    ci.tool_tip = Vec3(ms.origin[0], ms.origin[1], ms.origin[2]) + model.meshes[tool_mesh].offset;
+    ci.rake_angle_deg = ms.rake_angle;
+    ci.depth_of_cut = ci.uncut_surface_z - ci.tool_tip[2];
+    const ChipMetrics cm = measure_chip(ci);
+    const double beta = friction_angle_deg(fc, ft, ms.rake_angle);
+    nlohmann::json chip = {{"depth_of_cut_m", ci.depth_of_cut},
+                           {"chip_particles", cm.chip_particles},
+                           {"measured_particles", cm.measured_particles},
+                           {"friction_angle_deg", beta},
+                           {"merchant_shear_angle_deg", merchant_shear_angle_deg(ms.rake_angle, beta)}};
+    if (cm.thickness > 0) {
+      chip["thickness_m"] = cm.thickness;
+      chip["compression_ratio"] = cm.compression_ratio;
+      chip["shear_angle_deg"] = cm.shear_angle_deg;
+      fmt::print("  chip: thickness {:.4g} m (depth of cut {:.4g} m), ratio r = {:.3f}, shear angle {:.1f} deg; "
+                 "friction angle {:.1f} deg, Merchant's shear angle {:.1f} deg\n",
+                 cm.thickness, ci.depth_of_cut, cm.compression_ratio, cm.shear_angle_deg, beta,
+                 merchant_shear_angle_deg(ms.rake_angle, beta));
+    } else {
+      chip["note"] = "too few chip particles beyond the edge region to measure the thickness";
+      fmt::print("  chip: {} particles above the uncut surface, too few to measure its thickness\n", cm.chip_particles);
+    }
+    sum["chip"] = chip;
   }
   if (settings.output.plots) {
     // The summary must exist for the plot script; it is rewritten below with the plot list.

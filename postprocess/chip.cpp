@@ -1,0 +1,51 @@
+// chip.cpp: chip identification and metrics (see chip.h).
+#include "chip.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace swarf {
+
+namespace {
+constexpr double kDeg = M_PI / 180.0;
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double pos = q * double(v.size() - 1);
+  const std::size_t k = static_cast<std::size_t>(pos);
+  const double f = pos - double(k);
+  return k + 1 < v.size() ? v[k] * (1 - f) + v[k + 1] * f : v[k];
+}
+}  // namespace
+
+double shear_angle_deg(double r, double alpha_deg) {
+  const double a = alpha_deg * kDeg;
+  return std::atan2(r * std::cos(a), 1.0 - r * std::sin(a)) / kDeg;
+}
+
+double friction_angle_deg(double fc, double ft, double alpha_deg) { return alpha_deg + std::atan2(ft, fc) / kDeg; }
+
+double merchant_shear_angle_deg(double alpha_deg, double beta_deg) { return 45.0 + 0.5 * alpha_deg - 0.5 * beta_deg; }
+
+ChipMetrics measure_chip(const ChipInput& in) {
+  ChipMetrics m;
+  const double a = in.rake_angle_deg * kDeg;
+  // Rake face through the tip: direction up the face and the outward normal (into the chip).
+  const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  std::vector<double> dist;
+  for (const auto& x : in.position) {
+    if (!(x[2] > in.uncut_surface_z + in.radius)) continue;
+    ++m.chip_particles;
+    const Vec3 rel = x - in.tool_tip;
+    if (rel.dot(up) < 2.0 * in.depth_of_cut) continue;  // still in the edge region
+    dist.push_back(rel.dot(normal));
+  }
+  m.measured_particles = dist.size();
+  if (dist.size() < 10 || !(in.depth_of_cut > 0)) return m;
+  m.thickness = quantile(dist, 0.98) - quantile(dist, 0.02) + 2.0 * in.radius;
+  m.compression_ratio = in.depth_of_cut / m.thickness;
+  m.shear_angle_deg = shear_angle_deg(m.compression_ratio, in.rake_angle_deg);
+  return m;
+}
+
+}  // namespace swarf

@@ -1,0 +1,48 @@
+// chip.h: the chip of an orthogonal cut and the quantities a machining engineer reads off it.
+//
+// Chip identification: the workpiece particles whose centre lies above the uncut surface
+// (more than one radius above the initial top of the workpiece). Material can only get there
+// by flowing up the tool, so these are the chip (with side burrs, if any).
+// Chip thickness h_c: the spread of the chip particles' distances from the rake-face plane,
+// between the 2nd and 98th percentiles (robust to stray fragments), plus one particle
+// diameter (the centres lie a radius inside each free surface), measured on the part of the
+// chip that has left the edge region (farther than 2 depths of cut from the tip along the face).
+// Then, with h the depth of cut (uncut chip thickness) and alpha the rake angle:
+//   compression ratio r = h / h_c,  shear angle phi: tan(phi) = r cos(alpha) / (1 - r sin(alpha)),
+//   friction angle beta = alpha + atan(Ft / Fc),  Merchant: phi_M = 45 deg + alpha/2 - beta/2.
+#pragma once
+
+#include <vector>
+
+#include "vec3.h"
+
+namespace swarf {
+
+struct ChipInput {
+  std::vector<Vec3> position;     ///< current particle centres, m
+  double radius = 0;              ///< particle radius, m
+  double uncut_surface_z = 0;     ///< initial top of the workpiece (highest centre), m
+  Vec3 tool_tip = Vec3::Zero();   ///< sharp tip of the tool now, m (the tool cuts in +x, z up)
+  double rake_angle_deg = 0;      ///< deg
+  double depth_of_cut = 0;        ///< h = uncut_surface_z - tool tip z, m
+};
+
+struct ChipMetrics {
+  std::size_t chip_particles = 0;     ///< particles above the uncut surface
+  std::size_t measured_particles = 0; ///< of these, those used for the thickness
+  double thickness = 0;               ///< h_c, m (0 if too few particles)
+  double compression_ratio = 0;       ///< r = h / h_c, 1
+  double shear_angle_deg = 0;         ///< from r and the rake angle, deg
+};
+
+/// Identifies the chip and measures it.
+ChipMetrics measure_chip(const ChipInput& in);
+
+/// Shear angle (deg) from the compression ratio r = h/h_c and the rake angle (deg).
+double shear_angle_deg(double compression_ratio, double rake_angle_deg);
+/// Friction angle (deg) on the rake face from the cutting and thrust forces and the rake angle.
+double friction_angle_deg(double cutting_force, double thrust_force, double rake_angle_deg);
+/// Merchant's shear angle 45 + alpha/2 - beta/2 (deg).
+double merchant_shear_angle_deg(double rake_angle_deg, double friction_angle_deg);
+
+}  // namespace swarf
