@@ -320,39 +320,49 @@ void ContactSystem::evaluate(const Particles& p, double h) {
   };
 
   const std::size_t np = pairs_.size();
+  // Raw pointers: the flag stores (uint8_t) may alias anything, and the compiler would
+  // otherwise reload every array's base for every pair.
+  const Pair* pairs = pairs_.data();
+  const PairConstants* pconst = pconst_.data();
+  const Vec3* phist = phist_.data();
+  std::uint8_t* touch = ptouch_.data();
+  Vec3 *pf = pf_.data(), *pti = pti_.data(), *ptj = ptj_.data(), *ph = ph_.data();
+  double* pe = pe_.data();
+  const Vec3* x = p.position.data();
+  const Vec3* v = p.velocity.data();
+  const Vec3* w = p.omega.data();
+  const double* radius = p.radius.data();
   // Dynamic chunks: touching pairs cost far more than near misses, and they cluster (the
   // bottom of a settling packing). Each pair writes only its own slots: order-free.
 #pragma omp parallel for schedule(dynamic, 1024)
   for (std::size_t k = 0; k < np; ++k) {
-    const std::int32_t i = pairs_[k].i, j = pairs_[k].j;
-    const Vec3 d = p.position[j] - p.position[i];
-    const double ri = p.radius[i], rj = p.radius[j];
+    const std::int32_t i = pairs[k].i, j = pairs[k].j;
+    const Vec3 d = x[j] - x[i];
+    const double ri = radius[i], rj = radius[j];
     const double dist2 = d.squaredNorm(), sum = ri + rj;
     if (dist2 >= sum * sum) {
-      ptouch_[k] = 0;  // the force slots of a near miss are not read
+      touch[k] = 0;  // the force slots of a near miss are not read
       continue;
     }
-    ptouch_[k] = 1;
+    touch[k] = 1;
     const double dist = std::sqrt(dist2);
     const Vec3 n = (1.0 / dist) * d;
     const double delta = sum - dist;
-    const PairConstants& q = pconst_[k];
+    const PairConstants& q = pconst[k];
     const HertzLaw hz{q.K, q.D};
-    const Vec3& wi = p.omega[i];
-    const Vec3& wj = p.omega[j];
-    const Vec3 vrel = p.velocity[j] + wj.cross(-rj * n) - p.velocity[i] - wi.cross(ri * n);
+    const Vec3 vrel = v[j] + w[j].cross(-rj * n) - v[i] - w[i].cross(ri * n);
     const double vn = vrel.dot(n);
     const double root = std::sqrt(delta);
     const double fn = hz.force(delta, -vn);
     const Vec3 vt = vrel - vn * n;
     const double kt = q.kt0 * root;
-    Vec3 hist = phist_[k];
+    Vec3 hist = phist[k];
     const Vec3 ft_j = friction(n, vt, fn, kt, eta_ratio * q.D * std::sqrt(root), hist);
-    pf_[k] = -fn * n - ft_j;
-    pti_[k] = (ri * n).cross(-ft_j);
-    ptj_[k] = (-rj * n).cross(ft_j);
-    ph_[k] = hist;
-    pe_[k] = 0.4 * hz.stiffness * delta * delta * root;
+    pf[k] = -fn * n - ft_j;
+    pti[k] = (ri * n).cross(-ft_j);
+    ptj[k] = (-rj * n).cross(ft_j);
+    ph[k] = hist;
+    pe[k] = 0.4 * hz.stiffness * delta * delta * root;
   }
 
   const std::size_t nt = tris_.size();
@@ -390,23 +400,31 @@ void ContactSystem::evaluate(const Particles& p, double h) {
 }
 
 void ContactSystem::add_to_particle(std::size_t i, Vec3& force, Vec3& torque) const {
-  for (std::int32_t e = prow_[i]; e < prow_[i + 1]; ++e) {
-    const std::int32_t code = pent_[e], k = code >> 1;
-    if (!ptouch_[k]) continue;
+  const std::int32_t* ent = pent_.data();
+  const std::uint8_t* touch = ptouch_.data();
+  const Vec3 *pf = pf_.data(), *pti = pti_.data(), *ptj = ptj_.data();
+  Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+  for (std::int32_t e = prow_[i], end = prow_[i + 1]; e < end; ++e) {
+    const std::int32_t code = ent[e], k = code >> 1;
+    if (!touch[k]) continue;
     if (code & 1) {
-      force -= pf_[k];
-      torque += ptj_[k];
+      f -= pf[k];
+      t += ptj[k];
     } else {
-      force += pf_[k];
-      torque += pti_[k];
+      f += pf[k];
+      t += pti[k];
     }
   }
-  for (std::int32_t e = trow_[i]; e < trow_[i + 1]; ++e) {
-    const std::int32_t k = tent_[e];
-    if (!ttouch_[k]) continue;
-    force += tf_[k];
-    torque += tti_[k];
+  const std::int32_t* tent = tent_.data();
+  const std::uint8_t* ttouch = ttouch_.data();
+  for (std::int32_t e = trow_[i], end = trow_[i + 1]; e < end; ++e) {
+    const std::int32_t k = tent[e];
+    if (!ttouch[k]) continue;
+    f += tf_[k];
+    t += tti_[k];
   }
+  force += f;
+  torque += t;
 }
 
 void ContactSystem::commit() {

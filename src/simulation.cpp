@@ -216,16 +216,31 @@ void Simulation::kick(double h) {
   const double half = 0.5 * h;
   const std::size_t n = p.size();
   const bool rot = rotations_;
+  // Raw pointers: stores through the arrays could otherwise alias the vectors' own data
+  // pointers, and the compiler would reload them for every particle.
+  Vec3* v = p.velocity.data();
+  const Vec3* a = p.acceleration.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
+  Quat* q = p.orientation.data();
+  Vec3* w = p.omega.data();
+  Vec3* dw = p.omega_dot.data();
+  const Vec3* torque = p.torque.data();
+  const double* inv_I = p.inv_inertia.data();
+  const std::uint8_t* free = rot ? free_to_rotate_.data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t mask = p.prescribed[i];
+    const std::uint8_t mask = prescribed[i];
     if (mask == 0) {
-      p.velocity[i] += half * p.acceleration[i];
+      v[i] += half * a[i];
     } else {
       for (int c = 0; c < 3; ++c)
-        if (!(mask & (1u << c))) p.velocity[i][c] += half * p.acceleration[i][c];
+        if (!(mask & (1u << c))) v[i][c] += half * a[i][c];
     }
-    if (rot && free_to_rotate_[i]) rotate_one(i, h, 0.0, 0.5);
+    if (rot && free[i]) {
+      // The explicit rotation update needs only this step's torque (beta 0, gamma 1/2).
+      if (inv_I[i] > 0.0) sphere_rotation_step(q[i], w[i], dw[i], torque[i], inv_I[i], h, 0.5);
+      else rotate_one(i, h, 0.0, 0.5);
+    }
   }
 }
 
