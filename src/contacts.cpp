@@ -435,11 +435,10 @@ void ContactSystem::commit() {
   for (std::size_t k = 0; k < nt; ++k) tris_[k].history = ttouch_[k] ? th_[k] : Vec3::Zero();
 }
 
-Vec3 ContactSystem::mesh_force(std::size_t m) const {
-  Vec3 f = Vec3::Zero();
+void ContactSystem::mesh_forces(std::vector<Vec3>& out) const {
+  out.assign(meshes_->size(), Vec3::Zero());
   for (std::size_t k = 0; k < tris_.size(); ++k)
-    if (ttouch_[k] && tri_mesh_[tris_[k].tri] == static_cast<std::int32_t>(m)) f -= tf_[k];
-  return f;
+    if (ttouch_[k]) out[tri_mesh_[tris_[k].tri]] -= tf_[k];
 }
 
 double ContactSystem::elastic_energy() const {

@@ -71,8 +71,8 @@ class ContactSystem {
   /// Writes the trial histories back (after a converged step).
   void commit();
 
-  /// Force the particles exert on mesh m (sum over its contacts, fixed order), N.
-  Vec3 mesh_force(std::size_t m) const;
+  /// Force the particles exert on each mesh (sums over its contacts in a fixed order), N; one pass.
+  void mesh_forces(std::vector<Vec3>& out) const;
   /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
   double elastic_energy() const;
   /// Current number of touching sphere-sphere and sphere-triangle contacts.

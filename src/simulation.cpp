@@ -36,8 +36,7 @@ Simulation::Simulation(Model& model) : m_(model) {
   compute_reactions(reaction_);
   broken_ = m_.rods.broken_count();
   if (contacts_.enabled()) {
-    mesh_force_old_.assign(m_.meshes.size(), Vec3::Zero());
-    for (std::size_t k = 0; k < m_.meshes.size(); ++k) mesh_force_old_[k] = contacts_.mesh_force(k);
+    contacts_.mesh_forces(mesh_force_);
     contact_power_old_ = contact_power();
   }
 }
@@ -49,7 +48,7 @@ double Simulation::contact_power() const {
   double power = deterministic_sum(p.size(), [&](std::size_t i) {
     return contact_force_[i].dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
   });
-  for (std::size_t k = 0; k < m_.meshes.size(); ++k) power += mesh_force_old_[k].dot(m_.meshes[k].velocity);
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) power += mesh_force_[k].dot(m_.meshes[k].velocity);
   return power;
 }
 
@@ -510,12 +509,11 @@ void Simulation::account(double h) {
   // Moving meshes (tools) work on the particles: minus the force the particles exert on the
   // mesh times its displacement (trapezoid over the step).
   if (contacts_.enabled()) {
-    for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-      const Vec3 f = contacts_.mesh_force(k);
-      const Vec3 du = m_.meshes[k].velocity * h;
-      ledger_.external_work -= 0.5 * (mesh_force_old_[k] + f).dot(du);
-      mesh_force_old_[k] = f;
-    }
+    std::vector<Vec3> previous;
+    previous.swap(mesh_force_);
+    contacts_.mesh_forces(mesh_force_);
+    for (std::size_t k = 0; k < m_.meshes.size(); ++k)
+      ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
     // What the contacts take up (stored + dissipated): minus the power of their forces,
     // trapezoid over the step.
     const double power = contact_power();

@@ -82,8 +82,8 @@ class Simulation {
   double contact_energy() const { return contacts_.enabled() ? contacts_.elastic_energy() : 0.0; }
   /// Potential energy in gravity relative to the initial positions, J.
   double potential_energy() const;
-  /// Force the particles exert on mesh m, N.
-  Vec3 mesh_force(std::size_t m) const { return contacts_.mesh_force(m); }
+  /// Force the particles exert on mesh m in the last evaluation of an accepted step, N.
+  Vec3 mesh_force(std::size_t m) const { return mesh_force_[m]; }
   const ContactSystem& contacts() const { return contacts_; }
   /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum
   /// of the internal forces on its particles).
@@ -132,7 +132,7 @@ class Simulation {
   std::vector<Vec3> reaction_, reaction_old_;
   std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
   std::vector<double> group_mass_; // total mass of each group, kg
-  std::vector<Vec3> mesh_force_old_;  // force on each moving mesh at the start of the step, N
+  std::vector<Vec3> mesh_force_;      // force on each mesh after the last accepted step, N
   std::vector<Vec3> contact_force_;   // contact part of each particle's force, N
   double contact_power_old_ = 0;      // power of the contact forces at the start of the step, W
   double contact_power() const;

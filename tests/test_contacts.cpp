@@ -344,6 +344,15 @@ TEST(Friction, RegularizedLawSlidesAboveTheFrictionAngle) {
 
 // ---- neighbour search ---------------------------------------------------------------------
 
+// Frictionless, undamped contacts with a 0.1 mm skin, for the neighbour-search tests.
+ContactParams frictionless_params() {
+  ContactParams prm;
+  prm.youngs_modulus = 1e9;
+  prm.poisson_ratio = 0.3;
+  prm.skin = 1e-4;
+  return prm;
+}
+
 TEST(NeighbourSearch, FindsExactlyTheOverlappingPairsOfBruteForce) {
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> u(0.0, 0.02), ur(0.4e-3, 0.9e-3);
@@ -359,10 +368,7 @@ TEST(NeighbourSearch, FindsExactlyTheOverlappingPairsOfBruteForce) {
   Rods rods;
   rods.build_rows(n);
   std::vector<MeshBody> meshes;
-  ContactParams prm;
-  prm.youngs_modulus = 1e9;
-  prm.poisson_ratio = 0.3;
-  prm.skin = 1e-4;
+  const ContactParams prm = frictionless_params();
   ContactSystem cs;
   cs.setup(prm, n, &meshes);
   cs.update_lists(p, rods, true);
@@ -402,10 +408,7 @@ TEST(NeighbourSearch, BondedPairsAreNotContactsUntilTheRodBreaks) {
   rods.reset_state();
   rods.build_rows(2);
   std::vector<MeshBody> meshes;
-  ContactParams prm;
-  prm.youngs_modulus = 1e9;
-  prm.poisson_ratio = 0.3;
-  prm.skin = 1e-4;
+  const ContactParams prm = frictionless_params();
   ContactSystem cs;
   cs.setup(prm, 2, &meshes);
   cs.update_lists(p, rods, true);
