@@ -33,9 +33,11 @@ ChipMetrics measure_chip(const ChipInput& in) {
   // Rake face through the tip: direction up the face and the outward normal (into the chip).
   const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
   std::vector<double> dist;
-  for (const auto& x : in.position) {
+  for (std::size_t i = 0; i < in.position.size(); ++i) {
+    const Vec3& x = in.position[i];
     if (!(x[2] > in.uncut_surface_z + in.radius)) continue;
     ++m.chip_particles;
+    m.members.push_back(i);
     const Vec3 rel = x - in.tool_tip;
     if (rel.dot(up) < 2.0 * in.depth_of_cut) continue;  // still in the edge region
     dist.push_back(rel.dot(normal));

@@ -33,6 +33,7 @@ struct ChipMetrics {
   double thickness = 0;               ///< h_c, m (0 if too few particles)
   double compression_ratio = 0;       ///< r = h / h_c, 1
   double shear_angle_deg = 0;         ///< from r and the rake angle, deg
+  std::vector<std::size_t> members;   ///< indices (into ChipInput::position) of the chip particles
 };
 
 /// Identifies the chip and measures it.

@@ -27,6 +27,13 @@ class BarPrediction {
     broken_ = r.broken;
     return broken_ ? 0.0 : factor_ * r.stress;
   }
+  /// The prediction's state (plastic shift, broken), for checkpoints.
+  double shift() const { return shift_; }
+  bool broken() const { return broken_; }
+  void set_state(double shift, bool broken) {
+    shift_ = shift;
+    broken_ = broken;
+  }
 
  private:
   RodLaw law_;

@@ -497,6 +497,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   for (const auto& o : overrides) apply_override(root, o, ov);
 
   CaseSettings cs;
+  cs.text = text;
   cs.source = source;
   cs.directory = directory;
   cs.overrides = overrides;
@@ -662,6 +663,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     o.plots = r.boolean("plots", o.plots);
     o.progress = r.boolean("progress", o.progress);
     o.steady_from = r.number("steady_from", o.steady_from, non_negative);
+    o.checkpoint_every = r.integer("checkpoint_every", static_cast<int>(o.checkpoint_every), 0, 1000000000);
     r.finish();
   }
   if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))

@@ -113,6 +113,7 @@ struct OutputSettings {
   bool plots = true;                  ///< write PNG plots at the end (needs python3-matplotlib)
   bool progress = true;               ///< progress line on stderr
   double steady_from = -1.0;          ///< cutting: force statistics over rows with time >= this, s; < 0 = half the end time
+  int checkpoint_every = 0;           ///< write DIR/checkpoint.h5 every this many steps; 0 = never
 };
 
 /// [contact]: Hertz contacts with friction between unbonded particles and with meshes.
@@ -180,6 +181,7 @@ struct CaseSettings {
   OutputSettings output;
   std::vector<std::string> overrides; ///< the --set arguments, in order
   std::string effective_toml;         ///< the TOML tree after overrides, as read
+  std::string text;                   ///< the case text as given (before overrides)
 };
 
 /// Reads a case file and applies overrides ("dotted.key=value"). Throws InputError.

@@ -218,6 +218,14 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
     }
   }
   tris_.swap(tris);
+  finish_build(p);
+  x_build_ = p.position;
+  mesh_build_.resize(meshes_->size());
+  for (std::size_t m = 0; m < meshes_->size(); ++m) mesh_build_[m] = (*meshes_)[m].offset;
+}
+
+void ContactSystem::finish_build(const Particles& p) {
+  const std::size_t n = p.size();
   fill_constants(p);
 
   // Per-particle rows.
@@ -253,9 +261,6 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
   th_.assign(nt, Vec3::Zero());
   te_.assign(nt, 0.0);
   ttouch_.assign(nt, 0);
-  x_build_ = p.position;
-  mesh_build_.resize(meshes_->size());
-  for (std::size_t m = 0; m < meshes_->size(); ++m) mesh_build_[m] = (*meshes_)[m].offset;
 }
 
 void ContactSystem::fill_constants(const Particles& p) {

@@ -29,6 +29,7 @@ namespace swarf {
 
 struct Particles;
 struct Rods;
+class H5File;
 
 enum class FrictionLaw { None, Spring, Regularized };
 
@@ -81,6 +82,11 @@ class ContactSystem {
   std::size_t touching_pairs() const;
   std::size_t list_builds() const { return builds_; }
 
+  /// Checkpoint: the lists as built (pairs, triangle contacts, committed histories, build
+  /// reference); per-contact constants and rows are derived again on load (checkpoint.cpp).
+  void save(H5File& f, const std::string& prefix) const;
+  void load(const H5File& f, const std::string& prefix, const Particles& p);
+
  private:
   // Per-contact constants are computed when the list is built: the evaluation then needs
   // no division for the material law (K, damping and tangential stiffness factor).
@@ -99,6 +105,7 @@ class ContactSystem {
   };
   void fill_constants(const Particles& p);
   void build(const Particles& p, const Rods& rods);
+  void finish_build(const Particles& p);  // constants, per-particle rows, scratch arrays
 
   bool enabled_ = false;
   ContactParams prm_;

@@ -45,7 +45,7 @@ static void write_any(hid_t file, const std::string& path, const std::string& na
   hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
   hid_t lcpl = link_props();
   hid_t set = H5Dcreate2(file, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  herr_t st = set >= 0 ? H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : -1;
+  herr_t st = set < 0 ? -1 : rows * cols == 0 ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   if (set >= 0) H5Dclose(set);
   H5Pclose(lcpl);
   H5Sclose(space);

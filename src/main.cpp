@@ -13,6 +13,7 @@
 #include "rod_driver.h"
 #include "tool_paths/tool_geometry.h"
 #include "vtk_output.h"
+#include "post.h"
 #include "run.h"
 
 namespace {
@@ -72,6 +73,13 @@ int main(int argc, char** argv) {
   run->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
   run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")->allow_extra_args(false);
   run->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
+  run->add_option("--restart", ro.restart, "Continue from a checkpoint (DIR/checkpoint.h5, written every "
+                  "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");
+
+  // swarf post
+  auto* post = app.add_subcommand("post", "Redo a cutting run's analysis (chip, forces, surface, plots, picture)");
+  std::string post_dir;
+  post->add_option("dir", post_dir, "Run directory (with summary.json, series.csv, results.h5)")->required();
 
   // swarf tool
   auto* tool = app.add_subcommand("tool", "Generate the cutting tool mesh (STL, and VTP for ParaView)");
@@ -129,6 +137,8 @@ int main(int argc, char** argv) {
       swarf::write_rod_csv(std::cout, samples);
     } else if (*run) {
       swarf::run_case(ro);
+    } else if (*post) {
+      swarf::post_run(post_dir);
     } else if (*tool) {
       const auto mesh = swarf::make_tool(ts);
       swarf::write_stl(tool_out, mesh);

@@ -10,8 +10,11 @@
 #include <fmt/format.h>
 
 #include "atomic_file.h"
+#include "checkpoint.h"
+#include "h5file.h"
+#include "post.h"
+#include "postprocess/cut_report.h"
 #include "errors.h"
-#include "postprocess/chip.h"
 #include "postprocess/hysteresis.h"
 #include "postprocess/plots.h"
 #include "progress.h"
@@ -68,24 +71,140 @@ double deviation_percent(double measured, double predicted) { return 100.0 * (me
 
 }  // namespace
 
+namespace {
+
+// The uniaxial bar's loop against the rod-law prediction: summary "uniaxial" and the printed table.
+void report_uniaxial(const Model& model, const RunRecord& rec, nlohmann::json& sum) {
+  const UniaxialInfo& ux = model.uniaxial;
+  const std::vector<int> segments(rec.s_segment.begin(), rec.s_segment.end());
+  const Derived& d = model.derived;
+  const double ey = std::isfinite(d.bar_yield_strain) ? d.bar_yield_strain : 1.0;
+  const LoopMeasurement lm = analyze_loop(rec.s_strain, rec.s_stress, segments, ey);
+  nlohmann::json u;
+  u["axis"] = std::string(1, char('x' + ux.axis));
+  u["gauge_length_m"] = ux.gauge_length;
+  u["cross_section_m2"] = ux.cross_section;
+  u["predicted"] = {{"youngs_modulus_Pa", d.youngs_modulus_100},
+                    {"yield_stress_Pa", number(d.bar_yield_stress)},
+                    {"yield_strain", number(d.bar_yield_strain)},
+                    {"hardening_tangent_Pa", d.bar_hardening_tangent},
+                    {"reverse_elastic_range_Pa", number(2.0 * d.bar_yield_stress)}};
+  const double qs = rec.max_stress > 0 ? rec.max_mismatch / rec.max_stress : 0.0;
+  u["quasi_static"] = {{"max_midplane_mismatch", qs},
+                       {"note", "max over samples of |stress at the grips - stress through the mid-plane| / max |stress|: "
+                                "0 for a static bar; inertia makes it grow with the strain rate"}};
+  if (lm.ok) {
+    u["measured"] = {{"youngs_modulus_Pa", lm.modulus},
+                     {"yield_stress_Pa", lm.yield_stress},
+                     {"yield_strain", lm.yield_strain},
+                     {"hardening_tangent_Pa", lm.hardening_tangent}};
+    u["deviation_percent"] = {{"youngs_modulus", deviation_percent(lm.modulus, d.youngs_modulus_100)},
+                              {"yield_stress", deviation_percent(lm.yield_stress, d.bar_yield_stress)},
+                              {"hardening_tangent", deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent)}};
+    if (lm.reverse_ok) {
+      const double range = lm.turn_stress - lm.reverse_yield_stress;
+      u["measured"]["turn_stress_Pa"] = lm.turn_stress;
+      u["measured"]["reverse_yield_stress_Pa"] = lm.reverse_yield_stress;
+      u["measured"]["reverse_elastic_range_Pa"] = range;
+      u["deviation_percent"]["reverse_elastic_range"] = deviation_percent(range, 2.0 * d.bar_yield_stress);
+    }
+  }
+  if (!lm.note.empty()) u["note"] = lm.note;
+  sum["uniaxial"] = u;
+  fmt::print("\n  uniaxial [100] bar          measured        predicted   deviation\n");
+  if (lm.ok) {
+    fmt::print("  Young's modulus   {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.modulus, d.youngs_modulus_100,
+               deviation_percent(lm.modulus, d.youngs_modulus_100));
+    fmt::print("  yield stress      {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.yield_stress, d.bar_yield_stress,
+               deviation_percent(lm.yield_stress, d.bar_yield_stress));
+    fmt::print("  hardening tangent {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.hardening_tangent,
+               d.bar_hardening_tangent, deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent));
+    if (lm.reverse_ok)
+      fmt::print("  reverse elastic range {:>10.5g} Pa {:>14.5g} Pa   {:+.2f} %  (Bauschinger)\n",
+                 lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress,
+                 deviation_percent(lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress));
+  }
+  if (!lm.note.empty()) fmt::print("  note: {}\n", lm.note);
+  fmt::print("  quasi-static check: grip and mid-plane stress differ by at most {:.3g} of the peak stress\n", qs);
+}
+
+// The cut's setup at the start of the run (tool tip moves with the tool's mesh).
+bool cut_setup(const Model& model, CutSetup& cs) {
+  const auto& settings = model.settings;
+  int tool = -1;
+  for (std::size_t k = 0; k < settings.meshes.size() && tool < 0; ++k)
+    if (settings.meshes[k].tool) tool = static_cast<int>(k);
+  if (tool < 0 || model.lattice_particles == 0) return false;
+  double lo = HUGE_VAL, hi = -HUGE_VAL, top = -HUGE_VAL;
+  for (std::size_t i = 0; i < model.lattice_particles; ++i) {
+    const Vec3& x0 = model.particles.initial_position[i];
+    lo = std::min(lo, x0[1]);
+    hi = std::max(hi, x0[1]);
+    top = std::max(top, x0[2]);
+  }
+  const auto& ms = settings.meshes[tool];
+  cs.tool_mesh = ms.name;
+  cs.width = hi - lo + 0.5 * model.derived.cell_edge;
+  cs.steady_from = settings.output.steady_from >= 0 ? settings.output.steady_from : 0.5 * settings.integrator.end_time;
+  cs.tool_tip = Vec3(ms.origin[0], ms.origin[1], ms.origin[2]);
+  cs.rake_angle_deg = ms.rake_angle;
+  cs.uncut_surface_z = top;
+  cs.radius = model.derived.radius;
+  cs.lattice_particles = model.lattice_particles;
+  return true;
+}
+
+int mesh_index(const Model& model, const std::string& name) {
+  for (std::size_t k = 0; k < model.meshes.size(); ++k)
+    if (model.meshes[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+
+}  // namespace
+
 void run_case(const RunOptions& opt) {
-  const CaseSettings cs = opt.case_path.empty() ? parse_case(kDefaultCaseToml, "<built-in default case>", opt.overrides)
-                                                : load_case(opt.case_path, opt.overrides);
+  namespace fs = std::filesystem;
+  const bool restarting = !opt.restart.empty();
+  CheckpointCase stored;
+  CaseSettings cs;
+  if (restarting) {
+    if (!opt.case_path.empty() || !opt.overrides.empty())
+      throw InputError(fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case file "
+                                   "and no --set (got '{}'{})", opt.restart, opt.case_path,
+                                   opt.overrides.empty() ? "" : " and --set " + opt.overrides.front()));
+    stored = read_checkpoint_case(opt.restart);
+    cs = parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
+  } else {
+    cs = opt.case_path.empty() ? parse_case(kDefaultCaseToml, "<built-in default case>", opt.overrides)
+                               : load_case(opt.case_path, opt.overrides);
+    stored.toml = cs.text;
+    stored.source = cs.source;
+    stored.directory = cs.directory;
+    stored.overrides = cs.overrides;
+  }
   Model model = build_model(cs);
   const int threads = set_threads(opt.threads);
   print_setup(model, threads);
 
-  namespace fs = std::filesystem;
-  const std::string dir = opt.out_dir;
+  std::string dir = opt.out_dir;
+  if (dir.empty()) {
+    const auto parent = fs::path(opt.restart).parent_path();
+    dir = restarting ? (parent.empty() ? "." : parent.string()) : "swarf-out";
+  }
   fs::create_directories(dir);
   // Outputs of an earlier run in the same directory would mix with this one's (and a previous
-  // summary would make an interrupted run look complete).
+  // summary would make an interrupted run look complete). A restart keeps the frames.
   for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",
-                           "particles.pvd", "stress_strain.png", "energy.png"})
+                           "stress_strain.png", "energy.png", "forces.png", "chip.png", "chip_surface.vtp"})
     fs::remove(fs::path(dir) / name);
-  fs::remove_all(fs::path(dir) / "frames");
+  if (!restarting) {
+    fs::remove(fs::path(dir) / "particles.pvd");
+    fs::remove(fs::path(dir) / "checkpoint.h5");
+    fs::remove_all(fs::path(dir) / "frames");
+  }
 
   Simulation sim(model);
+  RunRecord rec;
   const auto& settings = model.settings;
   const double end_time = settings.integrator.end_time;
   const double series_interval = settings.output.series_interval > 0 ? settings.output.series_interval : end_time / 2000;
@@ -104,26 +223,13 @@ void run_case(const RunOptions& opt) {
     for (char c : {'x', 'y', 'z'}) cols.push_back(fmt::format("force_{}_{}", mb.name, c));
   // The first generated tool: cutting force Fc (against the cutting direction +x of the tool
   // frame) and thrust force Ft (+z, away from the workpiece), per unit width of the workpiece.
-  int tool_mesh = -1;
-  for (std::size_t k = 0; k < settings.meshes.size() && tool_mesh < 0; ++k)
-    if (settings.meshes[k].tool) tool_mesh = static_cast<int>(k);
-  double work_width = 0.0;  // m, lattice extent along y plus one layer spacing
-  if (tool_mesh >= 0 && model.lattice_particles > 0) {
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (std::size_t i = 0; i < model.lattice_particles; ++i) {
-      lo = std::min(lo, model.particles.initial_position[i][1]);
-      hi = std::max(hi, model.particles.initial_position[i][1]);
-    }
-    work_width = hi - lo + 0.5 * model.derived.cell_edge;
-    cols.insert(cols.end(), {"cutting_force_per_width", "thrust_force_per_width"});
-  }
-  SeriesWriter series(dir + "/series.csv", cols);
-
-  std::unique_ptr<VtkSeries> vtk;
-  if (settings.output.vtk) vtk = std::make_unique<VtkSeries>(dir, settings.output.rods_in_vtk);
+  CutSetup cut;
+  const bool cutting = cut_setup(model, cut);
+  const int tool_mesh = cutting ? mesh_index(model, cut.tool_mesh) : -1;
+  if (cutting) cols.insert(cols.end(), {"tool_travel", "cutting_force_per_width", "thrust_force_per_width"});
+  rec.columns = cols.size();
 
   BarPrediction prediction(model.derived.law, model.derived.bar_stress_factor);
-  double predicted = 0.0;
   std::vector<double> path_times;
   if (ux.enabled) path_times = model.groups[ux.grip_max].motion.time;
   auto bar_strain = [&](double t) {
@@ -135,10 +241,6 @@ void run_case(const RunOptions& opt) {
     return 0.5 * (sim.group_reaction(ux.grip_max)[ux.axis] - sim.group_reaction(ux.grip_min)[ux.axis]) /
            ux.cross_section;
   };
-  // Samples kept for the loop analysis and the quasi-static check.
-  std::vector<double> s_strain, s_stress;
-  std::vector<int> s_segment;
-  double max_stress = 0.0, max_mismatch = 0.0;
   auto midplane_stress = [&]() {
     double f = 0.0;
     const auto& x = model.particles.position;
@@ -150,25 +252,24 @@ void run_case(const RunOptions& opt) {
   };
 
   const double total_rods = std::max<double>(1.0, double(model.rods.size()));
-  double e0 = 0.0;  // initial kinetic + elastic + potential energy, J
-  std::vector<double> cut_time, cut_fc, cut_ft;  // samples of the forces per width (N/m) for the statistics
+  std::unique_ptr<SeriesWriter> series;
   auto write_row = [&]() {
     std::vector<double> row{sim.time()};
     if (ux.enabled) {
       const double e = bar_strain(sim.time()), s = bar_stress(), s_mid = midplane_stress();
-      row.insert(row.end(), {e, s, predicted, s_mid});
+      row.insert(row.end(), {e, s, rec.predicted, s_mid});
       int seg = 0;
       while (seg + 2 < int(path_times.size()) && sim.time() > path_times[seg + 1]) ++seg;
-      s_strain.push_back(e);
-      s_stress.push_back(s);
-      s_segment.push_back(seg);
-      max_stress = std::max(max_stress, std::abs(s));
-      max_mismatch = std::max(max_mismatch, std::abs(s - s_mid));
+      rec.s_strain.push_back(e);
+      rec.s_stress.push_back(s);
+      rec.s_segment.push_back(seg);
+      rec.max_stress = std::max(rec.max_stress, std::abs(s));
+      rec.max_mismatch = std::max(rec.max_mismatch, std::abs(s - s_mid));
     }
     const double ke = sim.kinetic_energy(), ee = sim.elastic_energy(), pe = sim.potential_energy();
     const auto& L = sim.ledger();
     const double err =
-        L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work);
+        L.external_work - (ke + ee + pe - rec.e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work);
     row.insert(row.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations), ke,
                            sim.rotational_energy(), ee, sim.contact_energy(), L.contact_work, pe,
                            L.external_work, L.plastic_work, L.viscous_work, L.fracture_energy, err,
@@ -178,48 +279,81 @@ void run_case(const RunOptions& opt) {
       for (int c = 0; c < 3; ++c) row.push_back(sim.group_reaction(g)[c]);
     for (std::size_t k = 0; k < model.meshes.size(); ++k)
       for (int c = 0; c < 3; ++c) row.push_back(sim.mesh_force(k)[c]);
-    if (work_width > 0) {
+    if (cutting) {
       const Vec3 f = sim.mesh_force(tool_mesh);
-      row.push_back(-f[0] / work_width);
-      row.push_back(f[2] / work_width);
-      cut_time.push_back(sim.time());
-      cut_fc.push_back(-f[0] / work_width);
-      cut_ft.push_back(f[2] / work_width);
+      row.push_back(model.meshes[tool_mesh].offset[0]);
+      row.push_back(-f[0] / cut.width);
+      row.push_back(f[2] / cut.width);
     }
-    series.row(row);
+    series->row(row);
+    rec.rows.insert(rec.rows.end(), row.begin(), row.end());
   };
 
+  std::unique_ptr<VtkSeries> vtk;
+  if (settings.output.vtk) vtk = std::make_unique<VtkSeries>(dir, settings.output.rods_in_vtk);
+  series = std::make_unique<SeriesWriter>(dir + "/series.csv", cols);
+  if (restarting) {
+    read_checkpoint(opt.restart, sim, rec);
+    if (rec.columns != cols.size())
+      throw InputError(fmt::format("--restart {}: the checkpoint's series has {} columns, this case {}", opt.restart,
+                                   rec.columns, cols.size()));
+    for (std::size_t r = 0; r * rec.columns < rec.rows.size(); ++r)
+      series->row(std::vector<double>(rec.rows.begin() + r * rec.columns, rec.rows.begin() + (r + 1) * rec.columns));
+    prediction.set_state(rec.bar_shift, rec.bar_broken != 0.0);
+    if (vtk) vtk->resume(rec.frame_times);
+    fmt::print("  restarted from {} at t = {:.6g} s, step {} ({} series rows, {} frames)\n", opt.restart, sim.time(),
+               sim.steps(), rec.rows.size() / rec.columns, rec.frame_times.size());
+  } else {
+    // The balance counts changes from the initial state (free particles may start moving).
+    rec.e0 = sim.kinetic_energy() + sim.elastic_energy() + sim.potential_energy();
+    write_row();
+    if (vtk) vtk->write_frame(0.0, model.particles, model.rods, model.meshes);
+    rec.next_row = series_interval;
+    rec.next_frame = frame_interval > 0 ? frame_interval : HUGE_VAL;
+  }
+  std::fflush(stdout);
+
   Progress progress(settings.output.progress, end_time);
-  // The balance counts changes from the initial state (free particles may start moving).
-  e0 = sim.kinetic_energy() + sim.elastic_energy() + sim.potential_energy();
-  write_row();
-  if (vtk) vtk->write_frame(0.0, model.particles, model.rods, model.meshes);
   const auto t0 = std::chrono::steady_clock::now();
-  double output_seconds = 0.0;
+  const double wall_before = rec.wall_s, output_before = rec.output_s;
+  double output_seconds = output_before;
+  const int checkpoint_every = settings.output.checkpoint_every;
+  const std::string checkpoint_path = dir + "/checkpoint.h5";
   // Rows and frames are written at the first step that reaches each output time.
   const double t_end = end_time * (1.0 - 1e-12);
-  double next_row = series_interval, next_frame = frame_interval > 0 ? frame_interval : HUGE_VAL;
   while (sim.time() < t_end) {
     sim.step(end_time - sim.time());
-    if (ux.enabled) predicted = prediction.stress(bar_strain(sim.time()));
+    if (ux.enabled) rec.predicted = prediction.stress(bar_strain(sim.time()));
     const bool last = sim.time() >= t_end;
-    const bool row = sim.time() >= next_row * (1.0 - 1e-12) || last;
-    const bool frame = vtk && (sim.time() >= next_frame * (1.0 - 1e-12) || last);
-    if (row || frame) {
+    const bool row = sim.time() >= rec.next_row * (1.0 - 1e-12) || last;
+    const bool frame = vtk && (sim.time() >= rec.next_frame * (1.0 - 1e-12) || last);
+    const bool checkpoint = checkpoint_every > 0 && !last && sim.steps() % checkpoint_every == 0;
+    if (row || frame || checkpoint) {
       const auto o0 = std::chrono::steady_clock::now();
       if (row) write_row();
       if (frame) vtk->write_frame(sim.time(), model.particles, model.rods, model.meshes);
-      while (next_row <= sim.time() * (1.0 + 1e-12)) next_row += series_interval;
-      while (next_frame <= sim.time() * (1.0 + 1e-12)) next_frame += frame_interval;
+      while (rec.next_row <= sim.time() * (1.0 + 1e-12)) rec.next_row += series_interval;
+      while (rec.next_frame <= sim.time() * (1.0 + 1e-12)) rec.next_frame += frame_interval;
+      if (checkpoint) {
+        rec.bar_shift = prediction.shift();
+        rec.bar_broken = prediction.broken() ? 1.0 : 0.0;
+        if (vtk) rec.frame_times = vtk->times();
+        rec.wall_s = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        rec.output_s = output_seconds;
+        write_checkpoint(checkpoint_path, sim, rec, stored);
+      }
       output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - o0).count();
     }
     progress.update(sim.time(), sim.steps());
   }
   progress.done(sim.time(), sim.steps());
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double step_seconds = wall - output_seconds;
-  series.finish();
-  write_results_h5(dir + "/results.h5", sim);
+  series->finish();
+  if (cutting) cut.tool_tip += model.meshes[tool_mesh].offset;
+  write_results_h5(dir + "/results.h5", sim, [&](H5File& f) {
+    if (cutting) write_cut_setup(f, cut);
+  });
 
   // Summary.
   nlohmann::json sum;
@@ -227,6 +361,7 @@ void run_case(const RunOptions& opt) {
   sum["status"] = "completed";
   sum["case_file"] = settings.source;
   sum["overrides"] = settings.overrides;
+  if (restarting) sum["restarted_from"] = opt.restart;
   sum["case"] = case_to_json(settings);
   sum["derived"] = derived_to_json(model.derived);
   sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
@@ -248,6 +383,8 @@ void run_case(const RunOptions& opt) {
                 {"wall_time_s", wall},
                 {"step_wall_time_s", step_seconds},
                 {"ns_per_particle_step", step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size()))}};
+  const double energy_error =
+      L.external_work - (ke + ee + pe - rec.e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work);
   sum["results"] = {{"kinetic_energy_J", ke},
                     {"elastic_energy_J", ee},
                     {"external_work_J", L.external_work},
@@ -257,65 +394,14 @@ void run_case(const RunOptions& opt) {
                     {"potential_energy_J", pe},
                     {"contact_energy_J", sim.contact_energy()},
                     {"contact_work_J", L.contact_work},
-                    {"energy_error_J", L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work +
-                                                          L.fracture_energy + L.contact_work)},
+                    {"energy_error_J", energy_error},
                     {"broken_rods", sim.broken_rods()},
                     {"broken_fraction", double(sim.broken_rods()) / total_rods}};
   for (std::size_t g = 0; g < model.groups.size(); ++g) {
     const Vec3 r = sim.group_reaction(g);
     sum["results"]["reaction_" + model.groups[g].name + "_N"] = {r[0], r[1], r[2]};
   }
-  if (ux.enabled) {
-    const Derived& d = model.derived;
-    const double ey = std::isfinite(d.bar_yield_strain) ? d.bar_yield_strain : 1.0;
-    const LoopMeasurement lm = analyze_loop(s_strain, s_stress, s_segment, ey);
-    nlohmann::json u;
-    u["axis"] = std::string(1, char('x' + ux.axis));
-    u["gauge_length_m"] = ux.gauge_length;
-    u["cross_section_m2"] = ux.cross_section;
-    u["predicted"] = {{"youngs_modulus_Pa", d.youngs_modulus_100},
-                      {"yield_stress_Pa", number(d.bar_yield_stress)},
-                      {"yield_strain", number(d.bar_yield_strain)},
-                      {"hardening_tangent_Pa", d.bar_hardening_tangent},
-                      {"reverse_elastic_range_Pa", number(2.0 * d.bar_yield_stress)}};
-    const double qs = max_stress > 0 ? max_mismatch / max_stress : 0.0;
-    u["quasi_static"] = {{"max_midplane_mismatch", qs},
-                         {"note", "max over samples of |stress at the grips - stress through the mid-plane| / max |stress|: "
-                                  "0 for a static bar; inertia makes it grow with the strain rate"}};
-    if (lm.ok) {
-      u["measured"] = {{"youngs_modulus_Pa", lm.modulus},
-                       {"yield_stress_Pa", lm.yield_stress},
-                       {"yield_strain", lm.yield_strain},
-                       {"hardening_tangent_Pa", lm.hardening_tangent}};
-      u["deviation_percent"] = {{"youngs_modulus", deviation_percent(lm.modulus, d.youngs_modulus_100)},
-                                {"yield_stress", deviation_percent(lm.yield_stress, d.bar_yield_stress)},
-                                {"hardening_tangent", deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent)}};
-      if (lm.reverse_ok) {
-        const double range = lm.turn_stress - lm.reverse_yield_stress;
-        u["measured"]["turn_stress_Pa"] = lm.turn_stress;
-        u["measured"]["reverse_yield_stress_Pa"] = lm.reverse_yield_stress;
-        u["measured"]["reverse_elastic_range_Pa"] = range;
-        u["deviation_percent"]["reverse_elastic_range"] = deviation_percent(range, 2.0 * d.bar_yield_stress);
-      }
-    }
-    if (!lm.note.empty()) u["note"] = lm.note;
-    sum["uniaxial"] = u;
-    fmt::print("\n  uniaxial [100] bar          measured        predicted   deviation\n");
-    if (lm.ok) {
-      fmt::print("  Young's modulus   {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.modulus, d.youngs_modulus_100,
-                 deviation_percent(lm.modulus, d.youngs_modulus_100));
-      fmt::print("  yield stress      {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.yield_stress, d.bar_yield_stress,
-                 deviation_percent(lm.yield_stress, d.bar_yield_stress));
-      fmt::print("  hardening tangent {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.hardening_tangent,
-                 d.bar_hardening_tangent, deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent));
-      if (lm.reverse_ok)
-        fmt::print("  reverse elastic range {:>10.5g} Pa {:>14.5g} Pa   {:+.2f} %  (Bauschinger)\n",
-                   lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress,
-                   deviation_percent(lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress));
-    }
-    if (!lm.note.empty()) fmt::print("  note: {}\n", lm.note);
-    fmt::print("  quasi-static check: grip and mid-plane stress differ by at most {:.3g} of the peak stress\n", qs);
-  }
+  if (ux.enabled) report_uniaxial(model, rec, sum);
   fmt::print("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n",
              sim.steps(), sim.implicit() ? "newmark" : "verlet", sim.time(), wall,
              step_seconds * 1e9 / (double(sim.steps()) * double(model.particles.size())), threads);
@@ -324,70 +410,21 @@ void run_case(const RunOptions& opt) {
                st.rejected, double(st.iterations) / double(std::max<std::int64_t>(1, st.accepted)), st.max_iterations,
                double(st.force_evaluations) / (sim.time() * 1e6));
   fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", sim.broken_rods(),
-             model.rods.size(), 100.0 * sim.broken_rods() / total_rods,
-             L.external_work - (ke + ee + pe - e0 + L.plastic_work + L.viscous_work + L.fracture_energy + L.contact_work),
-             L.external_work);
+             model.rods.size(), 100.0 * sim.broken_rods() / total_rods, energy_error, L.external_work);
 
-  if (work_width > 0) {
-    // Mean and fluctuation of the forces per width over the steady part of the cut.
-    const double from = settings.output.steady_from >= 0 ? settings.output.steady_from : 0.5 * end_time;
-    auto stats = [&](const std::vector<double>& v) {
-      double n = 0, sum = 0, sum2 = 0;
-      for (std::size_t k = 0; k < v.size(); ++k)
-        if (cut_time[k] >= from) {
-          n += 1;
-          sum += v[k];
-          sum2 += v[k] * v[k];
-        }
-      const double mean = n > 0 ? sum / n : 0.0;
-      const double var = n > 1 ? std::max(0.0, (sum2 - n * mean * mean) / (n - 1)) : 0.0;
-      return std::make_tuple(mean, std::sqrt(var), n);
-    };
-    const auto [fc, fc_sd, nc] = stats(cut_fc);
-    const auto [ft, ft_sd, nt] = stats(cut_ft);
-    sum["cutting"] = {{"tool_mesh", settings.meshes[tool_mesh].name},
-                      {"width_m", work_width},
-                      {"steady_from_s", from},
-                      {"steady_samples", nc},
-                      {"cutting_force_per_width_mean_N_per_m", fc},
-                      {"cutting_force_per_width_std_N_per_m", fc_sd},
-                      {"thrust_force_per_width_mean_N_per_m", ft},
-                      {"thrust_force_per_width_std_N_per_m", ft_sd}};
-    fmt::print("\n  cutting (steady part, t >= {:.4g} s, {} rows): Fc/w = {:.4g} +- {:.3g} N/m, Ft/w = {:.4g} +- {:.3g} N/m\n",
-               from, nc, fc, fc_sd, ft, ft_sd);
-    (void)nt;
-    // The chip at the end of the run.
-    const auto& ms = settings.meshes[tool_mesh];
-    ChipInput ci;
-    ci.radius = model.derived.radius;
-    ci.uncut_surface_z = -HUGE_VAL;
-    for (std::size_t i = 0; i < model.lattice_particles; ++i) {
-      ci.position.push_back(model.particles.position[i]);
-      ci.uncut_surface_z = std::max(ci.uncut_surface_z, model.particles.initial_position[i][2]);
+  if (cutting) {
+    CutData data;
+    const std::size_t cc = rec.columns;
+    for (std::size_t r = 0; r * cc < rec.rows.size(); ++r) {
+      data.time.push_back(rec.rows[r * cc]);
+      data.fc.push_back(rec.rows[r * cc + cc - 2]);
+      data.ft.push_back(rec.rows[r * cc + cc - 1]);
     }
-    ci.tool_tip = Vec3(ms.origin[0], ms.origin[1], ms.origin[2]) + model.meshes[tool_mesh].offset;
-    ci.rake_angle_deg = ms.rake_angle;
-    ci.depth_of_cut = ci.uncut_surface_z - ci.tool_tip[2];
-    const ChipMetrics cm = measure_chip(ci);
-    const double beta = friction_angle_deg(fc, ft, ms.rake_angle);
-    nlohmann::json chip = {{"depth_of_cut_m", ci.depth_of_cut},
-                           {"chip_particles", cm.chip_particles},
-                           {"measured_particles", cm.measured_particles},
-                           {"friction_angle_deg", beta},
-                           {"merchant_shear_angle_deg", merchant_shear_angle_deg(ms.rake_angle, beta)}};
-    if (cm.thickness > 0) {
-      chip["thickness_m"] = cm.thickness;
-      chip["compression_ratio"] = cm.compression_ratio;
-      chip["shear_angle_deg"] = cm.shear_angle_deg;
-      fmt::print("  chip: thickness {:.4g} m (depth of cut {:.4g} m), ratio r = {:.3f}, shear angle {:.1f} deg; "
-                 "friction angle {:.1f} deg, Merchant's shear angle {:.1f} deg\n",
-                 cm.thickness, ci.depth_of_cut, cm.compression_ratio, cm.shear_angle_deg, beta,
-                 merchant_shear_angle_deg(ms.rake_angle, beta));
-    } else {
-      chip["note"] = "too few chip particles beyond the edge region to measure the thickness";
-      fmt::print("  chip: {} particles above the uncut surface, too few to measure its thickness\n", cm.chip_particles);
-    }
-    sum["chip"] = chip;
+    const auto bf = broken_fraction_per_particle(model.particles, model.rods);
+    data.position.assign(model.particles.position.begin(), model.particles.position.begin() + cut.lattice_particles);
+    data.broken_fraction.assign(bf.begin(), bf.begin() + cut.lattice_particles);
+    data.broken_rod_fraction = double(sim.broken_rods()) / total_rods;
+    finish_cut(dir, cut, data, sum, vtk.get(), settings.output.plots);
   }
   if (settings.output.plots) {
     // The summary must exist for the plot script; it is rewritten below with the plot list.
@@ -401,8 +438,10 @@ void run_case(const RunOptions& opt) {
     }
   }
   write_text_atomic(dir + "/summary.json", sum.dump(2) + "\n");
-  fmt::print("  outputs in {}: summary.json, series.csv, results.h5{}{}\n", dir,
-             vtk ? ", particles.pvd (ParaView)" : "", sum.contains("plots") && !sum["plots"].empty() ? ", PNG plots" : "");
+  fmt::print("\n  outputs in {}/: summary.json, series.csv, results.h5{}{}{}\n", dir,
+             vtk ? ", particles.pvd (ParaView)" : "",
+             sum.contains("plots") && !sum["plots"].empty() ? ", PNG plots" : "",
+             checkpoint_every > 0 ? ", checkpoint.h5" : "");
 }
 
 }  // namespace swarf

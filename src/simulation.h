@@ -29,6 +29,8 @@
 
 namespace swarf {
 
+class H5File;
+
 /// Energy bookkeeping, J. external = kinetic + elastic + plastic + viscous + fracture (+ error).
 struct EnergyLedger {
   double external_work = 0;     ///< work done by the prescribed motions
@@ -91,6 +93,11 @@ class Simulation {
 
   Model& model() { return m_; }
   const Model& model() const { return m_; }
+
+  /// Checkpoint: everything the next step reads, written to / restored from /sim/* of an
+  /// open HDF5 file (checkpoint.cpp). Load after constructing from the same case.
+  void save(H5File& f) const;
+  void load(const H5File& f);
 
  private:
   void step_explicit();

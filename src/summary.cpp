@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "h5file.h"
+#include "vtk_output.h"
 
 namespace swarf {
 
@@ -77,7 +78,7 @@ nlohmann::json derived_to_json(const Derived& d) {
   };
 }
 
-void write_results_h5(const std::string& path, const Simulation& sim) {
+void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra) {
   const auto& p = sim.model().particles;
   const auto& r = sim.model().rods;
   const std::string tmp = path + ".part";
@@ -91,6 +92,7 @@ void write_results_h5(const std::string& path, const Simulation& sim) {
     f.write("/particles/displacement", n ? disp[0].data() : nullptr, n, 3);
     f.write("/particles/radius", p.radius.data(), n);
     f.write("/particles/mass", p.mass.data(), n);
+    f.write("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n);
     std::vector<std::int64_t> pairs(2 * m), group(n);
     for (std::size_t b = 0; b < m; ++b) {
       pairs[2 * b] = r.ends[b][0];
@@ -106,6 +108,7 @@ void write_results_h5(const std::string& path, const Simulation& sim) {
     f.write_attribute("time_s", sim.time());
     f.write_attribute("steps", static_cast<double>(sim.steps()));
     f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION);
+    if (extra) extra(f);
   }
   std::filesystem::rename(tmp, path);
 }

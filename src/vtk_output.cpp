@@ -171,6 +171,11 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
   write_pvd();
 }
 
+void VtkSeries::add_final_part(const std::string& name, const std::string& file) {
+  final_parts_.emplace_back(name, file);
+  write_pvd();
+}
+
 void VtkSeries::write_pvd() const {
   std::string x = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                   "  <Collection>\n";
@@ -183,6 +188,10 @@ void VtkSeries::write_pvd() const {
     for (std::size_t m = 0; m < mesh_names_.size(); ++m)
       x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"frames/mesh_{}_{:05d}.vtp\"/>\n",
                        times_[k], m + 2, mesh_names_[m], mesh_names_[m], k);
+    if (k + 1 == times_.size())
+      for (std::size_t e = 0; e < final_parts_.size(); ++e)
+        x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"{}\"/>\n", times_[k],
+                         mesh_names_.size() + 2 + e, final_parts_[e].first, final_parts_[e].second);
   }
   x += "  </Collection>\n</VTKFile>\n";
   write_text_atomic(dir_ + "/particles.pvd", x);

@@ -25,6 +25,12 @@ class VtkSeries {
   /// its current placement (reference vertices + offset).
   void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {});
   std::size_t frames() const { return times_.size(); }
+  const std::vector<double>& times() const { return times_; }
+  /// Continues a series from a checkpoint: frames 0..times.size()-1 exist already.
+  void resume(const std::vector<double>& times) { times_ = times; }
+  /// Lists an extra file (relative to the directory) as a part of the last time step, e.g.
+  /// the chip surface; rewrites the .pvd.
+  void add_final_part(const std::string& name, const std::string& file);
 
  private:
   void write_pvd() const;
@@ -32,6 +38,7 @@ class VtkSeries {
   bool with_rods_;
   std::vector<double> times_;
   std::vector<std::string> mesh_names_;
+  std::vector<std::pair<std::string, std::string>> final_parts_;
 };
 
 /// Writes a triangle mesh as a VTK XML polydata file (.vtp), atomically.

@@ -1,0 +1,53 @@
+// cut_report.h: what a cutting run reports at its end (and 'swarf post DIR' recomputes from
+// the run's files): the steady-part statistics of the cutting and thrust forces per unit
+// width, the chip metrics (chip.h), the broken-rod fraction overall and in the chip, and the
+// short result table printed for the user.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "postprocess/chip.h"
+#include "vec3.h"
+
+namespace swarf {
+
+class H5File;
+
+/// The cut's geometry as the analysis needs it (stored in results.h5 under /cutting).
+struct CutSetup {
+  std::string tool_mesh;          ///< name of the tool's [[mesh]]
+  double width = 0;               ///< workpiece width (lattice extent along y + a/2), m
+  double steady_from = 0;         ///< force statistics over times >= this, s
+  Vec3 tool_tip = Vec3::Zero();   ///< sharp tip of the tool at the end, m
+  double rake_angle_deg = 0;      ///< deg
+  double uncut_surface_z = 0;     ///< highest initial workpiece centre, m
+  double radius = 0;              ///< particle radius, m
+  std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
+};
+
+/// The run's data the analysis reads.
+struct CutData {
+  std::vector<double> time, fc, ft;        ///< series rows: s, N/m, N/m
+  std::vector<Vec3> position;              ///< workpiece particle centres at the end, m
+  std::vector<double> broken_fraction;     ///< per workpiece particle: broken rods / rods, 1
+  double broken_rod_fraction = 0;          ///< broken rods / all rods, 1
+};
+
+struct CutResult {
+  nlohmann::json cutting;   ///< summary.json "cutting"
+  nlohmann::json chip;      ///< summary.json "chip"
+  ChipMetrics metrics;
+};
+
+CutResult analyze_cut(const CutSetup& setup, const CutData& data);
+
+/// The short result table (Fc, Ft, chip thickness, ratio, shear angle, broken-rod fraction).
+std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip, double broken_rod_fraction);
+
+void write_cut_setup(H5File& f, const CutSetup& s);
+/// Reads /cutting from results.h5; returns false if the run had no tool.
+bool read_cut_setup(const H5File& f, CutSetup& s);
+
+}  // namespace swarf

@@ -1,0 +1,165 @@
+// post.cpp: end-of-cut outputs and 'swarf post DIR' (see post.h).
+#include "post.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "atomic_file.h"
+#include "errors.h"
+#include "h5file.h"
+#include "postprocess/plots.h"
+#include "vtk_output.h"
+
+namespace swarf {
+namespace {
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string postprocess_dir() {
+  if (const char* env = std::getenv("SWARF_POSTPROCESS_DIR")) return env;
+  return SWARF_POSTPROCESS_DIR;
+}
+
+// Columns of series.csv by name.
+std::vector<std::vector<double>> read_columns(const std::string& path, const std::vector<std::string>& names) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("post: '{}' cannot be read (the run did not finish?)", path));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> head;
+  {
+    std::stringstream ss(line);
+    std::string h;
+    while (std::getline(ss, h, ',')) head.push_back(h);
+  }
+  std::vector<int> idx;
+  for (const auto& n : names) {
+    const auto it = std::find(head.begin(), head.end(), n);
+    if (it == head.end()) throw InputError(fmt::format("post: '{}' has no column '{}'", path, n));
+    idx.push_back(static_cast<int>(it - head.begin()));
+  }
+  std::vector<std::vector<double>> out(names.size());
+  std::size_t row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    std::vector<double> v;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) v.push_back(std::strtod(cell.c_str(), nullptr));
+    if (v.size() != head.size())
+      throw InputError(fmt::format("post: '{}' line {} has {} values, the header {}", path, row, v.size(), head.size()));
+    for (std::size_t k = 0; k < idx.size(); ++k) out[k].push_back(v[idx[k]]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string render_picture(const std::string& dir, std::string& message) {
+  namespace fs = std::filesystem;
+  const std::string script = postprocess_dir() + "/render_chip.py";
+  if (!fs::exists(script)) {
+    message = "render script not found: " + script;
+    return "";
+  }
+  const char* py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  // Debian's VTK renders through X only: without a display, a virtual one (xvfb-run).
+  std::string prefix;
+  if (!std::getenv("DISPLAY")) {
+    if (!fs::exists("/usr/bin/xvfb-run")) {
+      message = "no display and no xvfb-run (Debian package xvfb) to render the picture";
+      return "";
+    }
+    prefix = "/usr/bin/xvfb-run -a -s '-screen 0 1280x1024x24' ";
+  }
+  const std::string out = dir + "/chip.png";
+  const std::string cmd = fmt::format("{}{} {} {} {} 2>&1", prefix, py, quote(script), quote(dir), quote(out));
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) {
+    message = "cannot start the renderer";
+    return "";
+  }
+  std::string text;
+  char buf[512];
+  while (fgets(buf, sizeof buf, pipe)) text += buf;
+  const int status = pclose(pipe);
+  if (status != 0 || !fs::exists(out)) {
+    message = "render failed: " + text.substr(0, 400);
+    return "";
+  }
+  return out;
+}
+
+void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum,
+                VtkSeries* vtk, bool pictures) {
+  const CutResult res = analyze_cut(setup, data);
+  sum["cutting"] = res.cutting;
+  sum["chip"] = res.chip;
+  (void)vtk;
+  if (pictures) {
+    std::string message;
+    const std::string png = render_picture(dir, message);
+    if (!png.empty()) {
+      sum["pictures"] = {"chip.png"};
+    } else {
+      sum["picture_error"] = message;
+      fmt::print(stderr, "swarf: warning: picture not rendered: {}\n", message);
+    }
+  }
+  fmt::print("{}", cut_table(res.cutting, res.chip, data.broken_rod_fraction));
+  std::fflush(stdout);
+}
+
+void post_run(const std::string& dir) {
+  namespace fs = std::filesystem;
+  const std::string summary_path = dir + "/summary.json";
+  if (!fs::exists(summary_path))
+    throw InputError(fmt::format("post: '{}' does not exist: the run in '{}' did not finish (or this is not a run "
+                                 "directory)", summary_path, dir));
+  nlohmann::json sum;
+  try {
+    std::ifstream in(summary_path);
+    sum = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    throw InputError(fmt::format("post: '{}' is not valid JSON: {}", summary_path, e.what()));
+  }
+  if (sum.value("status", "") != "completed")
+    throw InputError(fmt::format("post: '{}' does not record a completed run", summary_path));
+  H5File f(dir + "/results.h5", H5File::Mode::Read);
+  CutSetup setup;
+  if (!read_cut_setup(f, setup))
+    throw InputError(fmt::format("post: '{}/results.h5' has no /cutting setup: the run had no tool mesh "
+                                 "(a [[mesh]] with rake_angle) and a workpiece", dir));
+  CutData data;
+  const auto cols = read_columns(dir + "/series.csv", {"time", "cutting_force_per_width", "thrust_force_per_width"});
+  data.time = cols[0];
+  data.fc = cols[1];
+  data.ft = cols[2];
+  std::size_t r = 0, c = 0;
+  const auto x = f.read_doubles("/particles/position", r, c);
+  const auto bf = f.read_doubles("/particles/broken_fraction", r, c);
+  const std::size_t n = std::min(setup.lattice_particles, bf.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    data.position.emplace_back(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+    data.broken_fraction.push_back(bf[i]);
+  }
+  const auto intact = f.read_ints("/bonds/intact", r, c);
+  std::size_t broken = 0;
+  for (auto v : intact) broken += v ? 0 : 1;
+  data.broken_rod_fraction = intact.empty() ? 0.0 : double(broken) / double(intact.size());
+  const bool pictures = sum["case"].contains("output") ? sum["case"]["output"].value("plots", true) : true;
+  finish_cut(dir, setup, data, sum, nullptr, pictures);
+  const PlotResult pr = make_plots(dir, summary_path);
+  if (pr.ok) sum["plots"] = pr.files;
+  write_text_atomic(summary_path, sum.dump(2) + "\n");
+  fmt::print("  post: rewrote {} (cutting, chip{})\n", summary_path, sum.contains("pictures") ? ", pictures" : "");
+}
+
+}  // namespace swarf

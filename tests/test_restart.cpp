@@ -1,0 +1,138 @@
+// Restart from checkpoints (bit-identical continuation), the short-cut run's progress, table
+// and summary, and 'swarf post' reproducing the run's own analysis.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "h5file.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+// A tiny orthogonal cut (288 particles): rods that yield and break, friction with history
+// (Cundall-Strack springs), the Newmark step with its step control.
+const char* kTinyCut = R"([workpiece]
+cells = [6, 2, 3]
+radius = 1e-4
+[rod]
+yield_strain = 1e-3
+hardening_modulus = 2e10
+tensile_strength = 3e8
+[contact]
+friction = 0.3
+[[group]]
+name = "base"
+side = "z-"
+[[mesh]]
+name = "tool"
+rake_angle = 10.0
+width = 1.2e-3
+face_length = 1e-3
+origin = [-0.05e-3, 0.14e-3, 0.5e-3]
+motion = "velocity"
+velocity = [5.0, 0.0, 0.0]
+[integrator]
+end_time = 4e-5
+[output]
+plots = false
+steady_from = 2e-5
+series_interval = 1e-6
+frame_interval = 1e-5
+)";
+
+std::vector<double> dataset(const std::string& file, const std::string& name) {
+  H5File f(file, H5File::Mode::Read);
+  std::size_t r = 0, c = 0;
+  return f.read_doubles(name, r, c);
+}
+
+TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
+  test::TempDir dir("restart");
+  test::write_file(dir / "c.toml", kTinyCut);
+  const std::string bin = SWARF_BINARY;
+  auto a = test::run_command(bin + " run " + (dir / "c.toml") + " --out " + (dir / "a") +
+                             " --set output.checkpoint_every=300 --threads 1");
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  // The last checkpoint is from the middle of the run: continue from a copy of it in its own
+  // directory (the default --out), with two threads, and with a stale partial checkpoint
+  // lying around as a kill during a write would leave it.
+  std::filesystem::create_directories(dir / "b");
+  std::filesystem::copy_file(dir / "a/checkpoint.h5", dir / "b/checkpoint.h5");
+  test::write_file(dir / "b/checkpoint.h5.part", "garbage from an interrupted write");
+  H5File ck(dir / "b/checkpoint.h5", H5File::Mode::Read);
+  const double ck_steps = ck.read_double_attribute("steps");
+  const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
+  ASSERT_GT(ck_steps, 0.0);
+  ASSERT_LT(ck_steps, sa["run"]["steps"].get<double>());
+  auto b = test::run_command(bin + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  EXPECT_NE(b.output.find("restarted from"), std::string::npos) << b.output;
+  // Every series row (written before the checkpoint and after) and the final state agree bit for bit.
+  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
+  for (const char* name : {"/particles/position", "/particles/velocity", "/bonds/plastic_shift", "/bonds/stress",
+                           "/particles/broken_fraction"})
+    EXPECT_EQ(dataset(dir / "a/results.h5", name), dataset(dir / "b/results.h5", name)) << name;
+  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  EXPECT_EQ(sa["results"], sb["results"]);
+  EXPECT_EQ(sa["chip"], sb["chip"]);
+  EXPECT_EQ(sa["cutting"], sb["cutting"]);
+  EXPECT_GT(sa["results"]["broken_rods"].get<double>(), 0.0);  // breakage crossed the restart
+  // The ParaView series goes on from the checkpoint's frames.
+  EXPECT_NE(test::read_file(dir / "b/particles.pvd").find("particles_00004.vtu"), std::string::npos);
+}
+
+TEST(Restart, RejectsACaseFileAndFilesThatAreNotCheckpoints) {
+  test::TempDir dir("restart_bad");
+  test::write_file(dir / "c.toml", kTinyCut);
+  test::write_file(dir / "not.h5", "not an HDF5 file");
+  const std::string bin = SWARF_BINARY;
+  auto r = test::run_command(bin + " run " + (dir / "c.toml") + " --restart " + (dir / "not.h5"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no case file"), std::string::npos) << r.output;
+  r = test::run_command(bin + " run --restart " + (dir / "not.h5"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("not.h5"), std::string::npos) << r.output;
+  r = test::run_command(bin + " run --restart " + (dir / "missing.h5"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+}
+
+TEST(ShortCut, ShowsProgressPrintsTheTableAndPostReproducesTheSummary) {
+  test::TempDir dir("short_cut");
+  test::write_file(dir / "c.toml", kTinyCut);
+  const std::string bin = SWARF_BINARY;
+  auto r = test::run_command(bin + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Progress on stderr: percent, simulated time, ETA; the result table on stdout.
+  EXPECT_NE(r.output.find("[100.0%]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ETA"), std::string::npos) << r.output;
+  for (const char* row : {"cutting force per width Fc/w", "thrust force per width Ft/w", "chip thickness",
+                          "friction angle", "broken-rod fraction", "particles.pvd"})
+    EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
+  auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
+  ASSERT_TRUE(sum.contains("cutting") && sum.contains("chip")) << sum.dump(2);
+  for (const char* k : {"cutting_force_per_width_mean_N_per_m", "thrust_force_per_width_std_N_per_m", "width_m",
+                        "broken_fraction"})
+    EXPECT_TRUE(sum["cutting"].contains(k)) << k;
+  for (const char* k : {"depth_of_cut_m", "friction_angle_deg", "merchant_shear_angle_deg", "chip_particles"})
+    EXPECT_TRUE(sum["chip"].contains(k)) << k;
+  // The tool's travel is in the series (m): 5 m/s for 40 us = 0.2 mm at the end.
+  const auto series = test::read_file(dir / "out/series.csv");
+  ASSERT_NE(series.find("tool_travel"), std::string::npos);
+  // 'swarf post' recomputes the same analysis from the files alone.
+  const auto before = sum;
+  auto p = test::run_command(bin + " post " + (dir / "out"));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
+  EXPECT_EQ(before["cutting"], sum["cutting"]);
+  EXPECT_EQ(before["chip"], sum["chip"]);
+  // ... and refuses a directory without a finished run.
+  auto bad = test::run_command(bin + " post " + (dir / "nothing"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("did not finish"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace swarf
