@@ -93,6 +93,8 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
   t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg\n", num(chip, "friction_angle_deg"));
   t += fmt::format("  Merchant 45 + alpha/2 - beta/2  {:>10.1f} deg\n", num(chip, "merchant_shear_angle_deg"));
   t += fmt::format("  broken-rod fraction             {:>10.2f} %\n", 100.0 * broken);
+  if (chip.contains("packing_volume_m3"))
+    t += fmt::format("  chip volume (particles x a^3/4) {:>10.4g} mm^3\n", num(chip, "packing_volume_m3") * 1e9);
   return t;
 }
 
