@@ -15,6 +15,8 @@
 #include "vtk_output.h"
 #include "post.h"
 #include "run.h"
+#include "report.h"
+#include "sweep.h"
 
 namespace {
 
@@ -103,6 +105,20 @@ int main(int argc, char** argv) {
   bench->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
   bench->add_option("--set", bo.overrides, "Override a case key (repeatable)")->allow_extra_args(false);
 
+  // swarf sweep
+  auto* sweep = app.add_subcommand("sweep", "Run a parameter study; under mpirun the ranks share the cases");
+  swarf::SweepOptions so;
+  sweep->add_option("study", so.study_path, "Study file (TOML); see docs/studies.md")->required();
+  sweep->add_option("--out", so.out_dir, "Study directory: cases/, study.csv, plots/ (re-run to resume)")->required();
+  sweep->add_option("--jobs", so.jobs, "Cases run at once (per MPI rank; default 1)");
+  sweep->add_option("--threads", so.threads, "Threads per case (default max(1, cores / (jobs x ranks on the machine)))");
+  sweep->add_flag("--list", so.list_only, "Check the study and list its cases (id, state, --set overrides); run nothing");
+
+  // swarf report
+  auto* report = app.add_subcommand("report", "Write DIR/report.md for a study directory of 'swarf sweep'");
+  std::string report_dir;
+  report->add_option("dir", report_dir, "Study directory")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -152,6 +168,10 @@ int main(int argc, char** argv) {
         bo.threads.push_back(static_cast<int>(t));
       }
       swarf::run_bench(bo);
+    } else if (*sweep) {
+      return swarf::run_sweep(so);
+    } else if (*report) {
+      fmt::print("wrote {}\n", swarf::write_report(report_dir));
     }
   } catch (const swarf::InputError& e) {
     fmt::print(stderr, "swarf: error: {}\n", e.what());

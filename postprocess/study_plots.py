@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""Plots of a parameter study (PNG): each metric against each varied key, as computed by
+'swarf sweep' into DIR/plots/plots.json (the script only draws). Usage:
+study_plots.py DIR/plots/plots.json. Prints 'wrote FILE' for every file written."""
+import json
+import os
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+
+def main():
+    path = sys.argv[1]
+    spec = json.load(open(path))
+    out_dir = os.path.dirname(os.path.abspath(path))
+    for p in spec["plots"]:
+        x, y = p["x"], p["y"]
+        fig, ax = plt.subplots(figsize=(6, 4.2), dpi=110)
+        ax.plot(x, y, "o", ms=5, label="cases")
+        # Several cases at one x (repetitions, other keys): a line through the means.
+        means = {}
+        for xi, yi in zip(x, y):
+            means.setdefault(xi, []).append(yi)
+        xs = sorted(means)
+        if len(xs) > 1:
+            ax.plot(xs, [sum(means[v]) / len(means[v]) for v in xs], "-", lw=1.2, color="C0", alpha=0.7,
+                    label="mean at each value" if any(len(v) > 1 for v in means.values()) else None)
+        ax.set_xlabel(p["x_label"])
+        ax.set_ylabel(p["y_label"])
+        ax.set_title(spec.get("title", ""), fontsize=9)
+        ax.grid(True, alpha=0.3)
+        if any(len(v) > 1 for v in means.values()):
+            ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out_dir, p["file"]))
+        plt.close(fig)
+        print("wrote " + p["file"])
+
+
+if __name__ == "__main__":
+    main()
