@@ -20,6 +20,38 @@ def read_series(path):
     return cols
 
 
+def plot_cut(run, summary, s):
+    """Cutting and thrust force per width and the broken-rod fraction against tool travel."""
+    travel = [v * 1e3 for v in s["tool_travel"]]
+    cut = summary.get("cutting", {})
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6.5), dpi=120, sharex=True,
+                                 gridspec_kw={"height_ratios": [2, 1]})
+    ax.plot(travel, [v / 1e3 for v in s["cutting_force_per_width"]], lw=0.8, color="C0",
+            label="cutting force Fc/w (against the cutting direction)")
+    ax.plot(travel, [v / 1e3 for v in s["thrust_force_per_width"]], lw=0.8, color="C3",
+            label="thrust force Ft/w (away from the workpiece)")
+    steady = cut.get("steady_from_s")
+    if steady is not None:
+        # travel at the start of the steady window (first row at or after steady_from)
+        x0 = next((x for x, t in zip(travel, s["time"]) if t >= steady), None)
+        if x0 is not None:
+            ax.axvspan(x0, travel[-1], color="0.9", zorder=0, label="steady part (statistics)")
+            for key, c in (("cutting_force_per_width_mean_N_per_m", "C0"), ("thrust_force_per_width_mean_N_per_m", "C3")):
+                if key in cut:
+                    ax.hlines(cut[key] / 1e3, x0, travel[-1], colors=c, linestyles="--", lw=1.5)
+    ax.set_ylabel("force per width [kN/m]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left")
+    ax.set_title("Cutting forces on the tool (%s)" % os.path.basename(os.path.normpath(run)))
+    bx.plot(travel, [100 * v for v in s["broken_fraction"]], color="k", lw=1.2)
+    bx.set_ylabel("broken rods [%]")
+    bx.set_xlabel("tool travel [mm]")
+    bx.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "forces.png"))
+    print("wrote forces.png")
+
+
 def main():
     run = sys.argv[1]
     summary = json.load(open(sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "summary.json")))
@@ -44,6 +76,8 @@ def main():
         out = os.path.join(run, "stress_strain.png")
         fig.savefig(out)
         print("wrote stress_strain.png")
+    if "cutting_force_per_width" in s:
+        plot_cut(run, summary, s)
     fig, ax = plt.subplots(figsize=(7, 4.5), dpi=120)
     t = [v * 1e6 for v in s["time"]]
     for key, label in (("external_work", "external work"), ("kinetic_energy", "kinetic"),
