@@ -108,7 +108,15 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
   std::vector<Vec3> centres;
   for (auto i : res.metrics.members) centres.push_back(data.position[i]);
   const std::vector<double> radii(centres.size(), setup.radius);
-  const ChipSurface surf = build_chip_surface(centres, radii, 0.0, 0.1 * setup.radius);
+  ChipSurface surf;
+  try {
+    surf = build_chip_surface(centres, radii, 0.0, 0.1 * setup.radius);
+  } catch (const InputError& e) {  // e.g. a chip too large for the voxel budget: the rest stands
+    surf = ChipSurface{};
+    surf.particles = centres.size();
+    surf.note = std::string("no surface: ") + e.what();
+    fmt::print(stderr, "swarf: warning: chip surface not built: {}\n", e.what());
+  }
   nlohmann::json& chip = sum["chip"];
   chip["surface_particles"] = surf.particles;
   chip["surface_volume_m3"] = surf.volume_m3;
@@ -174,9 +182,14 @@ void post_run(const std::string& dir) {
   for (auto v : intact) broken += v ? 0 : 1;
   data.broken_rod_fraction = intact.empty() ? 0.0 : double(broken) / double(intact.size());
   const bool pictures = sum["case"].contains("output") ? sum["case"]["output"].value("plots", true) : true;
+  for (const char* stale : {"pictures", "picture_error", "plots", "plot_error"}) sum.erase(stale);
   finish_cut(dir, setup, data, sum, nullptr, pictures);
-  const PlotResult pr = make_plots(dir, summary_path);
-  if (pr.ok) sum["plots"] = pr.files;
+  if (pictures) {
+    write_text_atomic(summary_path, sum.dump(2) + "\n");  // the plot script reads the new analysis
+    const PlotResult pr = make_plots(dir, summary_path);
+    sum["plots"] = pr.files;
+    if (!pr.ok) sum["plot_error"] = pr.message;
+  }
   write_text_atomic(summary_path, sum.dump(2) + "\n");
   fmt::print("  post: rewrote {} (cutting, chip{})\n", summary_path, sum.contains("pictures") ? ", pictures" : "");
 }
