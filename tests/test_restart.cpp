@@ -5,6 +5,10 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+
 #include "h5file.h"
 #include "test_helpers.h"
 
@@ -121,6 +125,18 @@ TEST(ShortCut, ShowsProgressPrintsTheTableAndPostReproducesTheSummary) {
   // The tool's travel is in the series (m): 5 m/s for 40 us = 0.2 mm at the end.
   const auto series = test::read_file(dir / "out/series.csv");
   ASSERT_NE(series.find("tool_travel"), std::string::npos);
+  // The chip surface opens in VTK's own reader with the triangles the summary counts, and
+  // the ParaView series lists it at the last time step.
+  ASSERT_TRUE(sum["chip"].contains("surface_file")) << sum["chip"].dump(2);
+  {
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName((dir / "out/chip_surface.vtp").c_str());
+    reader->Update();
+    ASSERT_NE(reader->GetOutput(), nullptr);
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPolys(), sum["chip"]["surface_triangles"].get<long long>());
+    EXPECT_GT(sum["chip"]["surface_volume_m3"].get<double>(), 0.0);
+    EXPECT_NE(test::read_file(dir / "out/particles.pvd").find("chip_surface.vtp"), std::string::npos);
+  }
   // 'swarf post' recomputes the same analysis from the files alone.
   const auto before = sum;
   auto p = test::run_command(bin + " post " + (dir / "out"));
