@@ -1,4 +1,4 @@
-// main.cpp: the 'swarf' command line: lattice, rod, run, bench.
+// main.cpp: the 'swarf' command line: lattice, rod, run, post, tool, bench, sweep, report.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <iostream>
