@@ -24,6 +24,7 @@ struct WorkpieceSettings {
   std::array<double, 3> size{0, 0, 0};    ///< box size, m (generate by size, if cells not given)
   double radius = 0.5e-3;                 ///< particle radius R, m (nearest-neighbour distance 2R)
   double bond_tolerance = 1e-6;           ///< relative tolerance on the bond length 2R, 1
+  bool periodic_width = false;            ///< periodic along y (plane strain): period = cells[1] x a
 };
 
 /// [material]: what the particles are made of.

@@ -45,21 +45,44 @@ struct Grid {
   Vec3 lo;
   double cell = 1;
   std::array<std::int64_t, 3> n{1, 1, 1};
+  double period = 0, cell_y = 1;  // periodic y: n[1] cells of cell_y = period / n[1] over [0, period)
   std::vector<std::int64_t> start;     // counting-sort offsets per cell
   std::vector<std::int32_t> items;
 
   std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
     std::array<std::int64_t, 3> c{};
     for (int k = 0; k < 3; ++k) c[k] = std::clamp<std::int64_t>(std::int64_t(std::floor((p[k] - lo[k]) / cell)), 0, n[k] - 1);
+    if (period > 0) c[1] = y_cell(p[1]);
     return c;
+  }
+  std::int64_t y_cell(double y) const {
+    const double w = y - period * std::floor(y / period);  // in [0, period]
+    return std::clamp<std::int64_t>(std::int64_t(std::floor(w / cell_y)), 0, n[1] - 1);
+  }
+  /// The distinct y cells at offsets -1, 0, +1 from cy (fewer when there are under 3 cells).
+  int y_neighbours(std::int64_t cy, std::int64_t out[3]) const {
+    if (period <= 0) {
+      int k = 0;
+      for (std::int64_t d = -1; d <= 1; ++d)
+        if (cy + d >= 0 && cy + d < n[1]) out[k++] = cy + d;
+      return k;
+    }
+    if (n[1] < 3) {
+      for (std::int64_t d = 0; d < n[1]; ++d) out[d] = d;
+      return static_cast<int>(n[1]);
+    }
+    for (int d = -1; d <= 1; ++d) out[d + 1] = (cy + d + n[1]) % n[1];
+    return 3;
   }
   std::int64_t linear(const std::array<std::int64_t, 3>& c) const { return (c[2] * n[1] + c[1]) * n[0] + c[0]; }
 };
 
 }  // namespace
 
-void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes) {
+void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes,
+                          Periodic periodic) {
   enabled_ = true;
+  periodic_ = periodic;
   prm_ = params;
   meshes_ = meshes;
   tri_mesh_.clear();
@@ -108,6 +131,11 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
   // Keep the grid to about a few cells per particle even if particles fly far apart.
   for (;;) {
     for (int k = 0; k < 3; ++k) g.n[k] = std::max<std::int64_t>(1, std::int64_t((hi[k] - lo[k]) / g.cell) + 1);
+    if (periodic_.on()) {  // whole cells over the period, none smaller than the reach
+      g.period = periodic_.period;
+      g.n[1] = std::max<std::int64_t>(1, std::int64_t(std::floor(g.period / g.cell)));
+      g.cell_y = g.period / double(g.n[1]);
+    }
     if (double(g.n[0]) * double(g.n[1]) * double(g.n[2]) <= 8.0 * double(n) + 64.0) break;
     g.cell *= 1.5;
   }
@@ -132,17 +160,21 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
   for (std::size_t i = 0; i < n; ++i) {
     const auto c = g.cell_of(p.position[i]);
     auto& out = cand[i];
+    std::int64_t ys[3];
+    const int ny = g.y_neighbours(c[1], ys);
     for (std::int64_t dz = -1; dz <= 1; ++dz)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
+      for (int iy = 0; iy < ny; ++iy)
         for (std::int64_t dx = -1; dx <= 1; ++dx) {
-          const std::array<std::int64_t, 3> o{c[0] + dx, c[1] + dy, c[2] + dz};
-          if (o[0] < 0 || o[1] < 0 || o[2] < 0 || o[0] >= g.n[0] || o[1] >= g.n[1] || o[2] >= g.n[2]) continue;
+          const std::array<std::int64_t, 3> o{c[0] + dx, ys[iy], c[2] + dz};
+          if (o[0] < 0 || o[2] < 0 || o[0] >= g.n[0] || o[2] >= g.n[2]) continue;
           const auto l = g.linear(o);
           for (std::int64_t s = g.start[l]; s < g.start[l + 1]; ++s) {
             const std::int32_t j = g.items[s];
             if (j <= static_cast<std::int32_t>(i)) continue;
             const double reach = p.radius[i] + p.radius[j] + skin;
-            if ((p.position[j] - p.position[i]).squaredNorm() > reach * reach) continue;
+            Vec3 dij = p.position[j] - p.position[i];
+            periodic_.wrap(dij);
+            if (dij.squaredNorm() > reach * reach) continue;
             if (bonded(rods, static_cast<std::int32_t>(i), j)) continue;
             out.push_back(j);
           }
@@ -191,8 +223,20 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
       for (int k = 0; k < 3; ++k) outside = outside || thi[k] < lo[k] || tlo[k] > hi[k];
       if (outside) continue;
       const auto c0 = g.cell_of(tlo), c1 = g.cell_of(thi);
+      // The y cells the box covers (periodic: wrapped; a box wider than the period covers all).
+      std::vector<std::int64_t> ycells;
+      if (g.period > 0) {
+        const double y0 = std::floor(tlo[1] / g.cell_y), y1 = std::floor(thi[1] / g.cell_y);
+        if (y1 - y0 + 1 >= double(g.n[1]))
+          for (std::int64_t y = 0; y < g.n[1]; ++y) ycells.push_back(y);
+        else
+          for (double y = y0; y <= y1; y += 1.0)
+            ycells.push_back((std::int64_t(y) % g.n[1] + g.n[1]) % g.n[1]);
+      } else {
+        for (std::int64_t y = c0[1]; y <= c1[1]; ++y) ycells.push_back(y);
+      }
       for (std::int64_t z = c0[2]; z <= c1[2]; ++z)
-        for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+        for (std::int64_t y : ycells)
           for (std::int64_t x = c0[0]; x <= c1[0]; ++x) in_cell[g.linear({x, y, z})].push_back(static_cast<std::int32_t>(t));
     }
     std::vector<std::vector<std::int32_t>> tc(n);
@@ -337,12 +381,14 @@ void ContactSystem::evaluate(const Particles& p, double h) {
   const Vec3* v = p.velocity.data();
   const Vec3* w = p.omega.data();
   const double* radius = p.radius.data();
+  const Periodic periodic = periodic_;
   // Dynamic chunks: touching pairs cost far more than near misses, and they cluster (the
   // bottom of a settling packing). Each pair writes only its own slots: order-free.
 #pragma omp parallel for schedule(dynamic, 1024)
   for (std::size_t k = 0; k < np; ++k) {
     const std::int32_t i = pairs[k].i, j = pairs[k].j;
-    const Vec3 d = x[j] - x[i];
+    Vec3 d = x[j] - x[i];
+    periodic.wrap(d);
     const double ri = radius[i], rj = radius[j];
     const double dist2 = d.squaredNorm(), sum = ri + rj;
     if (dist2 >= sum * sum) {

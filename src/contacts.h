@@ -23,6 +23,7 @@
 
 #include "hertz.h"
 #include "mesh.h"
+#include "periodic.h"
 #include "vec3.h"
 
 namespace swarf {
@@ -56,7 +57,8 @@ struct MeshBody {
 
 class ContactSystem {
  public:
-  void setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes);
+  void setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes,
+             Periodic periodic = {});
   bool enabled() const { return enabled_; }
 
   /// Rebuilds the Verlet lists if anything moved more than half the skin (or 'force').
@@ -109,6 +111,7 @@ class ContactSystem {
 
   bool enabled_ = false;
   ContactParams prm_;
+  Periodic periodic_;  // nearest image along y for sphere-sphere pairs
   std::vector<MeshBody>* meshes_ = nullptr;
   std::vector<std::int32_t> tri_mesh_, tri_local_;  // global triangle -> mesh, local index
   double max_radius_ = 0;

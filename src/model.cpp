@@ -118,6 +118,39 @@ Model build_model(const CaseSettings& cs) {
     spec.size = cs.workpiece.size;
     spec.bond_tolerance = cs.workpiece.bond_tolerance;
     lat = generate_fcc(spec);
+    if (cs.workpiece.periodic_width) {
+      // Bond the two y faces across the boundary: the layer at y = 0 and the one at
+      // y = period - a/2 are nearest neighbours through the periodic image.
+      const double a = lat.cell_edge, L = cs.workpiece.cells[1] * a, d0 = 2.0 * spec.radius;
+      model.periodic = Periodic::along_y(L);
+      std::vector<std::int32_t> low, high;
+      for (std::size_t i = 0; i < lat.position.size(); ++i) {
+        if (lat.position[i][1] < 0.25 * a) low.push_back(static_cast<std::int32_t>(i));
+        if (lat.position[i][1] > L - 0.75 * a) high.push_back(static_cast<std::int32_t>(i));
+      }
+      const double tol = spec.bond_tolerance;
+      for (auto i : low)
+        for (auto j : high) {
+          Vec3 dx = lat.position[j] - lat.position[i];
+          model.periodic.wrap(dx);
+          const double len = dx.norm();
+          if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
+          lat.bonds.push_back({std::min(i, j), std::max(i, j)});
+          lat.rest_length.push_back(len);
+        }
+      // Keep the rods sorted as the generator gives them (the gather order follows the rods).
+      std::vector<std::size_t> order(lat.bonds.size());
+      for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+      std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
+      std::vector<std::array<std::int32_t, 2>> bonds(order.size());
+      std::vector<double> rest(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        bonds[k] = lat.bonds[order[k]];
+        rest[k] = lat.rest_length[order[k]];
+      }
+      lat.bonds.swap(bonds);
+      lat.rest_length.swap(rest);
+    }
   }
   model.lattice_particles = lat.position.size();
   // Free particles follow the lattice (no bonds).

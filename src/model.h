@@ -10,6 +10,7 @@
 
 #include "case_config.h"
 #include "contacts.h"
+#include "periodic.h"
 #include "derived.h"
 #include "fcc_lattice.h"
 #include "particles.h"
@@ -59,6 +60,7 @@ struct Model {
   Rods rods;
   std::vector<Group> groups;
   UniaxialInfo uniaxial;
+  Periodic periodic;                  ///< periodic width (y), if [workpiece] periodic_width
   std::size_t lattice_particles = 0;  ///< particles 0..this-1 come from the workpiece; free ones follow
   std::vector<MeshBody> meshes;       ///< rigid triangle meshes (placement updated by the simulation)
   std::vector<Motion> mesh_motion;    ///< prescribed translation of each mesh

@@ -40,6 +40,9 @@ void print_setup(const Model& m, int threads) {
   for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
   fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
              d.particle_mass);
+  if (m.periodic.on())
+    fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
+               m.periodic.period);
   if (!m.rods.ends.empty()) {
     if (d.converted)
       fmt::print("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
@@ -291,6 +294,7 @@ void run_case(const RunOptions& opt) {
 
   std::unique_ptr<VtkSeries> vtk;
   if (settings.output.vtk) vtk = std::make_unique<VtkSeries>(dir, settings.output.rods_in_vtk);
+  if (vtk) vtk->set_periodic(model.periodic);
   series = std::make_unique<SeriesWriter>(dir + "/series.csv", cols);
   if (restarting) {
     read_checkpoint(opt.restart, sim, rec);

@@ -25,7 +25,7 @@ Simulation::Simulation(Model& model) : m_(model) {
     for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
   if (m_.settings.contact.enabled) {
     contact_force_.assign(m_.particles.size(), Vec3::Zero());
-    contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes);
+    contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
     if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) rotations_ = true;
   }
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
@@ -316,13 +316,14 @@ template <bool Viscous>
 void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
                const double* rest_length, const double* inv_rest_length, const double* shift, const std::uint8_t* intact, const Vec3* x, const Vec3* v,
                double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power,
-               int& changed) {
+               int& changed, Periodic periodic) {
   double visc = 0.0;
   int any = 0;
   for (std::size_t k = begin; k < end; ++k) {
     if (!intact[k]) continue;
     const std::int32_t i = ends[k][0], j = ends[k][1];
-    const Vec3 dx = x[j] - x[i];
+    Vec3 dx = x[j] - x[i];
+    periodic.wrap(dx);
     const double len = dx.norm();
     const double inv_len = 1.0 / len;
     const double l0 = rest_length[k];
@@ -369,15 +370,16 @@ void Simulation::rod_forces() {
   double* block_visc = block_viscous_.data();
   int* block_changed = block_changed_.data();
   const bool viscous = law.viscosity != 0.0;
+  const Periodic periodic = m_.periodic;
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < nb; ++b) {
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
     if (viscous)
       rod_block<true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress, coef,
-                      block_visc[b], block_changed[b]);
+                      block_visc[b], block_changed[b], periodic);
     else
       rod_block<false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress, coef,
-                       block_visc[b], block_changed[b]);
+                       block_visc[b], block_changed[b], periodic);
   }
 }
 
@@ -389,6 +391,7 @@ double Simulation::gather_impl() {
   const double d = m_.derived.nn_distance;
   const bool contacts = contacts_.enabled();
   const Vec3 gravity = m_.gravity;
+  const Periodic periodic = m_.periodic;
   // Convergence measure of the fixed-point iteration: the largest change of a particle's
   // force between sweeps, relative to the largest force level in the body, which is the
   // larger of the net forces and the sums of rod force magnitudes |sigma A| on a particle.
@@ -403,7 +406,9 @@ double Simulation::gather_impl() {
     for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
       const Rods::Entry en = r.entries[e];
       const double c = r.force_coef[en.rod];
-      f += c * (p.position[en.other] - xi);
+      Vec3 dx = p.position[en.other] - xi;
+      periodic.wrap(dx);
+      f += c * dx;
       if constexpr (Measure) level += std::abs(c);
     }
     if (contacts) {

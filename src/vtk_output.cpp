@@ -156,7 +156,9 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
       conn[2 * b + 1] = r.ends[b][1];
       shift[b] = r.shift[b];
       stress[b] = r.intact[b] ? r.stress[b] : 0.0;
-      const double len = (p.position[r.ends[b][1]] - p.position[r.ends[b][0]]).norm();
+      Vec3 d = p.position[r.ends[b][1]] - p.position[r.ends[b][0]];
+      periodic_.wrap(d);
+      const double len = d.norm();
       strain[b] = (len - r.rest_length[b]) / r.rest_length[b];
       state->SetValue(static_cast<vtkIdType>(b), r.intact[b]);
     }

@@ -13,6 +13,7 @@
 
 #include "contacts.h"
 #include "mesh.h"
+#include "periodic.h"
 #include "particles.h"
 #include "rods.h"
 
@@ -26,6 +27,8 @@ class VtkSeries {
   void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {});
   std::size_t frames() const { return times_.size(); }
   const std::vector<double>& times() const { return times_; }
+  /// Periodic width: rod strains from the nearest image (the lines still join the stored positions).
+  void set_periodic(Periodic periodic) { periodic_ = periodic; }
   /// Continues a series from a checkpoint: frames 0..times.size()-1 exist already.
   void resume(const std::vector<double>& times) { times_ = times; }
   /// Lists an extra file (relative to the directory) as a part of the last time step, e.g.
@@ -39,6 +42,7 @@ class VtkSeries {
   std::vector<double> times_;
   std::vector<std::string> mesh_names_;
   std::vector<std::pair<std::string, std::string>> final_parts_;
+  Periodic periodic_;
 };
 
 /// Writes a triangle mesh as a VTK XML polydata file (.vtp), atomically.
