@@ -17,26 +17,14 @@
 #include <sstream>
 
 #include "lattice_gen/fcc_lattice.h"
+#include "push_case.h"
 #include "test_helpers.h"
 
 namespace swarf {
 namespace {
 
-std::map<std::string, double> last_row(const std::string& csv_text) {
-  std::istringstream csv(csv_text);
-  std::string head, line, last;
-  std::getline(csv, head);
-  while (std::getline(csv, line))
-    if (!line.empty()) last = line;
-  std::map<std::string, double> row;
-  std::istringstream hs(head), ls(last);
-  std::string h, v;
-  while (std::getline(hs, h, ',') && std::getline(ls, v, ',')) row[h] = std::stod(v);
-  return row;
-}
-
 TEST(CutForce, ToolPushingAClampedBlockMatchesTheLatticeStiffness) {
-  const double R = 1e-4, u = 1e-6, E = 2e11, nu = 0.3, E_contact = 2e14;
+  const double R = 1e-4, u = 1e-6, nu = 0.3, E_contact = 2e14;
   const int nx = 4, ny = 3, nz = 3;
   FccSpec spec;
   spec.radius = R;
@@ -59,43 +47,16 @@ TEST(CutForce, ToolPushingAClampedBlockMatchesTheLatticeStiffness) {
   const int gaps = static_cast<int>(std::lround(x_max / h));  // the last layer is clamped
 
   test::TempDir dir("cut_force");
-  test::write_file(dir / "c.toml", fmt::format(R"([workpiece]
-cells = [{nx}, {ny}, {nz}]
-radius = {R}
-[rod]
-youngs_modulus = {E}
-damping_ratio = 0.5
-[contact]
-youngs_modulus = {Ec}
-poisson_ratio = {nu}
-friction = 0.0
-[[group]]
-name = "clamp"
-side = "x+"
-[[group]]
-name = "guide"
-box_max = [{xg}, 1.0, 1.0]
-dofs = "yz"
-[[mesh]]
-name = "tool"
-rake_angle = 0.0
-clearance_angle = 7.0
-width = 1.2e-3
-face_length = 1.5e-3
-origin = [{x0}, {yc}, -2e-4]
-motion = "table"
-table_time = [0.0, 2e-5]
-table_displacement = [[0.0, 0.0, 0.0], [{u}, 0.0, 0.0]]
-[integrator]
-end_time = 3e-5
-[output]
-vtk = false
-plots = false
-series_interval = 1e-6
-)", fmt::arg("nx", nx), fmt::arg("ny", ny), fmt::arg("nz", nz), fmt::arg("R", R), fmt::arg("E", E),
-                                               fmt::arg("Ec", E_contact), fmt::arg("nu", nu),
-                                               fmt::arg("xg", x_max - 0.5 * h), fmt::arg("x0", -R),
-                                               fmt::arg("yc", 0.5 * y_max), fmt::arg("u", u)));
+  test::PushCase pc;
+  pc.nx = nx;
+  pc.ny = ny;
+  pc.nz = nz;
+  pc.R = R;
+  pc.u = u;
+  pc.E_contact = E_contact;
+  pc.nu = nu;
+  pc.tool_y = 0.5 * y_max;
+  test::write_file(dir / "c.toml", test::push_case_toml(pc));
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
@@ -103,11 +64,8 @@ series_interval = 1e-6
   const double width = sum["cutting"]["width_m"].get<double>();
   // The closed form above, solved for F by bisection (u_tool grows monotonically with F).
   const double K = 4.0 / 3.0 * E_contact / (1.0 - nu * nu) * std::sqrt(R);
-  auto u_of = [&](double F) { return gaps * 2.0 * F / (n_cross * kb) + std::pow(F / (n_face * K), 2.0 / 3.0); };
-  double lo = 0, hi = 1e6;
-  for (int k = 0; k < 200; ++k) (u_of(0.5 * (lo + hi)) < u ? lo : hi) = 0.5 * (lo + hi);
-  const double F = 0.5 * (lo + hi);
-  const auto row = last_row(test::read_file(dir / "out/series.csv"));
+  const double F = test::push_force_closed_form(gaps, n_cross, kb, n_face, K, u);
+  const auto row = test::last_row(test::read_file(dir / "out/series.csv"));
   std::printf("tool force %.6g N, closed form %.6g N (%+.3f %%); %d gaps of %d rods, %d face particles\n",
               -row.at("force_tool_x"), F, 100.0 * (-row.at("force_tool_x") / F - 1.0), gaps, n_cross, n_face);
   // Tolerance 1 %: the closed form spreads the tool's force evenly over the face particles,
@@ -119,7 +77,7 @@ series_interval = 1e-6
   EXPECT_NEAR(row.at("cutting_force_per_width"), F / width, 0.01 * F / width);
   EXPECT_NEAR(row.at("thrust_force_per_width"), 0.0, 1e-9 * F / width);  // frictionless vertical face
   // The contacts' share is small but not negligible: check the closed form needs it.
-  EXPECT_GT(std::abs(u_of(F) - gaps * 2.0 * F / (n_cross * kb)), 0.01 * u);
+  EXPECT_GT(std::pow(F / (n_face * K), 2.0 / 3.0), 0.01 * u);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "model.h"
 #include "particles.h"
 #include "rods.h"
+#include "push_case.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -125,19 +126,6 @@ TEST(Periodic, NeighbourSearchFindsThePairsOfBruteForceThroughTheBoundary) {
   EXPECT_EQ(f0[1], -f1[1]);
 }
 
-std::map<std::string, double> last_row(const std::string& csv_text) {
-  std::istringstream csv(csv_text);
-  std::string head, line, last;
-  std::getline(csv, head);
-  while (std::getline(csv, line))
-    if (!line.empty()) last = line;
-  std::map<std::string, double> row;
-  std::istringstream hs(head), ls(last);
-  std::string h, v;
-  while (std::getline(hs, h, ',') && std::getline(ls, v, ',')) row[h] = std::stod(v);
-  return row;
-}
-
 // The tool test of test_cut_force.cpp with a periodic width instead of guided y faces: the
 // period holds the width (plane strain), a group holds z; the rods crossing a gap are
 // counted from results.h5 (wrapped rods included), so the closed form is the same.
@@ -145,44 +133,21 @@ TEST(Periodic, ToolPushingAPeriodicBlockMatchesTheLatticeStiffness) {
   const double R = 1e-4, u = 1e-6, nu = 0.3, E_contact = 2e14;
   const double a = 2.0 * std::sqrt(2.0) * R, h = a / 2;
   const int nx = 4, ny = 2, nz = 3;
-  const double x_max = (2 * nx - 1) * h, L = ny * a;
+  const double L = ny * a;
   test::TempDir dir("periodic_push");
-  test::write_file(dir / "c.toml", fmt::format(R"([workpiece]
-cells = [{nx}, {ny}, {nz}]
-radius = {R}
-periodic_width = true
-[rod]
-youngs_modulus = 2e11
-damping_ratio = 0.5
-[contact]
-youngs_modulus = {Ec}
-poisson_ratio = {nu}
-friction = 0.0
-[[group]]
-name = "clamp"
-side = "x+"
-[[group]]
-name = "guide"
-box_max = [{xg}, 1.0, 1.0]
-dofs = "z"
-[[mesh]]
-name = "tool"
-rake_angle = 0.0
-width = 1.5e-3
-face_length = 1.5e-3
-origin = [{x0}, {yc}, -2e-4]
-motion = "table"
-table_time = [0.0, 2e-5]
-table_displacement = [[0.0, 0.0, 0.0], [{u}, 0.0, 0.0]]
-[integrator]
-end_time = 3e-5
-[output]
-vtk = false
-plots = false
-series_interval = 1e-6
-)", fmt::arg("nx", nx), fmt::arg("ny", ny), fmt::arg("nz", nz), fmt::arg("R", R), fmt::arg("Ec", E_contact),
-                                               fmt::arg("nu", nu), fmt::arg("xg", x_max - 0.5 * h), fmt::arg("x0", -R),
-                                               fmt::arg("yc", 0.5 * L - 0.5 * h), fmt::arg("u", u)));
+  test::PushCase pc;
+  pc.nx = nx;
+  pc.ny = ny;
+  pc.nz = nz;
+  pc.R = R;
+  pc.u = u;
+  pc.E_contact = E_contact;
+  pc.nu = nu;
+  pc.periodic = true;
+  pc.guide_dofs = "z";
+  pc.tool_y = 0.5 * L - 0.5 * h;
+  pc.tool_width = 1.5e-3;
+  test::write_file(dir / "c.toml", test::push_case_toml(pc));
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
@@ -212,11 +177,8 @@ series_interval = 1e-6
   EXPECT_EQ(n_cross, 4 * n_face - n_edge);
   const int gaps = 2 * nx - 1;
   const double K = 4.0 / 3.0 * E_contact / (1.0 - nu * nu) * std::sqrt(R);
-  auto u_of = [&](double F) { return gaps * 2.0 * F / (n_cross * kb) + std::pow(F / (n_face * K), 2.0 / 3.0); };
-  double lo = 0, hi = 1e6;
-  for (int k = 0; k < 200; ++k) (u_of(0.5 * (lo + hi)) < u ? lo : hi) = 0.5 * (lo + hi);
-  const double F = 0.5 * (lo + hi);
-  const auto row = last_row(test::read_file(dir / "out/series.csv"));
+  const double F = test::push_force_closed_form(gaps, n_cross, kb, n_face, K, u);
+  const auto row = test::last_row(test::read_file(dir / "out/series.csv"));
   std::printf("periodic: tool force %.6g N, closed form %.6g N (%+.3f %%)\n", -row.at("force_tool_x"), F,
               100.0 * (-row.at("force_tool_x") / F - 1.0));
   // Tolerance 1 %, as in test_cut_force.cpp (uneven share of the face's edge particles along z).
