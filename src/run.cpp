@@ -442,10 +442,14 @@ void run_case(const RunOptions& opt) {
     }
   }
   write_text_atomic(dir + "/summary.json", sum.dump(2) + "\n");
+  std::string pictures;
+  for (const char* key : {"pictures", "plots"})
+    if (sum.contains(key))
+      for (const auto& f : sum[key]) pictures += (pictures.empty() ? "" : ", ") + f.get<std::string>();
   fmt::print("\n  outputs in {}/: summary.json, series.csv, results.h5{}{}{}\n", dir,
-             vtk ? ", particles.pvd (ParaView)" : "",
-             sum.contains("plots") && !sum["plots"].empty() ? ", PNG plots" : "",
-             checkpoint_every > 0 ? ", checkpoint.h5" : "");
+             vtk ? std::string(", particles.pvd (open in ParaView") + (cutting ? "; chip_surface.vtp)" : ")") : "",
+             checkpoint_every > 0 ? ", checkpoint.h5" : "",
+             pictures.empty() ? "" : "\n  pictures: " + pictures);
 }
 
 }  // namespace swarf
