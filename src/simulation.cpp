@@ -312,7 +312,7 @@ namespace {
 // The rod kernel over one block of rods. Raw pointers keep the compiler from reloading the
 // arrays' bases after every store (the uint8_t stores may alias anything). 'Viscous' is a
 // compile-time switch so the undamped lattice does not gather velocities.
-template <bool Viscous>
+template <bool Viscous, bool Wrap>
 void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
                const double* rest_length, const double* inv_rest_length, const double* shift, const std::uint8_t* intact, const Vec3* x, const Vec3* v,
                double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power,
@@ -323,7 +323,7 @@ void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, 
     if (!intact[k]) continue;
     const std::int32_t i = ends[k][0], j = ends[k][1];
     Vec3 dx = x[j] - x[i];
-    periodic.wrap(dx);
+    if constexpr (Wrap) periodic.wrap(dx);
     const double len = dx.norm();
     const double inv_len = 1.0 / len;
     const double l0 = rest_length[k];
@@ -374,16 +374,23 @@ void Simulation::rod_forces() {
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < nb; ++b) {
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
-    if (viscous)
-      rod_block<true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress, coef,
-                      block_visc[b], block_changed[b], periodic);
+    // Compile-time switches: the common undamped or non-periodic cases pay for neither.
+    if (viscous && periodic.on())
+      rod_block<true, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress,
+                            coef, block_visc[b], block_changed[b], periodic);
+    else if (viscous)
+      rod_block<true, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress,
+                             coef, block_visc[b], block_changed[b], periodic);
+    else if (periodic.on())
+      rod_block<false, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress,
+                             coef, block_visc[b], block_changed[b], periodic);
     else
-      rod_block<false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress, coef,
-                       block_visc[b], block_changed[b], periodic);
+      rod_block<false, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken, stress,
+                              coef, block_visc[b], block_changed[b], periodic);
   }
 }
 
-template <bool Measure>
+template <bool Measure, bool Wrap>
 double Simulation::gather_impl() {
   auto& p = m_.particles;
   const auto& r = m_.rods;
@@ -407,7 +414,7 @@ double Simulation::gather_impl() {
       const Rods::Entry en = r.entries[e];
       const double c = r.force_coef[en.rod];
       Vec3 dx = p.position[en.other] - xi;
-      periodic.wrap(dx);
+      if constexpr (Wrap) periodic.wrap(dx);
       f += c * dx;
       if constexpr (Measure) level += std::abs(c);
     }
@@ -446,7 +453,10 @@ double Simulation::gather_impl() {
   return std::min(by_force, by_motion);
 }
 
-double Simulation::gather() { return implicit_ ? gather_impl<true>() : gather_impl<false>(); }
+double Simulation::gather() {
+  if (m_.periodic.on()) return implicit_ ? gather_impl<true, true>() : gather_impl<false, true>();
+  return implicit_ ? gather_impl<true, false>() : gather_impl<false, false>();
+}
 
 void Simulation::commit() {
   auto& r = m_.rods;

@@ -113,7 +113,7 @@ class Simulation {
   void rod_forces();
   void contact_forces(double h);
   double gather();             // returns the sweep's relative force change (free components; implicit only)
-  template <bool Measure>
+  template <bool Measure, bool Wrap>
   double gather_impl();
   void commit();
   void account(double h);
