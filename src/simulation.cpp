@@ -9,6 +9,10 @@
 
 namespace swarf {
 
+namespace {
+constexpr double kForceFloorStrain = 1e-8;  // see gather_impl
+}  // namespace
+
 Simulation::Simulation(Model& model) : m_(model) {
   const Derived& d = m_.derived;
   implicit_ = d.implicit;
@@ -442,6 +446,12 @@ double Simulation::gather_impl() {
     p.acceleration[i] = p.inv_mass[i] * f;
   }
   if (!Measure || dmax == 0.0) return 0.0;
+  // A body at rest and unstressed (before the tool touches it) has forces that are rounding
+  // noise: measured against them, the sweeps never "converge" and the step shrinks to dt_min
+  // (seen as a 2-cycle of a 1e-13 N change at the first contact of a sharp tool). The force
+  // level therefore never counts below that of a rod strained by 1e-8.
+  const double floor = kForceFloorStrain * m_.derived.rod_stiffness * d;
+  fmax = std::max(fmax, floor * floor);
   // Two scale-aware measures; the iteration has converged when either is small:
   //  - the force change relative to the force level (quasi-static, stressed states);
   //  - the position correction beta h^2 |da| relative to the largest displacement of the
