@@ -10,31 +10,50 @@
 
 namespace swarf {
 
-static std::string quote(const std::string& s) {
+namespace {
+
+std::string quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
 
-PlotResult make_plots(const std::string& dir, const std::string& summary_path) {
-  PlotResult r;
-  std::string script = std::string(SWARF_POSTPROCESS_DIR) + "/plot_run.py";
-  if (const char* env = std::getenv("SWARF_POSTPROCESS_DIR")) script = std::string(env) + "/plot_run.py";
+}  // namespace
+
+ScriptRun run_postprocess_script(const std::string& name, const std::vector<std::string>& args,
+                                 const std::string& prefix) {
+  ScriptRun r;
+  const char* env = std::getenv("SWARF_POSTPROCESS_DIR");
+  const std::string script = std::string(env ? env : SWARF_POSTPROCESS_DIR) + "/" + name;
   if (!std::filesystem::exists(script)) {
-    r.message = "plot script not found: " + script;
+    r.output = "script not found: " + script;
     return r;
   }
   const char* py = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string cmd = fmt::format("{} {} {} {} 2>&1", py, quote(script), quote(dir), quote(summary_path));
-  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string cmd = prefix;
+  cmd += py;
+  cmd += ' ';
+  cmd += quote(script);
+  for (const auto& a : args) {
+    cmd += ' ';
+    cmd += quote(a);
+  }
+  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
   if (!pipe) {
-    r.message = "cannot start " + std::string(py);
+    r.output = std::string("cannot start ") + py;
     return r;
   }
-  std::string out;
   std::array<char, 512> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) out += buf.data();
+  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
   const int status = pclose(pipe);
+  r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  return r;
+}
+
+PlotResult make_plots(const std::string& dir, const std::string& summary_path) {
+  PlotResult r;
+  const ScriptRun run = run_postprocess_script("plot_run.py", {dir, summary_path});
+  const std::string& out = run.output;
   std::size_t pos = 0;
   while (pos < out.size()) {
     const auto eol = out.find('\n', pos);
@@ -43,7 +62,7 @@ PlotResult make_plots(const std::string& dir, const std::string& summary_path) {
     if (eol == std::string::npos) break;
     pos = eol + 1;
   }
-  r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  r.ok = run.ok;
   if (!r.ok) r.message = "plot script failed: " + out.substr(0, 400);
   return r;
 }

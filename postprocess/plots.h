@@ -15,4 +15,16 @@ struct PlotResult {
 /// Runs the plot script on DIR/series.csv with the given summary file.
 PlotResult make_plots(const std::string& dir, const std::string& summary_path);
 
+/// Result of running one of postprocess/'s Python scripts.
+struct ScriptRun {
+  bool ok = false;       ///< started and exited with status 0
+  std::string output;    ///< stdout and stderr together (or why it could not start)
+};
+
+/// Runs postprocess/NAME (the build tree's folder, or $SWARF_POSTPROCESS_DIR) with
+/// /usr/bin/python3 and the arguments, each shell-quoted; 'prefix' goes before the
+/// interpreter (e.g. xvfb-run). A missing script is reported in 'output'.
+ScriptRun run_postprocess_script(const std::string& name, const std::vector<std::string>& args,
+                                 const std::string& prefix = "");
+
 }  // namespace swarf

@@ -17,17 +17,6 @@
 namespace swarf {
 namespace {
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string postprocess_dir() {
-  if (const char* env = std::getenv("SWARF_POSTPROCESS_DIR")) return env;
-  return SWARF_POSTPROCESS_DIR;
-}
-
 // Columns of series.csv by name.
 std::vector<std::vector<double>> read_columns(const std::string& path, const std::vector<std::string>& names) {
   std::ifstream in(path);
@@ -65,12 +54,6 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
 
 std::string render_picture(const std::string& dir, std::string& message) {
   namespace fs = std::filesystem;
-  const std::string script = postprocess_dir() + "/render_chip.py";
-  if (!fs::exists(script)) {
-    message = "render script not found: " + script;
-    return "";
-  }
-  const char* py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   // Debian's VTK renders through X only: without a display, a virtual one (xvfb-run).
   std::string prefix;
   if (!std::getenv("DISPLAY")) {
@@ -81,18 +64,9 @@ std::string render_picture(const std::string& dir, std::string& message) {
     prefix = "/usr/bin/xvfb-run -a -s '-screen 0 1280x1024x24' ";
   }
   const std::string out = dir + "/chip.png";
-  const std::string cmd = fmt::format("{}{} {} {} {} 2>&1", prefix, py, quote(script), quote(dir), quote(out));
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) {
-    message = "cannot start the renderer";
-    return "";
-  }
-  std::string text;
-  char buf[512];
-  while (fgets(buf, sizeof buf, pipe)) text += buf;
-  const int status = pclose(pipe);
-  if (status != 0 || !fs::exists(out)) {
-    message = "render failed: " + text.substr(0, 400);
+  const ScriptRun run = run_postprocess_script("render_chip.py", {dir, out}, prefix);
+  if (!run.ok || !fs::exists(out)) {
+    message = "render failed: " + run.output.substr(0, 400);
     return "";
   }
   return out;

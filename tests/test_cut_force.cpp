@@ -47,15 +47,7 @@ TEST(CutForce, ToolPushingAClampedBlockMatchesTheLatticeStiffness) {
   const int gaps = static_cast<int>(std::lround(x_max / h));  // the last layer is clamped
 
   test::TempDir dir("cut_force");
-  test::PushCase pc;
-  pc.nx = nx;
-  pc.ny = ny;
-  pc.nz = nz;
-  pc.R = R;
-  pc.u = u;
-  pc.E_contact = E_contact;
-  pc.nu = nu;
-  pc.tool_y = 0.5 * y_max;
+  const test::PushCase pc{.nx = nx, .ny = ny, .nz = nz, .R = R, .u = u, .E_contact = E_contact, .nu = nu, .tool_y = 0.5 * y_max};
   test::write_file(dir / "c.toml", test::push_case_toml(pc));
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;

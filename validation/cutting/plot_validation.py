@@ -35,8 +35,14 @@ def read(path):
     return out
 
 
+def num(row, key):
+    """The row's number for key, NaN where it is missing or not a number (e.g. no chip thickness)."""
+    v = row.get(key)
+    return v if isinstance(v, float) else np.nan
+
+
 def col(rows, key):
-    return np.array([r.get(key, np.nan) if isinstance(r.get(key), float) else np.nan for r in rows])
+    return np.array([num(r, key) for r in rows])
 
 
 def forces(ax, x, rows, xlabel):
@@ -77,8 +83,8 @@ def main():
         for r in rows:
             table.append("| h = %.3f mm | Fc/w %.1f +- %.1f kN/m, Ft/w %.1f +- %.1f kN/m, r %.3f, phi %.1f deg, Merchant %.1f deg, broken %.1f %% |" % (
                 r["chip.depth_of_cut_m"] * 1e3, r[FC] / 1e3, r[FCS] / 1e3, r[FT] / 1e3, r[FTS] / 1e3,
-                r.get("chip.compression_ratio", np.nan) if isinstance(r.get("chip.compression_ratio"), float) else np.nan,
-                r.get("chip.shear_angle_deg", np.nan) if isinstance(r.get("chip.shear_angle_deg"), float) else np.nan,
+                num(r, "chip.compression_ratio"),
+                num(r, "chip.shear_angle_deg"),
                 r["chip.merchant_shear_angle_deg"], 100 * r["results.broken_fraction"]))
     p = os.path.join(src, "rake_angle", "study.csv")
     if os.path.exists(p):
@@ -102,8 +108,8 @@ def main():
         for r in rows:
             table.append("| rake %.0f deg | Fc/w %.1f +- %.1f kN/m, Ft/w %.1f +- %.1f kN/m, r %.3f, phi %.1f deg, beta %.1f deg, Merchant %.1f deg, broken %.1f %% |" % (
                 r["mesh.0.rake_angle"], r[FC] / 1e3, r[FCS] / 1e3, r[FT] / 1e3, r[FTS] / 1e3,
-                r.get("chip.compression_ratio", np.nan) if isinstance(r.get("chip.compression_ratio"), float) else np.nan,
-                r.get("chip.shear_angle_deg", np.nan) if isinstance(r.get("chip.shear_angle_deg"), float) else np.nan,
+                num(r, "chip.compression_ratio"),
+                num(r, "chip.shear_angle_deg"),
                 r["chip.friction_angle_deg"], r["chip.merchant_shear_angle_deg"], 100 * r["results.broken_fraction"]))
     p = os.path.join(src, "refinement", "study.csv")
     if os.path.exists(p):
@@ -128,8 +134,8 @@ def main():
         for r in rows:
             table.append("| R = %.3f mm | Fc/w %.1f +- %.1f kN/m, Ft/w %.1f +- %.1f kN/m, r %.3f, phi %.1f deg, broken %.1f %% |" % (
                 r["workpiece.radius"] * 1e3, r[FC] / 1e3, r[FCS] / 1e3, r[FT] / 1e3, r[FTS] / 1e3,
-                r.get("chip.compression_ratio", np.nan) if isinstance(r.get("chip.compression_ratio"), float) else np.nan,
-                r.get("chip.shear_angle_deg", np.nan) if isinstance(r.get("chip.shear_angle_deg"), float) else np.nan,
+                num(r, "chip.compression_ratio"),
+                num(r, "chip.shear_angle_deg"),
                 100 * r["results.broken_fraction"]))
     print("\n".join(table))
 
