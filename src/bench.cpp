@@ -15,12 +15,27 @@
 #include "simulation.h"
 
 namespace swarf {
+namespace {
+
+// A row of the stage table: each stage's ns per particle-step (its share of the step in %).
+std::string stage_row(const std::string& scene, int threads, const StageClock& c, double particle_steps) {
+  const double total = c.total();
+  std::string row = fmt::format("| {} | {} |", scene, threads);
+  for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
+    const double t = c.seconds(static_cast<Stage>(s));
+    row += fmt::format(" {:.1f} ({:.0f} %) |", t * 1e9 / particle_steps, total > 0 ? 100.0 * t / total : 0.0);
+  }
+  return row + fmt::format(" {:.1f} |\n", total * 1e9 / particle_steps);
+}
+
+}  // namespace
 
 void run_bench(const BenchOptions& opt) {
   fmt::print("| scene | scheme | particles | rods | steps | force evaluations | threads | median s (min-max) | "
              "ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
   fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::fflush(stdout);
+  std::vector<std::string> stage_rows;
   for (const auto& path : opt.cases) {
     const CaseSettings cs = load_case(path, opt.overrides);
     std::string scene = std::filesystem::path(path).stem().string();
@@ -32,9 +47,11 @@ void run_bench(const BenchOptions& opt) {
       double ke = 0;
       bool implicit = false;
       long long n = 0, evals = 0;
+      StageClock stages;
       for (int rep = 0; rep < std::max(1, opt.repeats); ++rep) {
         Model model = build_model(cs);
         Simulation sim(model);
+        sim.stage_clock().enable(opt.stages);
         const double end = model.settings.integrator.end_time;
         const auto t0 = std::chrono::steady_clock::now();
         if (opt.steps > 0)
@@ -49,15 +66,26 @@ void run_bench(const BenchOptions& opt) {
         np = model.particles.size();
         nr = model.rods.size();
         implicit = sim.implicit();
+        stages = sim.stage_clock();
       }
       std::sort(secs.begin(), secs.end());
       const double med = secs[secs.size() / 2];
       fmt::print("| {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n", scene,
                  implicit ? "newmark" : "verlet", np, nr, n, evals, used, med, secs.front(), secs.back(),
                  med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke);
+      if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n)));
       std::fflush(stdout);
     }
   }
+  if (!opt.stages) return;
+  // Where the time of the last repeat went (wall time of each stage, all threads together).
+  std::string head = "\n| scene | threads |", rule = "|---|---|";
+  for (const char* name : kStageNames) {
+    head += fmt::format(" {} |", name);
+    rule += "---|";
+  }
+  fmt::print("{} total |\n{}---|\n", head, rule);
+  for (const auto& row : stage_rows) fmt::print("{}", row);
 }
 
 }  // namespace swarf

@@ -12,6 +12,7 @@ struct BenchOptions {
   long long steps = 0;                   ///< 0 = run to the case's end_time
   int repeats = 3;                       ///< the median of the repeats is reported
   std::vector<std::string> overrides;
+  bool stages = false;                   ///< also print the time per step stage (last repeat)
 };
 
 /// Prints a table: scene, particles, rods, steps, threads, median s, ns/particle-step and the

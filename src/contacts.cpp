@@ -97,7 +97,7 @@ void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, 
   trow_.assign(n_particles + 1, 0);
 }
 
-void ContactSystem::update_lists(const Particles& p, const Rods& rods, bool force) {
+void ContactSystem::update_lists(const Particles& p, const Rods& rods, bool force, double moved2) {
   if (!enabled_) return;
   bool rebuild = force || x_build_.size() != p.size();
   if (!rebuild) {
@@ -105,12 +105,15 @@ void ContactSystem::update_lists(const Particles& p, const Rods& rods, bool forc
     double mesh_move = 0.0;
     for (std::size_t m = 0; m < meshes_->size(); ++m)
       mesh_move = std::max(mesh_move, ((*meshes_)[m].offset - mesh_build_[m]).norm());
-    double worst = 0.0;
-    const std::size_t n = p.size();
+    double worst = moved2;
+    if (worst < 0.0) {
+      worst = 0.0;
+      const std::size_t n = p.size();
 #pragma omp parallel for schedule(static) reduction(max : worst)
-    for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, (p.position[i] - x_build_[i]).squaredNorm());
+      for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, (p.position[i] - x_build_[i]).squaredNorm());
+    }
     // A particle and a mesh moving towards each other each use up part of the skin.
-    rebuild = std::sqrt(worst) + mesh_move > half;
+    rebuild = !(std::sqrt(worst) + mesh_move <= half);  // (NaN: rebuild, the step fails later)
   }
   if (rebuild) build(p, rods);
 }
@@ -290,21 +293,19 @@ void ContactSystem::finish_build(const Particles& p) {
   trow_.assign(n + 1, 0);
   for (const auto& q : tris_) ++trow_[q.i + 1];
   for (std::size_t i = 0; i < n; ++i) trow_[i + 1] += trow_[i];
-  tent_.resize(tris_.size());
-  for (std::size_t k = 0; k < tris_.size(); ++k) tent_[k] = static_cast<std::int32_t>(k);  // tris_ sorted by particle
 
+  // Scratch for the results (not read before an evaluation writes them).
   const std::size_t np = pairs_.size(), nt = tris_.size();
-  pf_.assign(np, Vec3::Zero());
-  pti_.assign(np, Vec3::Zero());
-  ptj_.assign(np, Vec3::Zero());
-  ph_.assign(np, Vec3::Zero());
-  pe_.assign(np, 0.0);
-  ptouch_.assign(np, 0);
-  tf_.assign(nt, Vec3::Zero());
-  tti_.assign(nt, Vec3::Zero());
-  th_.assign(nt, Vec3::Zero());
-  te_.assign(nt, 0.0);
-  ttouch_.assign(nt, 0);
+  pres_.resize(np);
+  ph_.resize(np);
+  pe_.resize(np);
+  tres_.resize(nt);
+  th_.resize(nt);
+  te_.resize(nt);
+  ptouch_.resize(np);
+  for (std::size_t k = 0; k < np; ++k) ptouch_[k] = phist_[k] != Vec3::Zero();
+  ttouch_.resize(nt);
+  for (std::size_t k = 0; k < nt; ++k) ttouch_[k] = tris_[k].history != Vec3::Zero();
 }
 
 void ContactSystem::fill_constants(const Particles& p) {
@@ -335,161 +336,181 @@ void ContactSystem::fill_constants(const Particles& p) {
   }
 }
 
-void ContactSystem::evaluate(const Particles& p, double h) {
+namespace {
+
+struct FrictionRule {
+  FrictionLaw law;
+  double mu;  // 1
+  double v0;  // regularization speed, m/s
+  double h;   // step, s
+};
+
+// Tangential force on body j from the relative tangential velocity vt (j relative to i, m/s),
+// the committed history 'hist' (m) and the normal force fn (N), with the tangential stiffness
+// kt (N/m) and dashpot eta (N s/m); returns the trial history through 'hist'.
+[[gnu::always_inline]] inline Vec3 friction_force(const FrictionRule& r, const Vec3& n, const Vec3& vt, double fn,
+                                                  double kt, double eta, Vec3& hist) {
+  if (r.law == FrictionLaw::None || r.mu == 0.0) {
+    hist = Vec3::Zero();
+    return Vec3::Zero();
+  }
+  if (r.law == FrictionLaw::Regularized) {
+    hist = Vec3::Zero();
+    const double s = vt.norm();
+    if (s == 0.0) return Vec3::Zero();
+    return (-r.mu * fn * std::tanh(s / r.v0) / s) * vt;
+  }
+  // Cundall-Strack spring with a dashpot: the history, kept in the tangent plane, grows
+  // with the slip; when the force exceeds Coulomb's cap the spring is reset to it.
+  Vec3 xi = hist - hist.dot(n) * n + r.h * vt;
+  Vec3 ft = -kt * xi - eta * vt;
+  const double cap = r.mu * fn, f2 = ft.squaredNorm();
+  if (f2 > cap * cap) {
+    ft *= cap / std::sqrt(f2);
+    xi = kt > 0.0 ? Vec3(-(ft + eta * vt) / kt) : Vec3::Zero();
+  }
+  hist = xi;
+  return ft;
+}
+
+}  // namespace
+
+void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   if (!enabled_) return;
-  const double mu = prm_.friction;
-  const FrictionLaw law = prm_.law;
-  const double v0 = prm_.regularization_speed;
+  const FrictionRule rule{prm_.law, prm_.friction, prm_.regularization_speed, h};
   const double eta_ratio = prm_.tangential_damping;
-
-  // Tangential force on body j from the relative tangential velocity vt (j relative to i),
-  // the committed history and the normal force; returns the trial history through 'hist'.
-  auto friction = [&](const Vec3& n, const Vec3& vt, double fn, double kt, double eta, Vec3& hist) -> Vec3 {
-    if (law == FrictionLaw::None || mu == 0.0) {
-      hist = Vec3::Zero();
-      return Vec3::Zero();
-    }
-    if (law == FrictionLaw::Regularized) {
-      hist = Vec3::Zero();
-      const double s = vt.norm();
-      if (s == 0.0) return Vec3::Zero();
-      return (-mu * fn * std::tanh(s / v0) / s) * vt;
-    }
-    // Cundall-Strack spring with a dashpot: the history, kept in the tangent plane, grows
-    // with the slip; when the force exceeds Coulomb's cap the spring is reset to it.
-    Vec3 xi = hist - hist.dot(n) * n + h * vt;
-    Vec3 ft = -kt * xi - eta * vt;
-    const double cap = mu * fn, f = ft.norm();
-    if (f > cap) {
-      ft *= cap / f;
-      xi = kt > 0.0 ? Vec3(-(ft + eta * vt) / kt) : Vec3::Zero();
-    }
-    hist = xi;
-    return ft;
-  };
-
-  const std::size_t np = pairs_.size();
+  const std::size_t np = pairs_.size(), nt = tris_.size();
   // Raw pointers: the flag stores (uint8_t) may alias anything, and the compiler would
   // otherwise reload every array's base for every pair.
   const Pair* pairs = pairs_.data();
   const PairConstants* pconst = pconst_.data();
-  const Vec3* phist = phist_.data();
+  Vec3* phist = phist_.data();
+  // Final evaluation: the trial history is the committed one (written in place).
+  Vec3* ph = final ? phist_.data() : ph_.data();
   std::uint8_t* touch = ptouch_.data();
-  Vec3 *pf = pf_.data(), *pti = pti_.data(), *ptj = ptj_.data(), *ph = ph_.data();
+  Result* pres = pres_.data();
   double* pe = pe_.data();
+  TriPair* tris = tris_.data();
+  Vec3* th = th_.data();
+  std::uint8_t* ttouch = ttouch_.data();
+  Result* tres = tres_.data();
+  double* te = te_.data();
   const Vec3* x = p.position.data();
   const Vec3* v = p.velocity.data();
   const Vec3* w = p.omega.data();
   const double* radius = p.radius.data();
   const Periodic periodic = periodic_;
-  // Dynamic chunks: touching pairs cost far more than near misses, and they cluster (the
-  // bottom of a settling packing). Each pair writes only its own slots: order-free.
-#pragma omp parallel for schedule(dynamic, 1024)
-  for (std::size_t k = 0; k < np; ++k) {
-    const std::int32_t i = pairs[k].i, j = pairs[k].j;
-    Vec3 d = x[j] - x[i];
-    periodic.wrap(d);
-    const double ri = radius[i], rj = radius[j];
-    const double dist2 = d.squaredNorm(), sum = ri + rj;
-    if (dist2 >= sum * sum) {
-      touch[k] = 0;  // the force slots of a near miss are not read
-      continue;
+  const std::vector<MeshBody>& meshes = *meshes_;
+  const std::int32_t* tri_mesh = tri_mesh_.data();
+  const std::int32_t* tri_local = tri_local_.data();
+  // One parallel region for both kinds. Dynamic chunks: touching pairs cost far more than
+  // near misses, and they cluster (the bottom of a settling packing). Each contact writes
+  // only its own slots: the result does not depend on the threads.
+#pragma omp parallel
+  {
+#pragma omp for schedule(dynamic, 1024) nowait
+    for (std::size_t k = 0; k < np; ++k) {
+      const std::int32_t i = pairs[k].i, j = pairs[k].j;
+      Vec3 d = x[j] - x[i];
+      periodic.wrap(d);
+      const double ri = radius[i], rj = radius[j];
+      const double dist2 = d.squaredNorm(), sum = ri + rj;
+      if (dist2 >= sum * sum) {
+        // A near miss: its result slots are not read. A final evaluation ends the history of a
+        // contact that just separated (trial evaluations leave that to commit()).
+        if (final && touch[k]) phist[k] = Vec3::Zero();
+        touch[k] = 0;
+        continue;
+      }
+      touch[k] = 1;
+      const double dist = std::sqrt(dist2);
+      const Vec3 n = (1.0 / dist) * d;
+      const double delta = sum - dist, root = std::sqrt(delta), root4 = std::sqrt(root);
+      const PairConstants& q = pconst[k];
+      const HertzLaw hz{q.K, q.D};
+      const Vec3 vrel = v[j] + w[j].cross(-rj * n) - v[i] - w[i].cross(ri * n);
+      const double vn = vrel.dot(n);
+      const double fn = hz.force(delta, root, root4, -vn);
+      const Vec3 vt = vrel - vn * n;
+      Vec3 hist = phist[k];
+      const Vec3 ft_j = friction_force(rule, n, vt, fn, q.kt0 * root, eta_ratio * q.D * root4, hist);
+      pres[k] = Result{-fn * n - ft_j, ft_j.cross(n)};
+      ph[k] = hist;
+      pe[k] = 0.4 * q.K * delta * delta * root;
     }
-    touch[k] = 1;
-    const double dist = std::sqrt(dist2);
-    const Vec3 n = (1.0 / dist) * d;
-    const double delta = sum - dist;
-    const PairConstants& q = pconst[k];
-    const HertzLaw hz{q.K, q.D};
-    const Vec3 vrel = v[j] + w[j].cross(-rj * n) - v[i] - w[i].cross(ri * n);
-    const double vn = vrel.dot(n);
-    const double root = std::sqrt(delta);
-    const double fn = hz.force(delta, -vn);
-    const Vec3 vt = vrel - vn * n;
-    const double kt = q.kt0 * root;
-    Vec3 hist = phist[k];
-    const Vec3 ft_j = friction(n, vt, fn, kt, eta_ratio * q.D * std::sqrt(root), hist);
-    pf[k] = -fn * n - ft_j;
-    pti[k] = (ri * n).cross(-ft_j);
-    ptj[k] = (-rj * n).cross(ft_j);
-    ph[k] = hist;
-    pe[k] = 0.4 * hz.stiffness * delta * delta * root;
-  }
-
-  const std::size_t nt = tris_.size();
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t k = 0; k < nt; ++k) {
-    const std::int32_t i = tris_[k].i, t = tris_[k].tri;
-    const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
-    const auto& tri = mb.mesh.triangles[tri_local_[t]];
-    const double R = p.radius[i];
-    const SphereTriangleHit hit =
-        sphere_triangle(p.position[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
-                        mb.mesh.vertices[tri[2]] + mb.offset);
-    if (!hit.touching) {
-      ttouch_[k] = 0;
-      continue;
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t k = 0; k < nt; ++k) {
+      TriPair& q = tris[k];
+      const std::int32_t i = q.i, t = q.tri;
+      const MeshBody& mb = meshes[tri_mesh[t]];
+      const auto& tri = mb.mesh.triangles[tri_local[t]];
+      const double R = radius[i];
+      const SphereTriangleHit hit =
+          sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
+                          mb.mesh.vertices[tri[2]] + mb.offset);
+      if (!hit.touching) {
+        if (final && ttouch[k]) q.history = Vec3::Zero();
+        ttouch[k] = 0;
+        continue;
+      }
+      ttouch[k] = 1;
+      const Vec3 n = hit.normal;  // from the wall towards the sphere
+      const HertzLaw hz{q.K, q.D};
+      const Vec3 vrel = v[i] + w[i].cross(-R * n) - mb.velocity;  // sphere relative to the wall
+      const double vn = vrel.dot(n);
+      const double root = std::sqrt(hit.overlap), root4 = std::sqrt(root);
+      const double fn = hit.weight * hz.force(hit.overlap, root, root4, -vn);
+      const Vec3 vt = vrel - vn * n;
+      Vec3 hist = q.history;
+      // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
+      const Vec3 ft = friction_force(rule, n, vt, fn, hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4, hist);
+      tres[k] = Result{fn * n + ft, ft.cross(n)};
+      if (final) q.history = hist;
+      else th[k] = hist;
+      te[k] = hit.weight * 0.4 * q.K * hit.overlap * hit.overlap * root;
     }
-    ttouch_[k] = 1;
-    const Vec3 n = hit.normal;  // from the wall towards the sphere
-    const TriPair& q = tris_[k];
-    const HertzLaw hz{q.K, q.D};
-    const Vec3& wi = p.omega[i];
-    const Vec3 vrel = p.velocity[i] + wi.cross(-R * n) - mb.velocity;  // sphere relative to the wall
-    const double vn = vrel.dot(n);
-    const double fn = hit.weight * hz.force(hit.overlap, -vn);
-    const Vec3 vt = vrel - vn * n;
-    const double kt = hit.weight * q.kt0 * std::sqrt(hit.overlap);
-    Vec3 hist = tris_[k].history;
-    // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
-    const Vec3 ft = friction(n, vt, fn, kt, hit.weight * eta_ratio * q.D * std::sqrt(std::sqrt(hit.overlap)), hist);
-    tf_[k] = fn * n + ft;
-    tti_[k] = (-R * n).cross(ft);
-    th_[k] = hist;
-    te_[k] = hit.weight * 0.4 * hz.stiffness * hit.overlap * hit.overlap * std::sqrt(hit.overlap);
   }
 }
 
-void ContactSystem::add_to_particle(std::size_t i, Vec3& force, Vec3& torque) const {
+void ContactSystem::add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const {
   const std::int32_t* ent = pent_.data();
   const std::uint8_t* touch = ptouch_.data();
-  const Vec3 *pf = pf_.data(), *pti = pti_.data(), *ptj = ptj_.data();
-  Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+  const Result* pres = pres_.data();
+  Vec3 f = Vec3::Zero(), arm = Vec3::Zero();
   for (std::int32_t e = prow_[i], end = prow_[i + 1]; e < end; ++e) {
     const std::int32_t code = ent[e], k = code >> 1;
     if (!touch[k]) continue;
-    if (code & 1) {
-      f -= pf[k];
-      t += ptj[k];
-    } else {
-      f += pf[k];
-      t += pti[k];
-    }
+    const Result& r = pres[k];
+    if (code & 1) f -= r.force;
+    else f += r.force;
+    arm += r.torque_arm;
   }
-  const std::int32_t* tent = tent_.data();
   const std::uint8_t* ttouch = ttouch_.data();
-  for (std::int32_t e = trow_[i], end = trow_[i + 1]; e < end; ++e) {
-    const std::int32_t k = tent[e];
+  const Result* tres = tres_.data();
+  for (std::int32_t k = trow_[i], end = trow_[i + 1]; k < end; ++k) {  // tris_ sorted by particle
     if (!ttouch[k]) continue;
-    f += tf_[k];
-    t += tti_[k];
+    f += tres[k].force;
+    arm += tres[k].torque_arm;
   }
   force += f;
-  torque += t;
+  torque += radius * arm;
 }
 
 void ContactSystem::commit() {
   const std::size_t np = pairs_.size(), nt = tris_.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) phist_[k] = ptouch_[k] ? ph_[k] : Vec3::Zero();
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < nt; ++k) tris_[k].history = ttouch_[k] ? th_[k] : Vec3::Zero();
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < np; ++k) phist_[k] = ptouch_[k] ? ph_[k] : Vec3::Zero();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < nt; ++k) tris_[k].history = ttouch_[k] ? th_[k] : Vec3::Zero();
+  }
 }
 
 void ContactSystem::mesh_forces(std::vector<Vec3>& out) const {
   out.assign(meshes_->size(), Vec3::Zero());
   for (std::size_t k = 0; k < tris_.size(); ++k)
-    if (ttouch_[k]) out[tri_mesh_[tris_[k].tri]] -= tf_[k];
+    if (ttouch_[k]) out[tri_mesh_[tris_[k].tri]] -= tres_[k].force;
 }
 
 double ContactSystem::elastic_energy() const {

@@ -62,14 +62,24 @@ class ContactSystem {
   bool enabled() const { return enabled_; }
 
   /// Rebuilds the Verlet lists if anything moved more than half the skin (or 'force').
-  void update_lists(const Particles& p, const Rods& rods, bool force);
+  /// 'moved2': the largest squared displacement (m^2) of a particle since the last build
+  /// (from build_positions()) if the caller measured it in its own pass; < 0: measured here.
+  void update_lists(const Particles& p, const Rods& rods, bool force, double moved2 = -1.0);
+  /// Positions at the last build (null before the first): integrators measure the
+  /// displacement since the build in the pass that moves the particles.
+  const Vec3* build_positions(std::size_t n_particles) const {
+    return x_build_.size() == n_particles ? x_build_.data() : nullptr;
+  }
 
   /// Evaluates every contact at the current state over a step of size h (s) from the
   /// committed histories; fills per-contact forces and torques and trial histories.
-  void evaluate(const Particles& p, double h);
+  /// 'final': this evaluation is the step's last (explicit scheme): the histories are
+  /// committed in place and commit() must not be called.
+  void evaluate(const Particles& p, double h, bool final = false);
 
-  /// Adds contact force and torque on particle i (fixed order), N and N m.
-  void add_to_particle(std::size_t i, Vec3& force, Vec3& torque) const;
+  /// Adds the contact force and torque on particle i, of radius 'radius' (m), summed over its
+  /// contacts in a fixed order, N and N m.
+  void add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const;
 
   /// Writes the trial histories back (after a converged step).
   void commit();
@@ -121,14 +131,23 @@ class ContactSystem {
   std::vector<PairConstants> pconst_;
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
-  // Per-contact results of the last evaluation.
-  std::vector<Vec3> pf_, pti_, ptj_, ph_;   // force on i, torque on i, torque on j, trial history
-  std::vector<double> pe_;                  // elastic energy
-  std::vector<Vec3> tf_, tti_, th_;         // force on the sphere, torque on it, trial history
-  std::vector<double> te_;
-  std::vector<std::uint8_t> ptouch_, ttouch_;  // 1 if the contact touched in the last evaluation
-  // Per-particle lists: pair index * 2 + side (0: i, 1: j); triangle contacts by index.
-  std::vector<std::int32_t> prow_, pent_, trow_, tent_;
+  // Per-contact results of the last evaluation. The tangential force ft on a sphere of
+  // radius R acts at -R n from its centre (n: unit normal pointing at it), a torque
+  // R (ft x n) (same vector for both spheres of a pair: ft and n both flip): 'torque_arm'
+  // holds ft x n, a particle's torque is its radius times the sum of its contacts' arms.
+  struct Result {
+    Vec3 force;       // on sphere i of a pair (on the sphere for a triangle contact), N
+    Vec3 torque_arm;  // ft x n, N
+  };
+  std::vector<Result> pres_, tres_;
+  std::vector<Vec3> ph_, th_;               // trial histories, m
+  std::vector<double> pe_, te_;             // elastic energy, J
+  // 1 if the contact touched in the last evaluation; after a build, 1 for a carried history
+  // (a final evaluation zeroes the history of a contact that stopped touching by this flag).
+  std::vector<std::uint8_t> ptouch_, ttouch_;
+  // Per-particle lists: pair index * 2 + side (0: i, 1: j); the triangle contacts of particle
+  // i are tris_[trow_[i]] to tris_[trow_[i + 1] - 1] (tris_ is sorted by particle).
+  std::vector<std::int32_t> prow_, pent_, trow_;
   // Reference state of the last build.
   std::vector<Vec3> x_build_;
   std::vector<Vec3> mesh_build_;

@@ -27,7 +27,11 @@ struct HertzLaw {
   /// positive when approaching).
   double force(double delta, double delta_rate) const {
     const double root = std::sqrt(delta);
-    const double f = stiffness * delta * root + damping * std::sqrt(root) * delta_rate;
+    return force(delta, root, std::sqrt(root), delta_rate);
+  }
+  /// The same with the roots delta^(1/2) and delta^(1/4) given (the contact kernels reuse them).
+  double force(double delta, double root, double root4, double delta_rate) const {
+    const double f = stiffness * delta * root + damping * root4 * delta_rate;
     return f > 0.0 ? f : 0.0;
   }
 };

@@ -103,6 +103,7 @@ int main(int argc, char** argv) {
   bench->add_option("--threads", threads_s, "Thread counts, comma separated (default 1,2)");
   bench->add_option("--steps", bo.steps, "Steps (default: run to the case's end_time)");
   bench->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
+  bench->add_flag("--stages", bo.stages, "Also print the time of each step stage (ns per particle-step)");
   bench->add_option("--set", bo.overrides, "Override a case key (repeatable)")->allow_extra_args(false);
 
   // swarf sweep

@@ -45,11 +45,11 @@ Simulation::Simulation(Model& model) : m_(model) {
   }
 }
 
-double Simulation::contact_power() const {
+double Simulation::contact_power(bool from_kick) const {
   // Power of the contact forces on the particles (forces and torques) and on the meshes.
   const auto& p = m_.particles;
   const bool rot = rotations_;
-  double power = deterministic_sum(p.size(), [&](std::size_t i) {
+  double power = from_kick ? kick_power_ : deterministic_sum(p.size(), [&](std::size_t i) {
     return contact_force_[i].dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
   });
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) power += mesh_force_[k].dot(m_.meshes[k].velocity);
@@ -84,12 +84,15 @@ void Simulation::step(double max_dt) {
     return;
   }
   const auto& g = m_.settings.integrator;
+  clock_.start();  // the state save and restores after rejected tries count as 'prescribe'
   save_state();
   while (true) {
     const double h = std::min(dt_, max_dt);
     if (try_newmark(h)) {
       commit();
+      clock_.lap(Stage::Commit);
       account(h);
+      clock_.lap(Stage::Account);
       // Step size control from the number of sweeps (paper section 3.4).
       const int it = stats_.last_iterations;
       if (it <= g.iterations_grow) dt_ = std::min(dt_ * g.grow_factor, m_.derived.dt_max);
@@ -110,14 +113,20 @@ void Simulation::step(double max_dt) {
 
 void Simulation::step_explicit() {
   const double h = dt_;
+  clock_.start();
   prescribe(h);
+  clock_.lap(Stage::Prescribe);
   if (!kick_drift(h)) throw_too_far(h);
+  clock_.lap(Stage::Integrate);
   rod_forces();
-  contact_forces(h);
-  gather();
-  kick(h);  // (rotations included: the explicit update needs only this step's torque)
+  clock_.lap(Stage::Rods);
+  contact_forces(h, true);
+  gather_kick(h);  // (rotations included: the explicit update needs only this step's torque)
+  clock_.lap(Stage::Gather);
   commit();
+  clock_.lap(Stage::Commit);
   account(h);
+  clock_.lap(Stage::Account);
   stats_.last_iterations = 1;
   stats_.iterations += 1;
   stats_.max_iterations = 1;
@@ -126,15 +135,19 @@ void Simulation::step_explicit() {
 bool Simulation::try_newmark(double h) {
   const auto& g = m_.settings.integrator;
   prescribe(h);
+  clock_.lap(Stage::Prescribe);
   int it = 0, growing = 0;
   bool converged = false;
   double previous = HUGE_VAL;
   for (it = 1; it <= g.max_iterations; ++it) {
     if (!place(h)) return false;
     if (rotations_) rotate(h, g.beta, g.gamma);
+    clock_.lap(Stage::Integrate);
     rod_forces();
+    clock_.lap(Stage::Rods);
     contact_forces(h);
     const double change = gather();
+    clock_.lap(Stage::Gather);
     if (!std::isfinite(change)) return false;
     if (change <= g.tolerance) {
       converged = true;
@@ -150,17 +163,22 @@ bool Simulation::try_newmark(double h) {
   if (!converged) return false;
   if (!place(h)) return false;  // x+, v+ from the converged accelerations
   if (rotations_) rotate(h, g.beta, g.gamma);
+  clock_.lap(Stage::Integrate);
   stats_.last_iterations = it;
   stats_.iterations += it;
   stats_.max_iterations = std::max(stats_.max_iterations, it);
   return true;
 }
 
-void Simulation::contact_forces(double h) {
+void Simulation::contact_forces(double h, bool final) {
   if (!contacts_.enabled()) return;
-  contacts_.update_lists(m_.particles, m_.rods, rebuild_lists_);
+  clock_.lap(Stage::Rods);  // (no-op when called outside a timed step)
+  contacts_.update_lists(m_.particles, m_.rods, rebuild_lists_, moved2_);
   rebuild_lists_ = false;
-  contacts_.evaluate(m_.particles, h);
+  moved2_ = -1.0;
+  clock_.lap(Stage::Lists);
+  contacts_.evaluate(m_.particles, h, final);
+  clock_.lap(Stage::Contacts);
 }
 
 void Simulation::prescribe(double h) {
@@ -192,8 +210,11 @@ bool Simulation::kick_drift(double h) {
   const double half = 0.5 * h;
   const double limit2 = std::pow(m_.settings.integrator.max_step_displacement, 2);
   const std::size_t n = p.size();
+  // The displacement since the contact lists' build, measured here instead of in a pass of its own.
+  const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
   int bad = 0;
-#pragma omp parallel for schedule(static) reduction(max : bad)
+  double moved2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : bad, moved2)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t mask = p.prescribed[i];
     Vec3 dx = Vec3::Zero();
@@ -210,40 +231,28 @@ bool Simulation::kick_drift(double h) {
       }
     }
     if (!(dx.squaredNorm() <= limit2 * p.radius[i] * p.radius[i])) bad = 1;  // also catches NaN
+    if (xb) moved2 = std::max(moved2, (p.position[i] - xb[i]).squaredNorm());
   }
+  moved2_ = xb ? moved2 : -1.0;
   return bad == 0;
 }
 
-void Simulation::kick(double h) {
+inline void Simulation::kick_one(std::size_t i, double h) {
   auto& p = m_.particles;
   const double half = 0.5 * h;
-  const std::size_t n = p.size();
-  const bool rot = rotations_;
-  // Raw pointers: stores through the arrays could otherwise alias the vectors' own data
-  // pointers, and the compiler would reload them for every particle.
-  Vec3* v = p.velocity.data();
-  const Vec3* a = p.acceleration.data();
-  const std::uint8_t* prescribed = p.prescribed.data();
-  Quat* q = p.orientation.data();
-  Vec3* w = p.omega.data();
-  Vec3* dw = p.omega_dot.data();
-  const Vec3* torque = p.torque.data();
-  const double* inv_I = p.inv_inertia.data();
-  const std::uint8_t* free = rot ? free_to_rotate_.data() : nullptr;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t mask = prescribed[i];
-    if (mask == 0) {
-      v[i] += half * a[i];
-    } else {
-      for (int c = 0; c < 3; ++c)
-        if (!(mask & (1u << c))) v[i][c] += half * a[i][c];
-    }
-    if (rot && free[i]) {
-      // The explicit rotation update needs only this step's torque (beta 0, gamma 1/2).
-      if (inv_I[i] > 0.0) sphere_rotation_step(q[i], w[i], dw[i], torque[i], inv_I[i], h, 0.5);
-      else rotate_one(i, h, 0.0, 0.5);
-    }
+  const std::uint8_t mask = p.prescribed[i];
+  if (mask == 0) {
+    p.velocity[i] += half * p.acceleration[i];
+  } else {
+    for (int c = 0; c < 3; ++c)
+      if (!(mask & (1u << c))) p.velocity[i][c] += half * p.acceleration[i][c];
+  }
+  if (rotations_ && free_to_rotate_[i]) {
+    // The explicit rotation update needs only this step's torque (beta 0, gamma 1/2).
+    if (p.inv_inertia[i] > 0.0)
+      sphere_rotation_step(p.orientation[i], p.omega[i], p.omega_dot[i], p.torque[i], p.inv_inertia[i], h, 0.5);
+    else
+      rotate_one(i, h, 0.0, 0.5);
   }
 }
 
@@ -279,9 +288,10 @@ bool Simulation::place(double h) {
   const double limit2 = std::pow(g.max_step_displacement, 2);
   const std::size_t n = p.size();
   int bad = 0;
-  double disp2 = 0.0;
+  double disp2 = 0.0, moved2 = 0.0;
   sweep_dt_ = h;
-#pragma omp parallel for schedule(static) reduction(max : bad, disp2)
+  const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
+#pragma omp parallel for schedule(static) reduction(max : bad, disp2, moved2)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t mask = p.prescribed[i];
     const Vec3 x = x_n_[i] + h * v_n_[i] + cx_n * a_n_[i] + cx * p.acceleration[i];
@@ -299,8 +309,10 @@ bool Simulation::place(double h) {
     const double dx2 = (p.position[i] - x_n_[i]).squaredNorm();
     disp2 = std::max(disp2, dx2);
     if (!(dx2 <= limit2 * p.radius[i] * p.radius[i])) bad = 1;
+    if (xb) moved2 = std::max(moved2, (p.position[i] - xb[i]).squaredNorm());
   }
   step_disp2_ = disp2;
+  moved2_ = xb ? moved2 : -1.0;
   return bad == 0;
 }
 
@@ -360,6 +372,7 @@ void Simulation::rod_forces() {
   const RodLaw law = r.law;
   const double A = r.area;
   const std::size_t m = r.size(), nb = block_count(m);
+  if (m == 0) return;  // (no parallel region for nothing: each costs microseconds)
   const auto* ends = r.ends.data();
   const double* l0 = r.rest_length.data();
   const double* inv_l0 = r.inv_rest_length.data();
@@ -394,13 +407,15 @@ void Simulation::rod_forces() {
   }
 }
 
-template <bool Measure, bool Wrap>
-double Simulation::gather_impl() {
+template <Simulation::GatherMode Mode, bool Wrap>
+double Simulation::gather_impl(double h) {
+  constexpr bool Measure = Mode == GatherMode::Measure, Kick = Mode == GatherMode::Kick;
   auto& p = m_.particles;
   const auto& r = m_.rods;
   const std::size_t n = p.size();
   const double d = m_.derived.nn_distance;
   const bool contacts = contacts_.enabled();
+  const bool rot = rotations_;
   const Vec3 gravity = m_.gravity;
   const Periodic periodic = m_.periodic;
   // Convergence measure of the fixed-point iteration: the largest change of a particle's
@@ -409,41 +424,60 @@ double Simulation::gather_impl() {
   // Near equilibrium the net forces are small differences of large rod forces; measuring
   // against them alone would ask for accuracy below the rounding of the sums.
   double dmax = 0.0, fmax = 0.0, damax = 0.0;
+  // Kick: the contact power after the kick, summed per fixed block of particles and then
+  // over the blocks in order (the same rounding for any thread count).
+  constexpr std::size_t kPowerBlock = 256;
+  const std::size_t nb = (n + kPowerBlock - 1) / kPowerBlock;
+  if constexpr (Kick) block_power_.assign(nb, 0.0);
 #pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec3 f = Vec3::Zero();
-    [[maybe_unused]] double level = 0.0;
-    const Vec3 xi = p.position[i];
-    for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
-      const Rods::Entry en = r.entries[e];
-      const double c = r.force_coef[en.rod];
-      Vec3 dx = p.position[en.other] - xi;
-      if constexpr (Wrap) periodic.wrap(dx);
-      f += c * dx;
-      if constexpr (Measure) level += std::abs(c);
+  for (std::size_t b = 0; b < nb; ++b) {
+    [[maybe_unused]] double power = 0.0;
+    const std::size_t end = std::min(n, (b + 1) * kPowerBlock);
+    for (std::size_t i = b * kPowerBlock; i < end; ++i) {
+      Vec3 f = Vec3::Zero();
+      [[maybe_unused]] double level = 0.0;
+      const Vec3 xi = p.position[i];
+      for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
+        const Rods::Entry en = r.entries[e];
+        const double c = r.force_coef[en.rod];
+        Vec3 dx = p.position[en.other] - xi;
+        if constexpr (Wrap) periodic.wrap(dx);
+        f += c * dx;
+        if constexpr (Measure) level += std::abs(c);
+      }
+      Vec3 fc = Vec3::Zero();
+      if (contacts) {
+        Vec3 tau = Vec3::Zero();
+        contacts_.add_to_particle(i, p.radius[i], fc, tau);
+        f += fc;
+        contact_force_[i] = fc;
+        p.torque[i] = tau;
+      }
+      f += p.mass[i] * gravity;
+      if constexpr (Measure) {
+        Vec3 df = f - p.force[i];
+        Vec3 ff = f;
+        const std::uint8_t mask = p.prescribed[i];
+        if (mask)
+          for (int c = 0; c < 3; ++c)
+            if (mask & (1u << c)) df[c] = ff[c] = 0.0;
+        const double d2 = df.squaredNorm();
+        dmax = std::max(dmax, std::isnan(d2) ? HUGE_VAL : d2);
+        fmax = std::max({fmax, ff.squaredNorm(), level * level * d * d});
+        damax = std::max(damax, std::isnan(d2) ? HUGE_VAL : d2 * p.inv_mass[i] * p.inv_mass[i]);
+      }
+      p.force[i] = f;
+      p.acceleration[i] = p.inv_mass[i] * f;
+      if constexpr (Kick) {
+        kick_one(i, h);
+        if (contacts) power += fc.dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
+      }
     }
-    if (contacts) {
-      Vec3 fc = Vec3::Zero(), tau = Vec3::Zero();
-      contacts_.add_to_particle(i, fc, tau);
-      f += fc;
-      contact_force_[i] = fc;
-      p.torque[i] = tau;
-    }
-    f += p.mass[i] * gravity;
-    if constexpr (Measure) {
-      Vec3 df = f - p.force[i];
-      Vec3 ff = f;
-      const std::uint8_t mask = p.prescribed[i];
-      if (mask)
-        for (int c = 0; c < 3; ++c)
-          if (mask & (1u << c)) df[c] = ff[c] = 0.0;
-      const double d2 = df.squaredNorm();
-      dmax = std::max(dmax, std::isnan(d2) ? HUGE_VAL : d2);
-      fmax = std::max({fmax, ff.squaredNorm(), level * level * d * d});
-      damax = std::max(damax, std::isnan(d2) ? HUGE_VAL : d2 * p.inv_mass[i] * p.inv_mass[i]);
-    }
-    p.force[i] = f;
-    p.acceleration[i] = p.inv_mass[i] * f;
+    if constexpr (Kick) block_power_[b] = power;
+  }
+  if constexpr (Kick) {
+    kick_power_ = 0.0;
+    for (double w : block_power_) kick_power_ += w;
   }
   if (!Measure || dmax == 0.0) return 0.0;
   // A body at rest and unstressed (before the tool touches it) has forces that are rounding
@@ -457,15 +491,20 @@ double Simulation::gather_impl() {
   //  - the position correction beta h^2 |da| relative to the largest displacement of the
   //    step (fast motion through unstressed states, where the force level vanishes).
   const double by_force = fmax > 0.0 ? std::sqrt(dmax / fmax) : HUGE_VAL;
-  const double h = sweep_dt_;
   const double by_motion = step_disp2_ > 0.0 ? m_.settings.integrator.beta * h * h * std::sqrt(damax / step_disp2_)
                                              : HUGE_VAL;
   return std::min(by_force, by_motion);
 }
 
 double Simulation::gather() {
-  if (m_.periodic.on()) return implicit_ ? gather_impl<true, true>() : gather_impl<false, true>();
-  return implicit_ ? gather_impl<true, false>() : gather_impl<false, false>();
+  const double h = sweep_dt_;
+  if (!implicit_) return m_.periodic.on() ? gather_impl<GatherMode::Plain, true>(h) : gather_impl<GatherMode::Plain, false>(h);
+  return m_.periodic.on() ? gather_impl<GatherMode::Measure, true>(h) : gather_impl<GatherMode::Measure, false>(h);
+}
+
+void Simulation::gather_kick(double h) {
+  if (m_.periodic.on()) gather_impl<GatherMode::Kick, true>(h);
+  else gather_impl<GatherMode::Kick, false>(h);
 }
 
 void Simulation::commit() {
@@ -477,7 +516,7 @@ void Simulation::commit() {
   const std::size_t nb = block_count(m);
   std::vector<double> plastic(nb, 0.0), fracture(nb, 0.0);
   std::vector<std::size_t> broke(nb, 0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nb > 0)
   for (std::size_t b = 0; b < nb; ++b) {
     if (!block_changed_[b]) continue;  // no rod of the block yielded or broke
     const std::size_t end = std::min(m, (b + 1) * kBlock);
@@ -502,7 +541,7 @@ void Simulation::commit() {
     broken_ += broke[b];
     if (broke[b]) rebuild_lists_ = true;
   }
-  if (contacts_.enabled()) contacts_.commit();
+  if (contacts_.enabled() && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   if (rebuild_lists_ && rotations_) update_free_to_rotate();
 }
 
@@ -541,7 +580,7 @@ void Simulation::account(double h) {
       ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
     // What the contacts take up (stored + dissipated): minus the power of their forces,
     // trapezoid over the step.
-    const double power = contact_power();
+    const double power = contact_power(!implicit_);
     ledger_.contact_work -= 0.5 * (contact_power_old_ + power) * h;
     contact_power_old_ = power;
   }

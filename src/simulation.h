@@ -11,8 +11,9 @@
 //   commit        plastic shifts and breakage of the final evaluation written back
 //   account       work of the grips, dissipation, time and counters
 // Explicit (velocity Verlet = beta 0, gamma 1/2, one evaluation per step):
-//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, contact_forces, gather,
-//   kick (v += dt/2 a, and the rotation update), commit, account
+//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, contact_forces (final: the
+//   friction histories are committed in place), gather fused with the kick (v += dt/2 a and
+//   the rotation update, particle by particle), commit, account
 // Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
 //   save, prescribe, then repeat { place (x, v from the latest a+), rotate, rod_forces,
 //   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "model.h"
+#include "stage_clock.h"
 
 namespace swarf {
 
@@ -87,6 +89,9 @@ class Simulation {
   /// Force the particles exert on mesh m in the last evaluation of an accepted step, N.
   Vec3 mesh_force(std::size_t m) const { return mesh_force_[m]; }
   const ContactSystem& contacts() const { return contacts_; }
+  /// Per-stage wall time of the steps taken while enabled (swarf bench --stages).
+  StageClock& stage_clock() { return clock_; }
+  const StageClock& stage_clock() const { return clock_; }
   /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum
   /// of the internal forces on its particles).
   Vec3 group_reaction(std::size_t g) const { return reaction_[g]; }
@@ -106,15 +111,17 @@ class Simulation {
   // Stages.
   void prescribe(double h);
   bool kick_drift(double h);   // explicit predictor; false if a particle moved too far
-  void kick(double h);         // explicit corrector
   bool place(double h);        // Newmark positions and velocities from the latest a; false if too far
   void rotate(double h, double beta, double gamma);
   void rotate_one(std::size_t i, double h, double beta, double gamma);
   void rod_forces();
-  void contact_forces(double h);
+  void contact_forces(double h, bool final = false);
   double gather();             // returns the sweep's relative force change (free components; implicit only)
-  template <bool Measure, bool Wrap>
-  double gather_impl();
+  void gather_kick(double h);  // explicit: gather, then the corrector v += h/2 a and the rotation
+  enum class GatherMode { Plain, Measure, Kick };
+  template <GatherMode Mode, bool Wrap>
+  double gather_impl(double h);
+  void kick_one(std::size_t i, double h);  // explicit corrector of particle i
   void commit();
   void account(double h);
 
@@ -142,15 +149,21 @@ class Simulation {
   std::vector<Vec3> mesh_force_;      // force on each mesh after the last accepted step, N
   std::vector<Vec3> contact_force_;   // contact part of each particle's force, N
   double contact_power_old_ = 0;      // power of the contact forces at the start of the step, W
-  double contact_power() const;
+  double kick_power_ = 0;             // power of the contact forces on the particles after the kick, W
+  std::vector<double> block_power_;   // its parts per block of particles, W
+  /// Power of the contact forces on the particles and the meshes, W; the particles' part
+  /// from the fused gather and kick if 'from_kick'.
+  double contact_power(bool from_kick = false) const;
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<RotState> rot_n_;
   ContactSystem contacts_;
+  StageClock clock_;
   std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods
   bool rebuild_lists_ = false;      // a rod broke: its pair becomes a contact candidate
   double sweep_dt_ = 0;             // step size of the current sweep, s
   double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
+  double moved2_ = -1.0;            // largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
 };
 
 }  // namespace swarf

@@ -160,7 +160,7 @@ Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& v
   cs.update_lists(p, rods, true);
   cs.evaluate(p, 1e-7);
   Vec3 f = Vec3::Zero(), tau = Vec3::Zero();
-  cs.add_to_particle(0, f, tau);
+  cs.add_to_particle(0, p.radius[0], f, tau);
   return f;
 }
 

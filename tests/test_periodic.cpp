@@ -120,8 +120,8 @@ TEST(Periodic, NeighbourSearchFindsThePairsOfBruteForceThroughTheBoundary) {
   two.evaluate(q, 1e-7);
   ASSERT_EQ(two.touching(), 1u);
   Vec3 f0 = Vec3::Zero(), f1 = Vec3::Zero(), t = Vec3::Zero();
-  two.add_to_particle(0, f0, t);
-  two.add_to_particle(1, f1, t);
+  two.add_to_particle(0, 1.0, f0, t);
+  two.add_to_particle(1, 1.0, f1, t);
   EXPECT_GT(f0[1], 0.0);  // particle 0 (just above y = 0) is pushed up, away from its image neighbour below
   EXPECT_EQ(f0[1], -f1[1]);
 }
