@@ -94,6 +94,7 @@ void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, 
     }
   x_build_.clear();
   prow_.assign(n_particles + 1, 0);
+  jrow_.assign(n_particles + 1, 0);
   trow_.assign(n_particles + 1, 0);
 }
 
@@ -157,61 +158,84 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
     for (std::size_t i = 0; i < n; ++i) g.items[fill[cell_id[i]]++] = static_cast<std::int32_t>(i);
   }
 
-  // Sphere-sphere candidates, i < j, per particle then concatenated in particle order.
-  std::vector<std::vector<std::int32_t>> cand(n);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto c = g.cell_of(p.position[i]);
-    auto& out = cand[i];
-    std::int64_t ys[3];
-    const int ny = g.y_neighbours(c[1], ys);
-    for (std::int64_t dz = -1; dz <= 1; ++dz)
-      for (int iy = 0; iy < ny; ++iy)
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-          const std::array<std::int64_t, 3> o{c[0] + dx, ys[iy], c[2] + dz};
-          if (o[0] < 0 || o[2] < 0 || o[0] >= g.n[0] || o[2] >= g.n[2]) continue;
-          const auto l = g.linear(o);
-          for (std::int64_t s = g.start[l]; s < g.start[l + 1]; ++s) {
-            const std::int32_t j = g.items[s];
-            if (j <= static_cast<std::int32_t>(i)) continue;
-            const double reach = p.radius[i] + p.radius[j] + skin;
-            Vec3 dij = p.position[j] - p.position[i];
-            periodic_.wrap(dij);
-            if (dij.squaredNorm() > reach * reach) continue;
-            if (bonded(rods, static_cast<std::int32_t>(i), j)) continue;
-            out.push_back(j);
-          }
+  // Candidates are listed per chunk of particles (in parallel, dynamic: the density varies)
+  // and the chunks joined in order: the lists, sorted by particle and then by partner, are
+  // the same for any thread count.
+  constexpr std::size_t kChunk = 256;
+  const std::size_t nchunk = (n + kChunk - 1) / kChunk;
+  // Old rows, to carry the committed histories over: pairs_ and tris_ are still the previous
+  // lists, prow_ and trow_ their rows (if they were built for these particles).
+  const bool carry = prow_.size() == n + 1 && std::size_t(prow_.back()) == pairs_.size() && trow_.size() == n + 1 &&
+                     std::size_t(trow_.back()) == tris_.size();
+
+  // Sphere-sphere candidates, i < j.
+  std::vector<std::vector<Pair>> pchunk(nchunk);
+  std::vector<std::vector<Vec3>> hchunk(nchunk);
+#pragma omp parallel
+  {
+    std::vector<std::int32_t> js;
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t ch = 0; ch < nchunk; ++ch) {
+      auto& out = pchunk[ch];
+      auto& hist = hchunk[ch];
+      for (std::size_t i = ch * kChunk, end = std::min(n, (ch + 1) * kChunk); i < end; ++i) {
+        const auto c = g.cell_of(p.position[i]);
+        std::int64_t ys[3];
+        const int ny = g.y_neighbours(c[1], ys);
+        js.clear();
+        for (std::int64_t dz = -1; dz <= 1; ++dz)
+          for (int iy = 0; iy < ny; ++iy)
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+              const std::array<std::int64_t, 3> o{c[0] + dx, ys[iy], c[2] + dz};
+              if (o[0] < 0 || o[2] < 0 || o[0] >= g.n[0] || o[2] >= g.n[2]) continue;
+              const auto l = g.linear(o);
+              for (std::int64_t s = g.start[l]; s < g.start[l + 1]; ++s) {
+                const std::int32_t j = g.items[s];
+                if (j <= static_cast<std::int32_t>(i)) continue;
+                const double reach = p.radius[i] + p.radius[j] + skin;
+                Vec3 dij = p.position[j] - p.position[i];
+                periodic_.wrap(dij);
+                if (dij.squaredNorm() > reach * reach) continue;
+                if (bonded(rods, static_cast<std::int32_t>(i), j)) continue;
+                js.push_back(j);
+              }
+            }
+        std::sort(js.begin(), js.end());
+        for (auto j : js) {
+          out.push_back(Pair{static_cast<std::int32_t>(i), j});
+          Vec3 h = Vec3::Zero();
+          if (carry)  // the old pairs of particle i (a handful)
+            for (std::int32_t k = prow_[i]; k < prow_[i + 1]; ++k)
+              if (pairs_[k].j == j) {
+                h = phist_[k];
+                break;
+              }
+          hist.push_back(h);
         }
-    std::sort(out.begin(), out.end());
+      }
+    }
   }
-  std::vector<Pair> pairs;
   {
     std::size_t total = 0;
-    for (const auto& c : cand) total += c.size();
-    pairs.reserve(total);
-    for (std::size_t i = 0; i < n; ++i)
-      for (auto j : cand[i]) pairs.push_back(Pair{static_cast<std::int32_t>(i), j});
-  }
-  // Carry the committed histories over (both lists sorted by (i, j)).
-  {
-    std::vector<Vec3> hist(pairs.size(), Vec3::Zero());
-    std::size_t k = 0;
-    for (std::size_t m = 0; m < pairs.size(); ++m) {
-      const Pair& q = pairs[m];
-      while (k < pairs_.size() && (pairs_[k].i < q.i || (pairs_[k].i == q.i && pairs_[k].j < q.j))) ++k;
-      if (k < pairs_.size() && pairs_[k].i == q.i && pairs_[k].j == q.j) hist[m] = phist_[k];
+    for (const auto& c : pchunk) total += c.size();
+    pairs_.clear();
+    pairs_.reserve(total);
+    phist_.clear();
+    phist_.reserve(total);
+    for (std::size_t ch = 0; ch < nchunk; ++ch) {
+      pairs_.insert(pairs_.end(), pchunk[ch].begin(), pchunk[ch].end());
+      phist_.insert(phist_.end(), hchunk[ch].begin(), hchunk[ch].end());
     }
-    phist_.swap(hist);
   }
-  pairs_.swap(pairs);
 
   // Sphere-triangle candidates: each triangle is binned into the cells its box (grown by the
-  // reach) overlaps; each particle tests the triangles of its own cell.
+  // reach) overlaps (cell lists by counting sort); each particle tests the triangles of its
+  // own cell.
   std::vector<TriPair> tris;
   if (!tri_mesh_.empty()) {
-    std::vector<std::vector<std::int32_t>> in_cell(ncell);
     const double reach = max_radius_ + skin;
-    for (std::size_t t = 0; t < tri_mesh_.size(); ++t) {
+    // Calls visit(cell) for each cell the box of triangle t overlaps.
+    auto for_cells = [&](std::size_t t, auto&& visit) {
       const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
       const auto& tri = mb.mesh.triangles[tri_local_[t]];
       Vec3 tlo = Vec3::Constant(HUGE_VAL), thi = Vec3::Constant(-HUGE_VAL);
@@ -224,7 +248,7 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
       thi.array() += reach;
       bool outside = false;
       for (int k = 0; k < 3; ++k) outside = outside || thi[k] < lo[k] || tlo[k] > hi[k];
-      if (outside) continue;
+      if (outside) return;
       const auto c0 = g.cell_of(tlo), c1 = g.cell_of(thi);
       // The y cells the box covers (periodic: wrapped; a box wider than the period covers all).
       std::vector<std::int64_t> ycells;
@@ -240,29 +264,50 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
       }
       for (std::int64_t z = c0[2]; z <= c1[2]; ++z)
         for (std::int64_t y : ycells)
-          for (std::int64_t x = c0[0]; x <= c1[0]; ++x) in_cell[g.linear({x, y, z})].push_back(static_cast<std::int32_t>(t));
+          for (std::int64_t x = c0[0]; x <= c1[0]; ++x) visit(g.linear({x, y, z}));
+    };
+    std::vector<std::int64_t> tstart(ncell + 1, 0);
+    for (std::size_t t = 0; t < tri_mesh_.size(); ++t) for_cells(t, [&](std::int64_t c) { ++tstart[c + 1]; });
+    for (std::size_t c = 1; c <= ncell; ++c) tstart[c] += tstart[c - 1];
+    std::vector<std::int32_t> titems(tstart.back());
+    {
+      std::vector<std::int64_t> fill(tstart.begin(), tstart.end() - 1);
+      for (std::size_t t = 0; t < tri_mesh_.size(); ++t)
+        for_cells(t, [&](std::int64_t c) { titems[fill[c]++] = static_cast<std::int32_t>(t); });
     }
-    std::vector<std::vector<std::int32_t>> tc(n);
-#pragma omp parallel for schedule(dynamic, 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto& list = in_cell[cell_id[i]];
-      for (auto t : list) {
-        const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
-        const auto& tri = mb.mesh.triangles[tri_local_[t]];
-        const Vec3 q = closest_on_triangle(p.position[i], mb.mesh.vertices[tri[0]] + mb.offset,
-                                           mb.mesh.vertices[tri[1]] + mb.offset, mb.mesh.vertices[tri[2]] + mb.offset);
-        const double r = p.radius[i] + skin;
-        if ((q - p.position[i]).squaredNorm() <= r * r) tc[i].push_back(t);
-      }
-      std::sort(tc[i].begin(), tc[i].end());
+    std::vector<std::vector<TriPair>> tchunk(nchunk);
+#pragma omp parallel
+    {
+      std::vector<std::int32_t> ts;
+#pragma omp for schedule(dynamic, 1)
+      for (std::size_t ch = 0; ch < nchunk; ++ch)
+        for (std::size_t i = ch * kChunk, end = std::min(n, (ch + 1) * kChunk); i < end; ++i) {
+          const std::int64_t c = cell_id[i];
+          if (tstart[c] == tstart[c + 1]) continue;
+          ts.clear();
+          for (std::int64_t s = tstart[c]; s < tstart[c + 1]; ++s) {
+            const std::int32_t t = titems[s];
+            const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
+            const auto& tri = mb.mesh.triangles[tri_local_[t]];
+            const Vec3 q = closest_on_triangle(p.position[i], mb.mesh.vertices[tri[0]] + mb.offset,
+                                               mb.mesh.vertices[tri[1]] + mb.offset, mb.mesh.vertices[tri[2]] + mb.offset);
+            const double r = p.radius[i] + skin;
+            if ((q - p.position[i]).squaredNorm() <= r * r) ts.push_back(t);
+          }
+          std::sort(ts.begin(), ts.end());
+          for (auto t : ts) {
+            TriPair tp{static_cast<std::int32_t>(i), t, Vec3::Zero()};
+            if (carry)
+              for (std::int32_t k = trow_[i]; k < trow_[i + 1]; ++k)
+                if (tris_[k].tri == t) {
+                  tp.history = tris_[k].history;
+                  break;
+                }
+            tchunk[ch].push_back(tp);
+          }
+        }
     }
-    for (std::size_t i = 0; i < n; ++i)
-      for (auto t : tc[i]) tris.push_back(TriPair{static_cast<std::int32_t>(i), t, Vec3::Zero()});
-    std::size_t k = 0;
-    for (auto& q : tris) {
-      while (k < tris_.size() && (tris_[k].i < q.i || (tris_[k].i == q.i && tris_[k].tri < q.tri))) ++k;
-      if (k < tris_.size() && tris_[k].i == q.i && tris_[k].tri == q.tri) q.history = tris_[k].history;
-    }
+    for (const auto& c : tchunk) tris.insert(tris.end(), c.begin(), c.end());
   }
   tris_.swap(tris);
   finish_build(p);
@@ -275,31 +320,34 @@ void ContactSystem::finish_build(const Particles& p) {
   const std::size_t n = p.size();
   fill_constants(p);
 
-  // Per-particle rows.
+  // Per-particle rows: pairs_ and tris_ are sorted by their first particle, so those rows are
+  // ranges; the pairs in which a particle is the second get an index list.
   prow_.assign(n + 1, 0);
+  jrow_.assign(n + 1, 0);
   for (const auto& q : pairs_) {
     ++prow_[q.i + 1];
-    ++prow_[q.j + 1];
+    ++jrow_[q.j + 1];
   }
-  for (std::size_t i = 0; i < n; ++i) prow_[i + 1] += prow_[i];
-  pent_.assign(prow_.back(), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    prow_[i + 1] += prow_[i];
+    jrow_[i + 1] += jrow_[i];
+  }
+  jent_.assign(jrow_.back(), 0);
   {
-    std::vector<std::int32_t> fill(prow_.begin(), prow_.end() - 1);
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-      pent_[fill[pairs_[k].i]++] = static_cast<std::int32_t>(2 * k);
-      pent_[fill[pairs_[k].j]++] = static_cast<std::int32_t>(2 * k + 1);
-    }
+    std::vector<std::int32_t> fill(jrow_.begin(), jrow_.end() - 1);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) jent_[fill[pairs_[k].j]++] = static_cast<std::int32_t>(k);
   }
   trow_.assign(n + 1, 0);
   for (const auto& q : tris_) ++trow_[q.i + 1];
   for (std::size_t i = 0; i < n; ++i) trow_[i + 1] += trow_[i];
 
-  // Scratch for the results (not read before an evaluation writes them).
+  // Results: zero for contacts that do not touch (the evaluation keeps them so), so the
+  // per-particle sums need no test; the other scratch arrays are written before they are read.
   const std::size_t np = pairs_.size(), nt = tris_.size();
-  pres_.resize(np);
+  pres_.assign(np, Result{Vec3::Zero(), Vec3::Zero()});
   ph_.resize(np);
   pe_.resize(np);
-  tres_.resize(nt);
+  tres_.assign(nt, Result{Vec3::Zero(), Vec3::Zero()});
   th_.resize(nt);
   te_.resize(nt);
   ptouch_.resize(np);
@@ -314,7 +362,9 @@ void ContactSystem::fill_constants(const Particles& p) {
   const double inv_E_pp = 2.0 * (1.0 - nu * nu) / E;  // 1/E* of two particles
   const double inv_G_pp = 2.0 * (2.0 - nu) / G;       // 1/G* (Mindlin)
   pconst_.resize(pairs_.size());
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+  const std::size_t np = pairs_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) {
     const Pair& q = pairs_[k];
     PairConstants& c = pconst_[k];
     const double ri = p.radius[q.i], rj = p.radius[q.j];
@@ -416,10 +466,13 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const double ri = radius[i], rj = radius[j];
       const double dist2 = d.squaredNorm(), sum = ri + rj;
       if (dist2 >= sum * sum) {
-        // A near miss: its result slots are not read. A final evaluation ends the history of a
-        // contact that just separated (trial evaluations leave that to commit()).
-        if (final && touch[k]) phist[k] = Vec3::Zero();
-        touch[k] = 0;
+        // A near miss. A contact that just separated gets zero results; a final evaluation also
+        // ends its history (trial evaluations leave that to commit()).
+        if (touch[k]) {
+          pres[k] = Result{Vec3::Zero(), Vec3::Zero()};
+          if (final) phist[k] = Vec3::Zero();
+          touch[k] = 0;
+        }
         continue;
       }
       touch[k] = 1;
@@ -449,8 +502,11 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
           sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
                           mb.mesh.vertices[tri[2]] + mb.offset);
       if (!hit.touching) {
-        if (final && ttouch[k]) q.history = Vec3::Zero();
-        ttouch[k] = 0;
+        if (ttouch[k]) {
+          tres[k] = Result{Vec3::Zero(), Vec3::Zero()};
+          if (final) q.history = Vec3::Zero();
+          ttouch[k] = 0;
+        }
         continue;
       }
       ttouch[k] = 1;
@@ -473,22 +529,22 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
 }
 
 void ContactSystem::add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const {
-  const std::int32_t* ent = pent_.data();
-  const std::uint8_t* touch = ptouch_.data();
+  // No test per contact: results of contacts that do not touch are zero (a branch on the
+  // touch flag or on the side mispredicts often and cost more than the sums).
   const Result* pres = pres_.data();
   Vec3 f = Vec3::Zero(), arm = Vec3::Zero();
-  for (std::int32_t e = prow_[i], end = prow_[i + 1]; e < end; ++e) {
-    const std::int32_t code = ent[e], k = code >> 1;
-    if (!touch[k]) continue;
-    const Result& r = pres[k];
-    if (code & 1) f -= r.force;
-    else f += r.force;
+  for (std::int32_t k = prow_[i], end = prow_[i + 1]; k < end; ++k) {  // i is the pair's first particle
+    f += pres[k].force;
+    arm += pres[k].torque_arm;
+  }
+  const std::int32_t* jent = jent_.data();
+  for (std::int32_t e = jrow_[i], end = jrow_[i + 1]; e < end; ++e) {  // i is the second
+    const Result& r = pres[jent[e]];
+    f -= r.force;
     arm += r.torque_arm;
   }
-  const std::uint8_t* ttouch = ttouch_.data();
   const Result* tres = tres_.data();
   for (std::int32_t k = trow_[i], end = trow_[i + 1]; k < end; ++k) {  // tris_ sorted by particle
-    if (!ttouch[k]) continue;
     f += tres[k].force;
     arm += tres[k].torque_arm;
   }

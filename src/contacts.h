@@ -131,7 +131,7 @@ class ContactSystem {
   std::vector<PairConstants> pconst_;
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
-  // Per-contact results of the last evaluation. The tangential force ft on a sphere of
+  // Per-contact results of the last evaluation (zero for a contact that does not touch). The tangential force ft on a sphere of
   // radius R acts at -R n from its centre (n: unit normal pointing at it), a torque
   // R (ft x n) (same vector for both spheres of a pair: ft and n both flip): 'torque_arm'
   // holds ft x n, a particle's torque is its radius times the sum of its contacts' arms.
@@ -143,11 +143,14 @@ class ContactSystem {
   std::vector<Vec3> ph_, th_;               // trial histories, m
   std::vector<double> pe_, te_;             // elastic energy, J
   // 1 if the contact touched in the last evaluation; after a build, 1 for a carried history
-  // (a final evaluation zeroes the history of a contact that stopped touching by this flag).
+  // (an evaluation zeroes the results, and a final one the history, of a contact that stopped
+  // touching by this flag).
   std::vector<std::uint8_t> ptouch_, ttouch_;
-  // Per-particle lists: pair index * 2 + side (0: i, 1: j); the triangle contacts of particle
-  // i are tris_[trow_[i]] to tris_[trow_[i + 1] - 1] (tris_ is sorted by particle).
-  std::vector<std::int32_t> prow_, pent_, trow_;
+  // Per-particle rows: the pairs whose first particle is i are pairs_[prow_[i]] to
+  // pairs_[prow_[i + 1] - 1], its triangle contacts tris_[trow_[i]] to tris_[trow_[i + 1] - 1]
+  // (both lists are sorted by particle); the pairs whose second particle it is are listed in
+  // jent_[jrow_[i]] to jent_[jrow_[i + 1] - 1], in pair order.
+  std::vector<std::int32_t> prow_, trow_, jrow_, jent_;
   // Reference state of the last build.
   std::vector<Vec3> x_build_;
   std::vector<Vec3> mesh_build_;

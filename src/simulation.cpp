@@ -214,7 +214,7 @@ bool Simulation::kick_drift(double h) {
   const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
   int bad = 0;
   double moved2 = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : bad, moved2)
+#pragma omp parallel for schedule(runtime) reduction(max : bad, moved2)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t mask = p.prescribed[i];
     Vec3 dx = Vec3::Zero();
@@ -429,8 +429,8 @@ double Simulation::gather_impl(double h) {
   constexpr std::size_t kPowerBlock = 256;
   const std::size_t nb = (n + kPowerBlock - 1) / kPowerBlock;
   if constexpr (Kick) block_power_.assign(nb, 0.0);
-#pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
-  for (std::size_t b = 0; b < nb; ++b) {
+  // One block of particles; dmax_, fmax_, damax_ are the calling thread's reduction copies.
+  auto block = [&](std::size_t b, double& dmax_, double& fmax_, double& damax_) {
     [[maybe_unused]] double power = 0.0;
     const std::size_t end = std::min(n, (b + 1) * kPowerBlock);
     for (std::size_t i = b * kPowerBlock; i < end; ++i) {
@@ -450,7 +450,7 @@ double Simulation::gather_impl(double h) {
         Vec3 tau = Vec3::Zero();
         contacts_.add_to_particle(i, p.radius[i], fc, tau);
         f += fc;
-        contact_force_[i] = fc;
+        if constexpr (!Kick) contact_force_[i] = fc;  // (the explicit scheme's power is summed below)
         p.torque[i] = tau;
       }
       f += p.mass[i] * gravity;
@@ -462,9 +462,9 @@ double Simulation::gather_impl(double h) {
           for (int c = 0; c < 3; ++c)
             if (mask & (1u << c)) df[c] = ff[c] = 0.0;
         const double d2 = df.squaredNorm();
-        dmax = std::max(dmax, std::isnan(d2) ? HUGE_VAL : d2);
-        fmax = std::max({fmax, ff.squaredNorm(), level * level * d * d});
-        damax = std::max(damax, std::isnan(d2) ? HUGE_VAL : d2 * p.inv_mass[i] * p.inv_mass[i]);
+        dmax_ = std::max(dmax_, std::isnan(d2) ? HUGE_VAL : d2);
+        fmax_ = std::max({fmax_, ff.squaredNorm(), level * level * d * d});
+        damax_ = std::max(damax_, std::isnan(d2) ? HUGE_VAL : d2 * p.inv_mass[i] * p.inv_mass[i]);
       }
       p.force[i] = f;
       p.acceleration[i] = p.inv_mass[i] * f;
@@ -474,6 +474,17 @@ double Simulation::gather_impl(double h) {
       }
     }
     if constexpr (Kick) block_power_[b] = power;
+  };
+  if constexpr (Kick) {
+    // Dynamic: the explicit step's work per particle varies (contacts, rotation), and a core
+    // of a shared machine may run slower than the other for a while. Blocks write only their
+    // own particles and sums: the result does not depend on who takes which block.
+#pragma omp parallel for schedule(dynamic, 2)
+    for (std::size_t b = 0; b < nb; ++b) block(b, dmax, fmax, damax);
+  } else {
+    // Static: each sweep of the implicit step finds its particles in the cache of the same core.
+#pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
+    for (std::size_t b = 0; b < nb; ++b) block(b, dmax, fmax, damax);
   }
   if constexpr (Kick) {
     kick_power_ = 0.0;
