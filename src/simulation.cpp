@@ -214,7 +214,7 @@ bool Simulation::kick_drift(double h) {
   const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
   int bad = 0;
   double moved2 = 0.0;
-#pragma omp parallel for schedule(runtime) reduction(max : bad, moved2)
+#pragma omp parallel for schedule(static) reduction(max : bad, moved2)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t mask = p.prescribed[i];
     Vec3 dx = Vec3::Zero();
