@@ -361,18 +361,30 @@ void ContactSystem::fill_constants(const Particles& p) {
   const double G = E / (2.0 * (1.0 + nu));
   const double inv_E_pp = 2.0 * (1.0 - nu * nu) / E;  // 1/E* of two particles
   const double inv_G_pp = 2.0 * (2.0 - nu) / G;       // 1/G* (Mindlin)
-  pconst_.resize(pairs_.size());
-  const std::size_t np = pairs_.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) {
-    const Pair& q = pairs_[k];
-    PairConstants& c = pconst_[k];
-    const double ri = p.radius[q.i], rj = p.radius[q.j];
+  auto pair_constants = [&](double ri, double rj, double mi, double mj) {
+    PairConstants c;
     const double rstar = ri * rj / (ri + rj);
-    const double mstar = p.mass[q.i] * p.mass[q.j] / (p.mass[q.i] + p.mass[q.j]);
+    const double mstar = mi * mj / (mi + mj);
     c.K = 4.0 / 3.0 / inv_E_pp * std::sqrt(rstar);
     c.D = prm_.alpha * std::sqrt(mstar * c.K);
     c.kt0 = 8.0 / inv_G_pp * std::sqrt(rstar);
+    return c;
+  };
+  // Equal particles (a lattice, a monodisperse packing) share one set of constants: the
+  // evaluation then reads no per-pair array.
+  const std::size_t n = p.size(), np = pairs_.size();
+  uniform_ = n > 0;
+  for (std::size_t i = 1; i < n && uniform_; ++i) uniform_ = p.radius[i] == p.radius[0] && p.mass[i] == p.mass[0];
+  if (uniform_) {
+    uniform_constants_ = pair_constants(p.radius[0], p.radius[0], p.mass[0], p.mass[0]);
+    pconst_.clear();
+  } else {
+    pconst_.resize(np);
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < np; ++k) {
+      const Pair& q = pairs_[k];
+      pconst_[k] = pair_constants(p.radius[q.i], p.radius[q.j], p.mass[q.i], p.mass[q.j]);
+    }
   }
   for (auto& q : tris_) {
     const MeshBody& mb = (*meshes_)[tri_mesh_[q.tri]];
@@ -434,6 +446,8 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   // otherwise reload every array's base for every pair.
   const Pair* pairs = pairs_.data();
   const PairConstants* pconst = pconst_.data();
+  const bool uniform = uniform_;
+  const PairConstants uc = uniform_constants_;
   Vec3* phist = phist_.data();
   // Final evaluation: the trial history is the committed one (written in place).
   Vec3* ph = final ? phist_.data() : ph_.data();
@@ -479,7 +493,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const double dist = std::sqrt(dist2);
       const Vec3 n = (1.0 / dist) * d;
       const double delta = sum - dist, root = std::sqrt(delta), root4 = std::sqrt(root);
-      const PairConstants& q = pconst[k];
+      const PairConstants& q = uniform ? uc : pconst[k];
       const HertzLaw hz{q.K, q.D};
       const Vec3 vrel = v[j] + w[j].cross(-rj * n) - v[i] - w[i].cross(ri * n);
       const double vn = vrel.dot(n);

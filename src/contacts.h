@@ -128,7 +128,9 @@ class ContactSystem {
   std::size_t builds_ = 0;
 
   std::vector<Pair> pairs_;
-  std::vector<PairConstants> pconst_;
+  std::vector<PairConstants> pconst_;     // per pair; empty when all particles are equal:
+  bool uniform_ = false;                  // then every pair has uniform_constants_
+  PairConstants uniform_constants_;
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
   // Per-contact results of the last evaluation (zero for a contact that does not touch). The tangential force ft on a sphere of
