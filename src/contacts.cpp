@@ -468,11 +468,15 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   const std::int32_t* tri_mesh = tri_mesh_.data();
   const std::int32_t* tri_local = tri_local_.data();
   // One parallel region for both kinds. Dynamic chunks: touching pairs cost far more than
-  // near misses, and they cluster (the bottom of a settling packing). Each contact writes
-  // only its own slots: the result does not depend on the threads.
-#pragma omp parallel
+  // near misses, and they cluster (the bottom of a settling packing); a triangle contact
+  // (overlap area) costs as much as tens of pairs. Chunks are kept small enough for every
+  // thread to get several (a cut has few contacts). Each contact writes only its own slots:
+  // the result does not depend on the threads.
+  const int pchunk = static_cast<int>(std::clamp<std::size_t>(np / 64, 16, 1024));
+  const int tchunk = static_cast<int>(std::clamp<std::size_t>(nt / 64, 4, 256));
+#pragma omp parallel if (np + 16 * nt > 256)
   {
-#pragma omp for schedule(dynamic, 1024) nowait
+#pragma omp for schedule(dynamic, pchunk) nowait
     for (std::size_t k = 0; k < np; ++k) {
       const std::int32_t i = pairs[k].i, j = pairs[k].j;
       Vec3 d = x[j] - x[i];
@@ -505,7 +509,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       ph[k] = hist;
       pe[k] = 0.4 * q.K * delta * delta * root;
     }
-#pragma omp for schedule(dynamic, 256)
+#pragma omp for schedule(dynamic, tchunk)
     for (std::size_t k = 0; k < nt; ++k) {
       TriPair& q = tris[k];
       const std::int32_t i = q.i, t = q.tri;

@@ -141,7 +141,6 @@ bool Simulation::try_newmark(double h) {
   double previous = HUGE_VAL;
   for (it = 1; it <= g.max_iterations; ++it) {
     if (!place(h)) return false;
-    if (rotations_) rotate(h, g.beta, g.gamma);
     clock_.lap(Stage::Integrate);
     rod_forces();
     clock_.lap(Stage::Rods);
@@ -161,8 +160,7 @@ bool Simulation::try_newmark(double h) {
     previous = change;
   }
   if (!converged) return false;
-  if (!place(h)) return false;  // x+, v+ from the converged accelerations
-  if (rotations_) rotate(h, g.beta, g.gamma);
+  if (!place(h)) return false;  // x+, v+ (and rotations) from the converged accelerations
   clock_.lap(Stage::Integrate);
   stats_.last_iterations = it;
   stats_.iterations += it;
@@ -291,8 +289,11 @@ bool Simulation::place(double h) {
   double disp2 = 0.0, moved2 = 0.0;
   sweep_dt_ = h;
   const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
+  const bool rot = rotations_;
+  const double beta = g.beta, gamma = g.gamma;
 #pragma omp parallel for schedule(static) reduction(max : bad, disp2, moved2)
   for (std::size_t i = 0; i < n; ++i) {
+    if (rot && free_to_rotate_[i]) rotate_one(i, h, beta, gamma);
     const std::uint8_t mask = p.prescribed[i];
     const Vec3 x = x_n_[i] + h * v_n_[i] + cx_n * a_n_[i] + cx * p.acceleration[i];
     const Vec3 v = v_n_[i] + cv_n * a_n_[i] + cv * p.acceleration[i];
@@ -314,13 +315,6 @@ bool Simulation::place(double h) {
   step_disp2_ = disp2;
   moved2_ = xb ? moved2 : -1.0;
   return bad == 0;
-}
-
-void Simulation::rotate(double h, double beta, double gamma) {
-  const std::size_t n = m_.particles.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i)
-    if (free_to_rotate_[i]) rotate_one(i, h, beta, gamma);
 }
 
 namespace {

@@ -15,7 +15,7 @@
 //   friction histories are committed in place), gather fused with the kick (v += dt/2 a and
 //   the rotation update, particle by particle), commit, account
 // Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
-//   save, prescribe, then repeat { place (x, v from the latest a+), rotate, rod_forces,
+//   save, prescribe, then repeat { place (x, v and the rotations from the latest a+), rod_forces,
 //   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
 //   a+, commit, account. A step that does not converge (or diverges, or moves a particle too
 //   far) is rejected: everything is restored from the saved state, bit for bit, and retried
@@ -111,8 +111,7 @@ class Simulation {
   // Stages.
   void prescribe(double h);
   bool kick_drift(double h);   // explicit predictor; false if a particle moved too far
-  bool place(double h);        // Newmark positions and velocities from the latest a; false if too far
-  void rotate(double h, double beta, double gamma);
+  bool place(double h);        // Newmark positions, velocities and rotations from the latest a; false if too far
   void rotate_one(std::size_t i, double h, double beta, double gamma);
   void rod_forces();
   void contact_forces(double h, bool final = false);
