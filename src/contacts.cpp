@@ -467,16 +467,16 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   const std::vector<MeshBody>& meshes = *meshes_;
   const std::int32_t* tri_mesh = tri_mesh_.data();
   const std::int32_t* tri_local = tri_local_.data();
-  // One parallel region for both kinds. Dynamic chunks: touching pairs cost far more than
-  // near misses, and they cluster (the bottom of a settling packing); a triangle contact
-  // (overlap area) costs as much as tens of pairs. Chunks are kept small enough for every
-  // thread to get several (a cut has few contacts). Each contact writes only its own slots:
-  // the result does not depend on the threads.
-  const int pchunk = static_cast<int>(std::clamp<std::size_t>(np / 64, 16, 1024));
+  // One parallel region for both kinds. Pairs: static, so that each thread evaluates the
+  // pairs of the particles it moved and will gather (the list is sorted by first particle);
+  // on the 2-core machine that beat dynamic chunks by 3 to 10 % on W2, whose contacts spread
+  // evenly. Triangle contacts: dynamic, they cost as much as tens of pairs each and cluster
+  // at a wall or the tool; chunks small enough for every thread to get several. Each contact
+  // writes only its own slots: the result does not depend on the threads.
   const int tchunk = static_cast<int>(std::clamp<std::size_t>(nt / 64, 4, 256));
 #pragma omp parallel if (np + 16 * nt > 256)
   {
-#pragma omp for schedule(dynamic, pchunk) nowait
+#pragma omp for schedule(static) nowait
     for (std::size_t k = 0; k < np; ++k) {
       const std::int32_t i = pairs[k].i, j = pairs[k].j;
       Vec3 d = x[j] - x[i];
