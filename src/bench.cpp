@@ -18,14 +18,15 @@ namespace swarf {
 namespace {
 
 // A row of the stage table: each stage's ns per particle-step (its share of the step in %).
-std::string stage_row(const std::string& scene, int threads, const StageClock& c, double particle_steps) {
+std::string stage_row(const std::string& scene, int threads, const StageClock& c, double particle_steps,
+                      std::size_t list_builds) {
   const double total = c.total();
   std::string row = fmt::format("| {} | {} |", scene, threads);
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
     const double t = c.seconds(static_cast<Stage>(s));
     row += fmt::format(" {:.1f} ({:.0f} %) |", t * 1e9 / particle_steps, total > 0 ? 100.0 * t / total : 0.0);
   }
-  return row + fmt::format(" {:.1f} |\n", total * 1e9 / particle_steps);
+  return row + fmt::format(" {:.1f} | {} |\n", total * 1e9 / particle_steps, list_builds);
 }
 
 }  // namespace
@@ -47,6 +48,7 @@ void run_bench(const BenchOptions& opt) {
       double ke = 0;
       bool implicit = false;
       long long n = 0, evals = 0;
+      std::size_t builds = 0;
       StageClock stages;
       for (int rep = 0; rep < std::max(1, opt.repeats); ++rep) {
         Model model = build_model(cs);
@@ -67,13 +69,14 @@ void run_bench(const BenchOptions& opt) {
         nr = model.rods.size();
         implicit = sim.implicit();
         stages = sim.stage_clock();
+        builds = sim.contacts().list_builds();
       }
       std::sort(secs.begin(), secs.end());
       const double med = secs[secs.size() / 2];
       fmt::print("| {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n", scene,
                  implicit ? "newmark" : "verlet", np, nr, n, evals, used, med, secs.front(), secs.back(),
                  med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke);
-      if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n)));
+      if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n), builds));
       std::fflush(stdout);
     }
   }
@@ -84,7 +87,7 @@ void run_bench(const BenchOptions& opt) {
     head += fmt::format(" {} |", name);
     rule += "---|";
   }
-  fmt::print("{} total |\n{}---|\n", head, rule);
+  fmt::print("{} total | contact list builds |\n{}---|---|\n", head, rule);
   for (const auto& row : stage_rows) fmt::print("{}", row);
 }
 
