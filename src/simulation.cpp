@@ -65,6 +65,9 @@ void Simulation::update_free_to_rotate() {
   free_to_rotate_.assign(p.size(), 1);
   for (std::size_t k = 0; k < r.size(); ++k)
     if (r.intact[k]) free_to_rotate_[r.ends[k][0]] = free_to_rotate_[r.ends[k][1]] = 0;
+  free_list_.clear();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (free_to_rotate_[i]) free_list_.push_back(static_cast<std::int32_t>(i));
 }
 
 void Simulation::set_rotations(bool on) {
@@ -289,28 +292,34 @@ bool Simulation::place(double h) {
   double disp2 = 0.0, moved2 = 0.0;
   sweep_dt_ = h;
   const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
-  const bool rot = rotations_;
+  const std::size_t nfree = rotations_ ? free_list_.size() : 0;
   const double beta = g.beta, gamma = g.gamma;
-#pragma omp parallel for schedule(static) reduction(max : bad, disp2, moved2)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (rot && free_to_rotate_[i]) rotate_one(i, h, beta, gamma);
-    const std::uint8_t mask = p.prescribed[i];
-    const Vec3 x = x_n_[i] + h * v_n_[i] + cx_n * a_n_[i] + cx * p.acceleration[i];
-    const Vec3 v = v_n_[i] + cv_n * a_n_[i] + cv * p.acceleration[i];
-    if (mask == 0) {
-      p.position[i] = x;
-      p.velocity[i] = v;
-    } else {
-      for (int c = 0; c < 3; ++c)
-        if (!(mask & (1u << c))) {
-          p.position[i][c] = x[c];
-          p.velocity[i][c] = v[c];
-        }
+  // The rotations have a loop of their own over the free particles: they cluster (the chip's
+  // loose particles), and in the positions' partition one thread would get them all.
+#pragma omp parallel reduction(max : bad, disp2, moved2)
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t f = 0; f < nfree; ++f) rotate_one(free_list_[f], h, beta, gamma);
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint8_t mask = p.prescribed[i];
+      const Vec3 x = x_n_[i] + h * v_n_[i] + cx_n * a_n_[i] + cx * p.acceleration[i];
+      const Vec3 v = v_n_[i] + cv_n * a_n_[i] + cv * p.acceleration[i];
+      if (mask == 0) {
+        p.position[i] = x;
+        p.velocity[i] = v;
+      } else {
+        for (int c = 0; c < 3; ++c)
+          if (!(mask & (1u << c))) {
+            p.position[i][c] = x[c];
+            p.velocity[i][c] = v[c];
+          }
+      }
+      const double dx2 = (p.position[i] - x_n_[i]).squaredNorm();
+      disp2 = std::max(disp2, dx2);
+      if (!(dx2 <= limit2 * p.radius[i] * p.radius[i])) bad = 1;
+      if (xb) moved2 = std::max(moved2, (p.position[i] - xb[i]).squaredNorm());
     }
-    const double dx2 = (p.position[i] - x_n_[i]).squaredNorm();
-    disp2 = std::max(disp2, dx2);
-    if (!(dx2 <= limit2 * p.radius[i] * p.radius[i])) bad = 1;
-    if (xb) moved2 = std::max(moved2, (p.position[i] - xb[i]).squaredNorm());
   }
   step_disp2_ = disp2;
   moved2_ = xb ? moved2 : -1.0;
@@ -588,14 +597,23 @@ void Simulation::account(double h) {
 }
 
 void Simulation::save_state() {
+  // In parallel with the placement's partition: each thread copies the particles it will
+  // place, so the saved state is in its own core's cache for every sweep of the step.
   const auto& p = m_.particles;
-  x_n_ = p.position;
-  v_n_ = p.velocity;
-  a_n_ = p.acceleration;
-  f_n_ = p.force;
-  if (rotations_) {
-    rot_n_.resize(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) rot_n_[i] = RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
+  const std::size_t n = p.size();
+  x_n_.resize(n);
+  v_n_.resize(n);
+  a_n_.resize(n);
+  f_n_.resize(n);
+  const bool rot = rotations_;
+  if (rot) rot_n_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    x_n_[i] = p.position[i];
+    v_n_[i] = p.velocity[i];
+    a_n_[i] = p.acceleration[i];
+    f_n_[i] = p.force[i];
+    if (rot) rot_n_[i] = RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
   }
 }
 

@@ -159,6 +159,7 @@ class Simulation {
   ContactSystem contacts_;
   StageClock clock_;
   std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods
+  std::vector<std::int32_t> free_list_;       // those particles, in order
   bool rebuild_lists_ = false;      // a rod broke: its pair becomes a contact candidate
   double sweep_dt_ = 0;             // step size of the current sweep, s
   double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
