@@ -319,24 +319,7 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
 void ContactSystem::finish_build(const Particles& p) {
   const std::size_t n = p.size();
   fill_constants(p);
-
-  // Per-particle rows: pairs_ and tris_ are sorted by their first particle, so those rows are
-  // ranges; the pairs in which a particle is the second get an index list.
-  prow_.assign(n + 1, 0);
-  jrow_.assign(n + 1, 0);
-  for (const auto& q : pairs_) {
-    ++prow_[q.i + 1];
-    ++jrow_[q.j + 1];
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    prow_[i + 1] += prow_[i];
-    jrow_[i + 1] += jrow_[i];
-  }
-  jent_.assign(jrow_.back(), 0);
-  {
-    std::vector<std::int32_t> fill(jrow_.begin(), jrow_.end() - 1);
-    for (std::size_t k = 0; k < pairs_.size(); ++k) jent_[fill[pairs_[k].j]++] = static_cast<std::int32_t>(k);
-  }
+  pair_rows(n);
   trow_.assign(n + 1, 0);
   for (const auto& q : tris_) ++trow_[q.i + 1];
   for (std::size_t i = 0; i < n; ++i) trow_[i + 1] += trow_[i];
@@ -354,6 +337,78 @@ void ContactSystem::finish_build(const Particles& p) {
   for (std::size_t k = 0; k < np; ++k) ptouch_[k] = phist_[k] != Vec3::Zero();
   ttouch_.resize(nt);
   for (std::size_t k = 0; k < nt; ++k) ttouch_[k] = tris_[k].history != Vec3::Zero();
+}
+
+void ContactSystem::pair_rows(std::size_t n) {
+  // Per-particle rows: pairs_ and tris_ are sorted by their first particle, so those rows are
+  // ranges; the pairs in which a particle is the second get an index list.
+  prow_.assign(n + 1, 0);
+  jrow_.assign(n + 1, 0);
+  for (const auto& q : pairs_) {
+    ++prow_[q.i + 1];
+    ++jrow_[q.j + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    prow_[i + 1] += prow_[i];
+    jrow_[i + 1] += jrow_[i];
+  }
+  jent_.assign(jrow_.back(), 0);
+  {
+    std::vector<std::int32_t> fill(jrow_.begin(), jrow_.end() - 1);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) jent_[fill[pairs_[k].j]++] = static_cast<std::int32_t>(k);
+  }
+}
+
+void ContactSystem::add_pairs(const Particles& p, std::vector<std::array<std::int32_t, 2>> extra) {
+  if (!enabled_ || extra.empty() || x_build_.size() != p.size()) return;  // (no list yet: the build finds them)
+  for (auto& e : extra)
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+  std::sort(extra.begin(), extra.end());
+  extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+  // Merge into the sorted list; every per-pair array follows, the new pairs with no history,
+  // no result and not touching: the last evaluation's results stay valid as they are.
+  const std::size_t np = pairs_.size();
+  std::vector<Pair> pairs;
+  std::vector<Vec3> hist, ph;
+  std::vector<Result> res;
+  std::vector<double> pe;
+  std::vector<std::uint8_t> touch;
+  const std::size_t cap = np + extra.size();
+  pairs.reserve(cap);
+  hist.reserve(cap);
+  ph.reserve(cap);
+  res.reserve(cap);
+  pe.reserve(cap);
+  touch.reserve(cap);
+  auto copy_old = [&](std::size_t k) {
+    pairs.push_back(pairs_[k]);
+    hist.push_back(phist_[k]);
+    ph.push_back(ph_[k]);
+    res.push_back(pres_[k]);
+    pe.push_back(pe_[k]);
+    touch.push_back(ptouch_[k]);
+  };
+  std::size_t k = 0;
+  for (const auto& e : extra) {
+    auto before = [&](const Pair& q) { return q.i < e[0] || (q.i == e[0] && q.j < e[1]); };
+    while (k < np && before(pairs_[k])) copy_old(k++);
+    if (k < np && pairs_[k].i == e[0] && pairs_[k].j == e[1]) continue;  // already a candidate
+    pairs.push_back(Pair{e[0], e[1]});
+    hist.push_back(Vec3::Zero());
+    ph.push_back(Vec3::Zero());
+    res.push_back(Result{Vec3::Zero(), Vec3::Zero()});
+    pe.push_back(0.0);
+    touch.push_back(0);
+  }
+  while (k < np) copy_old(k++);
+  pairs_.swap(pairs);
+  phist_.swap(hist);
+  ph_.swap(ph);
+  pres_.swap(res);
+  pe_.swap(pe);
+  ptouch_.swap(touch);
+  fill_constants(p);
+  pair_rows(p.size());
 }
 
 void ContactSystem::fill_constants(const Particles& p) {

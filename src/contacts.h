@@ -4,8 +4,9 @@
 // Neighbour search: cell lists build Verlet lists of candidate pairs within the contact
 // distance plus a skin; the lists are rebuilt when a particle (or a mesh) has moved more
 // than half the skin since the last build, so the search costs O(N) and happens rarely.
-// Bonded pairs are not contact pairs; a pair whose rod broke becomes one at the next build
-// (the break forces a rebuild). Lists are sorted, so results do not depend on threads.
+// Bonded pairs are not contact pairs; a pair whose rod broke becomes one right after the
+// break (add_pairs merges it into the lists). Lists are sorted, so results do not depend on
+// the threads.
 //
 // Each contact is evaluated as a pure function of the current state and its COMMITTED
 // friction history (the Cundall-Strack spring); the trial history is committed with the
@@ -71,6 +72,10 @@ class ContactSystem {
     return x_build_.size() == n_particles ? x_build_.data() : nullptr;
   }
 
+  /// Adds the pairs of rods that just broke to the lists (a full build is not needed: only
+  /// those pairs change from bonded to candidates). Keeps the last evaluation's results.
+  void add_pairs(const Particles& p, std::vector<std::array<std::int32_t, 2>> pairs);
+
   /// Evaluates every contact at the current state over a step of size h (s) from the
   /// committed histories; fills per-contact forces and torques and trial histories.
   /// 'final': this evaluation is the step's last (explicit scheme): the histories are
@@ -118,6 +123,7 @@ class ContactSystem {
   void fill_constants(const Particles& p);
   void build(const Particles& p, const Rods& rods);
   void finish_build(const Particles& p);  // constants, per-particle rows, scratch arrays
+  void pair_rows(std::size_t n);          // prow_, jrow_, jent_ from pairs_
 
   bool enabled_ = false;
   ContactParams prm_;

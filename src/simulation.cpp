@@ -523,6 +523,9 @@ void Simulation::commit() {
   const std::size_t nb = block_count(m);
   std::vector<double> plastic(nb, 0.0), fracture(nb, 0.0);
   std::vector<std::size_t> broke(nb, 0);
+  // The rods that break now, per block: their pairs become contact candidates.
+  const bool contacts = contacts_.enabled();
+  std::vector<std::vector<std::array<std::int32_t, 2>>> broken_pairs(contacts ? nb : 0);
 #pragma omp parallel for schedule(static) if (nb > 0)
   for (std::size_t b = 0; b < nb; ++b) {
     if (!block_changed_[b]) continue;  // no rod of the block yielded or broke
@@ -539,17 +542,25 @@ void Simulation::commit() {
         fracture[b] += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
         r.stress[k] = 0.0;
         ++broke[b];
+        if (contacts) broken_pairs[b].push_back(r.ends[k]);
       }
     }
   }
+  bool any_broke = false;
   for (std::size_t b = 0; b < nb; ++b) {
     ledger_.plastic_work += plastic[b];
     ledger_.fracture_energy += fracture[b];
     broken_ += broke[b];
-    if (broke[b]) rebuild_lists_ = true;
+    any_broke = any_broke || broke[b] > 0;
   }
-  if (contacts_.enabled() && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
-  if (rebuild_lists_ && rotations_) update_free_to_rotate();
+  if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
+  if (contacts && any_broke) {
+    // Added to the lists as they are (a full rebuild for each break cost a tenth of a cut).
+    std::vector<std::array<std::int32_t, 2>> fresh;
+    for (const auto& v : broken_pairs) fresh.insert(fresh.end(), v.begin(), v.end());
+    contacts_.add_pairs(m_.particles, std::move(fresh));
+  }
+  if (any_broke && rotations_) update_free_to_rotate();
 }
 
 void Simulation::compute_reactions(std::vector<Vec3>& out) const {
