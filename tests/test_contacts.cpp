@@ -420,6 +420,54 @@ TEST(NeighbourSearch, BondedPairsAreNotContactsUntilTheRodBreaks) {
   EXPECT_EQ(cs.touching(), 1u);
 }
 
+TEST(NeighbourSearch, ABrokenRodsPairMergedIntoTheListsActsAsAfterARebuild) {
+  // Three particles in a row, both neighbours bonded to the middle one and overlapping it.
+  // The left rod breaks: the simulation merges its pair into the lists (add_pairs) instead
+  // of rebuilding them; the contact force must be exactly that of a rebuilt list, and the
+  // lists must not be rebuilt for it.
+  Particles p;
+  p.resize(3);
+  p.position[0] = Vec3(-1.9e-3, 0, 0);
+  p.position[2] = Vec3(1.95e-3, 0, 0);
+  p.radius = {1e-3, 1e-3, 1e-3};
+  p.mass = {1e-5, 1e-5, 1e-5};
+  p.inv_mass = {1e5, 1e5, 1e5};
+  Rods rods;
+  rods.ends = {{0, 1}, {1, 2}};
+  rods.rest_length = {2e-3, 2e-3};
+  rods.reset_state();
+  rods.build_rows(3);
+  std::vector<MeshBody> meshes;
+  const ContactParams prm = frictionless_params();
+  ContactSystem merged, rebuilt;
+  merged.setup(prm, 3, &meshes);
+  merged.update_lists(p, rods, true);
+  merged.evaluate(p, 1e-7);
+  ASSERT_EQ(merged.touching(), 0u);
+  rods.intact[0] = 0;
+  merged.add_pairs(p, {{1, 0}});  // either order of the ends
+  merged.update_lists(p, rods, false);
+  EXPECT_EQ(merged.list_builds(), 1u);
+  merged.evaluate(p, 1e-7);
+  rebuilt.setup(prm, 3, &meshes);
+  rebuilt.update_lists(p, rods, true);
+  rebuilt.evaluate(p, 1e-7);
+  EXPECT_EQ(merged.touching(), 1u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    Vec3 fm = Vec3::Zero(), tm = Vec3::Zero(), fr = Vec3::Zero(), tr = Vec3::Zero();
+    merged.add_to_particle(i, p.radius[i], fm, tm);
+    rebuilt.add_to_particle(i, p.radius[i], fr, tr);
+    EXPECT_EQ(fm, fr) << i;
+  }
+  Vec3 f0 = Vec3::Zero(), t0 = Vec3::Zero();
+  merged.add_to_particle(0, p.radius[0], f0, t0);
+  EXPECT_LT(f0[0], 0.0);  // pushed away from the middle particle
+  // Merging a pair that is already listed changes nothing.
+  merged.add_pairs(p, {{0, 1}});
+  merged.evaluate(p, 1e-7);
+  EXPECT_EQ(merged.touching(), 1u);
+}
+
 // ---- meshes -------------------------------------------------------------------------------
 
 TEST(Meshes, StlAndObjRoundTripAndBadMeshesAreRejected) {
