@@ -53,18 +53,28 @@ std::vector<double> dataset(const std::string& file, const std::string& name) {
   return f.read_doubles(name, r, c);
 }
 
+// Runs the case DIR/CASE into DIR/a with a checkpoint every 'every' steps on 'threads' threads
+// and copies the last checkpoint (from the middle of the run) into DIR/b, as after moving it.
+test::CommandResult run_and_keep_checkpoint(const test::TempDir& dir, const std::string& case_name, int every,
+                                            int threads) {
+  auto a = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / case_name) + " --out " + (dir / "a") +
+                             " --set output.checkpoint_every=" + std::to_string(every) + " --threads " +
+                             std::to_string(threads));
+  if (a.exit_code == 0) {
+    std::filesystem::create_directories(dir / "b");
+    std::filesystem::copy_file(dir / "a/checkpoint.h5", dir / "b/checkpoint.h5");
+  }
+  return a;
+}
+
 TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
   test::TempDir dir("restart");
   test::write_file(dir / "c.toml", kTinyCut);
   const std::string bin = SWARF_BINARY;
-  auto a = test::run_command(bin + " run " + (dir / "c.toml") + " --out " + (dir / "a") +
-                             " --set output.checkpoint_every=300 --threads 1");
+  auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 1);
   ASSERT_EQ(a.exit_code, 0) << a.output;
-  // The last checkpoint is from the middle of the run: continue from a copy of it in its own
-  // directory (the default --out), with two threads, and with a stale partial checkpoint
-  // lying around as a kill during a write would leave it.
-  std::filesystem::create_directories(dir / "b");
-  std::filesystem::copy_file(dir / "a/checkpoint.h5", dir / "b/checkpoint.h5");
+  // Continue from the copy in its own directory (the default --out), with two threads, and
+  // with a stale partial checkpoint lying around as a kill during a write would leave it.
   test::write_file(dir / "b/checkpoint.h5.part", "garbage from an interrupted write");
   H5File ck(dir / "b/checkpoint.h5", H5File::Mode::Read);
   const double ck_steps = ck.read_double_attribute("steps");
@@ -138,11 +148,8 @@ plots = false
 series_interval = 5e-5
 )") + walls);
   const std::string bin = SWARF_BINARY;
-  auto a = test::run_command(bin + " run " + (dir / "gas.toml") + " --out " + (dir / "a") +
-                             " --set output.checkpoint_every=1000 --threads 2");
+  auto a = run_and_keep_checkpoint(dir, "gas.toml", 1000, 2);
   ASSERT_EQ(a.exit_code, 0) << a.output;
-  std::filesystem::create_directories(dir / "b");
-  std::filesystem::copy_file(dir / "a/checkpoint.h5", dir / "b/checkpoint.h5");
   auto b = test::run_command(bin + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 1");
   ASSERT_EQ(b.exit_code, 0) << b.output;
   const std::string series = test::read_file(dir / "a/series.csv");

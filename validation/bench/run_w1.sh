@@ -7,12 +7,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 peers=${SWARF_PEERS:-$root/../shared/peers}
 scratch=${1:-/tmp/swarf-peers}
-if ! command -v lmp >/dev/null; then
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
-  $SUDO apt-get install -y -qq lammps >/dev/null
-fi
-rm -rf "$scratch" && cp -r "$peers" "$scratch"
-/usr/bin/python3 "$scratch/common/gen.py" >/dev/null
+. "$root/validation/bench/peers_setup.sh"
 echo "== swarf"
 "$root/build/bin/swarf" bench "$root/validation/bench/w1.toml" --threads 1,2 --repeats 3
 echo "== LAMMPS (median of 3 runs after 1 warm-up)"

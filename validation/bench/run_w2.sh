@@ -11,12 +11,7 @@ peers=${SWARF_PEERS:-$root/../shared/peers}
 rounds=${1:-5}
 scratch=${2:-/tmp/swarf-peers}
 swarf="$root/build/bin/swarf"
-if ! command -v lmp >/dev/null; then
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
-  $SUDO apt-get install -y -qq lammps >/dev/null
-fi
-rm -rf "$scratch" && cp -r "$peers" "$scratch"
-/usr/bin/python3 "$scratch/common/gen.py" >/dev/null
+. "$root/validation/bench/peers_setup.sh"
 cd "$root/validation/bench"
 [ -f data/w2_particles.txt ] || /usr/bin/python3 gen_w2.py >/dev/null
 times="$scratch/w2_times.txt"; : > "$times"
