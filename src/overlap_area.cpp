@@ -53,6 +53,27 @@ double circle_triangle_area(const Vec2& a, const Vec2& b, const Vec2& c, double 
   return std::abs(s);
 }
 
+// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5).
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
 SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   SphereTriangleHit h;
   const Vec3 e1 = p1 - p0, e2 = p2 - p0;
@@ -62,6 +83,11 @@ SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const
   n /= n_len;
   const double dist = (c - p0).dot(n);
   if (std::abs(dist) >= R) return h;
+  // The exact test of contact: the triangle reaches into the sphere. (The area below is a sum
+  // of signed wedges; for a circle that misses a thin triangle it can round to a tiny positive
+  // number: such a spurious contact pushed with ~1e-18 of a force and made results depend on
+  // when the contact lists were rebuilt.)
+  if (!((closest_on_triangle(c, p0, p1, p2) - c).squaredNorm() < R * R)) return h;
   const double rho2 = R * R - dist * dist;
   const Vec3 centre = c - dist * n;
   // In-plane coordinates relative to the circle centre.

@@ -26,6 +26,9 @@ double circle_wedge_area(const Vec2& a, const Vec2& b, double r);
 /// Area of the circle of radius r centred at the origin intersected with triangle (a, b, c), m^2.
 double circle_triangle_area(const Vec2& a, const Vec2& b, const Vec2& c, double r);
 
+/// The point of triangle (a, b, c) closest to p (Ericson, Real-Time Collision Detection 5.1.5), m.
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// The geometry of a sphere against one triangle.
 struct SphereTriangleHit {
   bool touching = false;
@@ -36,7 +39,9 @@ struct SphereTriangleHit {
   Vec3 point = Vec3::Zero();   ///< centre of the cut circle (the centre projected on the plane), m
 };
 
-/// Cuts the sphere (centre c, radius R) with the plane of triangle (p0, p1, p2).
+/// Cuts the sphere (centre c, radius R) with the plane of triangle (p0, p1, p2); touching when
+/// the triangle's closest point lies inside the sphere and the cut circle's area inside the
+/// triangle is positive.
 SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2);
 
 }  // namespace swarf
