@@ -580,28 +580,12 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   }
 }
 
+ContactSystem::Sums ContactSystem::sums() const {
+  return Sums{pres_.data(), prow_.data(), jrow_.data(), jent_.data(), tres_.data(), trow_.data()};
+}
+
 void ContactSystem::add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const {
-  // No test per contact: results of contacts that do not touch are zero (a branch on the
-  // touch flag or on the side mispredicts often and cost more than the sums).
-  const Result* pres = pres_.data();
-  Vec3 f = Vec3::Zero(), arm = Vec3::Zero();
-  for (std::int32_t k = prow_[i], end = prow_[i + 1]; k < end; ++k) {  // i is the pair's first particle
-    f += pres[k].force;
-    arm += pres[k].torque_arm;
-  }
-  const std::int32_t* jent = jent_.data();
-  for (std::int32_t e = jrow_[i], end = jrow_[i + 1]; e < end; ++e) {  // i is the second
-    const Result& r = pres[jent[e]];
-    f -= r.force;
-    arm += r.torque_arm;
-  }
-  const Result* tres = tres_.data();
-  for (std::int32_t k = trow_[i], end = trow_[i + 1]; k < end; ++k) {  // tris_ sorted by particle
-    f += tres[k].force;
-    arm += tres[k].torque_arm;
-  }
-  force += f;
-  torque += radius * arm;
+  sums().add(i, radius, force, torque);
 }
 
 void ContactSystem::commit() {

@@ -238,25 +238,6 @@ bool Simulation::kick_drift(double h) {
   return bad == 0;
 }
 
-inline void Simulation::kick_one(std::size_t i, double h) {
-  auto& p = m_.particles;
-  const double half = 0.5 * h;
-  const std::uint8_t mask = p.prescribed[i];
-  if (mask == 0) {
-    p.velocity[i] += half * p.acceleration[i];
-  } else {
-    for (int c = 0; c < 3; ++c)
-      if (!(mask & (1u << c))) p.velocity[i][c] += half * p.acceleration[i][c];
-  }
-  if (rotations_ && free_to_rotate_[i]) {
-    // The explicit rotation update needs only this step's torque (beta 0, gamma 1/2).
-    if (p.inv_inertia[i] > 0.0)
-      sphere_rotation_step(p.orientation[i], p.omega[i], p.omega_dot[i], p.torque[i], p.inv_inertia[i], h, 0.5);
-    else
-      rotate_one(i, h, 0.0, 0.5);
-  }
-}
-
 void Simulation::rotate_one(std::size_t i, double h, double beta, double gamma) {
   auto& p = m_.particles;
   // Start-of-step state (world frame): saved for Newmark, current for the explicit scheme.
@@ -432,6 +413,28 @@ double Simulation::gather_impl(double h) {
   constexpr std::size_t kPowerBlock = 256;
   const std::size_t nb = (n + kPowerBlock - 1) / kPowerBlock;
   if constexpr (Kick) block_power_.assign(nb, 0.0);
+  // Raw pointers in locals: Eigen's vector stores may alias anything, and through the
+  // containers every array's base was loaded again after each store.
+  const Vec3* x = p.position.data();
+  Vec3* force = p.force.data();
+  Vec3* acc = p.acceleration.data();
+  Vec3* torque = p.torque.data();
+  Vec3* vel = p.velocity.data();
+  Vec3* omega = p.omega.data();
+  Vec3* omega_dot = p.omega_dot.data();
+  Quat* orient = p.orientation.data();
+  const double* mass = p.mass.data();
+  const double* inv_mass = p.inv_mass.data();
+  const double* radius = p.radius.data();
+  const double* inv_inertia = p.inv_inertia.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
+  const std::uint8_t* free_to_rotate = free_to_rotate_.data();
+  const std::int32_t* row_start = r.row_start.data();
+  const Rods::Entry* entries = r.entries.data();
+  const double* force_coef = r.force_coef.data();
+  Vec3* contact_force = contact_force_.data();
+  const ContactSystem::Sums sums = contacts ? contacts_.sums() : ContactSystem::Sums{};
+  [[maybe_unused]] const double half = 0.5 * h;
   // One block of particles; dmax_, fmax_, damax_ are the calling thread's reduction copies.
   auto block = [&](std::size_t b, double& dmax_, double& fmax_, double& damax_) {
     [[maybe_unused]] double power = 0.0;
@@ -439,11 +442,11 @@ double Simulation::gather_impl(double h) {
     for (std::size_t i = b * kPowerBlock; i < end; ++i) {
       Vec3 f = Vec3::Zero();
       [[maybe_unused]] double level = 0.0;
-      const Vec3 xi = p.position[i];
-      for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
-        const Rods::Entry en = r.entries[e];
-        const double c = r.force_coef[en.rod];
-        Vec3 dx = p.position[en.other] - xi;
+      const Vec3 xi = x[i];
+      for (std::int32_t e = row_start[i]; e < row_start[i + 1]; ++e) {
+        const Rods::Entry en = entries[e];
+        const double c = force_coef[en.rod];
+        Vec3 dx = x[en.other] - xi;
         if constexpr (Wrap) periodic.wrap(dx);
         f += c * dx;
         if constexpr (Measure) level += std::abs(c);
@@ -451,29 +454,43 @@ double Simulation::gather_impl(double h) {
       Vec3 fc = Vec3::Zero();
       if (contacts) {
         Vec3 tau = Vec3::Zero();
-        contacts_.add_to_particle(i, p.radius[i], fc, tau);
+        sums.add(i, radius[i], fc, tau);
         f += fc;
-        if constexpr (!Kick) contact_force_[i] = fc;  // (the explicit scheme's power is summed below)
-        p.torque[i] = tau;
+        if constexpr (!Kick) contact_force[i] = fc;  // (the explicit scheme's power is summed below)
+        torque[i] = tau;
       }
-      f += p.mass[i] * gravity;
+      f += mass[i] * gravity;
+      const std::uint8_t mask = prescribed[i];
       if constexpr (Measure) {
-        Vec3 df = f - p.force[i];
+        Vec3 df = f - force[i];
         Vec3 ff = f;
-        const std::uint8_t mask = p.prescribed[i];
         if (mask)
           for (int c = 0; c < 3; ++c)
             if (mask & (1u << c)) df[c] = ff[c] = 0.0;
         const double d2 = df.squaredNorm();
         dmax_ = std::max(dmax_, std::isnan(d2) ? HUGE_VAL : d2);
         fmax_ = std::max({fmax_, ff.squaredNorm(), level * level * d * d});
-        damax_ = std::max(damax_, std::isnan(d2) ? HUGE_VAL : d2 * p.inv_mass[i] * p.inv_mass[i]);
+        damax_ = std::max(damax_, std::isnan(d2) ? HUGE_VAL : d2 * inv_mass[i] * inv_mass[i]);
       }
-      p.force[i] = f;
-      p.acceleration[i] = p.inv_mass[i] * f;
+      force[i] = f;
+      const Vec3 a = inv_mass[i] * f;
+      acc[i] = a;
       if constexpr (Kick) {
-        kick_one(i, h);
-        if (contacts) power += fc.dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
+        // The corrector v += h/2 a (free components) and the rotation, which needs only this
+        // step's torque (beta 0, gamma 1/2).
+        if (mask == 0) {
+          vel[i] += half * a;
+        } else {
+          for (int c = 0; c < 3; ++c)
+            if (!(mask & (1u << c))) vel[i][c] += half * a[c];
+        }
+        if (rot && free_to_rotate[i]) {
+          if (inv_inertia[i] > 0.0)
+            sphere_rotation_step(orient[i], omega[i], omega_dot[i], torque[i], inv_inertia[i], h, 0.5);
+          else
+            rotate_one(i, h, 0.0, 0.5);
+        }
+        if (contacts) power += fc.dot(vel[i]) + (rot ? torque[i].dot(omega[i]) : 0.0);
       }
     }
     if constexpr (Kick) block_power_[b] = power;

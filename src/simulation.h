@@ -120,7 +120,6 @@ class Simulation {
   enum class GatherMode { Plain, Measure, Kick };
   template <GatherMode Mode, bool Wrap>
   double gather_impl(double h);
-  void kick_one(std::size_t i, double h);  // explicit corrector of particle i
   void commit();
   void account(double h);
 
