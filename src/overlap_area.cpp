@@ -49,6 +49,14 @@ double circle_wedge_area(const Vec2& a, const Vec2& b, double r) {
 }
 
 double circle_triangle_area(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
+  // A circle inside the triangle, at least r from each edge's line (the usual case of a sphere
+  // on a face): the whole disc, without the wedges' three arc tangents.
+  const double orient = cross(b - a, c - a), r2 = r * r;
+  auto clear_of = [&](const Vec2& p, const Vec2& q) {  // centre on the inner side, r or more from the line
+    const double side = orient > 0.0 ? cross(q - p, -p) : cross(p - q, -q);
+    return side > 0.0 && side * side >= r2 * (q - p).squaredNorm();
+  };
+  if (orient != 0.0 && clear_of(a, b) && clear_of(b, c) && clear_of(c, a)) return M_PI * r2;
   const double s = circle_wedge_area(a, b, r) + circle_wedge_area(b, c, r) + circle_wedge_area(c, a, r);
   return std::abs(s);
 }

@@ -31,6 +31,23 @@ TEST(OverlapArea, CircleInsideTriangle) {
   EXPECT_NEAR(circle_triangle_area(Vec2(-5, -5), Vec2(5, -5), Vec2(0, 5), r), M_PI * r * r, kAreaTol);
 }
 
+TEST(OverlapArea, TheWholeDiscShortcutJoinsTheWedgeSumAtAnEdge) {
+  // A circle clear of every edge takes a shortcut (pi r^2, no wedges). Moved across the
+  // line where it starts to touch an edge (distance r +- 1e-9 r), either winding, the area
+  // is continuous: the wedge sum just inside the shortcut's limit differs from pi r^2 by the
+  // cut segment, ~ (4 sqrt(2)/3) r^2 (1e-9)^1.5 < 1e-13 r^2, and rounding (1e-12 relative).
+  const double r = 0.25;
+  for (const double gap : {1e-9, -1e-9}) {
+    const double y = -1.0 + r * (1.0 + gap);  // the centre's distance r (1 + gap) from the edge y = -1
+    const Vec2 a(-4.0, -1.0 - y), b(4.0, -1.0 - y), c(0.0, 5.0 - y);
+    for (const double area : {circle_triangle_area(a, b, c, r), circle_triangle_area(a, c, b, r)})
+      EXPECT_NEAR(area, M_PI * r * r, 1e-12 * M_PI * r * r) << "gap " << gap;
+  }
+  // Outside the triangle, r away from an edge: no overlap (the shortcut must not take it).
+  EXPECT_NEAR(circle_triangle_area(Vec2(-4, 1), Vec2(4, 1), Vec2(0, 7), 0.5), 0.0, kAreaTol);
+  EXPECT_NEAR(circle_triangle_area(Vec2(-4, 1), Vec2(0, 7), Vec2(4, 1), 0.5), 0.0, kAreaTol);
+}
+
 TEST(OverlapArea, TriangleInsideCircle) {
   EXPECT_NEAR(circle_triangle_area(Vec2(0.1, 0.1), Vec2(0.5, 0.1), Vec2(0.1, 0.4), 1.0), 0.5 * 0.4 * 0.3, kAreaTol);
 }
