@@ -66,10 +66,16 @@ void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, 
   meshes_ = meshes;
   tri_mesh_.clear();
   tri_local_.clear();
+  tri_frame_.clear();
   for (std::size_t m = 0; m < meshes->size(); ++m)
     for (std::size_t t = 0; t < (*meshes)[m].mesh.triangles.size(); ++t) {
       tri_mesh_.push_back(static_cast<std::int32_t>(m));
       tri_local_.push_back(static_cast<std::int32_t>(t));
+      // The meshes only translate: each triangle's normal and in-plane axes, from its
+      // reference vertices, hold for the whole run.
+      const TriangleMesh& tm = (*meshes)[m].mesh;
+      const auto& tri = tm.triangles[t];
+      tri_frame_.push_back(triangle_frame(tm.vertices[tri[0]], tm.vertices[tri[1]], tm.vertices[tri[2]]));
     }
   x_build_.clear();
   prow_.assign(n_particles + 1, 0);
@@ -501,6 +507,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   const std::vector<MeshBody>& meshes = *meshes_;
   const std::int32_t* tri_mesh = tri_mesh_.data();
   const std::int32_t* tri_local = tri_local_.data();
+  const TriangleFrame* tri_frame = tri_frame_.data();
   // One parallel region for both kinds. Pairs: static, so that each thread evaluates the
   // pairs of the particles it moved and will gather (the list is sorted by first particle);
   // on the 2-core machine that beat dynamic chunks by 3 to 10 % on W2, whose contacts spread
@@ -552,7 +559,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const double R = radius[i];
       const SphereTriangleHit hit =
           sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
-                          mb.mesh.vertices[tri[2]] + mb.offset);
+                          mb.mesh.vertices[tri[2]] + mb.offset, tri_frame[t]);
       if (!hit.touching) {
         if (ttouch[k]) {
           tres[k] = Result{Vec3::Zero(), Vec3::Zero()};

@@ -24,6 +24,7 @@
 
 #include "hertz.h"
 #include "mesh.h"
+#include "overlap_area.h"
 #include "periodic.h"
 #include "vec3.h"
 
@@ -169,6 +170,7 @@ class ContactSystem {
   Periodic periodic_;  // nearest image along y for sphere-sphere pairs
   std::vector<MeshBody>* meshes_ = nullptr;
   std::vector<std::int32_t> tri_mesh_, tri_local_;  // global triangle -> mesh, local index
+  std::vector<TriangleFrame> tri_frame_;            // global triangle -> its normal and in-plane axes
   double max_radius_ = 0;
   std::size_t builds_ = 0;
 

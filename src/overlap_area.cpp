@@ -82,13 +82,28 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
-SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  SphereTriangleHit h;
+TriangleFrame triangle_frame(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  TriangleFrame f;
   const Vec3 e1 = p1 - p0, e2 = p2 - p0;
   Vec3 n = e1.cross(e2);
   const double n_len = n.norm();
-  if (!(n_len > 0.0)) return h;  // degenerate (meshes are checked on reading)
-  n /= n_len;
+  if (!(n_len > 0.0)) return f;  // degenerate (meshes are checked on reading)
+  f.n = n / n_len;
+  f.u = e1 / e1.norm();
+  f.v = f.n.cross(f.u);
+  f.ok = true;
+  return f;
+}
+
+SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  return sphere_triangle(c, R, p0, p1, p2, triangle_frame(p0, p1, p2));
+}
+
+SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                                  const TriangleFrame& f) {
+  SphereTriangleHit h;
+  if (!f.ok) return h;
+  const Vec3& n = f.n;
   const double dist = (c - p0).dot(n);
   if (std::abs(dist) >= R) return h;
   // The exact test of contact: the triangle reaches into the sphere. (The area below is a sum
@@ -99,8 +114,7 @@ SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const
   const double rho2 = R * R - dist * dist;
   const Vec3 centre = c - dist * n;
   // In-plane coordinates relative to the circle centre.
-  const Vec3 u = e1 / e1.norm();
-  const Vec3 v = n.cross(u);
+  const Vec3 &u = f.u, &v = f.v;
   auto to2 = [&](const Vec3& p) { return Vec2((p - centre).dot(u), (p - centre).dot(v)); };
   const double area = circle_triangle_area(to2(p0), to2(p1), to2(p2), std::sqrt(rho2));
   if (!(area > 0.0)) return h;

@@ -39,9 +39,21 @@ struct SphereTriangleHit {
   Vec3 point = Vec3::Zero();   ///< centre of the cut circle (the centre projected on the plane), m
 };
 
+/// A triangle's unit normal n = e1 x e2 / |e1 x e2| (e1 = p1 - p0, e2 = p2 - p0) and unit
+/// in-plane axes u = e1 / |e1|, v = n x u; constant for a rigidly translated triangle, so
+/// computed once per mesh. 'ok' is false for a degenerate triangle.
+struct TriangleFrame {
+  Vec3 n = Vec3::Zero(), u = Vec3::Zero(), v = Vec3::Zero();
+  bool ok = false;
+};
+TriangleFrame triangle_frame(const Vec3& p0, const Vec3& p1, const Vec3& p2);
+
 /// Cuts the sphere (centre c, radius R) with the plane of triangle (p0, p1, p2); touching when
 /// the triangle's closest point lies inside the sphere and the cut circle's area inside the
 /// triangle is positive.
 SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2);
+/// The same with the triangle's frame computed beforehand (the same result, bit for bit).
+SphereTriangleHit sphere_triangle(const Vec3& c, double R, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                                  const TriangleFrame& f);
 
 }  // namespace swarf
