@@ -436,7 +436,8 @@ double Simulation::gather_impl(double h) {
   const ContactSystem::Sums sums = contacts ? contacts_.sums() : ContactSystem::Sums{};
   [[maybe_unused]] const double half = 0.5 * h;
   // One block of particles; dmax_, fmax_, damax_ are the calling thread's reduction copies.
-  auto block = [&](std::size_t b, double& dmax_, double& fmax_, double& damax_) {
+  // (Contacts: a compile-time switch, so that the rods-only loop keeps its registers.)
+  auto block = [&]<bool Contacts>(std::size_t b, double& dmax_, double& fmax_, double& damax_) {
     [[maybe_unused]] double power = 0.0;
     const std::size_t end = std::min(n, (b + 1) * kPowerBlock);
     for (std::size_t i = b * kPowerBlock; i < end; ++i) {
@@ -452,7 +453,7 @@ double Simulation::gather_impl(double h) {
         if constexpr (Measure) level += std::abs(c);
       }
       Vec3 fc = Vec3::Zero();
-      if (contacts) {
+      if constexpr (Contacts) {
         Vec3 tau = Vec3::Zero();
         sums.add(i, radius[i], fc, tau);
         f += fc;
@@ -490,7 +491,7 @@ double Simulation::gather_impl(double h) {
           else
             rotate_one(i, h, 0.0, 0.5);
         }
-        if (contacts) power += fc.dot(vel[i]) + (rot ? torque[i].dot(omega[i]) : 0.0);
+        if constexpr (Contacts) power += fc.dot(vel[i]) + (rot ? torque[i].dot(omega[i]) : 0.0);
       }
     }
     if constexpr (Kick) block_power_[b] = power;
@@ -498,7 +499,10 @@ double Simulation::gather_impl(double h) {
   // Static, as the passes that move the particles and the pair loop: each thread finds its
   // particles' data in its own core's cache (dynamic blocks were 3 to 10 % slower on W2).
 #pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
-  for (std::size_t b = 0; b < nb; ++b) block(b, dmax, fmax, damax);
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (contacts) block.template operator()<true>(b, dmax, fmax, damax);
+    else block.template operator()<false>(b, dmax, fmax, damax);
+  }
   if constexpr (Kick) {
     kick_power_ = 0.0;
     for (double w : block_power_) kick_power_ += w;
