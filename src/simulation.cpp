@@ -215,24 +215,30 @@ bool Simulation::kick_drift(double h) {
   const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
   int bad = 0;
   double moved2 = 0.0;
+  // Raw pointers in locals (Eigen's vector stores may alias the containers' bases).
+  Vec3* x = p.position.data();
+  Vec3* v = p.velocity.data();
+  const Vec3* a = p.acceleration.data();
+  const double* radius = p.radius.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
 #pragma omp parallel for schedule(static) reduction(max : bad, moved2)
   for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t mask = p.prescribed[i];
+    const std::uint8_t mask = prescribed[i];
     Vec3 dx = Vec3::Zero();
     if (mask == 0) {
-      p.velocity[i] += half * p.acceleration[i];
-      dx = h * p.velocity[i];
-      p.position[i] += dx;
+      v[i] += half * a[i];
+      dx = h * v[i];
+      x[i] += dx;
     } else {
       for (int c = 0; c < 3; ++c) {
         if (mask & (1u << c)) continue;
-        p.velocity[i][c] += half * p.acceleration[i][c];
-        dx[c] = h * p.velocity[i][c];
-        p.position[i][c] += dx[c];
+        v[i][c] += half * a[i][c];
+        dx[c] = h * v[i][c];
+        x[i][c] += dx[c];
       }
     }
-    if (!(dx.squaredNorm() <= limit2 * p.radius[i] * p.radius[i])) bad = 1;  // also catches NaN
-    if (xb) moved2 = std::max(moved2, (p.position[i] - xb[i]).squaredNorm());
+    if (!(dx.squaredNorm() <= limit2 * radius[i] * radius[i])) bad = 1;  // also catches NaN
+    if (xb) moved2 = std::max(moved2, (x[i] - xb[i]).squaredNorm());
   }
   moved2_ = xb ? moved2 : -1.0;
   return bad == 0;
@@ -275,6 +281,13 @@ bool Simulation::place(double h) {
   const Vec3* xb = contacts_.enabled() ? contacts_.build_positions(n) : nullptr;
   const std::size_t nfree = rotations_ ? free_list_.size() : 0;
   const double beta = g.beta, gamma = g.gamma;
+  // Raw pointers in locals (Eigen's vector stores may alias the containers' bases).
+  Vec3* pos = p.position.data();
+  Vec3* vel = p.velocity.data();
+  const Vec3* acc = p.acceleration.data();
+  const Vec3 *x_n = x_n_.data(), *v_n = v_n_.data(), *a_n = a_n_.data();
+  const double* radius = p.radius.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
   // The rotations have a loop of their own over the free particles: they cluster (the chip's
   // loose particles), and in the positions' partition one thread would get them all.
 #pragma omp parallel reduction(max : bad, disp2, moved2)
@@ -283,23 +296,23 @@ bool Simulation::place(double h) {
     for (std::size_t f = 0; f < nfree; ++f) rotate_one(free_list_[f], h, beta, gamma);
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint8_t mask = p.prescribed[i];
-      const Vec3 x = x_n_[i] + h * v_n_[i] + cx_n * a_n_[i] + cx * p.acceleration[i];
-      const Vec3 v = v_n_[i] + cv_n * a_n_[i] + cv * p.acceleration[i];
+      const std::uint8_t mask = prescribed[i];
+      const Vec3 x = x_n[i] + h * v_n[i] + cx_n * a_n[i] + cx * acc[i];
+      const Vec3 v = v_n[i] + cv_n * a_n[i] + cv * acc[i];
       if (mask == 0) {
-        p.position[i] = x;
-        p.velocity[i] = v;
+        pos[i] = x;
+        vel[i] = v;
       } else {
         for (int c = 0; c < 3; ++c)
           if (!(mask & (1u << c))) {
-            p.position[i][c] = x[c];
-            p.velocity[i][c] = v[c];
+            pos[i][c] = x[c];
+            vel[i][c] = v[c];
           }
       }
-      const double dx2 = (p.position[i] - x_n_[i]).squaredNorm();
+      const double dx2 = (pos[i] - x_n[i]).squaredNorm();
       disp2 = std::max(disp2, dx2);
-      if (!(dx2 <= limit2 * p.radius[i] * p.radius[i])) bad = 1;
-      if (xb) moved2 = std::max(moved2, (p.position[i] - xb[i]).squaredNorm());
+      if (!(dx2 <= limit2 * radius[i] * radius[i])) bad = 1;
+      if (xb) moved2 = std::max(moved2, (pos[i] - xb[i]).squaredNorm());
     }
   }
   step_disp2_ = disp2;
