@@ -96,7 +96,8 @@ class ContactSystem {
   /// (valid until the lists change).
   struct Sums {
     const Result* pres;
-    const std::int32_t *prow, *jrow, *jent;
+    const Result* prsum;  // per particle: the sum over its row (the pairs where it is first)
+    const std::int32_t *jrow, *jent;
     const Result* tres;
     const std::int32_t* trow;
     /// Adds the contact force and torque on particle i, of radius 'radius' (m), summed over
@@ -104,11 +105,7 @@ class ContactSystem {
     /// that do not touch are zero (a branch on the touch flag or on the side mispredicts
     /// often and costs more than the sums).
     void add(std::size_t i, double radius, Vec3& force, Vec3& torque) const {
-      Vec3 f = Vec3::Zero(), arm = Vec3::Zero();
-      for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) {  // i is the pair's first particle
-        f += pres[k].force;
-        arm += pres[k].torque_arm;
-      }
+      Vec3 f = prsum[i].force, arm = prsum[i].torque_arm;  // i is the pairs' first particle
       for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e) {  // i is the second
         const Result& r = pres[jent[e]];
         f -= r.force;
@@ -160,6 +157,7 @@ class ContactSystem {
     Vec3 history = Vec3::Zero();
     double K = 0, D = 0, kt0 = 0;
   };
+  std::array<std::size_t, 2> row_range(int t, int nthreads) const;  // the rows (particles) thread t evaluates
   void fill_constants(const Particles& p);
   void build(const Particles& p, const Rods& rods);
   void finish_build(const Particles& p);  // constants, per-particle rows, scratch arrays
@@ -181,6 +179,7 @@ class ContactSystem {
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
   std::vector<Result> pres_, tres_;
+  std::vector<Result> prsum_;  // per particle: the sum of its row's results (pairs where it is first)
   std::vector<Vec3> ph_, th_;               // trial histories, m
   std::vector<double> pe_, te_;             // elastic energy, J
   // 1 if the contact touched in the last evaluation; after a build, 1 for a carried history
