@@ -315,7 +315,7 @@ void ContactSystem::finish_build(const Particles& p) {
   // per-particle sums need no test; the other scratch arrays are written before they are read.
   const std::size_t np = pairs_.size(), nt = tris_.size();
   pres_.assign(np, Result{Vec3::Zero(), Vec3::Zero()});
-  prsum_.assign(n, Result{Vec3::Zero(), Vec3::Zero()});
+  psum_.assign(n, Result{Vec3::Zero(), Vec3::Zero()});
   ph_.resize(np);
   pe_.resize(np);
   tres_.assign(nt, Result{Vec3::Zero(), Vec3::Zero()});
@@ -345,6 +345,11 @@ void ContactSystem::pair_rows(std::size_t n) {
     std::vector<std::int32_t> fill(jrow_.begin(), jrow_.end() - 1);
     for (std::size_t k = 0; k < pairs_.size(); ++k) jent_[fill[pairs_[k].j]++] = static_cast<std::int32_t>(k);
   }
+  // The first particle of a particle's earliest pair (jent_ is in pair order), itself if none.
+  jmin_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    jmin_[i] = jrow_[i] < jrow_[i + 1] ? pairs_[jent_[jrow_[i]]].i : static_cast<std::int32_t>(i);
+  ++list_version_;
 }
 
 void ContactSystem::add_pairs(const Particles& p, std::vector<std::array<std::int32_t, 2>> extra) {
@@ -489,7 +494,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   // otherwise reload every array's base for every pair.
   const Pair* pairs = pairs_.data();
   const std::int32_t* prow = prow_.data();
-  Result* prsum = prsum_.data();
+  Result* psum = psum_.data();
   const PairConstants* pconst = pconst_.data();
   const bool uniform = uniform_;
   const PairConstants uc = uniform_constants_;
@@ -525,10 +530,14 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
     // Pairs in one flat loop (a loop per row, ~2 pairs long, mispredicted its exits and cost
     // more than the pairs), each thread over a contiguous range of rows (a row: the pairs
     // whose first particle is i) with an equal share of pairs and particles. Touching pairs
-    // also add their results to the first particle's row sum, in pair order (the gather then
-    // reads one sum instead of the row).
-    const auto [row_begin, row_end] = row_range(omp_get_thread_num(), omp_get_num_threads());
-    std::fill(prsum + row_begin, prsum + row_end, Result{Vec3::Zero(), Vec3::Zero()});
+    // also add their results to both particles' sums, in pair order, when the thread owns
+    // both (the gather then reads one sum; see Sums).
+    const int nthreads = omp_get_num_threads();
+#pragma omp single
+    partition(nthreads);
+    const std::size_t row_begin = row_split_[static_cast<std::size_t>(omp_get_thread_num())];
+    const std::size_t row_end = row_split_[static_cast<std::size_t>(omp_get_thread_num()) + 1];
+    std::fill(psum + row_begin, psum + row_end, Result{Vec3::Zero(), Vec3::Zero()});
     for (std::size_t k = static_cast<std::size_t>(prow[row_begin]), kend = static_cast<std::size_t>(prow[row_end]);
          k < kend; ++k) {
       const std::int32_t i = pairs[k].i, j = pairs[k].j;
@@ -560,8 +569,12 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const Vec3 ft_j = friction_force(rule, n, vt, fn, q.kt0 * root, eta_ratio * q.D * root4, hist);
       const Result r{-fn * n - ft_j, ft_j.cross(n)};
       pres[k] = r;
-      prsum[i].force += r.force;
-      prsum[i].torque_arm += r.torque_arm;
+      psum[i].force += r.force;
+      psum[i].torque_arm += r.torque_arm;
+      if (static_cast<std::size_t>(j) < row_end) {  // (else j's sum is made from the results)
+        psum[j].force -= r.force;
+        psum[j].torque_arm += r.torque_arm;
+      }
       ph[k] = hist;
       pe[k] = 0.4 * q.K * delta * delta * root;
     }
@@ -603,21 +616,23 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
 }
 
 ContactSystem::Sums ContactSystem::sums() const {
-  return Sums{pres_.data(), prsum_.data(), jrow_.data(), jent_.data(), tres_.data(), trow_.data()};
+  return Sums{pres_.data(), psum_.data(), spanning_.data(), prow_.data(), jrow_.data(), jent_.data(),
+              tres_.data(), trow_.data()};
 }
 
-std::array<std::size_t, 2> ContactSystem::row_range(int t, int nthreads) const {
+void ContactSystem::partition(int nthreads) {
+  if (partition_version_ == list_version_ && row_split_.size() == static_cast<std::size_t>(nthreads) + 1) return;
   // Equal shares of the weight w(i) = (pairs in rows before i) + kRowWeight i: the rows
   // cluster where the contacts are (a chip, a pile), so equal numbers of particles would not
-  // do. The partition depends on the threads, the results do not (each row writes its own).
+  // do. The partition depends on the threads, the results do not (see Sums).
   constexpr std::int64_t kRowWeight = 2;
   const std::size_t n = prow_.size() - 1;
   const std::int32_t* prow = prow_.data();
   auto weight = [&](std::size_t i) { return std::int64_t(prow[i]) + kRowWeight * std::int64_t(i); };
   const std::int64_t total = weight(n);
-  auto split = [&](int s) -> std::size_t {
-    if (s <= 0) return 0;
-    if (s >= nthreads) return n;
+  row_split_.assign(static_cast<std::size_t>(nthreads) + 1, n);
+  row_split_[0] = 0;
+  for (int s = 1; s < nthreads; ++s) {
     const std::int64_t target = total * s / nthreads;
     std::size_t lo = 0, hi = n;  // the first i with weight(i) >= target
     while (lo < hi) {
@@ -625,9 +640,14 @@ std::array<std::size_t, 2> ContactSystem::row_range(int t, int nthreads) const {
       if (weight(mid) < target) lo = mid + 1;
       else hi = mid;
     }
-    return lo;
-  };
-  return {split(t), split(t + 1)};
+    row_split_[static_cast<std::size_t>(s)] = lo;
+  }
+  // A particle with a pair in an earlier thread's rows has its sum made from the results.
+  spanning_.assign(n, 0);
+  for (int t = 0; t < nthreads; ++t)
+    for (std::size_t i = row_split_[t]; i < row_split_[t + 1]; ++i)
+      spanning_[i] = static_cast<std::size_t>(jmin_[i]) < row_split_[t];
+  partition_version_ = list_version_;
 }
 
 void ContactSystem::add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const {

@@ -93,11 +93,15 @@ class ContactSystem {
     Vec3 torque_arm;  // ft x n, N
   };
   /// The results' per-particle sums, as raw pointers that a hot loop keeps in registers
-  /// (valid until the lists change).
+  /// (valid until the lists change). The evaluation sums each particle's pair results in
+  /// pair order; a particle whose pairs were evaluated by two threads ('spanning') gets the
+  /// same sum, in the same order, from the per-pair results here, so the sums do not depend
+  /// on the threads.
   struct Sums {
     const Result* pres;
-    const Result* prsum;  // per particle: the sum over its row (the pairs where it is first)
-    const std::int32_t *jrow, *jent;
+    const Result* psum;               // per particle: the sum over its pairs, in pair order
+    const std::uint8_t* spanning;     // per particle: psum not made (pairs in two threads)
+    const std::int32_t *prow, *jrow, *jent;
     const Result* tres;
     const std::int32_t* trow;
     /// Adds the contact force and torque on particle i, of radius 'radius' (m), summed over
@@ -105,11 +109,23 @@ class ContactSystem {
     /// that do not touch are zero (a branch on the touch flag or on the side mispredicts
     /// often and costs more than the sums).
     void add(std::size_t i, double radius, Vec3& force, Vec3& torque) const {
-      Vec3 f = prsum[i].force, arm = prsum[i].torque_arm;  // i is the pairs' first particle
-      for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e) {  // i is the second
-        const Result& r = pres[jent[e]];
-        f -= r.force;
-        arm += r.torque_arm;
+      Vec3 f, arm;
+      if (!spanning[i]) {
+        f = psum[i].force;
+        arm = psum[i].torque_arm;
+      } else {
+        // Pair order: the pairs where i is second come first (their first particle is lower).
+        f = Vec3::Zero();
+        arm = Vec3::Zero();
+        for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e) {
+          const Result& r = pres[jent[e]];
+          f -= r.force;
+          arm += r.torque_arm;
+        }
+        for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) {
+          f += pres[k].force;
+          arm += pres[k].torque_arm;
+        }
       }
       for (std::int32_t k = trow[i], end = trow[i + 1]; k < end; ++k) {  // triangle contacts, by particle
         f += tres[k].force;
@@ -157,7 +173,7 @@ class ContactSystem {
     Vec3 history = Vec3::Zero();
     double K = 0, D = 0, kt0 = 0;
   };
-  std::array<std::size_t, 2> row_range(int t, int nthreads) const;  // the rows (particles) thread t evaluates
+  void partition(int nthreads);  // row_split_, spanning_ for the lists and the number of threads
   void fill_constants(const Particles& p);
   void build(const Particles& p, const Rods& rods);
   void finish_build(const Particles& p);  // constants, per-particle rows, scratch arrays
@@ -179,7 +195,15 @@ class ContactSystem {
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
   std::vector<Result> pres_, tres_;
-  std::vector<Result> prsum_;  // per particle: the sum of its row's results (pairs where it is first)
+  std::vector<Result> psum_;  // per particle: the sum of its pairs' results (see Sums)
+  // The pair loop's partition: thread t evaluates the rows (first particles) row_split_[t] to
+  // row_split_[t + 1] - 1; spanning_: 1 for a particle with pairs in two threads' rows;
+  // jmin_: the lowest first particle of a particle's pairs (itself if none). Made again when
+  // the lists (list_version_) or the number of threads change.
+  std::vector<std::size_t> row_split_;
+  std::vector<std::uint8_t> spanning_;
+  std::vector<std::int32_t> jmin_;
+  std::uint64_t list_version_ = 0, partition_version_ = ~std::uint64_t{0};
   std::vector<Vec3> ph_, th_;               // trial histories, m
   std::vector<double> pe_, te_;             // elastic energy, J
   // 1 if the contact touched in the last evaluation; after a build, 1 for a carried history

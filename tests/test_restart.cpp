@@ -103,50 +103,7 @@ TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
 // gas (216 spheres with pseudo-random velocities) in a box of triangle walls, with friction.
 TEST(Restart, ExplicitGranularGasContinuesBitIdentically) {
   test::TempDir dir("restart_gas");
-  std::string particles;
-  std::uint64_t state = 12345;
-  auto uniform = [&] {  // a fixed linear congruential sequence in [-0.5, 0.5)
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(state >> 11) / double(1ULL << 53) - 0.5;
-  };
-  int id = 0;
-  for (int z = 0; z < 6; ++z)
-    for (int y = 0; y < 6; ++y)
-      for (int x = 0; x < 6; ++x)
-        particles += fmt::format("{} {} {} {} {} {} {}\n", ++id, 0.55e-3 + 1.05e-3 * x, 0.55e-3 + 1.05e-3 * y,
-                                 0.55e-3 + 1.05e-3 * z, uniform(), uniform(), uniform());
-  test::write_file(dir / "p.txt", particles);
-  std::string walls;
-  const char* planes[6][4] = {{"xmin", "[0, 0, 0]", "[0, 7e-3, 0]", "[0, 0, 7e-3]"},
-                              {"xmax", "[7e-3, 0, 0]", "[0, 7e-3, 0]", "[0, 0, 7e-3]"},
-                              {"ymin", "[0, 0, 0]", "[7e-3, 0, 0]", "[0, 0, 7e-3]"},
-                              {"ymax", "[0, 7e-3, 0]", "[7e-3, 0, 0]", "[0, 0, 7e-3]"},
-                              {"zmin", "[0, 0, 0]", "[7e-3, 0, 0]", "[0, 7e-3, 0]"},
-                              {"zmax", "[0, 0, 7e-3]", "[7e-3, 0, 0]", "[0, 7e-3, 0]"}};
-  for (const auto& w : planes)
-    walls += fmt::format("[[mesh]]\nname = \"{}\"\norigin = {}\nedge1 = {}\nedge2 = {}\nyoungs_modulus = 1e7\n", w[0], w[1],
-                         w[2], w[3]);
-  test::write_file(dir / "gas.toml", std::string(R"([material]
-density = 2500.0
-[particles]
-file = "p.txt"
-radius = 0.5e-3
-[contact]
-youngs_modulus = 1e7
-restitution = 0.5
-friction = 0.5
-tangential_damping = 1.0
-[environment]
-gravity = [0.0, 0.0, -9.81]
-[integrator]
-scheme = "verlet"
-dt = 1e-6
-end_time = 3e-3
-[output]
-vtk = false
-plots = false
-series_interval = 5e-5
-)") + walls);
+  test::write_file(dir / "gas.toml", test::granular_gas_case(dir));
   const std::string bin = SWARF_BINARY;
   auto a = run_and_keep_checkpoint(dir, "gas.toml", 1000, 2);
   ASSERT_EQ(a.exit_code, 0) << a.output;
