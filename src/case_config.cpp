@@ -670,6 +670,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     o.progress = r.boolean("progress", o.progress);
     o.steady_from = r.number("steady_from", o.steady_from, non_negative);
     o.checkpoint_every = r.integer("checkpoint_every", static_cast<int>(o.checkpoint_every), 0, 1000000000);
+    o.orientations = r.boolean("orientations", o.orientations);
     r.finish();
   }
   if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))

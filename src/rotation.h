@@ -83,14 +83,15 @@ RotStepResult rotation_step(const RotState& s, const Vec3& torque_world, const V
 
 /// The same update for a body with isotropic inertia I = 1/inv_I (a sphere), in the WORLD frame:
 /// there dw/dt = l/I holds in any frame, so no inner loop is needed. w and dw are world-frame;
-/// the orientation turns by the mean rate over the step (second order).
+/// the orientation turns by the mean rate over the step (second order). 'turn' false leaves q
+/// as it is: nothing in a sphere's dynamics depends on its orientation.
 inline void sphere_rotation_step(Quat& q, Vec3& w, Vec3& dw, const Vec3& torque_world, double inv_I, double h,
-                                 double gamma) {
+                                 double gamma, bool turn = true) {
   const Vec3 dw_new = inv_I * torque_world;
   const Vec3 w_new = w + h * ((1.0 - gamma) * dw + gamma * dw_new);
   const Vec3 mid = 0.5 * (w + w_new);
   const double t2 = 0.25 * h * h * mid.squaredNorm();  // (half the turn angle)^2
-  if (t2 > 0.0) {
+  if (turn && t2 > 0.0) {
     double c, s_over_rate;  // cos(half), sin(half)/|mid|
     if (t2 < 1e-4) {
       // Small turns (the usual case) by their Taylor series, no division or root: the

@@ -325,7 +325,7 @@ void run_case(const RunOptions& opt) {
   };
 
   std::unique_ptr<VtkSeries> vtk;
-  if (settings.output.vtk) vtk = std::make_unique<VtkSeries>(dir, settings.output.rods_in_vtk);
+  if (settings.output.vtk) vtk = std::make_unique<VtkSeries>(dir, settings.output.rods_in_vtk, settings.output.orientations);
   if (vtk) vtk->set_periodic(model.periodic);
   series = std::make_unique<SeriesWriter>(dir + "/series.csv", cols);
   if (restarting) {

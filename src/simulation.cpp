@@ -251,7 +251,7 @@ void Simulation::rotate_one(std::size_t i, double h, double beta, double gamma) 
   if (p.inv_inertia[i] > 0.0) {  // isotropic inertia: a sphere
     Quat q = s.q;
     Vec3 w = s.w, dw = s.dw;
-    sphere_rotation_step(q, w, dw, p.torque[i], p.inv_inertia[i], h, gamma);
+    sphere_rotation_step(q, w, dw, p.torque[i], p.inv_inertia[i], h, gamma, m_.settings.output.orientations);
     p.orientation[i] = q;
     p.omega[i] = w;
     p.omega_dot[i] = dw;
@@ -448,6 +448,7 @@ double Simulation::gather_impl(double h) {
   Vec3* contact_force = contact_force_.data();
   const ContactSystem::Sums sums = contacts ? contacts_.sums() : ContactSystem::Sums{};
   [[maybe_unused]] const double half = 0.5 * h;
+  const bool turn_spheres = m_.settings.output.orientations;
   // One block of particles; dmax_, fmax_, damax_ are the calling thread's reduction copies.
   // (Contacts: a compile-time switch, so that the rods-only loop keeps its registers.)
   auto block = [&]<bool Contacts>(std::size_t b, double& dmax_, double& fmax_, double& damax_) {
@@ -500,7 +501,7 @@ double Simulation::gather_impl(double h) {
         }
         if (rot && free_to_rotate[i]) {
           if (inv_inertia[i] > 0.0)
-            sphere_rotation_step(orient[i], omega[i], omega_dot[i], torque[i], inv_inertia[i], h, 0.5);
+            sphere_rotation_step(orient[i], omega[i], omega_dot[i], torque[i], inv_inertia[i], h, 0.5, turn_spheres);
           else
             rotate_one(i, h, 0.0, 0.5);
         }

@@ -93,6 +93,10 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     f.write("/particles/radius", p.radius.data(), n);
     f.write("/particles/mass", p.mass.data(), n);
     f.write("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n);
+    if (sim.model().settings.output.orientations) {
+      f.write("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4);
+      f.write("/particles/angular_velocity", n ? p.omega[0].data() : nullptr, n, 3);
+    }
     std::vector<std::int64_t> pairs(2 * m), group(n);
     for (std::size_t b = 0; b < m; ++b) {
       pairs[2 * b] = r.ends[b][0];

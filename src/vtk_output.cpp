@@ -110,7 +110,8 @@ std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods&
   return out;
 }
 
-VtkSeries::VtkSeries(const std::string& dir, bool with_rods) : dir_(dir), with_rods_(with_rods) {
+VtkSeries::VtkSeries(const std::string& dir, bool with_rods, bool with_orientations)
+    : dir_(dir), with_rods_(with_rods), with_orientations_(with_orientations) {
   std::filesystem::create_directories(std::filesystem::path(dir) / "frames");
 }
 
@@ -136,6 +137,15 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     grid->GetPointData()->AddArray(vector_array("displacement", disp));
     grid->GetPointData()->AddArray(scalar_array("radius", p.radius));
     grid->GetPointData()->AddArray(scalar_array("broken_fraction", broken_fraction_per_particle(p, r)));
+    if (with_orientations_) {
+      vtkNew<vtkDoubleArray> q;
+      q->SetName("orientation");
+      q->SetNumberOfComponents(4);
+      q->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
+      for (std::size_t i = 0; i < p.size(); ++i) q->SetTypedTuple(static_cast<vtkIdType>(i), p.orientation[i].data());
+      grid->GetPointData()->AddArray(q);
+      grid->GetPointData()->AddArray(vector_array("angular_velocity", p.omega));
+    }
     vtkNew<vtkIntArray> group;
     group->SetName("group");
     group->SetNumberOfValues(static_cast<vtkIdType>(p.size()));

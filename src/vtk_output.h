@@ -21,7 +21,8 @@ namespace swarf {
 
 class VtkSeries {
  public:
-  VtkSeries(const std::string& dir, bool with_rods);
+  /// 'with_orientations': the particles' orientations and angular velocities as point data.
+  VtkSeries(const std::string& dir, bool with_rods, bool with_orientations = false);
   /// Writes frame number 'frames()' at simulated time t (s): particles, rods and each mesh at
   /// its current placement (reference vertices + offset).
   void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {});
@@ -39,6 +40,7 @@ class VtkSeries {
   void write_pvd() const;
   std::string dir_;
   bool with_rods_;
+  bool with_orientations_;
   std::vector<double> times_;
   std::vector<std::string> mesh_names_;
   std::vector<std::pair<std::string, std::string>> final_parts_;

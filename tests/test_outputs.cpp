@@ -102,6 +102,46 @@ TEST(Outputs, ShortUniaxialRunWritesEverything) {
   EXPECT_TRUE(std::filesystem::exists(dir / "out/energy.png"));
 }
 
+// output.orientations: the spheres' orientations (unit quaternions) and angular velocities go
+// to results.h5 and the ParaView frames; without it neither is written (and the orientations
+// are not integrated). A granular gas with friction, whose collisions spin the spheres.
+TEST(Outputs, OrientationsAndAngularVelocitiesWhenAskedFor) {
+  test::TempDir dir("orient");
+  test::write_file(dir / "gas.toml", test::granular_gas_case(dir));
+  for (const bool on : {true, false}) {
+    const std::string out = dir / (on ? "on" : "off");
+    const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "gas.toml") + " --out " + out +
+                                     " --set integrator.end_time=5e-4 --set output.vtk=true --set output.orientations=" +
+                                     (on ? "true" : "false"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    H5File h5(out + "/results.h5", H5File::Mode::Read);
+    EXPECT_EQ(h5.has("/particles/orientation"), on);
+    EXPECT_EQ(h5.has("/particles/angular_velocity"), on);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((out + "/frames/particles_00001.vtu").c_str());
+    reader->Update();
+    vtkDataArray* q = reader->GetOutput()->GetPointData()->GetArray("orientation");
+    vtkDataArray* w = reader->GetOutput()->GetPointData()->GetArray("angular_velocity");
+    EXPECT_EQ(q != nullptr, on);
+    EXPECT_EQ(w != nullptr, on);
+    if (!on) continue;
+    std::size_t n = 0, c = 0;
+    const auto qs = h5.read_doubles("/particles/orientation", n, c);
+    ASSERT_EQ(n, 216u);
+    ASSERT_EQ(c, 4u);
+    ASSERT_EQ(q->GetNumberOfComponents(), 4);
+    double turned = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double norm2 = qs[4 * i] * qs[4 * i] + qs[4 * i + 1] * qs[4 * i + 1] + qs[4 * i + 2] * qs[4 * i + 2] +
+                           qs[4 * i + 3] * qs[4 * i + 3];
+      EXPECT_NEAR(norm2, 1.0, 1e-12);  // unit quaternions (rescaled every step)
+      turned = std::max(turned, 1.0 - std::abs(qs[4 * i]));
+      EXPECT_EQ(q->GetComponent(static_cast<vtkIdType>(i), 0), qs[4 * i]);  // the frame holds the same state
+    }
+    EXPECT_GT(turned, 0.0) << "friction turned some spheres";
+  }
+}
+
 TEST(Outputs, BlowUpStopsWithMessageAndNoCompleteLookingFiles) {
   test::TempDir dir("blowup");
   // Three times the stable step, forced: the lattice explodes within a few steps.
