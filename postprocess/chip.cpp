@@ -8,6 +8,7 @@ namespace swarf {
 
 namespace {
 constexpr double kDeg = M_PI / 180.0;
+}  // namespace
 
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
@@ -16,7 +17,6 @@ double quantile(std::vector<double> v, double q) {
   const double f = pos - double(k);
   return k + 1 < v.size() ? v[k] * (1 - f) + v[k + 1] * f : v[k];
 }
-}  // namespace
 
 double shear_angle_deg(double r, double alpha_deg) {
   const double a = alpha_deg * kDeg;
@@ -39,7 +39,8 @@ ChipMetrics measure_chip(const ChipInput& in) {
     ++m.chip_particles;
     m.members.push_back(i);
     const Vec3 rel = x - in.tool_tip;
-    if (rel.dot(up) < 2.0 * in.depth_of_cut) continue;  // still in the edge region
+    const double along = rel.dot(up);
+    if (along < 2.0 * in.depth_of_cut || along >= 3.0 * in.depth_of_cut) continue;  // edge region, or curled away
     dist.push_back(rel.dot(normal));
   }
   m.measured_particles = dist.size();

@@ -1,12 +1,18 @@
 // cut_report.cpp: the end-of-cut analysis and table (see cut_report.h).
 #include "postprocess/cut_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
 #include "h5file.h"
 
 namespace swarf {
+namespace {
+
+constexpr std::size_t kMinThicknessRows = 5;
+
+}  // namespace
 
 CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   CutResult out;
@@ -48,6 +54,10 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   ci.depth_of_cut = s.uncut_surface_z - s.tool_tip[2];
   out.metrics = measure_chip(ci);
   const ChipMetrics& cm = out.metrics;
+  // h_c over the steady part: the median of the rows' measurements.
+  std::vector<double> steady_hc;
+  for (std::size_t k = 0; k < d.chip_thickness.size() && k < d.time.size(); ++k)
+    if (d.time[k] >= s.steady_from && d.chip_thickness[k] > 0) steady_hc.push_back(d.chip_thickness[k]);
   const double beta = friction_angle_deg(fc, ft, s.rake_angle_deg);
   double chip_broken = 0.0;
   for (auto i : cm.members) chip_broken += i < d.broken_fraction.size() ? d.broken_fraction[i] : 0.0;
@@ -61,12 +71,25 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
               {"merchant_shear_angle_deg", merchant_shear_angle_deg(s.rake_angle_deg, beta)},
               {"chip_broken_fraction_mean", cm.members.empty() ? 0.0 : chip_broken / double(cm.members.size())},
               {"damaged_particle_fraction", d.broken_fraction.empty() ? 0.0 : double(damaged) / double(d.broken_fraction.size())}};
-  if (cm.thickness > 0) {
-    out.chip["thickness_m"] = cm.thickness;
-    out.chip["compression_ratio"] = cm.compression_ratio;
-    out.chip["shear_angle_deg"] = cm.shear_angle_deg;
+  if (cm.thickness > 0) out.chip["thickness_final_m"] = cm.thickness;
+  double hc = 0.0;
+  if (steady_hc.size() >= kMinThicknessRows) {
+    hc = quantile(steady_hc, 0.5);
+    out.chip["thickness_p10_m"] = quantile(steady_hc, 0.1);
+    out.chip["thickness_p90_m"] = quantile(steady_hc, 0.9);
+    out.chip["thickness_rows"] = steady_hc.size();
+  } else if (d.chip_thickness.empty() && cm.thickness > 0) {
+    hc = cm.thickness;  // a run of an earlier version: no per-row thickness, the last state's
+    out.chip["thickness_note"] = "series.csv has no chip_thickness column: h_c is the last state's";
+  }
+  if (hc > 0) {
+    out.chip["thickness_m"] = hc;
+    out.chip["compression_ratio"] = ci.depth_of_cut / hc;
+    out.chip["shear_angle_deg"] = shear_angle_deg(ci.depth_of_cut / hc, s.rake_angle_deg);
   } else {
-    out.chip["note"] = "too few chip particles beyond the edge region to measure the thickness";
+    out.chip["note"] = fmt::format("chip thickness not measured: {} steady rows measured it (at least {} needed; "
+                                   "a row needs 10 chip particles beyond the edge region)",
+                                   steady_hc.size(), kMinThicknessRows);
   }
   return out;
 }
@@ -83,7 +106,11 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
                    num(cutting, "thrust_force_per_width_std_N_per_m") / 1e3);
   t += fmt::format("  depth of cut h                  {:>10.4g} mm\n", num(chip, "depth_of_cut_m") * 1e3);
   if (chip.contains("thickness_m")) {
-    t += fmt::format("  chip thickness h_c              {:>10.4g} mm\n", num(chip, "thickness_m") * 1e3);
+    t += fmt::format("  chip thickness h_c              {:>10.4g} mm", num(chip, "thickness_m") * 1e3);
+    if (chip.contains("thickness_p10_m"))
+      t += fmt::format(" (median of {} rows; 10-90 %: {:.3g} to {:.3g})", chip.value("thickness_rows", 0),
+                       num(chip, "thickness_p10_m") * 1e3, num(chip, "thickness_p90_m") * 1e3);
+    t += "\n";
     t += fmt::format("  compression ratio r = h/h_c     {:>10.3f}\n", num(chip, "compression_ratio"));
     t += fmt::format("  shear angle phi (from r)        {:>10.1f} deg\n", num(chip, "shear_angle_deg"));
   } else {

@@ -2,6 +2,12 @@
 // the run's files): the steady-part statistics of the cutting and thrust forces per unit
 // width, the chip metrics (chip.h), the broken-rod fraction overall and in the chip, and the
 // short result table printed for the user.
+//
+// The chip thickness is measured at every series row (column chip_thickness); the summary's
+// h_c is the median over the steady part's rows, with its 10th and 90th percentiles: a
+// segmented chip that curls and breaks changes its thickness from row to row, and one state
+// (the last) was a sample of that noise, which changed by tens of % with rounding-level
+// changes of the run.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -30,6 +36,8 @@ struct CutSetup {
 /// The run's data the analysis reads.
 struct CutData {
   std::vector<double> time, fc, ft;        ///< series rows: s, N/m, N/m
+  std::vector<double> chip_thickness;      ///< series rows: the chip's thickness then (measure_chip), m; 0 = not measured;
+                                           ///< empty for runs of earlier versions (then the last state's is used)
   std::vector<Vec3> position;              ///< workpiece particle centres at the end, m
   std::vector<double> broken_fraction;     ///< per workpiece particle: broken rods / rods, 1
   double broken_rod_fraction = 0;          ///< broken rods / all rods, 1

@@ -21,7 +21,8 @@ def read_series(path):
 
 
 def plot_cut(run, summary, s):
-    """Cutting and thrust force per width and the broken-rod fraction against tool travel."""
+    """Cutting and thrust force per width, the broken-rod fraction and the chip thickness
+    against tool travel."""
     travel = [v * 1e3 for v in s["tool_travel"]]
     cut = summary.get("cutting", {})
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6.5), dpi=120, sharex=True,
@@ -31,6 +32,7 @@ def plot_cut(run, summary, s):
     ax.plot(travel, [v / 1e3 for v in s["thrust_force_per_width"]], lw=0.8, color="C3",
             label="thrust force Ft/w (away from the workpiece)")
     steady = cut.get("steady_from_s")
+    x0 = None
     if steady is not None:
         # travel at the start of the steady window (first row at or after steady_from)
         x0 = next((x for x, t in zip(travel, s["time"]) if t >= steady), None)
@@ -43,8 +45,19 @@ def plot_cut(run, summary, s):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")
     ax.set_title("Cutting forces on the tool (%s)" % os.path.basename(os.path.normpath(run)))
-    bx.plot(travel, [100 * v for v in s["broken_fraction"]], color="k", lw=1.2)
+    bx.plot(travel, [100 * v for v in s["broken_fraction"]], color="k", lw=1.2, label="broken rods")
     bx.set_ylabel("broken rods [%]")
+    if "chip_thickness" in s:  # per row, 0 = not measured yet
+        cx = bx.twinx()
+        pts = [(x, v * 1e3) for x, v in zip(travel, s["chip_thickness"]) if v > 0]
+        if pts:
+            cx.plot([p[0] for p in pts], [p[1] for p in pts], color="C2", lw=0.8, label="chip thickness h_c")
+        chip = summary.get("chip", {})
+        if "thickness_m" in chip and steady is not None and x0 is not None:
+            cx.hlines(chip["thickness_m"] * 1e3, x0, travel[-1], colors="C2", linestyles="--", lw=1.5,
+                      label="h_c, median of the steady part")
+        cx.set_ylabel("chip thickness [mm]", color="C2")
+        cx.legend(fontsize=8, loc="upper left")
     bx.set_xlabel("tool travel [mm]")
     bx.grid(alpha=0.3)
     fig.tight_layout()

@@ -17,6 +17,18 @@
 namespace swarf {
 namespace {
 
+// True if series.csv's header names the column.
+bool has_column(const std::string& path, const std::string& name) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream ss(line);
+  std::string h;
+  while (std::getline(ss, h, ','))
+    if (h == name) return true;
+  return false;
+}
+
 // Columns of series.csv by name.
 std::vector<std::vector<double>> read_columns(const std::string& path, const std::vector<std::string>& names) {
   std::ifstream in(path);
@@ -143,6 +155,8 @@ void post_run(const std::string& dir) {
   data.time = cols[0];
   data.fc = cols[1];
   data.ft = cols[2];
+  if (has_column(dir + "/series.csv", "chip_thickness"))
+    data.chip_thickness = read_columns(dir + "/series.csv", {"chip_thickness"})[0];
   std::size_t r = 0, c = 0;
   const auto x = f.read_doubles("/particles/position", r, c);
   const auto bf = f.read_doubles("/particles/broken_fraction", r, c);

@@ -261,7 +261,19 @@ void run_case(const RunOptions& opt) {
   CutSetup cut;
   const bool cutting = cut_setup(model, cut);
   const int tool_mesh = cutting ? mesh_index(model, cut.tool_mesh) : -1;
-  if (cutting) cols.insert(cols.end(), {"tool_travel", "cutting_force_per_width", "thrust_force_per_width"});
+  if (cutting)
+    cols.insert(cols.end(), {"tool_travel", "cutting_force_per_width", "thrust_force_per_width", "chip_thickness"});
+  // The chip's thickness at a row (m; 0 when fewer than 10 chip particles have left the edge region).
+  auto chip_thickness_now = [&]() {
+    ChipInput ci;
+    ci.position.assign(model.particles.position.begin(), model.particles.position.begin() + cut.lattice_particles);
+    ci.radius = cut.radius;
+    ci.uncut_surface_z = cut.uncut_surface_z;
+    ci.tool_tip = cut.tool_tip + model.meshes[tool_mesh].offset;  // (cut.tool_tip: the tip at the start)
+    ci.rake_angle_deg = cut.rake_angle_deg;
+    ci.depth_of_cut = cut.uncut_surface_z - ci.tool_tip[2];
+    return measure_chip(ci).thickness;
+  };
   rec.columns = cols.size();
 
   BarPrediction prediction(model.derived.law, model.derived.bar_stress_factor);
@@ -319,6 +331,7 @@ void run_case(const RunOptions& opt) {
       row.push_back(model.meshes[tool_mesh].offset[0]);
       row.push_back(-f[0] / cut.width);
       row.push_back(f[2] / cut.width);
+      row.push_back(chip_thickness_now());
     }
     series->row(row);
     rec.rows.insert(rec.rows.end(), row.begin(), row.end());
@@ -453,8 +466,9 @@ void run_case(const RunOptions& opt) {
     const std::size_t cc = rec.columns;
     for (std::size_t r = 0; r * cc < rec.rows.size(); ++r) {
       data.time.push_back(rec.rows[r * cc]);
-      data.fc.push_back(rec.rows[r * cc + cc - 2]);
-      data.ft.push_back(rec.rows[r * cc + cc - 1]);
+      data.fc.push_back(rec.rows[r * cc + cc - 3]);
+      data.ft.push_back(rec.rows[r * cc + cc - 2]);
+      data.chip_thickness.push_back(rec.rows[r * cc + cc - 1]);
     }
     const auto bf = broken_fraction_per_particle(model.particles, model.rods);
     data.position.assign(model.particles.position.begin(), model.particles.position.begin() + cut.lattice_particles);

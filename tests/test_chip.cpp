@@ -1,29 +1,39 @@
-// test_chip.cpp: chip metrics on a synthetic particle set with a known chip, and the
-// shear-angle, friction-angle and Merchant relations against hand-worked values.
+// test_chip.cpp: chip metrics on a synthetic particle set with a known chip, the
+// shear-angle, friction-angle and Merchant relations against hand-worked values, and the
+// cut report's h_c as the median of the steady part's rows.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "postprocess/chip.h"
+#include "postprocess/cut_report.h"
 
 namespace swarf {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
+// A cut with the uncut surface at z = 0 and the tool's tip at (0, 0, -h), no particles yet.
+ChipInput cut_of(double radius, double h, double rake_deg) {
+  ChipInput in;
+  in.radius = radius;
+  in.uncut_surface_z = 0.0;
+  in.tool_tip = Vec3(0, 0, -h);
+  in.rake_angle_deg = rake_deg;
+  in.depth_of_cut = h;
+  return in;
+}
+// Up the rake face, and its normal into the chip.
+Vec3 face_up(double rake_deg) { return Vec3(-std::sin(rake_deg * kDeg), 0, std::cos(rake_deg * kDeg)); }
+Vec3 face_normal(double rake_deg) { return Vec3(std::cos(rake_deg * kDeg), 0, std::sin(rake_deg * kDeg)); }
+
 TEST(Chip, SyntheticChipOfKnownThickness) {
   // Workpiece below z = 0 (not chip), and a chip: a slab of thickness hc lying on a rake face
   // of 10 deg through the tip (0, 0, -h), filled with a square grid of particle centres a
   // radius inside both free surfaces.
   const double R = 1e-5, h = 2e-4, hc = 5e-4, alpha = 10.0;
-  ChipInput in;
-  in.radius = R;
-  in.uncut_surface_z = 0.0;
-  in.tool_tip = Vec3(0, 0, -h);
-  in.rake_angle_deg = alpha;
-  in.depth_of_cut = h;
-  const double a = alpha * kDeg;
-  const Vec3 up(-std::sin(a), 0, std::cos(a)), normal(std::cos(a), 0, std::sin(a));
+  ChipInput in = cut_of(R, h, alpha);
+  const Vec3 up = face_up(alpha), normal = face_normal(alpha);
   for (double x = -2e-3; x < 0; x += 2 * R)
     for (double z = -1e-3; z < -h; z += 2 * R) in.position.emplace_back(x, 0, z);  // workpiece, stays
   for (double s = 0; s < 3e-3; s += 2 * R)
@@ -35,6 +45,30 @@ TEST(Chip, SyntheticChipOfKnownThickness) {
   EXPECT_NEAR(m.thickness, hc, 0.05 * hc);
   EXPECT_NEAR(m.compression_ratio, h / m.thickness, 1e-15);
   EXPECT_NEAR(m.shear_angle_deg, shear_angle_deg(h / m.thickness, alpha), 1e-12);
+}
+
+TEST(Chip, ACurledChipIsMeasuredWhereItLiesOnTheFace) {
+  // The same slab on the face up to 3 h from the tip, then curling away through 90 degrees
+  // (its centre line on a circle of radius 1 mm leaving the face): only the section on the
+  // face counts, so the thickness is the slab's, not the slab's plus the curl's lift (1 mm at
+  // the end: the old measure over the whole chip beyond 2 h gave about 1.5 mm).
+  const double R = 1e-5, h = 2e-4, hc = 5e-4, alpha = 10.0, rc = 1e-3;
+  ChipInput in = cut_of(R, h, alpha);
+  const Vec3 up = face_up(alpha), normal = face_normal(alpha);
+  const double flat = 3 * h;
+  for (double s = 0; s < flat + rc * M_PI / 2; s += R)
+    for (double t = R; t <= hc - R + 1e-12; t += (hc - 2 * R) / 20) {
+      if (s < flat) {
+        in.position.push_back(in.tool_tip + s * up + t * normal);
+      } else {  // bent about a centre at distance rc + hc/2 from the face, on the chip's side
+        const double phi = (s - flat) / rc, rad = rc + hc / 2 - t;
+        const Vec3 centre = in.tool_tip + flat * up + (rc + hc / 2) * normal;
+        in.position.push_back(centre + rad * (std::sin(phi) * up - std::cos(phi) * normal));
+      }
+    }
+  const ChipMetrics m = measure_chip(in);
+  EXPECT_GT(m.measured_particles, 100u);
+  EXPECT_NEAR(m.thickness, hc, 0.05 * hc);  // as the straight slab (see above)
 }
 
 TEST(Chip, AnglesAgainstHandWorkedValues) {
@@ -57,6 +91,37 @@ TEST(Chip, TooFewParticlesGivesNoThickness) {
   const ChipMetrics m = measure_chip(in);
   EXPECT_EQ(m.chip_particles, 2u);
   EXPECT_EQ(m.thickness, 0.0);
+}
+
+// The report's h_c is the median of the steady rows that measured the chip (0 = not
+// measured), with the 10th and 90th percentiles; r and phi follow from it. Values hand-worked:
+// steady rows hold 5 1 4 2 3 0 9 7 6 (x 1e-4 m), the row before steady_from 50e-4 (ignored):
+// sorted 1 2 3 4 5 6 7 9, median (4 + 5)/2 = 4.5, 10 % at position 0.7: 1.7, 90 % at 6.3: 7.6.
+TEST(CutReport, ChipThicknessIsTheMedianOfTheSteadyRows) {
+  CutSetup s;
+  s.steady_from = 1.0;
+  s.rake_angle_deg = 10.0;
+  s.uncut_surface_z = 0.0;
+  s.tool_tip = Vec3(0, 0, -2e-4);  // h = 0.2 mm
+  s.radius = 1e-5;
+  CutData d;
+  d.time = {0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  d.fc.assign(d.time.size(), 1.0);
+  d.ft.assign(d.time.size(), 0.0);
+  for (double v : {50.0, 5.0, 1.0, 4.0, 2.0, 3.0, 0.0, 9.0, 7.0, 6.0}) d.chip_thickness.push_back(v * 1e-4);
+  const CutResult r = analyze_cut(s, d);
+  EXPECT_NEAR(r.chip["thickness_m"].get<double>(), 4.5e-4, 1e-16);
+  EXPECT_NEAR(r.chip["thickness_p10_m"].get<double>(), 1.7e-4, 1e-16);
+  EXPECT_NEAR(r.chip["thickness_p90_m"].get<double>(), 7.6e-4, 1e-16);
+  EXPECT_EQ(r.chip["thickness_rows"].get<int>(), 8);
+  EXPECT_NEAR(r.chip["compression_ratio"].get<double>(), 2e-4 / 4.5e-4, 1e-15);
+  EXPECT_NEAR(r.chip["shear_angle_deg"].get<double>(), shear_angle_deg(2e-4 / 4.5e-4, 10.0), 1e-12);
+  EXPECT_FALSE(r.chip.contains("thickness_final_m"));  // no particles at the end: nothing to measure
+  // Fewer than 5 measured steady rows: no h_c, and a note that says why.
+  d.chip_thickness = {50e-4, 5e-4, 0, 0, 0, 0, 0, 9e-4, 7e-4, 6e-4};
+  const CutResult few = analyze_cut(s, d);
+  EXPECT_FALSE(few.chip.contains("thickness_m"));
+  EXPECT_NE(few.chip["note"].get<std::string>().find("4 steady rows"), std::string::npos) << few.chip.dump();
 }
 
 }  // namespace

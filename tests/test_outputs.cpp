@@ -256,8 +256,9 @@ series_interval = 1e-6
   const auto col = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
   };
-  const std::size_t ct = col("time"), cf = col("cutting_force_per_width");
+  const std::size_t ct = col("time"), cf = col("cutting_force_per_width"), ch = col("chip_thickness");
   ASSERT_LT(cf, head.size());
+  ASSERT_LT(ch, head.size()) << "cutting runs record the chip thickness per row";
   double s = 0;
   int n = 0;
   while (std::getline(csv, line)) {
@@ -265,6 +266,7 @@ series_interval = 1e-6
     std::istringstream ls(line);
     std::string x;
     while (std::getline(ls, x, ',')) v.push_back(std::stod(x));
+    EXPECT_GE(v[ch], 0.0);  // m; 0 = not measured (the chip has not left the edge region)
     if (v[ct] >= 2e-5) {
       s += v[cf];
       ++n;
