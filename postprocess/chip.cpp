@@ -32,6 +32,7 @@ ChipMetrics measure_chip(const ChipInput& in) {
   const double a = in.rake_angle_deg * kDeg;
   // Rake face through the tip: direction up the face and the outward normal (into the chip).
   const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  const double section_end = std::min(3.0 * in.depth_of_cut, in.face_length);
   std::vector<double> dist;
   for (std::size_t i = 0; i < in.position.size(); ++i) {
     const Vec3& x = in.position[i];
@@ -40,7 +41,7 @@ ChipMetrics measure_chip(const ChipInput& in) {
     m.members.push_back(i);
     const Vec3 rel = x - in.tool_tip;
     const double along = rel.dot(up);
-    if (along < 2.0 * in.depth_of_cut || along >= 3.0 * in.depth_of_cut) continue;  // edge region, or curled away
+    if (along < 2.0 * in.depth_of_cut || along >= section_end) continue;  // edge region, or curled away
     dist.push_back(rel.dot(normal));
   }
   m.measured_particles = dist.size();

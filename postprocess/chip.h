@@ -6,8 +6,8 @@
 // Chip thickness h_c: the spread of the chip particles' distances from the rake-face plane,
 // between the 2nd and 98th percentiles (robust to stray fragments), plus one particle
 // diameter (the centres lie a radius inside each free surface), measured on a section of the
-// chip that lies on the face: from 2 to 3 depths of cut from the tip along the face (past the
-// edge region, before the chip curls away from the face; the chip beyond, lifted off the face
+// chip that lies on the face: from 2 to 3 depths of cut from the tip along the face, and not
+// past the face's end (past the edge region, before the chip curls away from the face; the chip beyond, lifted off the face
 // by its curl, made the spread grow with the length of the chip: 0.66 to 1.37 mm over the
 // second half of the default cut, against 0.65 to 0.79 mm in the section).
 // Then, with h the depth of cut (uncut chip thickness) and alpha the rake angle:
@@ -15,6 +15,7 @@
 //   friction angle beta = alpha + atan(Ft / Fc),  Merchant: phi_M = 45 deg + alpha/2 - beta/2.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "vec3.h"
@@ -28,6 +29,7 @@ struct ChipInput {
   Vec3 tool_tip = Vec3::Zero();   ///< sharp tip of the tool now, m (the tool cuts in +x, z up)
   double rake_angle_deg = 0;      ///< deg
   double depth_of_cut = 0;        ///< h = uncut_surface_z - tool tip z, m
+  double face_length = HUGE_VAL;  ///< the rake face's length from the tip, m: the measured section ends there
 };
 
 struct ChipMetrics {

@@ -52,6 +52,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   ci.tool_tip = s.tool_tip;
   ci.rake_angle_deg = s.rake_angle_deg;
   ci.depth_of_cut = s.uncut_surface_z - s.tool_tip[2];
+  ci.face_length = s.face_length;
   out.metrics = measure_chip(ci);
   const ChipMetrics& cm = out.metrics;
   // h_c over the steady part: the median of the rows' measurements.
@@ -128,7 +129,7 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
 void write_cut_setup(H5File& f, const CutSetup& s) {
   const std::vector<double> v{s.width,       s.steady_from,    s.tool_tip[0], s.tool_tip[1],
                               s.tool_tip[2], s.rake_angle_deg, s.uncut_surface_z, s.radius,
-                              double(s.lattice_particles)};
+                              double(s.lattice_particles), s.face_length};
   f.write("/cutting/setup", v.data(), v.size());
   f.write_attribute("cutting_tool_mesh", s.tool_mesh);
 }
@@ -137,7 +138,7 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
   if (!f.has("/cutting/setup")) return false;
   std::size_t r = 0, c = 0;
   const auto v = f.read_doubles("/cutting/setup", r, c);
-  if (v.size() != 9) return false;
+  if (v.size() != 9 && v.size() != 10) return false;  // (9: runs before the face length was stored)
   s.width = v[0];
   s.steady_from = v[1];
   s.tool_tip = Vec3(v[2], v[3], v[4]);
@@ -145,6 +146,7 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
   s.uncut_surface_z = v[6];
   s.radius = v[7];
   s.lattice_particles = static_cast<std::size_t>(v[8]);
+  s.face_length = v.size() > 9 ? v[9] : HUGE_VAL;
   s.tool_mesh = f.has_attribute("cutting_tool_mesh") ? f.read_string_attribute("cutting_tool_mesh") : "";
   return true;
 }

@@ -10,6 +10,7 @@
 // changes of the run.
 #pragma once
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ struct CutSetup {
   double uncut_surface_z = 0;     ///< highest initial workpiece centre, m
   double radius = 0;              ///< particle radius, m
   std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
+  double face_length = HUGE_VAL;  ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
 };
 
 /// The run's data the analysis reads.

@@ -183,6 +183,7 @@ bool cut_setup(const Model& model, CutSetup& cs) {
   cs.steady_from = settings.output.steady_from >= 0 ? settings.output.steady_from : 0.5 * settings.integrator.end_time;
   cs.tool_tip = Vec3(ms.origin[0], ms.origin[1], ms.origin[2]);
   cs.rake_angle_deg = ms.rake_angle;
+  cs.face_length = ms.face_length;
   cs.uncut_surface_z = top;
   cs.radius = model.derived.radius;
   cs.lattice_particles = model.lattice_particles;
@@ -272,6 +273,7 @@ void run_case(const RunOptions& opt) {
     ci.tool_tip = cut.tool_tip + model.meshes[tool_mesh].offset;  // (cut.tool_tip: the tip at the start)
     ci.rake_angle_deg = cut.rake_angle_deg;
     ci.depth_of_cut = cut.uncut_surface_z - ci.tool_tip[2];
+    ci.face_length = cut.face_length;
     return measure_chip(ci).thickness;
   };
   rec.columns = cols.size();

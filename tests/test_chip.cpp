@@ -69,6 +69,13 @@ TEST(Chip, ACurledChipIsMeasuredWhereItLiesOnTheFace) {
   const ChipMetrics m = measure_chip(in);
   EXPECT_GT(m.measured_particles, 100u);
   EXPECT_NEAR(m.thickness, hc, 0.05 * hc);  // as the straight slab (see above)
+  // The section ends at the face's end: half of it on a face 2.5 h long, none on one of 1.9 h.
+  in.face_length = 2.5 * h;
+  const ChipMetrics shorter = measure_chip(in);
+  EXPECT_NEAR(double(shorter.measured_particles), 0.5 * double(m.measured_particles), 0.05 * double(m.measured_particles));
+  EXPECT_NEAR(shorter.thickness, hc, 0.05 * hc);
+  in.face_length = 1.9 * h;
+  EXPECT_EQ(measure_chip(in).thickness, 0.0);
 }
 
 TEST(Chip, AnglesAgainstHandWorkedValues) {
