@@ -190,6 +190,35 @@ bool cut_setup(const Model& model, CutSetup& cs) {
   return true;
 }
 
+// A restart into another directory: the frames the checkpoint's run wrote before it (numbers
+// below 'frames') are copied from its frames/ into the new one, so that particles.pvd, which
+// lists them, is complete there. Frames that cannot be found are named in a warning.
+void carry_frames(const std::filesystem::path& from_dir, const std::string& to_dir, std::size_t frames) {
+  namespace fs = std::filesystem;
+  if (frames == 0) return;
+  const fs::path from = (from_dir.empty() ? fs::path(".") : from_dir) / "frames", to = fs::path(to_dir) / "frames";
+  fs::create_directories(to);
+  std::error_code ec;
+  if (fs::exists(from) && !fs::equivalent(from, to, ec)) {
+    for (const auto& e : fs::directory_iterator(from)) {
+      const std::string stem = e.path().stem().string();  // particles_00003, rods_00003, mesh_<name>_00003
+      const auto us = stem.rfind('_');
+      if (us == std::string::npos || stem.size() - us != 6) continue;
+      const std::string digits = stem.substr(us + 1);
+      if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+      if (std::stoul(digits) < frames) fs::copy_file(e.path(), to / e.path().filename(), fs::copy_options::overwrite_existing);
+    }
+  }
+  std::size_t missing = 0;
+  for (std::size_t k = 0; k < frames; ++k)
+    if (!fs::exists(to / fmt::format("particles_{:05d}.vtu", k))) ++missing;
+  if (missing > 0)
+    fmt::print(stderr,
+               "swarf: warning: {} of the {} frames written before the checkpoint are neither in {} nor in {}: "
+               "particles.pvd lists them\n",
+               missing, frames, to.string(), from.string());
+}
+
 int mesh_index(const Model& model, const std::string& name) {
   for (std::size_t k = 0; k < model.meshes.size(); ++k)
     if (model.meshes[k].name == name) return static_cast<int>(k);
@@ -351,7 +380,10 @@ void run_case(const RunOptions& opt) {
     for (std::size_t r = 0; r * rec.columns < rec.rows.size(); ++r)
       series->row(std::vector<double>(rec.rows.begin() + r * rec.columns, rec.rows.begin() + (r + 1) * rec.columns));
     prediction.set_state(rec.bar_shift, rec.bar_broken != 0.0);
-    if (vtk) vtk->resume(rec.frame_times);
+    if (vtk) {
+      vtk->resume(rec.frame_times);
+      carry_frames(fs::path(opt.restart).parent_path(), dir, rec.frame_times.size());
+    }
     fmt::print("  restarted from {} at t = {:.6g} s, step {} ({} series rows, {} frames)\n", opt.restart, sim.time(),
                sim.steps(), rec.rows.size() / rec.columns, rec.frame_times.size());
   } else {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <regex>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -96,6 +97,36 @@ TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
   EXPECT_GT(sa["results"]["broken_rods"].get<double>(), 0.0);  // breakage crossed the restart
   // The ParaView series goes on from the checkpoint's frames.
   EXPECT_NE(test::read_file(dir / "b/particles.pvd").find("particles_00004.vtu"), std::string::npos);
+}
+
+// A restart into another directory (--out) brings the frames written before the checkpoint
+// along: every file particles.pvd lists is there, the earlier frames are copies and the later
+// ones are computed again, bit for bit as the uninterrupted run wrote them.
+TEST(Restart, IntoAnotherDirectoryTheSeriesOfFramesIsComplete) {
+  test::TempDir dir("restart_frames");
+  test::write_file(dir / "c.toml", kTinyCut);
+  auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 2);
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  auto c = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "a/checkpoint.h5") + " --out " +
+                             (dir / "c"));
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_EQ(c.output.find("warning"), std::string::npos) << c.output;
+  const std::string pvd = test::read_file(dir / "c/particles.pvd");
+  const std::regex file_re("file=\"([^\"]+)\"");
+  int listed = 0;
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), file_re); it != std::sregex_iterator(); ++it) {
+    const std::string name = (*it)[1].str();
+    ASSERT_TRUE(std::filesystem::exists(dir / ("c/" + name))) << name;
+    if (name.rfind("frames/", 0) == 0) {
+      EXPECT_EQ(test::read_file(dir / ("a/" + name)), test::read_file(dir / ("c/" + name))) << name;
+    }
+    ++listed;
+  }
+  EXPECT_GE(listed, 3 * 5);  // particles, rods and the tool for frames 0 to 4 at least
+  // A restart whose earlier frames are nowhere (the checkpoint alone was copied) says so.
+  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5"));
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  EXPECT_NE(b.output.find("frames written before the checkpoint are neither in"), std::string::npos) << b.output;
 }
 
 // The explicit scheme commits the friction histories in its only evaluation per step, and
