@@ -144,6 +144,16 @@ TEST(CaseFiles, OverridesApplyAndAreChecked) {
   expect_mentions(error_of(kGood, {"rod.yeild=1"}), {"--set rod.yeild", "unknown key"});
   expect_mentions(error_of(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
   expect_mentions(error_of(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});
+  // One entry of an array: its index as the last component; the others stay.
+  const CaseSettings one =
+      parse_case(kGood, "bad.toml", {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=-4.5"});
+  EXPECT_EQ(one.groups[0].motion.velocity[0], 1.0);
+  EXPECT_EQ(one.groups[0].motion.velocity[1], 2.0);
+  EXPECT_EQ(one.groups[0].motion.velocity[2], -4.5);
+  expect_mentions(error_of(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.3=1"}),
+                  {"--set", "group.0.velocity.3", "'3' is not an index", "3 entries"});
+  expect_mentions(error_of(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=\"a\""}),
+                  {"group.velocity"});
 }
 
 TEST(Motions, RampAndVelocityTableIntegrateExactly) {
