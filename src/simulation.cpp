@@ -332,28 +332,52 @@ void rod_block(const RodLaw& law, double A, std::size_t begin, std::size_t end, 
                int& changed, Periodic periodic) {
   double visc = 0.0;
   int any = 0;
-  for (std::size_t k = begin; k < end; ++k) {
-    if (!intact[k]) continue;
-    const std::int32_t i = ends[k][0], j = ends[k][1];
-    Vec3 dx = x[j] - x[i];
-    if constexpr (Wrap) periodic.wrap(dx);
-    const double len = dx.norm();
-    const double inv_len = 1.0 / len;
-    const double l0 = rest_length[k];
-    const double inv_l0 = inv_rest_length[k];
-    const double strain = (len - l0) * inv_l0;
-    double rate = 0.0;
-    if constexpr (Viscous) rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
-    const RodResponse res = evaluate(law, strain, rate, shift[k]);
-    trial_shift[k] = res.shift;
-    trial_broken[k] = res.broken;
-    stress[k] = res.stress;
-    any |= (res.shift != shift[k]) | res.broken;
-    if (res.broken) {
-      coef[k] = 0.0;
-    } else {
-      coef[k] = (res.stress + res.viscous_stress) * A * inv_len;
-      if constexpr (Viscous) visc += res.viscous_stress * rate * A * l0;
+  // In chunks, three passes: the rods' vectors (scalar gathers), their lengths and inverse
+  // lengths (a loop of square roots and divisions the compiler vectorises: in one loop with
+  // the law, their latency bound the kernel), then the law. The same values, bit for bit.
+  constexpr std::size_t kChunk = 256;
+  alignas(64) double dxs[3][kChunk], len_c[kChunk], inv_c[kChunk];
+  for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
+    const std::size_t nc = std::min(kChunk, end - c0);
+    for (std::size_t c = 0; c < nc; ++c) {
+      const std::size_t k = c0 + c;
+      Vec3 dx = x[ends[k][1]] - x[ends[k][0]];
+      if constexpr (Wrap) periodic.wrap(dx);
+      dxs[0][c] = dx[0];
+      dxs[1][c] = dx[1];
+      dxs[2][c] = dx[2];
+      len_c[c] = intact[k] ? dx.squaredNorm() : 1.0;  // (broken rods are skipped below)
+    }
+#pragma omp simd
+    for (std::size_t c = 0; c < nc; ++c) {
+      len_c[c] = std::sqrt(len_c[c]);
+      inv_c[c] = 1.0 / len_c[c];
+    }
+    for (std::size_t c = 0; c < nc; ++c) {
+      const std::size_t k = c0 + c;
+      if (!intact[k]) continue;
+      const double len = len_c[c];
+      const double inv_len = inv_c[c];
+      const double l0 = rest_length[k];
+      const double inv_l0 = inv_rest_length[k];
+      const double strain = (len - l0) * inv_l0;
+      double rate = 0.0;
+      if constexpr (Viscous) {
+        const std::int32_t i = ends[k][0], j = ends[k][1];
+        const Vec3 dx(dxs[0][c], dxs[1][c], dxs[2][c]);
+        rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
+      }
+      const RodResponse res = evaluate(law, strain, rate, shift[k]);
+      trial_shift[k] = res.shift;
+      trial_broken[k] = res.broken;
+      stress[k] = res.stress;
+      any |= (res.shift != shift[k]) | res.broken;
+      if (res.broken) {
+        coef[k] = 0.0;
+      } else {
+        coef[k] = (res.stress + res.viscous_stress) * A * inv_len;
+        if constexpr (Viscous) visc += res.viscous_stress * rate * A * l0;
+      }
     }
   }
   viscous_power = visc;
