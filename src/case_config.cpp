@@ -641,6 +641,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
     g.grow_factor = r.number("grow_factor", g.grow_factor, factor_above_1);
     g.shrink_factor = r.number("shrink_factor", g.shrink_factor, factor_below_1);
     g.reject_factor = r.number("reject_factor", g.reject_factor, factor_below_1);
+    g.relaxation = r.number("relaxation", g.relaxation, [](double v) { return v > 0 && v <= 1 ? nullptr : "must lie in (0, 1]"; });
     r.finish();
   }
   read_groups(root, source, directory, ov, cs);

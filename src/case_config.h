@@ -71,6 +71,7 @@ struct IntegratorSettings {
   double grow_factor = 1.2;           ///< 1
   double shrink_factor = 0.7;         ///< 1
   double reject_factor = 0.5;         ///< a rejected step is retried with dt times this, 1
+  double relaxation = 1.0;            ///< w in (0, 1]: each sweep places with (1 - w) a_guess + w a_swept, 1
 };
 
 /// The prescribed translation of a group or a mesh (keys shared by [[group]] and [[mesh]]).

@@ -142,7 +142,15 @@ bool Simulation::try_newmark(double h) {
   int it = 0, growing = 0;
   bool converged = false;
   double previous = HUGE_VAL;
+  // Relaxation w < 1: the next sweep places with (1 - w) a_guess + w a_swept. The sweep maps
+  // a guess to new accelerations with eigenvalues in [-(dt/dt_stable)^2, 0] (physics notes
+  // section 6); relaxed, they become 1 - w + w lambda: at dt_max (0.8 dt_stable, L = 0.64 the
+  // spectrum's extent) the contraction per sweep drops from 0.64 to 0.25 with w = 0.75 (optimal:
+  // w = 2 / (2 + L)), and the iteration converges up to dt/dt_stable = sqrt(2/w - 1).
+  const double w = g.relaxation;
+  auto& acc = m_.particles.acceleration;
   for (it = 1; it <= g.max_iterations; ++it) {
+    if (w != 1.0) a_guess_ = acc;
     if (!place(h)) return false;
     clock_.lap(Stage::Integrate);
     rod_forces();
@@ -161,6 +169,11 @@ bool Simulation::try_newmark(double h) {
     growing = change > previous && change > 10.0 * g.tolerance ? growing + 1 : 0;
     if (growing >= 2) return false;
     previous = change;
+    if (w != 1.0) {
+      const std::size_t n = acc.size();
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) acc[i] = (1.0 - w) * a_guess_[i] + w * acc[i];
+    }
   }
   if (!converged) return false;
   if (!place(h)) return false;  // x+, v+ (and rotations) from the converged accelerations

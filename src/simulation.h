@@ -154,6 +154,7 @@ class Simulation {
   double contact_power(bool from_kick = false) const;
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
+  std::vector<Vec3> a_guess_;  // accelerations a sweep placed with (integrator.relaxation < 1)
   std::vector<RotState> rot_n_;
   ContactSystem contacts_;
   StageClock clock_;

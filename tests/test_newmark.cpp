@@ -144,6 +144,45 @@ TEST(Newmark, FixedPointConvergesBelowTheLimitAndDivergesAbove) {
   EXPECT_LE(far_below.last_iterations, 8);  // (0.3)^2 = 0.09 per sweep
 }
 
+TEST(Newmark, RelaxationContractsFasterAndConvergesBeyondTheLimit) {
+  // Relaxed sweeps a <- (1 - w) a + w G(a) have eigenvalues 1 - w + w lambda, lambda in
+  // [-L, 0], L about (dt/dt_stable)^2; the stable-step estimate is conservative, and the
+  // plain iteration's sweeps at 0.9 dt_stable (39 here: 0.70 per sweep) put L at 0.86 of it.
+  // With w = 0.75: at 0.9 the contraction is max(0.25, |1 - 0.75 x 1.70|) = 0.28 per sweep
+  // (11 sweeps; 12 here); at 1.15 (L = 1.14), where the plain iteration diverges, 0.6 (27; 30);
+  // beyond L = 2/w - 1 = 1.67, at 1.5 (L = 1.94), it diverges too.
+  const Model probe = random_block("");
+  const double ds = probe.derived.dt_stable;
+  auto first_step = [&](double factor, double w) {
+    Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
+                                       "tolerance = 1e-6\nrelaxation = {}\n",
+                                       factor * ds, 2 * ds, w));
+    Simulation sim(m);
+    sim.step();
+    return std::make_tuple(sim.stats(), sim.last_dt() / ds, m.particles.position);
+  };
+  const auto [plain, dt_plain, x_plain] = first_step(0.9, 1.0);
+  const auto [relaxed, dt_relaxed, x_relaxed] = first_step(0.9, 0.75);
+  EXPECT_EQ(relaxed.rejected, 0);
+  EXPECT_DOUBLE_EQ(dt_relaxed, 0.9);
+  EXPECT_GT(plain.last_iterations, 20);
+  EXPECT_LT(relaxed.last_iterations, 16);
+  // The same step: both stop when a sweep changes the forces by less than 1e-6 of their level.
+  double dx = 0.0, disp = 0.0;
+  for (std::size_t i = 0; i < x_plain.size(); ++i) {
+    dx = std::max(dx, (x_plain[i] - x_relaxed[i]).norm());
+    disp = std::max(disp, (x_plain[i] - probe.particles.position[i]).norm());
+  }
+  EXPECT_LT(dx, 1e-4 * disp);
+  const auto [beyond, dt_beyond, x_beyond] = first_step(1.15, 0.75);
+  EXPECT_EQ(beyond.rejected, 0);
+  EXPECT_DOUBLE_EQ(dt_beyond, 1.15);
+  EXPECT_GT(beyond.last_iterations, 20);
+  const auto [far, dt_far, x_far] = first_step(1.5, 0.75);
+  EXPECT_GE(far.rejected, 1);
+  EXPECT_LT(dt_far, 1.5);
+}
+
 TEST(Newmark, RodBrokenOnlyInAnUnconvergedIterateStaysIntact) {
   // Relative coordinate u (stretch), w^2 = 2 kb/m, rho = h^2 w^2/4 = 1/2. Start compressed by
   // U with relative velocity U/h. First sweep (guess a+ = a): u1 = -U(1 - 2 rho) + U = U.
