@@ -14,6 +14,18 @@ constexpr std::size_t kMinThicknessRows = 5;
 
 }  // namespace
 
+ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Vec3& tool_tip) {
+  ChipInput ci;
+  ci.position = std::move(position);
+  ci.radius = setup.radius;
+  ci.uncut_surface_z = setup.uncut_surface_z;
+  ci.tool_tip = tool_tip;
+  ci.rake_angle_deg = setup.rake_angle_deg;
+  ci.depth_of_cut = setup.uncut_surface_z - tool_tip[2];
+  ci.face_length = setup.face_length;
+  return ci;
+}
+
 CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   CutResult out;
   // Mean and sample standard deviation of the forces per width over the steady part.
@@ -45,14 +57,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
                  {"thrust_force_per_width_std_N_per_m", ft_sd},
                  {"broken_fraction", d.broken_rod_fraction}};
 
-  ChipInput ci;
-  ci.position = d.position;
-  ci.radius = s.radius;
-  ci.uncut_surface_z = s.uncut_surface_z;
-  ci.tool_tip = s.tool_tip;
-  ci.rake_angle_deg = s.rake_angle_deg;
-  ci.depth_of_cut = s.uncut_surface_z - s.tool_tip[2];
-  ci.face_length = s.face_length;
+  const ChipInput ci = chip_input(s, d.position, s.tool_tip);
   out.metrics = measure_chip(ci);
   const ChipMetrics& cm = out.metrics;
   // h_c over the steady part: the median of the rows' measurements.

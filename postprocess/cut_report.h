@@ -53,6 +53,10 @@ struct CutResult {
 
 CutResult analyze_cut(const CutSetup& setup, const CutData& data);
 
+/// The chip analysis' input for the workpiece centres 'position' (m) with the tool's sharp tip at
+/// 'tool_tip' (m): the setup's geometry, the depth of cut from the tip.
+ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Vec3& tool_tip);
+
 /// The short result table (Fc, Ft, chip thickness, ratio, shear angle, broken-rod fraction).
 std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip, double broken_rod_fraction);
 

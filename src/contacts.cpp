@@ -316,6 +316,7 @@ void ContactSystem::finish_build(const Particles& p) {
   const std::size_t np = pairs_.size(), nt = tris_.size();
   pres_.assign(np, Result{Vec3::Zero(), Vec3::Zero()});
   psum_.assign(n, Result{Vec3::Zero(), Vec3::Zero()});
+  spanning_.assign(n, 0);  // (sums of zero results until the next evaluation partitions the rows)
   ph_.resize(np);
   pe_.resize(np);
   tres_.assign(nt, Result{Vec3::Zero(), Vec3::Zero()});

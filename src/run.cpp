@@ -295,15 +295,11 @@ void run_case(const RunOptions& opt) {
     cols.insert(cols.end(), {"tool_travel", "cutting_force_per_width", "thrust_force_per_width", "chip_thickness"});
   // The chip's thickness at a row (m; 0 when fewer than 10 chip particles have left the edge region).
   auto chip_thickness_now = [&]() {
-    ChipInput ci;
-    ci.position.assign(model.particles.position.begin(), model.particles.position.begin() + cut.lattice_particles);
-    ci.radius = cut.radius;
-    ci.uncut_surface_z = cut.uncut_surface_z;
-    ci.tool_tip = cut.tool_tip + model.meshes[tool_mesh].offset;  // (cut.tool_tip: the tip at the start)
-    ci.rake_angle_deg = cut.rake_angle_deg;
-    ci.depth_of_cut = cut.uncut_surface_z - ci.tool_tip[2];
-    ci.face_length = cut.face_length;
-    return measure_chip(ci).thickness;
+    const auto& x = model.particles.position;
+    // (cut.tool_tip: the tip at the start; it moves with the tool's mesh)
+    return measure_chip(chip_input(cut, std::vector<Vec3>(x.begin(), x.begin() + cut.lattice_particles),
+                                   cut.tool_tip + model.meshes[tool_mesh].offset))
+        .thickness;
   };
   rec.columns = cols.size();
 

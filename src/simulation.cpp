@@ -150,7 +150,7 @@ bool Simulation::try_newmark(double h) {
   const double w = g.relaxation;
   auto& acc = m_.particles.acceleration;
   for (it = 1; it <= g.max_iterations; ++it) {
-    if (w != 1.0) a_guess_ = acc;
+    if (w != 1.0 && it == 1) a_guess_ = acc;  // (later sweeps: the blend below)
     if (!place(h)) return false;
     clock_.lap(Stage::Integrate);
     rod_forces();
@@ -172,7 +172,7 @@ bool Simulation::try_newmark(double h) {
     if (w != 1.0) {
       const std::size_t n = acc.size();
 #pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) acc[i] = (1.0 - w) * a_guess_[i] + w * acc[i];
+      for (std::size_t i = 0; i < n; ++i) acc[i] = a_guess_[i] = (1.0 - w) * a_guess_[i] + w * acc[i];
     }
   }
   if (!converged) return false;
