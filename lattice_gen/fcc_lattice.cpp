@@ -1,11 +1,11 @@
 // fcc_lattice.cpp: FCC site generation and bonding (see fcc_lattice.h).
-#include "fcc_lattice.h"
+#include "lattice_gen/fcc_lattice.h"
 
 #include <cmath>
 #include <fmt/format.h>
 
-#include "errors.h"
-#include "neighbor_pairs.h"
+#include "swarf/core/errors.h"
+#include "swarf/neighbors/neighbor_pairs.h"
 
 namespace swarf {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "vec3.h"
+#include "swarf/core/vec3.h"
 
 namespace swarf {
 

@@ -1,12 +1,13 @@
 // lattice_file.cpp: HDF5 reading and writing of a lattice (see lattice_file.h).
-#include "lattice_file.h"
+#include "lattice_gen/lattice_file.h"
+#include "swarf/version.h"
 
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 
-#include "errors.h"
-#include "h5file.h"
+#include "swarf/core/errors.h"
+#include "io/h5file.h"
 
 namespace swarf {
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "fcc_lattice.h"
+#include "lattice_gen/fcc_lattice.h"
 
 namespace swarf {
 

@@ -1,5 +1,5 @@
 // chip.cpp: chip identification and metrics (see chip.h).
-#include "chip.h"
+#include "postprocess/chip.h"
 
 #include <algorithm>
 #include <cmath>

@@ -18,7 +18,7 @@
 #include <cmath>
 #include <vector>
 
-#include "vec3.h"
+#include "swarf/core/vec3.h"
 
 namespace swarf {
 

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "errors.h"
+#include "swarf/core/errors.h"
 
 namespace swarf {
 

@@ -45,8 +45,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh.h"
-#include "vec3.h"
+#include "swarf/state/mesh.h"
+#include "swarf/core/vec3.h"
 
 namespace swarf {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "h5file.h"
+#include "io/h5file.h"
 
 namespace swarf {
 namespace {

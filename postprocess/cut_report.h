@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "postprocess/chip.h"
-#include "vec3.h"
+#include "swarf/core/vec3.h"
 
 namespace swarf {
 

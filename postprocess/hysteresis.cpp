@@ -1,5 +1,5 @@
 // hysteresis.cpp: fitting the measured loop (see hysteresis.h).
-#include "hysteresis.h"
+#include "postprocess/hysteresis.h"
 
 #include <cmath>
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "rod_law.h"
+#include "swarf/laws/rod_law.h"
 
 namespace swarf {
 

@@ -2,9 +2,9 @@
 // named; overrides are checked like keys in the file; the CLI exits non-zero.
 #include <gtest/gtest.h>
 
-#include "case_config.h"
-#include "errors.h"
-#include "model.h"
+#include "setup/case_config.h"
+#include "swarf/core/errors.h"
+#include "setup/model.h"
 #include "test_helpers.h"
 
 namespace swarf {

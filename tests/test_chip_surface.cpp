@@ -9,11 +9,11 @@
 #include <numbers>
 #include <utility>
 
-#include "errors.h"
-#include "fcc_lattice.h"
+#include "swarf/core/errors.h"
+#include "lattice_gen/fcc_lattice.h"
 #include "postprocess/chip_surface.h"
 #include "test_helpers.h"
-#include "vtk_output.h"
+#include "io/vtk_output.h"
 
 namespace swarf {
 namespace {

@@ -7,15 +7,16 @@
 #include <fmt/format.h>
 #include <random>
 
-#include "case_config.h"
-#include "contacts.h"
-#include "errors.h"
-#include "mesh.h"
-#include "model.h"
-#include "overlap_area.h"
-#include "particles.h"
-#include "rods.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "swarf/contacts/contacts.h"
+#include "swarf/core/errors.h"
+#include "swarf/state/mesh.h"
+#include "io/mesh_file.h"
+#include "setup/model.h"
+#include "swarf/geometry/overlap_area.h"
+#include "swarf/state/particles.h"
+#include "swarf/state/rods.h"
+#include "swarf/simulation.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -249,7 +250,7 @@ TEST(Impact, TwoSpheresMatchTheHertzClosedForm) {
   const double v = 10.0;
   const std::string text = two_spheres(v, 1.0, 2e-8);
   Model m = build_model(parse_case(text, "impact", {}));
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   const double R = 0.01, E = 48e9, nu = 0.2, mass = m.particles.mass[0];
   const double Es = E / (2 * (1 - nu * nu)), Rs = R / 2, ms = mass / 2, vr = 2 * v;
   const double dmax = std::pow(15 * ms * vr * vr / (16 * Es * std::sqrt(Rs)), 0.4);
@@ -277,7 +278,7 @@ TEST(Impact, RestitutionIsTheSameAtEverySpeed) {
     for (double v : {0.5, 5.0}) {
       const std::string text = two_spheres(v, e, 5e-8);
       Model m = build_model(parse_case(text, "e", {}));
-      Simulation sim(m);
+      Simulation sim(m, m.step);
       // The gap of 0.1 mm closes at 2 v; the contact lasts below 0.2 ms at these speeds.
       while (sim.time() < 1e-4 / (2 * v) + 3e-4) sim.step();
       const double rebound = (m.particles.velocity[1][0] - m.particles.velocity[0][0]) / (2 * v);
@@ -333,7 +334,7 @@ TEST(Friction, SpringHoldsBelowTheFrictionAngleAndSlidesAbove) {
   for (const double ratio : {0.5, 1.6}) {
     const double angle = std::atan(ratio * mu);
     Model m = block_on_floor(angle, mu, "spring");
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     const double x0 = mean_x(m);
     while (sim.time() < T) sim.step();
     const double moved = mean_x(m) - x0;
@@ -352,7 +353,7 @@ TEST(Friction, SpringHoldsBelowTheFrictionAngleAndSlidesAbove) {
 TEST(Friction, RegularizedLawSlidesAboveTheFrictionAngle) {
   const double mu = 0.4, g = 9.81, T = 0.02, angle = std::atan(1.6 * mu);
   Model m = block_on_floor(angle, mu, "regularized");
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   const double x0 = mean_x(m);
   while (sim.time() < T) sim.step();
   const double a = g * (std::sin(angle) - mu * std::cos(angle));
@@ -547,7 +548,7 @@ dt = 2e-8
 end_time = 1
 )", fmt::arg("R", R), fmt::arg("v", v), fmt::arg("e", e));
     Model m = build_model(parse_case(text, "pusher", {}));
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     // The 0.1 mm gap closes in 0.2 ms; the contact lasts about 0.03 ms.
     while (sim.time() < 4e-4) sim.step();
     const double mass = m.particles.mass[0];

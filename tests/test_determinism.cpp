@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cstring>
 
-#include "case_config.h"
-#include "model.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -50,7 +50,7 @@ struct Snapshot {
 Snapshot run(int threads, int steps) {
   omp_set_num_threads(threads);
   Model m = build_model(parse_case(kCase, "det", {}));
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   for (int s = 0; s < steps; ++s) sim.step();
   Snapshot out{m.particles.position, m.particles.velocity, m.rods.shift, m.rods.intact, sim.ledger(),
                sim.kinetic_energy(), sim.broken_rods()};
@@ -101,7 +101,7 @@ TEST(Determinism, AGranularGasWithFrictionGivesIdenticalBitsOnOneTwoAndThreeThre
   auto run_gas = [&](int threads) {
     omp_set_num_threads(threads);
     Model m = build_model(parse_case(text, "gas", {}));
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     std::size_t touching = 0;
     for (int s = 0; s < 1500; ++s) {
       sim.step();

@@ -7,9 +7,9 @@
 #include <random>
 #include <set>
 
-#include "fcc_lattice.h"
-#include "lattice_file.h"
-#include "neighbor_pairs.h"
+#include "lattice_gen/fcc_lattice.h"
+#include "lattice_gen/lattice_file.h"
+#include "swarf/neighbors/neighbor_pairs.h"
 #include "test_helpers.h"
 
 namespace swarf {

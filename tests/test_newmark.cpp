@@ -7,11 +7,11 @@
 #include <fmt/format.h>
 #include <random>
 
-#include "case_config.h"
-#include "errors.h"
-#include "lattice_file.h"
-#include "model.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "swarf/core/errors.h"
+#include "lattice_gen/lattice_file.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -62,7 +62,7 @@ TEST(Newmark, OscillatorFollowsTheDiscreteRecurrence) {
   Model m = pair_model(dir, fixed_step(h));
   const double v0 = 1.0;
   m.particles.velocity[1] = Vec3(v0, 0, 0);
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   ASSERT_TRUE(sim.implicit());
   Recurrence rec{0.0, v0, 0.0, w * w, h};
   double max_dev = 0, amp = v0 / w;
@@ -96,7 +96,7 @@ TEST(Newmark, SecondOrderConvergence) {
     const int n = 200 << k;
     Model m = pair_model(dir, fixed_step(T / n));
     m.particles.velocity[1] = Vec3(1.0, 0, 0);
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     for (int s = 0; s < n; ++s) sim.step();
     const double u = m.particles.position[1][0] - m.particles.position[0][0] - kL0;
     err[k] = std::abs(u - 1.0 / w * std::sin(w * sim.time()));
@@ -129,7 +129,7 @@ TEST(Newmark, FixedPointConvergesBelowTheLimitAndDivergesAbove) {
   auto first_step = [&](double factor) {
     Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
                                        "tolerance = 1e-6\n", factor * ds, 2 * ds));
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     sim.step();
     return std::make_pair(sim.stats(), sim.last_dt() / ds);
   };
@@ -157,7 +157,7 @@ TEST(Newmark, RelaxationContractsFasterAndConvergesBeyondTheLimit) {
     Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
                                        "tolerance = 1e-6\nrelaxation = {}\n",
                                        factor * ds, 2 * ds, w));
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     sim.step();
     return std::make_tuple(sim.stats(), sim.last_dt() / ds, m.particles.position);
   };
@@ -197,7 +197,7 @@ TEST(Newmark, RodBrokenOnlyInAnUnconvergedIterateStaysIntact) {
   auto run = [&](const std::string& integ) {
     Model m = pair_model(dir, integ, U, rod);
     m.particles.velocity[1] = Vec3(U / h, 0, 0);
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     sim.step();
     const double u = m.particles.position[1][0] - m.particles.position[0][0] - kL0;
     return std::make_tuple(sim.broken_rods(), u, sim.stats().last_iterations);
@@ -228,7 +228,7 @@ TEST(Newmark, RejectedStepLeavesNoTrace) {
   const std::string common = fmt::format("scheme = \"newmark\"\ndt_max = {:.17g}\nmax_iterations = 60\n", 2 * ds);
   Model ma = random_block(common + fmt::format("dt = {:.17g}\n", 1.5 * ds));
   Model mb = random_block(common + fmt::format("dt = {:.17g}\n", 0.75 * ds));
-  Simulation a(ma), b(mb);
+  Simulation a(ma, ma.step), b(mb, mb.step);
   for (int s = 0; s < 200; ++s) {
     a.step();
     b.step();
@@ -252,7 +252,7 @@ TEST(Newmark, StopsBelowDtMinWithAMessage) {
   const double ds = probe.derived.dt_stable;
   Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\ndt_min = {:.17g}\n", 3 * ds,
                                      4 * ds, 2 * ds));
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   try {
     sim.step();
     FAIL() << "expected SimulationError";
@@ -265,7 +265,7 @@ TEST(Newmark, StepControlGrowsAQuietStep) {
   // A block at rest under a slow pull converges in one or two sweeps: the step grows to dt_max.
   Model m = random_block("scheme = \"newmark\"\ndt_safety = 0.1\n");
   for (auto& v : m.particles.velocity) v = Vec3::Zero();
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   for (int s = 0; s < 40; ++s) sim.step();
   EXPECT_NEAR(sim.dt(), m.derived.dt_max, 1e-12 * m.derived.dt_max);
 }

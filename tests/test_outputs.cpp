@@ -13,7 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include "h5file.h"
+#include "io/h5file.h"
 #include "test_helpers.h"
 
 namespace swarf {

@@ -7,10 +7,10 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "case_config.h"
-#include "errors.h"
-#include "model.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "swarf/core/errors.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
 
 namespace swarf {
 namespace {
@@ -36,7 +36,7 @@ PatchResult deform(const Eigen::Matrix3d& F) {
   PatchResult out{0, 0, 0, build_model(parse_case(kCase, "patch", {}))};
   Model& m = out.model;
   for (std::size_t i = 0; i < m.particles.size(); ++i) m.particles.position[i] = F * m.particles.initial_position[i];
-  Simulation sim(m);  // evaluates the forces of the given state
+  Simulation sim(m, m.step);  // evaluates the forces of the given state
   for (std::size_t i = 0; i < m.particles.size(); ++i) {
     const int rods = m.rods.row_start[i + 1] - m.rods.row_start[i];
     const double f = m.particles.force[i].norm();

@@ -10,12 +10,12 @@
 #include <random>
 #include <sstream>
 
-#include "contacts.h"
-#include "errors.h"
-#include "h5file.h"
-#include "model.h"
-#include "particles.h"
-#include "rods.h"
+#include "swarf/contacts/contacts.h"
+#include "swarf/core/errors.h"
+#include "io/h5file.h"
+#include "setup/model.h"
+#include "swarf/state/particles.h"
+#include "swarf/state/rods.h"
 #include "push_case.h"
 #include "test_helpers.h"
 

@@ -11,7 +11,7 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
-#include "h5file.h"
+#include "io/h5file.h"
 #include "test_helpers.h"
 
 namespace swarf {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "rod_driver.h"
-#include "rod_law.h"
+#include "app/rod_driver.h"
+#include "swarf/laws/rod_law.h"
 #include "test_helpers.h"
 
 namespace swarf {

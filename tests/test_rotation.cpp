@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "case_config.h"
-#include "model.h"
-#include "rotation.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "swarf/integrate/rotation.h"
+#include "swarf/simulation.h"
 
 namespace swarf {
 namespace {
@@ -144,7 +144,7 @@ TEST(Rotation, SimulationStageSpinsParticles) {
                                            scheme + "\"\n",
                                        "spin", {}));
       for (auto& w : m.particles.omega) w = Vec3(0, 0, 100.0);
-      Simulation sim(m);
+      Simulation sim(m, m.step);
       sim.set_rotations(true);
       const double e0 = sim.kinetic_energy();
       EXPECT_GT(e0, 0.0);

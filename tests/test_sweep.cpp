@@ -7,10 +7,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "errors.h"
-#include "report.h"
-#include "study_table.h"
-#include "sweep.h"
+#include "swarf/core/errors.h"
+#include "study/report.h"
+#include "study/study_table.h"
+#include "study/sweep.h"
 #include "test_helpers.h"
 
 namespace swarf {

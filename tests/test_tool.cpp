@@ -5,12 +5,13 @@
 #include <cmath>
 #include <map>
 
-#include "errors.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
-#include "tool_geometry.h"
-#include "case_config.h"
-#include "model.h"
-#include "vtk_output.h"
+#include "tool_paths/tool_geometry.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "io/mesh_file.h"
+#include "io/vtk_output.h"
 
 namespace swarf {
 namespace {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "case_config.h"
-#include "lattice_file.h"
-#include "model.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "lattice_gen/lattice_file.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -36,7 +36,7 @@ TEST(Verlet, TwoParticleSpringFollowsTheDiscreteRecurrence) {
   Model m = two_particles(dir, dt);
   const double v0 = 0.01;  // m/s
   m.particles.velocity[1] = Vec3(v0, 0, 0);
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   // The recurrence of the scheme, run by hand with the same force expression.
   const double l0 = 2 * kRadius, A = m.derived.rod_area, mass = m.particles.mass[0];
   double x1 = 0, x2 = l0, u1 = 0, u2 = v0, a1 = 0, a2 = 0;
@@ -75,7 +75,7 @@ TEST(Verlet, SeparationMatchesTheClosedFormOfTheRecurrence) {
   Model m = two_particles(dir, dt);
   const double v0 = 1.0;  // amplitude ~1.3e-7 m, rod strain ~1.3e-4
   m.particles.velocity[1] = Vec3(v0, 0, 0);
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   const double w = std::sqrt(2 * m.derived.rod_stiffness / m.particles.mass[0]);
   const double theta = std::acos(1 - 0.5 * w * w * dt * dt);
   const double amp = dt * v0 / std::sin(theta);
@@ -102,7 +102,7 @@ TEST(Verlet, SecondOrderConvergenceToTheExactOscillation) {
     const double dt = T / (400.0 * (1 << k));
     Model m = two_particles(dir, dt);
     m.particles.velocity[1] = Vec3(0.01, 0, 0);
-    Simulation sim(m);
+    Simulation sim(m, m.step);
     for (int n = 0; n < 400 * (1 << k); ++n) sim.step();
     // Exact: separation (v0/w) sin(w t) (centre of mass drifts at v0/2).
     const double u = m.particles.position[1][0] - m.particles.position[0][0] - 2 * kRadius;
@@ -131,7 +131,7 @@ end_time = 1
   xc /= double(m.particles.size());
   for (std::size_t i = 0; i < m.particles.size(); ++i)
     m.particles.velocity[i] = Vec3(100.0 * (m.particles.initial_position[i][0] - xc), 0, 0);  // strain rate 100 /s
-  Simulation sim(m);
+  Simulation sim(m, m.step);
   const double e0 = sim.kinetic_energy() + sim.elastic_energy();
   double worst = 0;
   const int steps = static_cast<int>(periods_steps_factor / dt_fraction);

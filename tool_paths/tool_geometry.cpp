@@ -1,11 +1,11 @@
 // tool_geometry.cpp: tool profile and extrusion (see tool_geometry.h).
-#include "tool_geometry.h"
+#include "tool_paths/tool_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
-#include "errors.h"
+#include "swarf/core/errors.h"
 
 namespace swarf {
 

@@ -9,7 +9,7 @@
 // it (at most 'max_arc_step_deg' per segment). The profile is extruded over the width.
 #pragma once
 
-#include "mesh.h"
+#include "swarf/state/mesh.h"
 
 namespace swarf {
 

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "case_config.h"
-#include "model.h"
-#include "simulation.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
 
 using namespace swarf;
 
@@ -66,7 +66,7 @@ ImpactResult two_spheres(const Material& m, double R, double v, double dt) {
                                        "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
                                        fmt::arg("v", v), fmt::arg("R", R), fmt::arg("x", 2 * R * 1.0001), fmt::arg("dt", dt));
   Model model = build_model(parse_case(text, "chung_ooi test 1", {}));
-  Simulation sim(model);
+  Simulation sim(model, model.step);
   const auto& p = model.particles;
   ImpactResult r = run_impact(
       sim, [&] { return 2 * R - (p.position[1] - p.position[0]).norm(); }, [&] { return p.force[1][0]; });
@@ -87,7 +87,7 @@ ImpactResult sphere_on_plane(const Material& m, double R, double vn, double vt, 
                   fmt::arg("z", R * 1.0001), fmt::arg("vt", vt), fmt::arg("vz", -vn), fmt::arg("R", R),
                   fmt::arg("o", -L / 2), fmt::arg("L", L), fmt::arg("dt", dt), fmt::arg("wy", spin_y));
   Model model = build_model(parse_case(text, "chung_ooi sphere on plane", {}));
-  Simulation sim(model);
+  Simulation sim(model, model.step);
   const auto& p = model.particles;
   ImpactResult r = run_impact(sim, [&] { return R - p.position[0][2]; }, [&] { return p.force[0][2]; });
   r.v_after = p.velocity[0];
@@ -107,7 +107,7 @@ ImpactResult two_spheres_oblique(const Material& m, double R1, double R2, double
                   fmt::arg("R1", R1), fmt::arg("R2", R2), fmt::arg("z", (R1 + R2) * 1.0001), fmt::arg("vt", vt),
                   fmt::arg("vz", -vn), fmt::arg("dt", dt));
   Model model = build_model(parse_case(text, "chung_ooi two spheres oblique", {}));
-  Simulation sim(model);
+  Simulation sim(model, model.step);
   const auto& p = model.particles;
   ImpactResult r = run_impact(
       sim, [&] { return R1 + R2 - (p.position[1] - p.position[0]).norm(); }, [&] { return p.force[1][2]; });

@@ -1,0 +1,94 @@
+// bench.cpp: the benchmark driver (see bench.h). Only the step loop is timed; model
+// building and the initial force evaluation are not.
+#include "app/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "setup/case_config.h"
+#include "swarf/core/errors.h"
+#include "setup/model.h"
+#include "app/run.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+namespace {
+
+// A row of the stage table: each stage's ns per particle-step (its share of the step in %).
+std::string stage_row(const std::string& scene, int threads, const StageClock& c, double particle_steps,
+                      std::size_t list_builds) {
+  const double total = c.total();
+  std::string row = fmt::format("| {} | {} |", scene, threads);
+  for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
+    const double t = c.seconds(static_cast<Stage>(s));
+    row += fmt::format(" {:.1f} ({:.0f} %) |", t * 1e9 / particle_steps, total > 0 ? 100.0 * t / total : 0.0);
+  }
+  return row + fmt::format(" {:.1f} | {} |\n", total * 1e9 / particle_steps, list_builds);
+}
+
+}  // namespace
+
+void run_bench(const BenchOptions& opt) {
+  fmt::print("| scene | scheme | particles | rods | steps | force evaluations | threads | median s (min-max) | "
+             "ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
+  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::fflush(stdout);
+  std::vector<std::string> stage_rows;
+  for (const auto& path : opt.cases) {
+    const CaseSettings cs = load_case(path, opt.overrides);
+    std::string scene = std::filesystem::path(path).stem().string();
+    std::transform(scene.begin(), scene.end(), scene.begin(), ::toupper);
+    for (int th : opt.threads) {
+      const int used = set_threads(th);
+      std::vector<double> secs;
+      std::size_t broken = 0, np = 0, nr = 0;
+      double ke = 0;
+      bool implicit = false;
+      long long n = 0, evals = 0;
+      std::size_t builds = 0;
+      StageClock stages;
+      for (int rep = 0; rep < std::max(1, opt.repeats); ++rep) {
+        Model model = build_model(cs);
+        Simulation sim(model, model.step);
+        sim.stage_clock().enable(opt.stages);
+        const double end = model.settings.integrator.end_time;
+        const auto t0 = std::chrono::steady_clock::now();
+        if (opt.steps > 0)
+          for (long long s = 0; s < opt.steps; ++s) sim.step();
+        else
+          while (sim.time() < end * (1 - 1e-12)) sim.step(end - sim.time());
+        n = sim.steps();
+        evals = sim.stats().force_evaluations;
+        secs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        broken = sim.broken_rods();
+        ke = sim.kinetic_energy();
+        np = model.particles.size();
+        nr = model.rods.size();
+        implicit = sim.implicit();
+        stages = sim.stage_clock();
+        builds = sim.contacts().list_builds();
+      }
+      std::sort(secs.begin(), secs.end());
+      const double med = secs[secs.size() / 2];
+      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n", scene,
+                 implicit ? "newmark" : "verlet", np, nr, n, evals, used, med, secs.front(), secs.back(),
+                 med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke);
+      if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n), builds));
+      std::fflush(stdout);
+    }
+  }
+  if (!opt.stages) return;
+  // Where the time of the last repeat went (wall time of each stage, all threads together).
+  std::string head = "\n| scene | threads |", rule = "|---|---|";
+  for (const char* name : kStageNames) {
+    head += fmt::format(" {} |", name);
+    rule += "---|";
+  }
+  fmt::print("{} total | contact list builds |\n{}---|---|\n", head, rule);
+  for (const auto& row : stage_rows) fmt::print("{}", row);
+}
+
+}  // namespace swarf

@@ -1,0 +1,185 @@
+// post.cpp: end-of-cut outputs and 'swarf post DIR' (see post.h).
+#include "app/post.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "io/atomic_file.h"
+#include "swarf/core/errors.h"
+#include "io/h5file.h"
+#include "postprocess/chip_surface.h"
+#include "app/plots.h"
+#include "io/vtk_output.h"
+
+namespace swarf {
+namespace {
+
+// True if series.csv's header names the column.
+bool has_column(const std::string& path, const std::string& name) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream ss(line);
+  std::string h;
+  while (std::getline(ss, h, ','))
+    if (h == name) return true;
+  return false;
+}
+
+// Columns of series.csv by name.
+std::vector<std::vector<double>> read_columns(const std::string& path, const std::vector<std::string>& names) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("post: '{}' cannot be read (the run did not finish?)", path));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> head;
+  {
+    std::stringstream ss(line);
+    std::string h;
+    while (std::getline(ss, h, ',')) head.push_back(h);
+  }
+  std::vector<int> idx;
+  for (const auto& n : names) {
+    const auto it = std::find(head.begin(), head.end(), n);
+    if (it == head.end()) throw InputError(fmt::format("post: '{}' has no column '{}'", path, n));
+    idx.push_back(static_cast<int>(it - head.begin()));
+  }
+  std::vector<std::vector<double>> out(names.size());
+  std::size_t row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    std::vector<double> v;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) v.push_back(std::strtod(cell.c_str(), nullptr));
+    if (v.size() != head.size())
+      throw InputError(fmt::format("post: '{}' line {} has {} values, the header {}", path, row, v.size(), head.size()));
+    for (std::size_t k = 0; k < idx.size(); ++k) out[k].push_back(v[idx[k]]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string render_picture(const std::string& dir, std::string& message) {
+  namespace fs = std::filesystem;
+  // Debian's VTK renders through X only: without a display, a virtual one (xvfb-run).
+  std::string prefix;
+  if (!std::getenv("DISPLAY")) {
+    if (!fs::exists("/usr/bin/xvfb-run")) {
+      message = "no display and no xvfb-run (Debian package xvfb) to render the picture";
+      return "";
+    }
+    prefix = "/usr/bin/xvfb-run -a -s '-screen 0 1280x1024x24' ";
+  }
+  const std::string out = dir + "/chip.png";
+  const ScriptRun run = run_postprocess_script("render_chip.py", {dir, out}, prefix);
+  if (!run.ok || !fs::exists(out)) {
+    message = "render failed: " + run.output.substr(0, 400);
+    return "";
+  }
+  return out;
+}
+
+void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum,
+                VtkSeries* vtk, bool pictures) {
+  const CutResult res = analyze_cut(setup, data);
+  sum["cutting"] = res.cutting;
+  sum["chip"] = res.chip;
+  // The chip's surface: the union of its particles' spheres (radius grown by R/10 to close
+  // the necks between touching neighbours) as a level set, meshed (OpenVDB).
+  std::vector<Vec3> centres;
+  for (auto i : res.metrics.members) centres.push_back(data.position[i]);
+  const std::vector<double> radii(centres.size(), setup.radius);
+  ChipSurface surf;
+  try {
+    surf = build_chip_surface(centres, radii, 0.0, 0.1 * setup.radius);
+  } catch (const InputError& e) {  // e.g. a chip too large for the voxel budget: the rest stands
+    surf = ChipSurface{};
+    surf.particles = centres.size();
+    surf.note = std::string("no surface: ") + e.what();
+    fmt::print(stderr, "swarf: warning: chip surface not built: {}\n", e.what());
+  }
+  nlohmann::json& chip = sum["chip"];
+  chip["surface_particles"] = surf.particles;
+  chip["surface_volume_m3"] = surf.volume_m3;
+  chip["packing_volume_m3"] = surf.packing_volume_m3;
+  chip["surface_voxel_m"] = surf.voxel_m;
+  chip["surface_dilation_m"] = surf.dilation_m;
+  if (!surf.note.empty()) chip["surface_note"] = surf.note;
+  if (!surf.mesh.triangles.empty()) {
+    write_vtp(dir + "/chip_surface.vtp", surf.mesh);
+    chip["surface_file"] = "chip_surface.vtp";
+    chip["surface_triangles"] = surf.mesh.triangles.size();
+    if (vtk) vtk->add_final_part("chip_surface", "chip_surface.vtp");
+  }
+  if (pictures) {
+    std::string message;
+    const std::string png = render_picture(dir, message);
+    if (!png.empty()) {
+      sum["pictures"] = {"chip.png"};
+    } else {
+      sum["picture_error"] = message;
+      fmt::print(stderr, "swarf: warning: picture not rendered: {}\n", message);
+    }
+  }
+  fmt::print("{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction));
+  std::fflush(stdout);
+}
+
+void post_run(const std::string& dir) {
+  namespace fs = std::filesystem;
+  const std::string summary_path = dir + "/summary.json";
+  if (!fs::exists(summary_path))
+    throw InputError(fmt::format("post: '{}' does not exist: the run in '{}' did not finish (or this is not a run "
+                                 "directory)", summary_path, dir));
+  nlohmann::json sum;
+  try {
+    std::ifstream in(summary_path);
+    sum = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    throw InputError(fmt::format("post: '{}' is not valid JSON: {}", summary_path, e.what()));
+  }
+  if (sum.value("status", "") != "completed")
+    throw InputError(fmt::format("post: '{}' does not record a completed run", summary_path));
+  H5File f(dir + "/results.h5", H5File::Mode::Read);
+  CutSetup setup;
+  if (!read_cut_setup(f, setup))
+    throw InputError(fmt::format("post: '{}/results.h5' has no /cutting setup: the run had no tool mesh "
+                                 "(a [[mesh]] with rake_angle) and a workpiece", dir));
+  CutData data;
+  const auto cols = read_columns(dir + "/series.csv", {"time", "cutting_force_per_width", "thrust_force_per_width"});
+  data.time = cols[0];
+  data.fc = cols[1];
+  data.ft = cols[2];
+  if (has_column(dir + "/series.csv", "chip_thickness"))
+    data.chip_thickness = read_columns(dir + "/series.csv", {"chip_thickness"})[0];
+  std::size_t r = 0, c = 0;
+  const auto x = f.read_doubles("/particles/position", r, c);
+  const auto bf = f.read_doubles("/particles/broken_fraction", r, c);
+  const std::size_t n = std::min(setup.lattice_particles, bf.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    data.position.emplace_back(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+    data.broken_fraction.push_back(bf[i]);
+  }
+  const auto intact = f.read_ints("/bonds/intact", r, c);
+  std::size_t broken = 0;
+  for (auto v : intact) broken += v ? 0 : 1;
+  data.broken_rod_fraction = intact.empty() ? 0.0 : double(broken) / double(intact.size());
+  const bool pictures = sum["case"].contains("output") ? sum["case"]["output"].value("plots", true) : true;
+  for (const char* stale : {"pictures", "picture_error", "plots", "plot_error"}) sum.erase(stale);
+  finish_cut(dir, setup, data, sum, nullptr, pictures);
+  if (pictures) {
+    write_text_atomic(summary_path, sum.dump(2) + "\n");  // the plot script reads the new analysis
+    const PlotResult pr = make_plots(dir, summary_path);
+    sum["plots"] = pr.files;
+    if (!pr.ok) sum["plot_error"] = pr.message;
+  }
+  write_text_atomic(summary_path, sum.dump(2) + "\n");
+  fmt::print("  post: rewrote {} (cutting, chip{})\n", summary_path, sum.contains("pictures") ? ", pictures" : "");
+}
+
+}  // namespace swarf

@@ -1,0 +1,121 @@
+// summary.cpp: JSON and HDF5 result writers (see summary.h).
+#include "app/summary.h"
+#include "swarf/version.h"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "io/h5file.h"
+#include "io/vtk_output.h"
+
+namespace swarf {
+
+nlohmann::json number(double v) {
+  if (std::isfinite(v)) return v;
+  if (std::isnan(v)) return "nan";
+  return v > 0 ? "inf" : "-inf";
+}
+
+static nlohmann::json node_to_json(const toml::node& n) {
+  if (auto t = n.as_table()) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, v] : *t) j[std::string(k.str())] = node_to_json(v);
+    return j;
+  }
+  if (auto a = n.as_array()) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& v : *a) j.push_back(node_to_json(v));
+    return j;
+  }
+  if (auto s = n.as_string()) return s->get();
+  if (auto i = n.as_integer()) return i->get();
+  if (auto f = n.as_floating_point()) return number(f->get());
+  if (auto b = n.as_boolean()) return b->get();
+  std::ostringstream os;
+  n.visit([&](auto&& v) { os << v; });
+  return os.str();
+}
+
+nlohmann::json case_to_json(const CaseSettings& cs) {
+  return node_to_json(toml::parse(cs.effective_toml));
+}
+
+nlohmann::json derived_to_json(const Derived& d) {
+  return {
+      {"radius_m", d.radius},
+      {"nn_distance_m", d.nn_distance},
+      {"cell_edge_m", d.cell_edge},
+      {"particle_mass_kg", d.particle_mass},
+      {"bulk_density_kg_per_m3", d.bulk_density},
+      {"rod_area_m2", d.rod_area},
+      {"rod_stiffness_N_per_m", d.rod_stiffness},
+      {"rod_law_from_material", d.converted},
+      {"rod_youngs_modulus_Pa", d.law.youngs_modulus},
+      {"rod_yield_strain", number(d.law.yield_strain)},
+      {"rod_hardening_modulus_Pa", d.law.hardening},
+      {"rod_tensile_strength_Pa", number(d.law.tensile_strength)},
+      {"rod_damping_N_s_per_m", d.rod_damping},
+      {"rod_viscosity_Pa_s", d.rod_viscosity},
+      {"omega_max_rad_per_s", d.omega_max},
+      {"dt_stable_s", number(d.dt_stable)},
+      {"dt_s", d.dt},
+      {"scheme", d.implicit ? "newmark" : "verlet"},
+      {"dt_min_s", d.implicit ? nlohmann::json(d.dt_min) : nlohmann::json(nullptr)},
+      {"dt_max_s", d.implicit ? nlohmann::json(d.dt_max) : nlohmann::json(nullptr)},
+      {"wave_speed_100_m_per_s", d.wave_speed},
+      {"rayleigh_time_s", d.rayleigh_time},
+      {"C11_Pa", d.c11},
+      {"C12_Pa", d.c12},
+      {"C44_Pa", d.c12},
+      {"youngs_modulus_100_Pa", d.youngs_modulus_100},
+      {"poisson_ratio_100", d.poisson_ratio_100},
+      {"youngs_modulus_voigt_Pa", d.youngs_modulus_voigt},
+      {"bar_yield_strain", number(d.bar_yield_strain)},
+      {"bar_yield_stress_Pa", number(d.bar_yield_stress)},
+      {"bar_hardening_tangent_Pa", d.bar_hardening_tangent},
+      {"bar_failure_stress_Pa", number(d.bar_failure_stress)},
+  };
+}
+
+void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra) {
+  const auto& p = sim.world().particles;
+  const auto& r = sim.world().rods;
+  const std::string tmp = path + ".part";
+  {
+    H5File f(tmp, H5File::Mode::Create);
+    const std::size_t n = p.size(), m = r.size();
+    std::vector<Vec3> disp(n);
+    for (std::size_t i = 0; i < n; ++i) disp[i] = p.position[i] - p.initial_position[i];
+    f.write("/particles/position", n ? p.position[0].data() : nullptr, n, 3);
+    f.write("/particles/velocity", n ? p.velocity[0].data() : nullptr, n, 3);
+    f.write("/particles/displacement", n ? disp[0].data() : nullptr, n, 3);
+    f.write("/particles/radius", p.radius.data(), n);
+    f.write("/particles/mass", p.mass.data(), n);
+    f.write("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n);
+    if (sim.settings().sphere_orientations) {
+      f.write("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4);
+      f.write("/particles/angular_velocity", n ? p.omega[0].data() : nullptr, n, 3);
+    }
+    std::vector<std::int64_t> pairs(2 * m), group(n);
+    for (std::size_t b = 0; b < m; ++b) {
+      pairs[2 * b] = r.ends[b][0];
+      pairs[2 * b + 1] = r.ends[b][1];
+    }
+    for (std::size_t i = 0; i < n; ++i) group[i] = p.group[i];
+    f.write("/particles/group", group.data(), n);
+    f.write("/bonds/pairs", pairs.data(), m, 2);
+    f.write("/bonds/rest_length", r.rest_length.data(), m);
+    f.write("/bonds/plastic_shift", r.shift.data(), m);
+    f.write("/bonds/intact", r.intact.data(), m);
+    f.write("/bonds/stress", r.stress.data(), m);
+    f.write_attribute("time_s", sim.time());
+    f.write_attribute("steps", static_cast<double>(sim.steps()));
+    f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION);
+    if (extra) extra(f);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace swarf

@@ -1,0 +1,27 @@
+// summary.h: pieces of DIR/summary.json and the final-state HDF5 file DIR/results.h5.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "setup/derived.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+class H5File;
+
+/// The effective case (after overrides) as JSON; non-finite numbers become "inf"/"-inf".
+nlohmann::json case_to_json(const CaseSettings& cs);
+/// Derived quantities with their units in the key names.
+nlohmann::json derived_to_json(const Derived& d);
+/// A finite number, or the string "inf"/"-inf"/"nan" (JSON has no such numbers).
+nlohmann::json number(double v);
+
+/// Writes the final state (particles with their broken-rod fraction, rods with plastic state)
+/// atomically; 'extra' may add datasets (the cut's setup) before the file is closed.
+void write_results_h5(const std::string& path, const Simulation& sim,
+                      const std::function<void(H5File&)>& extra = {});
+
+}  // namespace swarf

@@ -1,0 +1,236 @@
+// checkpoint.cpp: writing and reading restart files (see checkpoint.h). The step's state is
+// Simulation::visit_state (swarf/state_visit.cpp) walked by the HDF5 archives below; the run
+// loop's record follows it.
+#include "io/checkpoint.h"
+#include "swarf/version.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "swarf/core/errors.h"
+#include "io/h5file.h"
+#include "swarf/state_archive.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+namespace {
+
+// Checkpoint layout version. 2: the state as the named fields of Simulation::visit_state
+// (1 packed the step's scalars by position).
+constexpr double kFormat = 2.0;
+
+void put(H5File& f, const std::string& name, const std::vector<Vec3>& v) {
+  f.write(name, v.empty() ? nullptr : v[0].data(), v.size(), 3);
+}
+void put(H5File& f, const std::string& name, const std::vector<double>& v) {
+  f.write(name, v.data(), v.size(), 1);
+}
+void put(H5File& f, const std::string& name, const std::vector<std::uint8_t>& v) { f.write(name, v.data(), v.size()); }
+
+std::vector<double> get(const H5File& f, const std::string& name, std::size_t rows, std::size_t cols) {
+  std::size_t r = 0, c = 0;
+  auto v = f.read_doubles(name, r, c);
+  if (r != rows || c != cols)
+    throw InputError(fmt::format("checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
+                                 "(the checkpoint belongs to another case or version)",
+                                 f.path(), name, r, c, rows, cols));
+  return v;
+}
+std::vector<double> get_any(const H5File& f, const std::string& name) {
+  std::size_t r = 0, c = 0;
+  return f.read_doubles(name, r, c);
+}
+void get(const H5File& f, const std::string& name, std::vector<Vec3>& out) {
+  const auto v = get(f, name, out.size(), 3);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+}
+void get(const H5File& f, const std::string& name, std::vector<double>& out) { out = get(f, name, out.size(), 1); }
+void get(const H5File& f, const std::string& name, std::vector<std::uint8_t>& out) {
+  std::size_t r = 0, c = 0;
+  const auto v = f.read_ints(name, r, c);
+  if (r != out.size() || c != 1)
+    throw InputError(fmt::format("checkpoint '{}': dataset '{}' has {} entries, expected {}", f.path(), name, r,
+                                 out.size()));
+  for (std::size_t i = 0; i < r; ++i) out[i] = static_cast<std::uint8_t>(v[i]);
+}
+
+std::string join_lines(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += x + "\n";
+  return s;
+}
+std::vector<std::string> split_lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t pos = 0;
+  while (pos < s.size()) {
+    const auto eol = s.find('\n', pos);
+    out.push_back(s.substr(pos, eol - pos));
+    if (eol == std::string::npos) break;
+    pos = eol + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The state visit written to and read from datasets under /sim/ (state_archive.h). Arrays
+// keep their element shape (Vec3: N x 3, quaternions: N x 4); scalars are 1-element datasets.
+class H5StateWriter final : public StateArchive {
+ public:
+  explicit H5StateWriter(H5File& f) : f_(f) {}
+  bool loading() const override { return false; }
+  void array(std::string_view name, std::vector<double>& v, std::size_t) override { f_.write(key(name), v.data(), v.size(), 1); }
+  void array(std::string_view name, std::vector<Vec3>& v, std::size_t) override { put(f_, key(name), v); }
+  void array(std::string_view name, std::vector<Quat>& v, std::size_t) override {
+    f_.write(key(name), v.empty() ? nullptr : v[0].data(), v.size(), 4);
+  }
+  void array(std::string_view name, std::vector<std::uint8_t>& v, std::size_t) override { f_.write(key(name), v.data(), v.size()); }
+  void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t) override {
+    const std::vector<std::int64_t> w(v.begin(), v.end());
+    f_.write(key(name), w.data(), w.size(), 1);
+  }
+  void scalar(std::string_view name, double& v) override { f_.write(key(name), &v, 1, 1); }
+  void scalar(std::string_view name, std::int64_t& v) override { f_.write(key(name), &v, 1, 1); }
+
+ private:
+  static std::string key(std::string_view name) { return "/sim/" + std::string(name); }
+  H5File& f_;
+};
+
+class H5StateReader final : public StateArchive {
+ public:
+  explicit H5StateReader(const H5File& f) : f_(f) {}
+  bool loading() const override { return true; }
+  void array(std::string_view name, std::vector<double>& v, std::size_t expected) override {
+    v = doubles(name, expected, 1);
+  }
+  void array(std::string_view name, std::vector<Vec3>& v, std::size_t expected) override {
+    const auto d = doubles(name, expected, 3);
+    v.resize(d.size() / 3);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+  }
+  void array(std::string_view name, std::vector<Quat>& v, std::size_t expected) override {
+    const auto d = doubles(name, expected, 4);
+    v.resize(d.size() / 4);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = Quat(d[4 * i], d[4 * i + 1], d[4 * i + 2], d[4 * i + 3]);
+  }
+  void array(std::string_view name, std::vector<std::uint8_t>& v, std::size_t expected) override {
+    const auto d = ints(name, expected);
+    v.assign(d.begin(), d.end());
+  }
+  void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t expected) override {
+    const auto d = ints(name, expected);
+    v.assign(d.begin(), d.end());
+  }
+  void scalar(std::string_view name, double& v) override { v = doubles(name, 1, 1)[0]; }
+  void scalar(std::string_view name, std::int64_t& v) override { v = ints(name, 1)[0]; }
+
+ private:
+  static std::string key(std::string_view name) { return "/sim/" + std::string(name); }
+  std::vector<double> doubles(std::string_view name, std::size_t expected, std::size_t cols) const {
+    std::size_t r = 0, c = 0;
+    auto v = f_.read_doubles(key(name), r, c);
+    if (v.empty()) r = 0, c = cols;  // (an empty dataset reads as 0 x 1)
+    if (c != cols || (expected != kAnySize && r != expected))
+      throw InputError(fmt::format("checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
+                                   "(the checkpoint belongs to another case or version)",
+                                   f_.path(), key(name), r, c,
+                                   expected == kAnySize ? std::string("N") : std::to_string(expected), cols));
+    return v;
+  }
+  std::vector<std::int64_t> ints(std::string_view name, std::size_t expected) const {
+    std::size_t r = 0, c = 0;
+    auto v = f_.read_ints(key(name), r, c);
+    if (v.empty()) r = 0, c = 1;
+    if (c != 1 || (expected != kAnySize && r != expected))
+      throw InputError(fmt::format("checkpoint '{}': dataset '{}' has {} entries, expected {} "
+                                   "(the checkpoint belongs to another case or version)",
+                                   f_.path(), key(name), r, expected));
+    return v;
+  }
+  const H5File& f_;
+};
+
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Simulation& sim, const RunRecord& rec, const CheckpointCase& c) {
+  const std::string tmp = path + ".part";
+  {
+    H5File f(tmp, H5File::Mode::Create);
+    f.write_attribute("format", kFormat);
+    f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION);
+    f.write_attribute("case_toml", c.toml);
+    f.write_attribute("case_source", c.source);
+    f.write_attribute("case_directory", std::filesystem::absolute(c.directory).string());
+    f.write_attribute("case_overrides", join_lines(c.overrides));
+    f.write_attribute("time_s", sim.time());
+    f.write_attribute("steps", double(sim.steps()));
+    H5StateWriter w(f);
+    const_cast<Simulation&>(sim).visit_state(w);  // (a writer only reads the state)
+    f.write("/run/rows", rec.rows.data(), rec.columns ? rec.rows.size() / rec.columns : 0,
+            std::max<std::size_t>(rec.columns, 1));
+    const std::vector<double> s{double(rec.columns), rec.e0,         rec.next_row,   rec.next_frame,
+                                rec.predicted,       rec.bar_shift,  rec.bar_broken, rec.max_stress,
+                                rec.max_mismatch,    rec.wall_s,     rec.output_s,   double(sim.steps())};
+    put(f, "/run/scalars", s);
+    put(f, "/run/s_strain", rec.s_strain);
+    put(f, "/run/s_stress", rec.s_stress);
+    put(f, "/run/s_segment", rec.s_segment);
+    put(f, "/run/frame_times", rec.frame_times);
+  }  // closed (flushed) before the rename
+  std::filesystem::rename(tmp, path);
+}
+
+CheckpointCase read_checkpoint_case(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(fmt::format("--restart: checkpoint '{}' does not exist", path));
+  H5File f(path, H5File::Mode::Read);
+  if (!f.has_attribute("format") || !f.has_attribute("case_toml"))
+    throw InputError(fmt::format("--restart: '{}' is not a swarf checkpoint", path));
+  if (f.read_double_attribute("format") != kFormat)
+    throw InputError(fmt::format("--restart: checkpoint '{}' has layout {} (this swarf reads {})", path,
+                                 f.read_double_attribute("format"), kFormat));
+  CheckpointCase c;
+  c.toml = f.read_string_attribute("case_toml");
+  c.source = f.read_string_attribute("case_source");
+  c.directory = f.read_string_attribute("case_directory");
+  c.overrides = split_lines(f.read_string_attribute("case_overrides"));
+  c.time = f.read_double_attribute("time_s");
+  c.steps = f.read_double_attribute("steps");
+  return c;
+}
+
+void read_checkpoint(const std::string& path, Simulation& sim, RunRecord& rec) {
+  H5File f(path, H5File::Mode::Read);
+  H5StateReader reader(f);
+  try {
+    sim.visit_state(reader);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.rfind("checkpoint", 0) == 0) throw;
+    throw InputError(fmt::format("checkpoint '{}': {}", path, what));
+  }
+  const auto s = get(f, "/run/scalars", 12, 1);
+  rec.columns = static_cast<std::size_t>(s[0]);
+  rec.e0 = s[1];
+  rec.next_row = s[2];
+  rec.next_frame = s[3];
+  rec.predicted = s[4];
+  rec.bar_shift = s[5];
+  rec.bar_broken = s[6];
+  rec.max_stress = s[7];
+  rec.max_mismatch = s[8];
+  rec.wall_s = s[9];
+  rec.output_s = s[10];
+  rec.last_checkpoint_step = static_cast<std::int64_t>(s[11]);
+  rec.rows = get_any(f, "/run/rows");
+  if (rec.columns == 0 || rec.rows.size() % rec.columns != 0)
+    throw InputError(fmt::format("checkpoint '{}': series rows do not match {} columns", path, rec.columns));
+  rec.s_strain = get_any(f, "/run/s_strain");
+  rec.s_stress = get_any(f, "/run/s_stress");
+  rec.s_segment = get_any(f, "/run/s_segment");
+  rec.frame_times = get_any(f, "/run/frame_times");
+}
+
+}  // namespace swarf

@@ -1,0 +1,152 @@
+// h5file.cpp: HDF5 C API calls behind the H5File wrapper.
+#include "io/h5file.h"
+
+#include <hdf5.h>
+
+#include "swarf/core/errors.h"
+
+namespace swarf {
+namespace {
+
+void quiet_hdf5() {
+  static bool done = false;
+  if (!done) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    done = true;
+  }
+}
+
+hid_t link_props() {
+  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  return lcpl;
+}
+
+}  // namespace
+
+H5File::H5File(const std::string& path, Mode mode) : path_(path) {
+  quiet_hdf5();
+  if (mode == Mode::Create) {
+    id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (id_ < 0) throw InputError("cannot create HDF5 file '" + path + "'");
+  } else {
+    id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id_ < 0) throw InputError("cannot open HDF5 file '" + path + "' (missing or not HDF5)");
+  }
+}
+
+H5File::~H5File() {
+  if (id_ >= 0) H5Fclose(static_cast<hid_t>(id_));
+}
+
+static void write_any(hid_t file, const std::string& path, const std::string& name, hid_t type,
+                      const void* data, std::size_t rows, std::size_t cols) {
+  hsize_t dims[2] = {rows, cols};
+  hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
+  hid_t lcpl = link_props();
+  hid_t set = H5Dcreate2(file, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t st = set < 0 ? -1 : rows * cols == 0 ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  if (set >= 0) H5Dclose(set);
+  H5Pclose(lcpl);
+  H5Sclose(space);
+  if (st < 0) throw InputError("cannot write dataset '" + name + "' to HDF5 file '" + path + "'");
+}
+
+void H5File::write(const std::string& name, const double* data, std::size_t rows, std::size_t cols) {
+  write_any(id_, path_, name, H5T_NATIVE_DOUBLE, data, rows, cols);
+}
+void H5File::write(const std::string& name, const std::int64_t* data, std::size_t rows, std::size_t cols) {
+  write_any(id_, path_, name, H5T_NATIVE_INT64, data, rows, cols);
+}
+void H5File::write(const std::string& name, const std::uint8_t* data, std::size_t rows) {
+  write_any(id_, path_, name, H5T_NATIVE_UINT8, data, rows, 1);
+}
+
+void H5File::write_attribute(const std::string& name, const std::string& value) {
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() + 1);
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attr = H5Acreate2(id_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t st = attr >= 0 ? H5Awrite(attr, type, value.c_str()) : -1;
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+  if (st < 0) throw InputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+}
+
+void H5File::write_attribute(const std::string& name, double value) {
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attr = H5Acreate2(id_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t st = attr >= 0 ? H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) : -1;
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  if (st < 0) throw InputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+}
+
+bool H5File::has(const std::string& name) const {
+  // Check each level: H5Lexists fails on a path whose parent is missing.
+  std::size_t pos = 0;
+  while (true) {
+    pos = name.find('/', pos + 1);
+    std::string part = name.substr(0, pos);
+    if (H5Lexists(id_, part.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (pos == std::string::npos) return true;
+  }
+}
+
+template <class T>
+static std::vector<T> read_any(hid_t file, const std::string& path, const std::string& name, hid_t type,
+                               std::size_t& rows, std::size_t& cols) {
+  hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  if (set < 0) throw InputError("HDF5 file '" + path + "' has no dataset '" + name + "'");
+  hid_t space = H5Dget_space(set);
+  int rank = H5Sget_simple_extent_ndims(space);
+  hsize_t dims[2] = {0, 1};
+  if (rank < 1 || rank > 2) {
+    H5Sclose(space);
+    H5Dclose(set);
+    throw InputError("dataset '" + name + "' in '" + path + "' must be 1-D or 2-D");
+  }
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  rows = dims[0];
+  cols = rank == 2 ? dims[1] : 1;
+  std::vector<T> out(rows * cols);
+  herr_t st = out.empty() ? 0 : H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  H5Sclose(space);
+  H5Dclose(set);
+  if (st < 0) throw InputError("cannot read dataset '" + name + "' from '" + path + "'");
+  return out;
+}
+
+std::vector<double> H5File::read_doubles(const std::string& name, std::size_t& rows, std::size_t& cols) const {
+  return read_any<double>(id_, path_, name, H5T_NATIVE_DOUBLE, rows, cols);
+}
+std::vector<std::int64_t> H5File::read_ints(const std::string& name, std::size_t& rows, std::size_t& cols) const {
+  return read_any<std::int64_t>(id_, path_, name, H5T_NATIVE_INT64, rows, cols);
+}
+
+std::string H5File::read_string_attribute(const std::string& name) const {
+  hid_t attr = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
+  if (attr < 0) throw InputError("HDF5 file '" + path_ + "' has no attribute '" + name + "'");
+  hid_t type = H5Aget_type(attr);
+  std::string out(H5Tget_size(type), '\0');
+  H5Aread(attr, type, out.data());
+  H5Tclose(type);
+  H5Aclose(attr);
+  while (!out.empty() && out.back() == '\0') out.pop_back();
+  return out;
+}
+
+bool H5File::has_attribute(const std::string& name) const { return H5Aexists(id_, name.c_str()) > 0; }
+
+double H5File::read_double_attribute(const std::string& name) const {
+  hid_t attr = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
+  if (attr < 0) throw InputError("HDF5 file '" + path_ + "' has no attribute '" + name + "'");
+  double v = 0.0;
+  herr_t st = H5Aread(attr, H5T_NATIVE_DOUBLE, &v);
+  H5Aclose(attr);
+  if (st < 0) throw InputError("cannot read attribute '" + name + "' of '" + path_ + "'");
+  return v;
+}
+
+}  // namespace swarf

@@ -1,0 +1,158 @@
+// mesh_file.cpp: STL and OBJ reading, STL writing (see mesh_file.h).
+#include "io/mesh_file.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "swarf/core/errors.h"
+
+namespace swarf {
+namespace {
+
+std::string lower_ext(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (auto& ch : e) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return e;
+}
+
+// Vertices of STL facets are not shared in the file; weld exact duplicates so the mesh has
+// connectivity (needed for watertightness checks and smaller outputs).
+int weld(std::map<std::array<double, 3>, int>& index, TriangleMesh& m, const Vec3& p) {
+  const std::array<double, 3> key{p[0], p[1], p[2]};
+  auto it = index.find(key);
+  if (it != index.end()) return it->second;
+  const int id = static_cast<int>(m.vertices.size());
+  m.vertices.push_back(p);
+  index.emplace(key, id);
+  return id;
+}
+
+TriangleMesh read_stl(const std::string& path, double scale) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("mesh file '{}' cannot be read", path));
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  TriangleMesh m;
+  m.name = std::filesystem::path(path).stem().string();
+  std::map<std::array<double, 3>, int> index;
+  // Binary: 80-byte header, uint32 count, 50 bytes per facet. An ASCII file starts with
+  // "solid" but a binary one may too, so the size decides.
+  bool binary = false;
+  if (data.size() >= 84) {
+    std::uint32_t n = 0;
+    std::memcpy(&n, data.data() + 80, 4);
+    binary = data.size() == 84 + 50 * static_cast<std::size_t>(n);
+  }
+  if (binary) {
+    std::uint32_t n = 0;
+    std::memcpy(&n, data.data() + 80, 4);
+    for (std::uint32_t t = 0; t < n; ++t) {
+      const char* f = data.data() + 84 + 50 * static_cast<std::size_t>(t);
+      std::array<int, 3> tri{};
+      for (int k = 0; k < 3; ++k) {
+        float xyz[3];
+        std::memcpy(xyz, f + 12 + 12 * k, 12);
+        tri[k] = weld(index, m, Vec3(xyz[0], xyz[1], xyz[2]) * scale);
+      }
+      m.triangles.push_back(tri);
+    }
+    return m;
+  }
+  if (data.rfind("solid", 0) != 0)
+    throw InputError(fmt::format("mesh file '{}' is neither ASCII STL (no 'solid') nor binary STL (size)", path));
+  std::istringstream ss(data);
+  std::string word;
+  std::vector<int> facet;
+  int line_facet = 0;
+  while (ss >> word) {
+    if (word == "vertex") {
+      double x, y, z;
+      if (!(ss >> x >> y >> z))
+        throw InputError(fmt::format("mesh file '{}': facet {}: malformed vertex", path, line_facet));
+      facet.push_back(weld(index, m, Vec3(x, y, z) * scale));
+    } else if (word == "endfacet") {
+      if (facet.size() != 3)
+        throw InputError(fmt::format("mesh file '{}': facet {} has {} vertices, not 3", path, line_facet, facet.size()));
+      m.triangles.push_back({facet[0], facet[1], facet[2]});
+      facet.clear();
+      ++line_facet;
+    }
+  }
+  return m;
+}
+
+TriangleMesh read_obj(const std::string& path, double scale) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("mesh file '{}' cannot be read", path));
+  TriangleMesh m;
+  m.name = std::filesystem::path(path).stem().string();
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::istringstream ls(line);
+    std::string tag;
+    if (!(ls >> tag)) continue;
+    if (tag == "v") {
+      double x, y, z;
+      if (!(ls >> x >> y >> z)) throw InputError(fmt::format("{}:{}: malformed vertex '{}'", path, lineno, line));
+      m.vertices.emplace_back(Vec3(x, y, z) * scale);
+    } else if (tag == "f") {
+      std::vector<int> poly;
+      std::string item;
+      while (ls >> item) {
+        const int idx = std::atoi(item.substr(0, item.find('/')).c_str());
+        if (idx == 0) throw InputError(fmt::format("{}:{}: bad face index '{}'", path, lineno, item));
+        // OBJ indices are 1-based; negative ones count back from the last vertex.
+        poly.push_back(idx > 0 ? idx - 1 : static_cast<int>(m.vertices.size()) + idx);
+      }
+      if (poly.size() < 3) throw InputError(fmt::format("{}:{}: a face needs 3 vertices", path, lineno));
+      for (std::size_t k = 1; k + 1 < poly.size(); ++k) m.triangles.push_back({poly[0], poly[k], poly[k + 1]});
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+TriangleMesh read_mesh(const std::string& path, double scale) {
+  if (!std::filesystem::exists(path)) throw InputError(fmt::format("mesh file '{}' does not exist", path));
+  const std::string ext = lower_ext(path);
+  TriangleMesh m;
+  if (ext == ".stl") m = read_stl(path, scale);
+  else if (ext == ".obj") m = read_obj(path, scale);
+  else throw InputError(fmt::format("mesh file '{}': unknown format '{}' (use .stl or .obj)", path, ext));
+  m.validate(path);
+  return m;
+}
+
+void write_stl(const std::string& path, const TriangleMesh& m) {
+  const std::string tmp = path + ".part";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw InputError("cannot write '" + tmp + "'");
+    char header[80] = {};
+    std::snprintf(header, sizeof header, "swarf mesh %s", m.name.c_str());
+    out.write(header, 80);
+    const std::uint32_t n = static_cast<std::uint32_t>(m.triangles.size());
+    out.write(reinterpret_cast<const char*>(&n), 4);
+    for (const auto& t : m.triangles) {
+      const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
+      const Vec3 nrm = (b - a).cross(c - a).normalized();
+      float buf[12] = {float(nrm[0]), float(nrm[1]), float(nrm[2]), float(a[0]), float(a[1]), float(a[2]),
+                       float(b[0]),   float(b[1]),   float(b[2]),   float(c[0]), float(c[1]), float(c[2])};
+      out.write(reinterpret_cast<const char*>(buf), 48);
+      const std::uint16_t attr = 0;
+      out.write(reinterpret_cast<const char*>(&attr), 2);
+    }
+    if (!out) throw InputError("write to '" + tmp + "' failed");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace swarf

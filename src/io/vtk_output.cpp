@@ -1,0 +1,212 @@
+// vtk_output.cpp: VTK XML writers for particle and rod frames (see vtk_output.h).
+#include "io/vtk_output.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include "swarf/state/mesh.h"
+
+#include "io/atomic_file.h"
+#include "swarf/core/errors.h"
+
+namespace swarf {
+namespace {
+
+vtkNew<vtkDoubleArray> vector_array(const char* name, const std::vector<Vec3>& v) {
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) a->SetTypedTuple(static_cast<vtkIdType>(i), v[i].data());
+  return a;
+}
+
+vtkNew<vtkDoubleArray> scalar_array(const char* name, const std::vector<double>& v) {
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfValues(static_cast<vtkIdType>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), v[i]);
+  return a;
+}
+
+vtkNew<vtkPoints> points_of(const Particles& p) {
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  pts->SetNumberOfPoints(static_cast<vtkIdType>(p.size()));
+  for (std::size_t i = 0; i < p.size(); ++i) pts->SetPoint(static_cast<vtkIdType>(i), p.position[i].data());
+  return pts;
+}
+
+// Cells of one type with 'per' points each, from a flat connectivity list.
+void set_cells(vtkUnstructuredGrid* grid, int type, int per, const std::vector<vtkIdType>& conn) {
+  const vtkIdType nc = static_cast<vtkIdType>(conn.size() / per);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(nc + 1);
+  for (vtkIdType c = 0; c <= nc; ++c) offsets->SetValue(c, c * per);
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(conn.size()));
+  for (std::size_t k = 0; k < conn.size(); ++k) connectivity->SetValue(static_cast<vtkIdType>(k), conn[k]);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  grid->SetCells(type, cells);
+}
+
+void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
+  vtkNew<vtkXMLUnstructuredGridWriter> w;
+  const std::string tmp = path + ".part.vtu";
+  w->SetFileName(tmp.c_str());
+  w->SetInputData(grid);
+  w->SetDataModeToAppended();
+  w->EncodeAppendedDataOff();
+  w->SetHeaderTypeToUInt64();
+  w->SetCompressorTypeToNone();
+  if (w->Write() != 1) throw InputError("cannot write VTK file '" + path + "'");
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+void write_vtp(const std::string& path, const TriangleMesh& mesh) {
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& v : mesh.vertices) pts->InsertNextPoint(v.data());
+  vtkNew<vtkCellArray> tris;
+  for (const auto& t : mesh.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    tris->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(pts);
+  poly->SetPolys(tris);
+  vtkNew<vtkXMLPolyDataWriter> w;
+  const std::string tmp = path + ".part.vtp";
+  w->SetFileName(tmp.c_str());
+  w->SetInputData(poly);
+  if (w->Write() != 1) throw InputError("cannot write VTK file '" + path + "'");
+  std::filesystem::rename(tmp, path);
+}
+
+std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r) {
+  std::vector<double> out(p.size(), 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const int n = r.row_start[i + 1] - r.row_start[i];
+    if (n == 0) continue;
+    int broken = 0;
+    for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) broken += r.intact[r.entries[e].rod] ? 0 : 1;
+    out[i] = double(broken) / n;
+  }
+  return out;
+}
+
+VtkSeries::VtkSeries(const std::string& dir, bool with_rods, bool with_orientations)
+    : dir_(dir), with_rods_(with_rods), with_orientations_(with_orientations) {
+  std::filesystem::create_directories(std::filesystem::path(dir) / "frames");
+}
+
+void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes) {
+  const std::size_t k = times_.size();
+  mesh_names_.clear();
+  for (const auto& mb : meshes) {
+    TriangleMesh placed = mb.mesh;
+    for (auto& v : placed.vertices) v += mb.offset;
+    write_vtp(fmt::format("{}/frames/mesh_{}_{:05d}.vtp", dir_, mb.name, k), placed);
+    mesh_names_.push_back(mb.name);
+  }
+  auto pts = points_of(p);
+  {
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->SetPoints(pts);
+    std::vector<vtkIdType> conn(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) conn[i] = static_cast<vtkIdType>(i);
+    set_cells(grid, VTK_VERTEX, 1, conn);
+    std::vector<Vec3> disp(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) disp[i] = p.position[i] - p.initial_position[i];
+    grid->GetPointData()->AddArray(vector_array("velocity", p.velocity));
+    grid->GetPointData()->AddArray(vector_array("displacement", disp));
+    grid->GetPointData()->AddArray(scalar_array("radius", p.radius));
+    grid->GetPointData()->AddArray(scalar_array("broken_fraction", broken_fraction_per_particle(p, r)));
+    if (with_orientations_) {
+      vtkNew<vtkDoubleArray> q;
+      q->SetName("orientation");
+      q->SetNumberOfComponents(4);
+      q->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
+      for (std::size_t i = 0; i < p.size(); ++i) q->SetTypedTuple(static_cast<vtkIdType>(i), p.orientation[i].data());
+      grid->GetPointData()->AddArray(q);
+      grid->GetPointData()->AddArray(vector_array("angular_velocity", p.omega));
+    }
+    vtkNew<vtkIntArray> group;
+    group->SetName("group");
+    group->SetNumberOfValues(static_cast<vtkIdType>(p.size()));
+    for (std::size_t i = 0; i < p.size(); ++i) group->SetValue(static_cast<vtkIdType>(i), p.group[i]);
+    grid->GetPointData()->AddArray(group);
+    write_grid(grid, fmt::format("{}/frames/particles_{:05d}.vtu", dir_, k));
+  }
+  if (with_rods_) {
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->SetPoints(pts);
+    std::vector<vtkIdType> conn(2 * r.size());
+    std::vector<double> shift(r.size()), stress(r.size()), strain(r.size());
+    vtkNew<vtkUnsignedCharArray> state;
+    state->SetName("state");
+    state->SetNumberOfValues(static_cast<vtkIdType>(r.size()));
+    for (std::size_t b = 0; b < r.size(); ++b) {
+      conn[2 * b] = r.ends[b][0];
+      conn[2 * b + 1] = r.ends[b][1];
+      shift[b] = r.shift[b];
+      stress[b] = r.intact[b] ? r.stress[b] : 0.0;
+      Vec3 d = p.position[r.ends[b][1]] - p.position[r.ends[b][0]];
+      periodic_.wrap(d);
+      const double len = d.norm();
+      strain[b] = (len - r.rest_length[b]) / r.rest_length[b];
+      state->SetValue(static_cast<vtkIdType>(b), r.intact[b]);
+    }
+    set_cells(grid, VTK_LINE, 2, conn);
+    grid->GetCellData()->AddArray(scalar_array("stress", stress));
+    grid->GetCellData()->AddArray(scalar_array("strain", strain));
+    grid->GetCellData()->AddArray(scalar_array("plastic_shift", shift));
+    grid->GetCellData()->AddArray(state);
+    write_grid(grid, fmt::format("{}/frames/rods_{:05d}.vtu", dir_, k));
+  }
+  times_.push_back(t);
+  write_pvd();
+}
+
+void VtkSeries::add_final_part(const std::string& name, const std::string& file) {
+  final_parts_.emplace_back(name, file);
+  write_pvd();
+}
+
+void VtkSeries::write_pvd() const {
+  std::string x = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                  "  <Collection>\n";
+  for (std::size_t k = 0; k < times_.size(); ++k) {
+    x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" name=\"particles\" file=\"frames/particles_{:05d}.vtu\"/>\n",
+                     times_[k], k);
+    if (with_rods_)
+      x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"1\" name=\"rods\" file=\"frames/rods_{:05d}.vtu\"/>\n",
+                       times_[k], k);
+    for (std::size_t m = 0; m < mesh_names_.size(); ++m)
+      x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"frames/mesh_{}_{:05d}.vtp\"/>\n",
+                       times_[k], m + 2, mesh_names_[m], mesh_names_[m], k);
+    if (k + 1 == times_.size())
+      for (std::size_t e = 0; e < final_parts_.size(); ++e)
+        x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"{}\"/>\n", times_[k],
+                         mesh_names_.size() + 2 + e, final_parts_[e].first, final_parts_[e].second);
+  }
+  x += "  </Collection>\n</VTKFile>\n";
+  write_text_atomic(dir_ + "/particles.pvd", x);
+}
+
+}  // namespace swarf

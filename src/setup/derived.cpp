@@ -1,0 +1,103 @@
+// derived.cpp: the derived quantities and lattice relations (see derived.h).
+#include "setup/derived.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "swarf/core/errors.h"
+#include "lattice_gen/fcc_lattice.h"
+
+namespace swarf {
+
+Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
+  Derived d;
+  if (lat.position.empty()) throw InputError(cs.source + ": the workpiece has no particles");
+  d.radius = *std::min_element(lat.radius.begin(), lat.radius.end());
+  d.nn_distance = 2.0 * d.radius;
+  d.cell_edge = lat.cell_edge > 0 ? lat.cell_edge : std::sqrt(2.0) * d.nn_distance;
+  const double R = d.radius, rho = cs.material.density;
+  // Free particles (no workpiece) are spheres; lattice particles follow mass_basis.
+  d.particle_mass = cs.material.mass_basis == "sphere" || !cs.workpiece.enabled
+                        ? rho * 4.0 / 3.0 * M_PI * R * R * R
+                        : rho * std::pow(d.nn_distance, 3) / std::sqrt(2.0);
+  d.rod_area = cs.rod.area > 0 ? cs.rod.area : M_PI * R * R;
+  double l0 = d.nn_distance;
+  if (!lat.rest_length.empty()) l0 = *std::min_element(lat.rest_length.begin(), lat.rest_length.end());
+  // The rod law: given directly, or derived from macroscopic properties along [100]
+  // (physics notes section 5): E100 = 4 kb/(3a), every rod strained by eps/3 in magnitude
+  // under uniaxial stress, so sigma_y = 3 E100 eps_y, H = E100 k/E, sigma_f = 3 (E100/E) sigma_max.
+  RodSettings rod = cs.rod;
+  const double a_cell = d.cell_edge;
+  if (cs.material.macroscopic) {
+    const auto& mt = cs.material;
+    const double kb = 3.0 * a_cell * mt.youngs_modulus / 4.0;
+    rod.youngs_modulus = kb * l0 / d.rod_area;
+    rod.yield_strain = mt.yield_stress / (3.0 * mt.youngs_modulus);
+    rod.hardening_modulus = mt.hardening_modulus * rod.youngs_modulus / mt.youngs_modulus;
+    rod.tensile_strength = mt.tensile_strength * rod.youngs_modulus / (3.0 * mt.youngs_modulus);
+    d.converted = true;
+  }
+  const double E = rod.youngs_modulus;
+  d.rod_stiffness = E * d.rod_area / l0;
+  const double kb = d.rod_stiffness, m = d.particle_mass, zeta = cs.rod.damping_ratio;
+  d.rod_damping = zeta * 2.0 * std::sqrt(kb * m / 2.0);
+  d.rod_viscosity = d.rod_damping * l0 / d.rod_area;
+  d.omega_max = std::sqrt(8.0 * kb / m);
+  // The rod dashpots damp like the stiffness (c/kb times K): the modal damping ratio grows
+  // with the frequency, and the zone-boundary mode (omega^2 = 8 kb/m) has twice the ratio of
+  // the two-particle mode (omega^2 = 2 kb/m) that zeta refers to.
+  const double zeta_max = 2.0 * zeta;
+  d.dt_stable = lat.bonds.empty() ? HUGE_VAL : 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
+  if (cs.contact.enabled) {
+    // Contacts: a fifth of the Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
+    // smallest particle (rho the density of a solid sphere of that mass).
+    const double nu = cs.contact.poisson_ratio, G = cs.contact.youngs_modulus / (2.0 * (1.0 + nu));
+    const double rho_s = m / (4.0 / 3.0 * M_PI * R * R * R);
+    d.rayleigh_time = M_PI * R * std::sqrt(rho_s / G) / (0.1631 * nu + 0.8766);
+    d.dt_stable = std::min(d.dt_stable, 0.2 * d.rayleigh_time);
+  }
+  d.wave_speed = d.nn_distance * std::sqrt(kb / m);
+
+  const double a = d.cell_edge;
+  d.c11 = 2.0 * kb / a;
+  d.c12 = kb / a;
+  d.youngs_modulus_100 = 4.0 * kb / (3.0 * a);
+  d.poisson_ratio_100 = 1.0 / 3.0;
+  d.youngs_modulus_voigt = 2.0 * kb / a;
+  d.bulk_density = m / (a * a * a / 4.0);
+  d.bar_stress_factor = 3.0 * d.youngs_modulus_100 / E;
+  d.bar_yield_strain = 3.0 * rod.yield_strain;
+  d.bar_yield_stress = d.youngs_modulus_100 * d.bar_yield_strain;
+  d.bar_hardening_tangent = d.youngs_modulus_100 * rod.hardening_modulus / E;
+  d.bar_failure_stress = d.bar_stress_factor * rod.tensile_strength;
+
+  d.law.youngs_modulus = E;
+  d.law.yield_strain = rod.yield_strain;
+  d.law.hardening = rod.hardening_modulus;
+  d.law.tensile_strength = rod.tensile_strength;
+  d.law.viscosity = d.rod_viscosity;
+
+  const auto& g = cs.integrator;
+  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && std::isfinite(rod.tensile_strength));
+  d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
+  d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
+  // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64
+  // (0.8 of the stable step for beta = 1/4).
+  d.dt_max = g.dt_max > 0 ? g.dt_max : 0.4 / std::sqrt(g.beta) * d.dt_stable;
+  if (d.implicit) {
+    if (d.dt < d.dt_min || d.dt > d.dt_max)
+      throw InputError(fmt::format("{}: the first step dt = {:.6g} s lies outside [dt_min, dt_max] = [{:.6g}, {:.6g}] s "
+                                   "(integrator.dt, dt_min, dt_max)", cs.source, d.dt, d.dt_min, d.dt_max));
+    return d;  // the step control keeps the fixed-point iteration convergent
+  }
+  if (d.dt > d.dt_stable && !g.allow_unstable_dt)
+    throw InputError(fmt::format(
+        "{}: key 'integrator.dt' = {:.6g} s exceeds the stable step {:.6g} s of the explicit scheme "
+        "((2/omega_max)(sqrt(1+(2 zeta)^2) - 2 zeta), omega_max^2 = 8 kb/m, m = {:.4g} kg, kb = {:.4g} N/m, zeta = {}); lower dt or set "
+        "integrator.allow_unstable_dt = true to run anyway",
+        cs.source, d.dt, d.dt_stable, m, kb, zeta));
+  return d;
+}
+
+}  // namespace swarf

@@ -1,0 +1,338 @@
+// model.cpp: building particles, rods and groups from the settings (see model.h).
+#include "setup/model.h"
+#include "io/mesh_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "swarf/core/errors.h"
+#include "lattice_gen/lattice_file.h"
+#include "tool_paths/tool_geometry.h"
+#include <fstream>
+#include <sstream>
+
+namespace swarf {
+
+std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const std::string& side, int layers,
+                                      double layer_spacing) {
+  const int c = side[0] - 'x';
+  const bool upper = side[1] == '+';
+  double ext = position[0][c];
+  for (const auto& p : position) ext = upper ? std::max(ext, p[c]) : std::min(ext, p[c]);
+  const double reach = (layers - 0.5) * layer_spacing;
+  std::vector<std::int32_t> out;
+  for (std::size_t i = 0; i < position.size(); ++i)
+    if (std::abs(position[i][c] - ext) < reach) out.push_back(static_cast<std::int32_t>(i));
+  return out;
+}
+
+static Motion motion_from(const MotionSettings& ms) {
+  Motion m;
+  auto vec = [](const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); };
+  m.velocity = vec(ms.velocity);
+  m.time = ms.table_time;
+  if (ms.kind == "velocity") {
+    m.kind = Motion::Kind::Velocity;
+  } else if (ms.kind == "ramp") {
+    m.kind = Motion::Kind::Ramp;
+    m.ramp_time = ms.ramp_time;
+  } else if (ms.kind == "table") {
+    m.kind = Motion::Kind::Table;
+    for (const auto& u : ms.table_displacement) m.displacement.push_back(vec(u));
+  } else if (ms.kind == "velocity_table") {
+    m.kind = Motion::Kind::VelocityTable;
+    // Displacement at each table time: the exact integral of the piecewise-linear velocity.
+    m.displacement.push_back(Vec3::Zero());
+    for (const auto& v : ms.table_velocity) m.table_velocity.push_back(vec(v));
+    for (std::size_t k = 1; k < m.time.size(); ++k)
+      m.displacement.push_back(m.displacement.back() +
+                               0.5 * (m.table_velocity[k - 1] + m.table_velocity[k]) * (m.time[k] - m.time[k - 1]));
+  }
+  return m;
+}
+
+static TriangleMesh rectangle_mesh(const MeshSettings& ms) {
+  TriangleMesh m;
+  m.name = ms.name;
+  const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]), e1(ms.edge1[0], ms.edge1[1], ms.edge1[2]),
+      e2(ms.edge2[0], ms.edge2[1], ms.edge2[2]);
+  const int n1 = ms.divisions[0], n2 = ms.divisions[1];
+  for (int b = 0; b <= n2; ++b)
+    for (int a = 0; a <= n1; ++a) m.vertices.push_back(o + (double(a) / n1) * e1 + (double(b) / n2) * e2);
+  auto id = [&](int a, int b) { return b * (n1 + 1) + a; };
+  for (int b = 0; b < n2; ++b)
+    for (int a = 0; a < n1; ++a) {
+      m.triangles.push_back({id(a, b), id(a + 1, b), id(a + 1, b + 1)});
+      m.triangles.push_back({id(a, b), id(a + 1, b + 1), id(a, b + 1)});
+    }
+  return m;
+}
+
+static std::uint8_t dof_mask(const std::string& dofs) {
+  std::uint8_t m = 0;
+  for (char ch : dofs) m |= static_cast<std::uint8_t>(1u << (ch - 'x'));
+  return m;
+}
+
+Model build_model(const CaseSettings& cs) {
+  Model model;
+  model.settings = cs;
+  Lattice lat;
+  if (!cs.workpiece.enabled) {
+    // No workpiece: only free particles.
+  } else if (!cs.workpiece.lattice_file.empty()) {
+    lat = read_lattice(cs.workpiece.lattice_file);
+  } else {
+    FccSpec spec;
+    spec.radius = cs.workpiece.radius;
+    spec.cells = cs.workpiece.cells;
+    spec.size = cs.workpiece.size;
+    spec.bond_tolerance = cs.workpiece.bond_tolerance;
+    lat = generate_fcc(spec);
+    if (cs.workpiece.periodic_width) {
+      // Bond the two y faces across the boundary: the layer at y = 0 and the one at
+      // y = period - a/2 are nearest neighbours through the periodic image.
+      const double a = lat.cell_edge, L = cs.workpiece.cells[1] * a, d0 = 2.0 * spec.radius;
+      model.periodic = Periodic::along_y(L);
+      std::vector<std::int32_t> low, high;
+      for (std::size_t i = 0; i < lat.position.size(); ++i) {
+        if (lat.position[i][1] < 0.25 * a) low.push_back(static_cast<std::int32_t>(i));
+        if (lat.position[i][1] > L - 0.75 * a) high.push_back(static_cast<std::int32_t>(i));
+      }
+      const double tol = spec.bond_tolerance;
+      for (auto i : low)
+        for (auto j : high) {
+          Vec3 dx = lat.position[j] - lat.position[i];
+          model.periodic.wrap(dx);
+          const double len = dx.norm();
+          if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
+          lat.bonds.push_back({std::min(i, j), std::max(i, j)});
+          lat.rest_length.push_back(len);
+        }
+      // Keep the rods sorted as the generator gives them (the gather order follows the rods).
+      std::vector<std::size_t> order(lat.bonds.size());
+      for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+      std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
+      std::vector<std::array<std::int32_t, 2>> bonds(order.size());
+      std::vector<double> rest(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        bonds[k] = lat.bonds[order[k]];
+        rest[k] = lat.rest_length[order[k]];
+      }
+      lat.bonds.swap(bonds);
+      lat.rest_length.swap(rest);
+    }
+  }
+  model.lattice_particles = lat.position.size();
+  // Free particles follow the lattice (no bonds).
+  std::vector<Vec3> free_velocity, free_spin;
+  for (const auto& ps : cs.particles) {
+    lat.position.emplace_back(ps.position[0], ps.position[1], ps.position[2]);
+    lat.radius.push_back(ps.radius);
+    free_velocity.emplace_back(ps.velocity[0], ps.velocity[1], ps.velocity[2]);
+    free_spin.emplace_back(ps.angular_velocity[0], ps.angular_velocity[1], ps.angular_velocity[2]);
+  }
+  if (!cs.particles_file.file.empty()) {
+    std::ifstream in(cs.particles_file.file);
+    std::string line;
+    int lineno = 0;
+    while (std::getline(in, line)) {
+      ++lineno;
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream ls(line);
+      double id, x, y, z, vx, vy, vz;
+      if (!(ls >> id >> x >> y >> z >> vx >> vy >> vz) || !std::isfinite(x + y + z + vx + vy + vz))
+        throw InputError(fmt::format("{}:{}: expected 'id x y z vx vy vz' (SI units), got '{}'", cs.particles_file.file,
+                                     lineno, line.substr(0, 80)));
+      lat.position.emplace_back(x, y, z);
+      lat.radius.push_back(cs.particles_file.radius);
+      free_velocity.emplace_back(vx, vy, vz);
+      free_spin.emplace_back(Vec3::Zero());
+    }
+  }
+  model.derived = compute_derived(cs, lat);
+  const Derived& d = model.derived;
+
+  auto& p = model.particles;
+  const std::size_t n = lat.position.size();
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.position[i] = lat.position[i];
+    p.initial_position[i] = lat.position[i];
+    p.radius[i] = lat.radius[i];
+    // Mass scales with R^3 for a lattice of mixed radii read from a file.
+    const double s = lat.radius[i] / d.radius;
+    p.mass[i] = d.particle_mass * s * s * s;
+    p.inv_mass[i] = 1.0 / p.mass[i];
+    p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
+    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+  }
+  for (std::size_t k = 0; k < free_velocity.size(); ++k) {
+    const std::size_t i = model.lattice_particles + k;
+    // Free particles are solid spheres whatever the lattice's mass basis.
+    p.mass[i] = cs.material.density * 4.0 / 3.0 * M_PI * std::pow(p.radius[i], 3);
+    p.inv_mass[i] = 1.0 / p.mass[i];
+    p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
+    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+    p.velocity[i] = free_velocity[k];
+    p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
+  }
+
+  auto& r = model.rods;
+  r.law = d.law;
+  r.area = d.rod_area;
+  r.ends = lat.bonds;
+  r.rest_length = lat.rest_length;
+  r.reset_state();
+  r.build_rows(n);
+
+  const double h = 0.5 * d.cell_edge;  // spacing of lattice layers along a cube axis
+  auto add_group = [&](const std::string& name, std::vector<std::int32_t> members, std::uint8_t dofs, Motion motion) {
+    if (members.empty()) throw InputError(fmt::format("{}: group '{}' selects no particle", cs.source, name));
+    for (auto i : members) {
+      if (p.group[i] >= 0)
+        throw InputError(fmt::format("{}: particle {} belongs to groups '{}' and '{}'; groups must not overlap",
+                                     cs.source, i, model.groups[p.group[i]].name, name));
+      p.group[i] = static_cast<std::int32_t>(model.groups.size());
+      p.prescribed[i] = dofs;
+    }
+    model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
+  };
+
+  for (const auto& gs : cs.groups) {
+    std::vector<std::int32_t> members;
+    if (!gs.side.empty()) {
+      members = select_side(lat.position, gs.side, gs.layers, h);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) {
+        bool in = true;
+        for (int c = 0; c < 3; ++c) in = in && lat.position[i][c] >= gs.box_min[c] && lat.position[i][c] <= gs.box_max[c];
+        if (in) members.push_back(static_cast<std::int32_t>(i));
+      }
+    }
+    add_group(gs.name, std::move(members), dof_mask(gs.dofs),
+              motion_from(gs.motion));
+  }
+
+  if (cs.uniaxial.enabled) {
+    const auto& u = cs.uniaxial;
+    auto& info = model.uniaxial;
+    info.enabled = true;
+    info.axis = u.axis[0] - 'x';
+    const int ax = info.axis;
+    Vec3 lo = lat.position[0], hi = lat.position[0];
+    for (const auto& x : lat.position) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    info.gauge_length = (hi[ax] - lo[ax]) - 2.0 * (u.grip_layers - 1) * h;
+    if (!(info.gauge_length > 0.5 * h))
+      throw InputError(fmt::format("{}: key 'uniaxial.grip_layers' = {}: the grips leave no free bar between them",
+                                   cs.source, u.grip_layers));
+    info.cross_section = 1.0;
+    for (int c = 0; c < 3; ++c)
+      if (c != ax) info.cross_section *= (hi[c] - lo[c]) + h;
+    // Grip motion: each grip moves half the separation change, along the strain path.
+    Motion mmin, mmax;
+    mmin.kind = mmax.kind = Motion::Kind::Table;
+    double t = 0.0;
+    for (std::size_t k = 0; k < u.strain_path.size(); ++k) {
+      if (k > 0) t += std::abs(u.strain_path[k] - u.strain_path[k - 1]) / u.strain_rate;
+      const double half = 0.5 * u.strain_path[k] * info.gauge_length;
+      Vec3 e = Vec3::Zero();
+      e[ax] = half;
+      mmin.time.push_back(t);
+      mmax.time.push_back(t);
+      mmin.displacement.push_back(-e);
+      mmax.displacement.push_back(e);
+    }
+    const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
+    const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
+    info.grip_min = static_cast<int>(model.groups.size());
+    add_group("grip_min", select_side(lat.position, smin, u.grip_layers, h), dofs, mmin);
+    info.grip_max = static_cast<int>(model.groups.size());
+    add_group("grip_max", select_side(lat.position, smax, u.grip_layers, h), dofs, mmax);
+    if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
+    const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
+    for (std::size_t b = 0; b < r.size(); ++b) {
+      const double xi = lat.position[r.ends[b][0]][ax], xj = lat.position[r.ends[b][1]][ax];
+      if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
+    }
+  }
+  for (const auto& ms : cs.meshes) {
+    MeshBody mb;
+    mb.name = ms.name;
+    if (!ms.file.empty()) {
+      mb.mesh = read_mesh(ms.file, ms.scale);
+      mb.mesh.name = ms.name;
+    } else if (ms.tool) {
+      ToolSpec ts;
+      ts.rake_angle_deg = ms.rake_angle;
+      ts.clearance_angle_deg = ms.clearance_angle;
+      ts.edge_radius = ms.edge_radius;
+      ts.width = ms.width;
+      ts.face_length = ms.face_length;
+      try {
+        mb.mesh = make_tool(ts);
+      } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: [[mesh]] '{}': {}", cs.source, ms.name, e.what()));
+      }
+      mb.mesh.name = ms.name;
+      const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]);
+      for (auto& v : mb.mesh.vertices) v += o;
+    } else {
+      mb.mesh = rectangle_mesh(ms);
+      mb.mesh.validate(cs.source + " [[mesh]] " + ms.name);
+    }
+    mb.youngs_modulus = ms.youngs_modulus;
+    mb.poisson_ratio = ms.poisson_ratio;
+    model.meshes.push_back(std::move(mb));
+    model.mesh_motion.push_back(motion_from(ms.motion));
+  }
+  if (cs.contact.enabled) {
+    auto& c = model.contact;
+    c.youngs_modulus = cs.contact.youngs_modulus;
+    c.poisson_ratio = cs.contact.poisson_ratio;
+    c.alpha = restitution_to_alpha(cs.contact.restitution);
+    c.friction = cs.contact.friction;
+    c.law = cs.contact.friction_law == "spring"        ? FrictionLaw::Spring
+            : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
+                                                       : FrictionLaw::None;
+    c.regularization_speed = cs.contact.regularization_speed;
+    c.tangential_damping = cs.contact.tangential_damping;
+    double rmax = 0;
+    for (double rr : p.radius) rmax = std::max(rmax, rr);
+    c.skin = cs.contact.skin * rmax;
+  }
+  model.contacts = cs.contact.enabled;
+  model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
+  model.step = step_settings(model.settings, model.derived);
+  return model;
+}
+
+StepSettings step_settings(const CaseSettings& cs, const Derived& d) {
+  const IntegratorSettings& g = cs.integrator;
+  StepSettings s;
+  s.scheme = d.implicit ? Scheme::Newmark : Scheme::Verlet;
+  s.dt = d.dt;
+  s.beta = g.beta;
+  s.gamma = g.gamma;
+  s.dt_min = d.dt_min;
+  s.dt_max = d.dt_max;
+  s.tolerance = g.tolerance;
+  s.max_iterations = g.max_iterations;
+  s.iterations_grow = g.iterations_grow;
+  s.iterations_shrink = g.iterations_shrink;
+  s.grow_factor = g.grow_factor;
+  s.shrink_factor = g.shrink_factor;
+  s.reject_factor = g.reject_factor;
+  s.relaxation = g.relaxation;
+  s.max_step_displacement = g.max_step_displacement;
+  s.sphere_orientations = cs.output.orientations;
+  s.length_scale = d.nn_distance;
+  s.stiffness_scale = d.rod_stiffness;
+  return s;
+}
+
+}  // namespace swarf

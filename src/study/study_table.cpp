@@ -1,0 +1,348 @@
+// study_table.cpp: the study table, its CSV and the plot data (see study_table.h).
+#include "study/study_table.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "io/atomic_file.h"
+#include "swarf/core/errors.h"
+
+namespace swarf {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The summary sections whose numbers become columns, in column order.
+const std::vector<std::string> kSections{"results", "cutting", "chip", "uniaxial", "run"};
+// Keys of "run" that measure the machine, not the physics: timing.csv only.
+const std::set<std::string> kTiming{"run.threads", "run.wall_time_s", "run.step_wall_time_s",
+                                    "run.ns_per_particle_step"};
+
+bool is_component(const std::string& part) {
+  return part == "x" || part == "y" || part == "z" ||
+         (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }));
+}
+
+void flatten(const json& j, const std::string& name, std::vector<std::pair<std::string, std::string>>& out) {
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) flatten(it.value(), name + "." + it.key(), out);
+  } else if (j.is_array()) {
+    for (std::size_t k = 0; k < j.size(); ++k)
+      flatten(j[k], name + "." + (j.size() == 3 ? std::string(1, char('x' + k)) : std::to_string(k)), out);
+  } else if (j.is_number_float()) {
+    out.emplace_back(name, fmt::format("{}", j.get<double>()));
+  } else if (j.is_number_integer()) {
+    out.emplace_back(name, j.dump());
+  } else if (j.is_string()) {
+    const std::string s = j.get<std::string>();  // summary.json writes non-finite numbers as strings
+    if (s == "inf" || s == "-inf" || s == "nan") out.emplace_back(name, s);
+  }
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string csv_cell(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+// A TOML value text as shown in the table (strings without their quotes).
+std::string cell_text(const std::string& toml_text) {
+  if (toml_text.empty() || toml_text.front() != '"') return toml_text;
+  try {
+    auto t = toml::parse("v = " + toml_text);
+    if (auto s = t["v"].value<std::string>()) return *s;
+  } catch (const toml::parse_error&) {
+  }
+  return toml_text;
+}
+
+// The numbers of a TOML value text: one for a number, its elements for an array of numbers.
+std::optional<std::vector<double>> numbers_of(const std::string& toml_text) {
+  try {
+    auto t = toml::parse("v = " + toml_text);
+    const toml::node& n = *t.get("v");
+    if (auto v = n.value<double>(); v && !n.is_boolean()) return std::vector<double>{*v};
+    if (auto a = n.as_array()) {
+      std::vector<double> out;
+      for (const auto& e : *a) {
+        auto v = e.value<double>();
+        if (!v || e.is_boolean()) return std::nullopt;
+        out.push_back(*v);
+      }
+      return out;
+    }
+  } catch (const toml::parse_error&) {
+  }
+  return std::nullopt;
+}
+
+bool varies(const std::vector<std::optional<double>>& v) {
+  std::set<double> seen;
+  for (const auto& x : v)
+    if (x) seen.insert(*x);
+  return seen.size() > 1;
+}
+
+std::string file_part(const std::string& s) {
+  std::string out;
+  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
+  return out;
+}
+
+std::string label(const std::string& name, const std::string& unit) {
+  return unit.empty() ? name : fmt::format("{} [{}]", name, unit);
+}
+
+}  // namespace
+
+int StudyTable::column(const std::string& name) const {
+  auto it = std::find(columns.begin(), columns.end(), name);
+  return it == columns.end() ? -1 : int(it - columns.begin());
+}
+
+std::optional<double> StudyTable::number(std::size_t row, const std::string& name) const {
+  const int c = column(name);
+  if (c < 0 || rows[row][c].empty()) return std::nullopt;
+  const std::string& s = rows[row][c];
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::string unit_of_key(const std::string& flat_key) {
+  static const std::vector<std::pair<std::string, std::string>> suffixes{
+      {"_N_s_per_m", "N s/m"}, {"_N_per_m", "N/m"}, {"_kg_per_m3", "kg/m^3"}, {"_rad_per_s", "rad/s"},
+      {"_m_per_s", "m/s"},     {"_per_us", "1/us"}, {"_Pa_s", "Pa s"},        {"_percent", "%"},
+      {"_m2", "m^2"},          {"_m3", "m^3"},      {"_deg", "deg"},          {"_rad", "rad"},
+      {"_Pa", "Pa"},           {"_J", "J"},         {"_W", "W"},              {"_N", "N"},
+      {"_kg", "kg"},           {"_m", "m"},         {"_s", "s"}};
+  std::vector<std::string> parts;
+  std::stringstream ss(flat_key);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  for (std::size_t k = parts.size(); k-- > 0;) {
+    if (k + 1 == parts.size() && is_component(parts[k]) && parts.size() > 1) continue;
+    for (const auto& [suffix, unit] : suffixes)
+      if (parts[k].size() > suffix.size() && parts[k].ends_with(suffix)) return unit;
+  }
+  return "1";
+}
+
+StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing) {
+  StudyTable t;
+  t.columns.push_back("case");
+  t.units.push_back("-");
+  for (const auto& p : study.parameters) {
+    t.columns.push_back(p);
+    auto u = study.units.find(p);
+    t.units.push_back(u == study.units.end() ? "" : u->second);
+  }
+  if (study.repetitions > 1) {
+    t.columns.push_back("repetition");
+    t.units.push_back("1");
+  }
+  t.columns.push_back("status");
+  t.units.push_back("-");
+  t.first_metric = t.columns.size();
+
+  std::vector<std::vector<std::pair<std::string, std::string>>> metrics(study.cases.size());
+  std::set<std::pair<std::size_t, std::string>> names;  // (section, name): the column order
+  for (std::size_t r = 0; r < study.cases.size(); ++r) {
+    const StudyCase& c = study.cases[r];
+    t.status.push_back(case_status(study, c, out_dir));
+    std::vector<std::string> row{c.id};
+    for (const auto& p : study.parameters) {
+      auto v = c.values.find(p);
+      row.push_back(v == c.values.end() ? "" : cell_text(v->second));
+    }
+    if (study.repetitions > 1) row.push_back(std::to_string(c.repetition));
+    row.push_back(t.status.back().text());
+    t.rows.push_back(row);
+    if (t.status.back().state != CaseState::completed) continue;
+    json sum;
+    try {
+      sum = json::parse(read_text((fs::path(case_dir(out_dir, c)) / "summary.json").string()));
+    } catch (const std::exception&) {
+      continue;
+    }
+    for (std::size_t s = 0; s < kSections.size(); ++s) {
+      if (!sum.contains(kSections[s])) continue;
+      std::vector<std::pair<std::string, std::string>> flat;
+      flatten(sum[kSections[s]], kSections[s], flat);
+      for (auto& [name, value] : flat) {
+        if (kTiming.count(name) != timing) continue;
+        names.emplace(s, name);
+        metrics[r].emplace_back(name, value);
+      }
+    }
+  }
+  for (const auto& [s, name] : names) {
+    t.columns.push_back(name);
+    t.units.push_back(unit_of_key(name));
+  }
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    t.rows[r].resize(t.columns.size());
+    for (const auto& [name, value] : metrics[r]) t.rows[r][t.column(name)] = value;
+  }
+  return t;
+}
+
+std::string table_csv(const StudyTable& t) {
+  std::string out;
+  auto line = [&](const std::vector<std::string>& cells) {
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (k) out += ',';
+      out += csv_cell(cells[k]);
+    }
+    out += "\n";
+  };
+  line(t.columns);
+  line(t.units);
+  for (const auto& r : t.rows) line(r);
+  return out;
+}
+
+std::vector<std::string> default_plot_metrics(const StudyTable& t) {
+  static const std::vector<std::string> wanted{
+      "cutting.cutting_force_per_width_mean_N_per_m", "cutting.thrust_force_per_width_mean_N_per_m",
+      "cutting.cutting_force_per_width_std_N_per_m",  "cutting.thrust_force_per_width_std_N_per_m",
+      "chip.thickness_m",                             "chip.compression_ratio",
+      "chip.shear_angle_deg",                         "chip.friction_angle_deg",
+      "chip.merchant_shear_angle_deg",                "results.broken_fraction",
+      "results.plastic_work_J",                       "results.external_work_J",
+      "uniaxial.measured.youngs_modulus_Pa",          "uniaxial.measured.yield_stress_Pa",
+      "uniaxial.measured.hardening_tangent_Pa"};
+  std::vector<std::string> out;
+  for (const auto& m : wanted)
+    if (t.column(m) >= 0) out.push_back(m);
+  return out;
+}
+
+std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& t) {
+  const std::size_t n = t.rows.size();
+  // The x axes: name, unit, one value per row (none where the case has no number).
+  struct Axis {
+    std::string name, unit;
+    std::vector<std::optional<double>> x;
+  };
+  std::vector<Axis> axes;
+  auto param_axis = [&](const std::string& key, int component) -> std::optional<Axis> {
+    Axis a{key, study.units.count(key) ? study.units.at(key) : "", std::vector<std::optional<double>>(n)};
+    std::vector<std::vector<double>> vals(n);
+    std::size_t size = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      auto it = study.cases[r].values.find(key);
+      if (it == study.cases[r].values.end()) continue;
+      auto v = numbers_of(it->second);
+      if (!v) return std::nullopt;
+      vals[r] = *v;
+      size = std::max(size, v->size());
+    }
+    if (size > 1 && component < 0) {
+      // An array key: the axis is its one varying component, if only one varies.
+      int found = -1;
+      for (std::size_t k = 0; k < size; ++k) {
+        std::vector<std::optional<double>> xs(n);
+        for (std::size_t r = 0; r < n; ++r)
+          if (k < vals[r].size()) xs[r] = vals[r][k];
+        if (varies(xs)) {
+          if (found >= 0) return std::nullopt;
+          found = int(k);
+        }
+      }
+      if (found < 0) return std::nullopt;
+      component = found;
+    }
+    if (size > 1) a.name = fmt::format("{}[{}]", key, component);
+    const std::size_t k = component < 0 ? 0 : std::size_t(component);
+    for (std::size_t r = 0; r < n; ++r)
+      if (k < vals[r].size() && t.status[r].state == CaseState::completed) a.x[r] = vals[r][k];
+    return a;
+  };
+  auto axis_named = [&](const std::string& name) -> std::optional<Axis> {
+    if (std::find(study.parameters.begin(), study.parameters.end(), name) != study.parameters.end())
+      return param_axis(name, -1);
+    const auto br = name.find('[');
+    if (br != std::string::npos && name.back() == ']') {
+      const std::string key = name.substr(0, br);
+      if (std::find(study.parameters.begin(), study.parameters.end(), key) != study.parameters.end())
+        return param_axis(key, std::atoi(name.substr(br + 1).c_str()));
+    }
+    if (t.column(name) < int(t.first_metric)) return std::nullopt;
+    Axis a{name, unit_of_key(name), std::vector<std::optional<double>>(n)};
+    for (std::size_t r = 0; r < n; ++r) a.x[r] = t.number(r, name);
+    return a;
+  };
+  if (study.plot_against.empty()) {
+    for (const auto& p : study.parameters)
+      if (p != study.seed_key)
+        if (auto a = axis_named(p)) axes.push_back(*a);
+  } else {
+    for (const auto& name : study.plot_against)
+      if (auto a = axis_named(name)) axes.push_back(*a);
+  }
+  const std::vector<std::string> metrics = study.plot_metrics.empty() ? default_plot_metrics(t) : study.plot_metrics;
+  std::vector<PlotSeries> out;
+  for (const auto& a : axes) {
+    if (!varies(a.x)) continue;
+    for (const auto& m : metrics) {
+      if (t.column(m) < int(t.first_metric) || m == a.name) continue;
+      PlotSeries p{file_part(m) + "_vs_" + file_part(a.name) + ".png", a.name, a.unit, m, unit_of_key(m), {}, {}};
+      for (std::size_t r = 0; r < n; ++r) {
+        auto y = t.number(r, m);
+        if (a.x[r] && y) {
+          p.x.push_back(*a.x[r]);
+          p.y.push_back(*y);
+        }
+      }
+      if (!p.x.empty()) out.push_back(std::move(p));
+    }
+  }
+  return out;
+}
+
+std::string draw_plots(const Study& study, const StudyTable& table, const std::string& out_dir) {
+  const fs::path dir = fs::path(out_dir) / "plots";
+  fs::create_directories(dir);
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".png") fs::remove(e.path());
+  const auto series = plot_series(study, table);
+  json j;
+  j["title"] = study.title.empty() ? study.file : study.title;
+  j["plots"] = json::array();
+  for (const auto& p : series)
+    j["plots"].push_back({{"file", p.file}, {"x_label", label(p.x_name, p.x_unit)},
+                          {"y_label", label(p.y_name, p.y_unit)}, {"x", p.x}, {"y", p.y}});
+  write_text_atomic((dir / "plots.json").string(), j.dump(1) + "\n");
+  if (series.empty()) return "nothing to plot (no numeric varied key with completed cases)";
+  std::string script = std::string(SWARF_POSTPROCESS_DIR) + "/study_plots.py";
+  if (const char* env = std::getenv("SWARF_POSTPROCESS_DIR")) script = std::string(env) + "/study_plots.py";
+  if (!fs::exists(script)) return "plot script not found: " + script;
+  const std::string py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "/usr/bin/env";
+  std::vector<std::string> argv{py};
+  if (py == "/usr/bin/env") argv.push_back("python3");
+  argv.insert(argv.end(), {script, (dir / "plots.json").string()});
+  const std::string log = (dir / "plots_log.txt").string();
+  const int code = run_logged(argv, log);
+  if (code == 0) return "";
+  return fmt::format("the plot script failed (exit {}), see {}", code, log);
+}
+
+}  // namespace swarf

@@ -1,0 +1,50 @@
+// study_table.h: the table of a study (one row per case: varied keys, status, metrics from the
+// case's summary.json), written as DIR/study.csv and DIR/timing.csv, and the plot data.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "study/sweep.h"
+
+namespace swarf {
+
+struct StudyTable {
+  std::vector<std::string> columns;             ///< names
+  std::vector<std::string> units;               ///< one per column ("-" for text columns)
+  std::vector<std::vector<std::string>> rows;   ///< cells as text, rows in case id order
+  std::vector<CaseStatus> status;               ///< one per row
+  std::size_t first_metric = 0;                 ///< columns before this are case, keys, status
+
+  int column(const std::string& name) const;    ///< -1 if absent
+  /// The cell as a number (empty or text: none).
+  std::optional<double> number(std::size_t row, const std::string& name) const;
+};
+
+/// Unit of a flattened summary key from its suffix (_N_per_m -> "N/m", _deg -> "deg"); the
+/// nearest enclosing key with a suffix counts (deviation_percent.yield_stress -> "%"); no
+/// suffix anywhere: "1".
+std::string unit_of_key(const std::string& flat_key);
+
+/// The study table (timing = false: DIR/study.csv; true: DIR/timing.csv, the wall times and
+/// thread counts, which differ from run to run).
+StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing = false);
+/// CSV: the names, then the units, then one line per row.
+std::string table_csv(const StudyTable& table);
+
+/// The metric columns plotted when the study does not list them (those present in the table).
+std::vector<std::string> default_plot_metrics(const StudyTable& table);
+
+/// One plot: a metric against a varied key (or a metric), over the completed cases.
+struct PlotSeries {
+  std::string file;      ///< PNG name in DIR/plots
+  std::string x_name, x_unit, y_name, y_unit;
+  std::vector<double> x, y;
+};
+std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& table);
+/// Writes DIR/plots/plots.json and runs postprocess/study_plots.py on it. Returns "" or why
+/// the plots could not be drawn.
+std::string draw_plots(const Study& study, const StudyTable& table, const std::string& out_dir);
+
+}  // namespace swarf

@@ -1,0 +1,214 @@
+// contacts.h: Hertz contacts with friction between unbonded spheres and between spheres and
+// triangles (paper section 4; physics notes section 3).
+//
+// Neighbour search: cell lists build Verlet lists of candidate pairs within the contact
+// distance plus a skin; the lists are rebuilt when a particle (or a mesh) has moved more
+// than half the skin since the last build, so the search costs O(N) and happens rarely.
+// Bonded pairs are not contact pairs; a pair whose rod broke becomes one right after the
+// break (add_pairs merges it into the lists). Lists are sorted, so results do not depend on
+// the threads.
+//
+// Each contact is evaluated as a pure function of the current state and its COMMITTED
+// friction history (the Cundall-Strack spring); the trial history is committed with the
+// rods after a step converged. Histories follow their pair across rebuilds.
+//
+// Sphere-triangle: each triangle in reach contributes (Ao/Ac) (Hertz force) along its normal,
+// Ao/Ac being the exact fraction of the sphere's cut circle inside the triangle
+// (overlap_area.h), so flat surfaces push the same however they are triangulated.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "swarf/laws/hertz.h"
+#include "swarf/state/bodies.h"
+#include "swarf/state/mesh.h"
+#include "swarf/geometry/overlap_area.h"
+#include "swarf/core/periodic.h"
+#include "swarf/core/vec3.h"
+
+namespace swarf {
+
+struct Particles;
+struct Rods;
+class StateArchive;
+
+enum class FrictionLaw { None, Spring, Regularized };
+
+/// Material and law parameters, derived once from [contact] and the meshes.
+struct ContactParams {
+  double youngs_modulus = 0, poisson_ratio = 0;  ///< particles, Pa and 1
+  double alpha = 0;                 ///< damping coefficient from the restitution (hertz.h), 1
+  double friction = 0;              ///< mu, 1
+  FrictionLaw law = FrictionLaw::None;
+  double regularization_speed = 1e-3;  ///< m/s
+  double tangential_damping = 0;    ///< tangential dashpot as a multiple of the normal one, 1
+  double skin = 0;                  ///< Verlet skin, m
+};
+
+class ContactSystem {
+ public:
+  void setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes,
+             Periodic periodic = {});
+  bool enabled() const { return enabled_; }
+
+  /// Rebuilds the Verlet lists if anything moved more than half the skin (or 'force').
+  /// 'moved2': the largest squared displacement (m^2) of a particle since the last build
+  /// (from build_positions()) if the caller measured it in its own pass; < 0: measured here.
+  void update_lists(const Particles& p, const Rods& rods, bool force, double moved2 = -1.0);
+  /// Positions at the last build (null before the first): integrators measure the
+  /// displacement since the build in the pass that moves the particles.
+  const Vec3* build_positions(std::size_t n_particles) const {
+    return x_build_.size() == n_particles ? x_build_.data() : nullptr;
+  }
+
+  /// Adds the pairs of rods that just broke to the lists (a full build is not needed: only
+  /// those pairs change from bonded to candidates). Keeps the last evaluation's results.
+  void add_pairs(const Particles& p, std::vector<std::array<std::int32_t, 2>> pairs);
+
+  /// Evaluates every contact at the current state over a step of size h (s) from the
+  /// committed histories; fills per-contact forces and torques and trial histories.
+  /// 'final': this evaluation is the step's last (explicit scheme): the histories are
+  /// committed in place and commit() must not be called.
+  void evaluate(const Particles& p, double h, bool final = false);
+
+  // Per-contact results of the last evaluation (zero for a contact that does not touch). The
+  // tangential force ft on a sphere of radius R acts at -R n from its centre (n: unit normal
+  // pointing at it), a torque R (ft x n) (same vector for both spheres of a pair: ft and n
+  // both flip): 'torque_arm' holds ft x n, a particle's torque is its radius times the sum
+  // of its contacts' arms.
+  struct Result {
+    Vec3 force;       // on sphere i of a pair (on the sphere for a triangle contact), N
+    Vec3 torque_arm;  // ft x n, N
+  };
+  /// The results' per-particle sums, as raw pointers that a hot loop keeps in registers
+  /// (valid until the lists change). The evaluation sums each particle's pair results in
+  /// pair order; a particle whose pairs were evaluated by two threads ('spanning') gets the
+  /// same sum, in the same order, from the per-pair results here, so the sums do not depend
+  /// on the threads.
+  struct Sums {
+    const Result* pres;
+    const Result* psum;               // per particle: the sum over its pairs, in pair order
+    const std::uint8_t* spanning;     // per particle: psum not made (pairs in two threads)
+    const std::int32_t *prow, *jrow, *jent;
+    const Result* tres;
+    const std::int32_t* trow;
+    /// Adds the contact force and torque on particle i, of radius 'radius' (m), summed over
+    /// its contacts in a fixed order, N and N m. No test per contact: results of contacts
+    /// that do not touch are zero (a branch on the touch flag or on the side mispredicts
+    /// often and costs more than the sums).
+    void add(std::size_t i, double radius, Vec3& force, Vec3& torque) const {
+      Vec3 f, arm;
+      if (!spanning[i]) {
+        f = psum[i].force;
+        arm = psum[i].torque_arm;
+      } else {
+        // Pair order: the pairs where i is second come first (their first particle is lower).
+        f = Vec3::Zero();
+        arm = Vec3::Zero();
+        for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e) {
+          const Result& r = pres[jent[e]];
+          f -= r.force;
+          arm += r.torque_arm;
+        }
+        for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) {
+          f += pres[k].force;
+          arm += pres[k].torque_arm;
+        }
+      }
+      for (std::int32_t k = trow[i], end = trow[i + 1]; k < end; ++k) {  // triangle contacts, by particle
+        f += tres[k].force;
+        arm += tres[k].torque_arm;
+      }
+      force += f;
+      torque += radius * arm;
+    }
+  };
+  Sums sums() const;
+  /// sums().add(i, radius, force, torque).
+  void add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const;
+
+  /// Writes the trial histories back (after a converged step).
+  void commit();
+
+  /// Force the particles exert on each mesh (sums over its contacts in a fixed order), N; one pass.
+  void mesh_forces(std::vector<Vec3>& out) const;
+  /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
+  double elastic_energy() const;
+  /// Current number of touching sphere-sphere and sphere-triangle contacts.
+  std::size_t touching() const;
+  /// Current number of touching sphere-sphere contacts.
+  std::size_t touching_pairs() const;
+  std::size_t list_builds() const { return builds_; }
+
+  /// The state: the lists as built (pairs, triangle contacts, committed histories, build
+  /// reference), each field named once (state_visit.cpp); per-contact constants and rows are
+  /// derived again on load.
+  void visit_state(StateArchive& ar, const Particles& p);
+
+ private:
+  // Per-contact constants are computed when the list is built: the evaluation then needs
+  // no division for the material law (K, damping and tangential stiffness factor).
+  // Sphere-sphere pairs: the indices alone in one array (8 bytes, all that a near miss
+  // reads), their constants and committed histories in others.
+  struct Pair {  // i < j
+    std::int32_t i, j;
+  };
+  struct PairConstants {
+    double K = 0, D = 0, kt0 = 0;  // Hertz K (N/m^1.5), damping alpha sqrt(m* K), 8 G* sqrt(R*) (N/m^1.5)
+  };
+  struct TriPair {  // sphere-triangle
+    std::int32_t i, tri;  // tri: global triangle index
+    Vec3 history = Vec3::Zero();
+    double K = 0, D = 0, kt0 = 0;
+  };
+  void partition(int nthreads);  // row_split_, spanning_ for the lists and the number of threads
+  void fill_constants(const Particles& p);
+  void build(const Particles& p, const Rods& rods);
+  void finish_build(const Particles& p);  // constants, per-particle rows, scratch arrays
+  void pair_rows(std::size_t n);          // prow_, jrow_, jent_ from pairs_
+
+  bool enabled_ = false;
+  ContactParams prm_;
+  Periodic periodic_;  // nearest image along y for sphere-sphere pairs
+  std::vector<MeshBody>* meshes_ = nullptr;
+  std::vector<std::int32_t> tri_mesh_, tri_local_;  // global triangle -> mesh, local index
+  std::vector<TriangleFrame> tri_frame_;            // global triangle -> its normal and in-plane axes
+  double max_radius_ = 0;
+  std::size_t builds_ = 0;
+
+  std::vector<Pair> pairs_;
+  std::vector<PairConstants> pconst_;     // per pair; empty when all particles are equal:
+  bool uniform_ = false;                  // then every pair has uniform_constants_
+  PairConstants uniform_constants_;
+  std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
+  std::vector<TriPair> tris_;
+  std::vector<Result> pres_, tres_;
+  std::vector<Result> psum_;  // per particle: the sum of its pairs' results (see Sums)
+  // The pair loop's partition: thread t evaluates the rows (first particles) row_split_[t] to
+  // row_split_[t + 1] - 1; spanning_: 1 for a particle with pairs in two threads' rows;
+  // jmin_: the lowest first particle of a particle's pairs (itself if none). Made again when
+  // the lists (list_version_) or the number of threads change.
+  std::vector<std::size_t> row_split_;
+  std::vector<std::uint8_t> spanning_;
+  std::vector<std::int32_t> jmin_;
+  std::uint64_t list_version_ = 0, partition_version_ = ~std::uint64_t{0};
+  std::vector<Vec3> ph_, th_;               // trial histories, m
+  std::vector<double> pe_, te_;             // elastic energy, J
+  // 1 if the contact touched in the last evaluation; after a build, 1 for a carried history
+  // (an evaluation zeroes the results, and a final one the history, of a contact that stopped
+  // touching by this flag).
+  std::vector<std::uint8_t> ptouch_, ttouch_;
+  // Per-particle rows: the pairs whose first particle is i are pairs_[prow_[i]] to
+  // pairs_[prow_[i + 1] - 1], its triangle contacts tris_[trow_[i]] to tris_[trow_[i + 1] - 1]
+  // (both lists are sorted by particle); the pairs whose second particle it is are listed in
+  // jent_[jrow_[i]] to jent_[jrow_[i + 1] - 1], in pair order.
+  std::vector<std::int32_t> prow_, trow_, jrow_, jent_;
+  // Reference state of the last build.
+  std::vector<Vec3> x_build_;
+  std::vector<Vec3> mesh_build_;
+};
+
+}  // namespace swarf

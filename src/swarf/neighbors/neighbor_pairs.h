@@ -1,0 +1,19 @@
+// neighbor_pairs.h: all pairs of points whose distance lies in a range, by a cell grid.
+//
+// Used to bond a lattice (nearest neighbours at 2R within a relative tolerance). Cost is
+// linear in the number of points for a bounded density; the output is sorted (i < j,
+// ascending), so it does not depend on the traversal order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "swarf/core/vec3.h"
+
+namespace swarf {
+
+std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<Vec3>& points,
+                                                             double min_distance, double max_distance);
+
+}  // namespace swarf

@@ -1,0 +1,175 @@
+// simulation.h: the time loop's state and the step function with named stages.
+//
+// Both schemes are Newmark's family, x+ = x + dt v + dt^2 ((1/2 - beta) a + beta a+),
+// v+ = v + dt ((1 - gamma) a + gamma a+), and share the stages:
+//   prescribe     group and mesh motions at t + dt (displacements and step velocities)
+//   rod_forces    every intact rod evaluated from its COMMITTED state: trial shift, trial
+//                 break flag, force coefficient
+//   contact_forces  Verlet lists updated if needed; every contact evaluated from its
+//                 committed friction history (contacts.h)
+//   gather        per particle, its rods' forces summed in fixed (rod) order; a = f/m
+//   commit        plastic shifts and breakage of the final evaluation written back
+//   account       work of the grips, dissipation, time and counters
+// Explicit (velocity Verlet = beta 0, gamma 1/2, one evaluation per step):
+//   prescribe, kick_drift (v += dt/2 a, x += dt v), rod_forces, contact_forces (final: the
+//   friction histories are committed in place), gather fused with the kick (v += dt/2 a and
+//   the rotation update, particle by particle), commit, account
+// Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
+//   save, prescribe, then repeat { place (x, v and the rotations from the latest a+), rod_forces,
+//   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
+//   a+, commit, account. A step that does not converge (or diverges, or moves a particle too
+//   far) is rejected: everything is restored from the saved state, bit for bit, and retried
+//   with a smaller step. The number of sweeps drives the next step size (paper section 3.4).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "swarf/core/stage_clock.h"
+#include "swarf/state_archive.h"
+#include "swarf/step_settings.h"
+#include "swarf/world.h"
+
+namespace swarf {
+
+/// Energy bookkeeping, J. external = kinetic + elastic + plastic + viscous + fracture (+ error).
+struct EnergyLedger {
+  double external_work = 0;     ///< work done by the prescribed motions
+  double plastic_work = 0;      ///< sum of sigma d(eps_p) A L0 over commits
+  double viscous_work = 0;      ///< dissipated by the rods' viscous part
+  double fracture_energy = 0;   ///< elastic energy lost with broken rods
+  double contact_work = 0;      ///< taken up by the contacts: -integral of the contact forces' power on
+                                ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
+};
+
+/// Counters of the step control.
+struct StepStats {
+  std::int64_t accepted = 0;          ///< steps taken
+  std::int64_t rejected = 0;          ///< steps rejected and retried
+  std::int64_t iterations = 0;        ///< fixed-point sweeps of accepted steps
+  std::int64_t force_evaluations = 0; ///< all rod-force evaluations, rejected steps included
+  int max_iterations = 0;             ///< most sweeps an accepted step needed
+  int last_iterations = 0;            ///< sweeps of the last accepted step
+};
+
+class Simulation {
+ public:
+  /// Steps 'world' (held by reference: the caller owns it) with 'settings' (copied).
+  Simulation(World& world, const StepSettings& settings);
+
+  /// Advances one step (Newmark: of at most max_dt, e.g. the time left to the end).
+  /// Throws SimulationError when the state blows up or the step falls below dt_min.
+  void step(double max_dt = std::numeric_limits<double>::infinity());
+
+  double time() const { return time_; }
+  std::int64_t steps() const { return stats_.accepted; }
+  /// The step size the next step will try (explicit: the fixed step), s.
+  double dt() const { return dt_; }
+  /// The size of the last accepted step, s.
+  double last_dt() const { return last_dt_; }
+  bool implicit() const { return implicit_; }
+  const StepStats& stats() const { return stats_; }
+  const EnergyLedger& ledger() const { return ledger_; }
+  std::size_t broken_rods() const { return broken_; }
+
+  /// Rotations are integrated only when on (set by a torque source, or by hand in tests).
+  bool rotations() const { return rotations_; }
+  /// Turning rotations on makes the angular accelerations consistent with the current torques
+  /// and angular velocities (Euler's equations), as the Newmark update assumes.
+  void set_rotations(bool on);
+
+  double kinetic_energy() const;  ///< translational + rotational, J
+  double rotational_energy() const;  ///< rotational part of the kinetic energy, J
+  /// Recoverable elastic energy of the intact rods, J.
+  double elastic_energy() const;
+  /// Elastic energy stored in the contacts now (Hertz, normal part), J.
+  double contact_energy() const { return contacts_.enabled() ? contacts_.elastic_energy() : 0.0; }
+  /// Potential energy in gravity relative to the initial positions, J.
+  double potential_energy() const;
+  /// Force the particles exert on mesh m in the last evaluation of an accepted step, N.
+  Vec3 mesh_force(std::size_t m) const { return mesh_force_[m]; }
+  const ContactSystem& contacts() const { return contacts_; }
+  /// Per-stage wall time of the steps taken while enabled (swarf bench --stages).
+  StageClock& stage_clock() { return clock_; }
+  const StageClock& stage_clock() const { return clock_; }
+  /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum
+  /// of the internal forces on its particles).
+  Vec3 group_reaction(std::size_t g) const { return reaction_[g]; }
+
+  World& world() { return m_; }
+  const World& world() const { return m_; }
+  const StepSettings& settings() const { return set_; }
+
+  /// Every field of the state the next step reads, each named once (state_archive.h): one
+  /// function saves, loads and hashes it. Load into a Simulation constructed from the same
+  /// World as the one saved.
+  void visit_state(StateArchive& ar);
+  /// 64-bit hash of that state (bit-exact: any difference in any field changes it).
+  std::uint64_t state_hash() const;
+
+ private:
+  void step_explicit();
+  bool try_newmark(double h);  // true if converged (state advanced, not yet committed)
+
+  // Stages.
+  void prescribe(double h);
+  bool kick_drift(double h);   // explicit predictor; false if a particle moved too far
+  bool place(double h);        // Newmark positions, velocities and rotations from the latest a; false if too far
+  void rotate_one(std::size_t i, double h, double beta, double gamma);
+  void rod_forces();
+  void contact_forces(double h, bool final = false);
+  double gather();             // returns the sweep's relative force change (free components; implicit only)
+  void gather_kick(double h);  // explicit: gather, then the corrector v += h/2 a and the rotation
+  enum class GatherMode { Plain, Measure, Kick };
+  template <GatherMode Mode, bool Wrap>
+  double gather_impl(double h);
+  void commit();
+  void account(double h);
+
+  void update_free_to_rotate();
+  void save_state();
+  void restore_state();
+  [[noreturn]] void throw_too_far(double h) const;
+  void compute_reactions(std::vector<Vec3>& out) const;
+
+  World& m_;
+  StepSettings set_;
+  bool implicit_ = false;
+  bool rotations_ = false;
+  double time_ = 0;
+  double dt_ = 0;
+  double last_dt_ = 0;
+  std::size_t broken_ = 0;
+  EnergyLedger ledger_;
+  StepStats stats_;
+  std::vector<double> block_viscous_;   // per rod block, W
+  std::vector<int> block_changed_;      // per rod block: a trial shift or break to commit
+  std::vector<Vec3> group_u_old_, group_u_new_;  // group displacements at t and t + dt
+  std::vector<Vec3> reaction_, reaction_old_;
+  std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
+  std::vector<double> group_mass_; // total mass of each group, kg
+  std::vector<Vec3> mesh_force_;      // force on each mesh after the last accepted step, N
+  std::vector<Vec3> contact_force_;   // contact part of each particle's force, N
+  double contact_power_old_ = 0;      // power of the contact forces at the start of the step, W
+  double kick_power_ = 0;             // power of the contact forces on the particles after the kick, W
+  std::vector<double> block_power_;   // its parts per block of particles, W
+  /// Power of the contact forces on the particles and the meshes, W; the particles' part
+  /// from the fused gather and kick if 'from_kick'.
+  double contact_power(bool from_kick = false) const;
+  // Start-of-step state for Newmark (predictor and rejection).
+  std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
+  std::vector<Vec3> a_guess_;  // accelerations a sweep placed with (integrator.relaxation < 1)
+  std::vector<RotState> rot_n_;
+  ContactSystem contacts_;
+  StageClock clock_;
+  std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods
+  std::vector<std::int32_t> free_list_;       // those particles, in order
+  bool rebuild_lists_ = false;      // rebuild the contact lists at the next evaluation (set by checkpoints of
+                                    // earlier versions, which rebuilt when a rod broke)
+  double sweep_dt_ = 0;             // step size of the current sweep, s
+  double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
+  double moved2_ = -1.0;            // largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
+};
+
+}  // namespace swarf

@@ -1,0 +1,60 @@
+// particles.h: particle state as a structure of arrays.
+//
+// One array per field, indexed by particle id; the rod kernel gathers positions and
+// velocities of two particles, so each field keeps its three components together (Vec3).
+// Components that a grip prescribes are flagged per particle in 'prescribed' (bit c set =
+// component c follows the motion of group 'group'); the integrator leaves them alone.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "swarf/integrate/rotation.h"
+#include "swarf/core/vec3.h"
+
+namespace swarf {
+
+struct Particles {
+  std::vector<Vec3> position;          ///< m
+  std::vector<Vec3> velocity;          ///< m/s
+  std::vector<Vec3> acceleration;      ///< m/s^2 (of the last force evaluation)
+  std::vector<Vec3> force;             ///< N, total force of the last evaluation
+  std::vector<Vec3> initial_position;  ///< m, reference for displacement output
+  std::vector<double> mass;            ///< kg
+  std::vector<double> inv_mass;        ///< 1/kg
+  std::vector<double> radius;          ///< m
+  std::vector<std::uint8_t> prescribed;  ///< bitmask of prescribed components (1=x, 2=y, 4=z)
+  std::vector<std::int32_t> group;     ///< index of the particle's group, -1 if none
+  // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
+  // so torques come from contacts; the machinery is here for them).
+  std::vector<Quat> orientation;       ///< unit quaternion, body to world
+  std::vector<Vec3> omega;             ///< world-frame angular velocity, rad/s
+  std::vector<Vec3> omega_dot;         ///< world-frame angular acceleration, rad/s^2
+  std::vector<Vec3> inertia;           ///< principal moments of inertia, kg m^2 (2/5 m R^2 for a sphere)
+  std::vector<double> inv_inertia;     ///< 1/I for isotropic inertia (spheres), 1/(kg m^2); 0 otherwise
+  std::vector<Vec3> torque;            ///< world-frame torque of the last evaluation, N m
+
+  std::size_t size() const { return position.size(); }
+
+  /// Resizes every field to n particles (new entries zero, group -1).
+  void resize(std::size_t n) {
+    position.resize(n, Vec3::Zero());
+    velocity.resize(n, Vec3::Zero());
+    acceleration.resize(n, Vec3::Zero());
+    force.resize(n, Vec3::Zero());
+    initial_position.resize(n, Vec3::Zero());
+    mass.resize(n, 0.0);
+    inv_mass.resize(n, 0.0);
+    radius.resize(n, 0.0);
+    prescribed.resize(n, 0);
+    group.resize(n, -1);
+    orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));
+    omega.resize(n, Vec3::Zero());
+    omega_dot.resize(n, Vec3::Zero());
+    inertia.resize(n, Vec3::Zero());
+    inv_inertia.resize(n, 0.0);
+    torque.resize(n, Vec3::Zero());
+  }
+};
+
+}  // namespace swarf

@@ -1,0 +1,40 @@
+// rods.cpp: bookkeeping of the rod arrays (state reset, per-particle rows).
+#include "swarf/state/rods.h"
+
+#include <algorithm>
+
+namespace swarf {
+
+void Rods::reset_state() {
+  const std::size_t m = size();
+  shift.assign(m, 0.0);
+  intact.assign(m, 1);
+  trial_shift.assign(m, 0.0);
+  trial_broken.assign(m, 0);
+  stress.assign(m, 0.0);
+  force_coef.assign(m, 0.0);
+  inv_rest_length.resize(m);
+  for (std::size_t k = 0; k < m; ++k) inv_rest_length[k] = 1.0 / rest_length[k];
+}
+
+void Rods::build_rows(std::size_t n_particles) {
+  row_start.assign(n_particles + 1, 0);
+  for (const auto& e : ends) {
+    ++row_start[e[0] + 1];
+    ++row_start[e[1] + 1];
+  }
+  for (std::size_t p = 0; p < n_particles; ++p) row_start[p + 1] += row_start[p];
+  entries.assign(row_start.back(), Entry{0, 0});
+  std::vector<std::int32_t> fill(row_start.begin(), row_start.end() - 1);
+  // Rods are visited in ascending order, so every row comes out sorted.
+  for (std::size_t r = 0; r < ends.size(); ++r) {
+    entries[fill[ends[r][0]]++] = Entry{static_cast<std::int32_t>(r), ends[r][1]};
+    entries[fill[ends[r][1]]++] = Entry{static_cast<std::int32_t>(r), ends[r][0]};
+  }
+}
+
+std::size_t Rods::broken_count() const {
+  return static_cast<std::size_t>(std::count(intact.begin(), intact.end(), std::uint8_t{0}));
+}
+
+}  // namespace swarf

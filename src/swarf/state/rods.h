@@ -1,0 +1,55 @@
+// rods.h: the bonds of the workpiece, each rod stored once.
+//
+// Per rod: its two particles, rest length, the COMMITTED plastic shift and intact flag,
+// plus the trial values and the force of the last evaluation, kept as one coefficient: the
+// force on end i is coef (x_j - x_i) and on end j coef (x_i - x_j), so Newton's third law
+// holds exactly and the gather needs no sign. The force on a particle is gathered in a fixed
+// order from a per-particle list of its rods (compressed rows built once), so that the sum
+// does not depend on the number of threads.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "swarf/laws/rod_law.h"
+#include "swarf/core/vec3.h"
+
+namespace swarf {
+
+struct Rods {
+  RodLaw law;                  ///< one rod family: the law's parameters
+  double area = 0.0;           ///< cross-section A of every rod, m^2
+
+  std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
+  std::vector<double> rest_length;                ///< L0, m
+  std::vector<double> inv_rest_length;            ///< 1/L0, 1/m (cached: saves a division per rod and step)
+  std::vector<double> shift;                      ///< committed plastic shift eps0, 1
+  std::vector<std::uint8_t> intact;               ///< committed: 1 intact, 0 broken for good
+
+  // Results of the last evaluation (trial state, not committed).
+  std::vector<double> trial_shift;      ///< 1
+  std::vector<std::uint8_t> trial_broken;  ///< 1 if this evaluation broke the rod
+  std::vector<double> stress;           ///< elastic-plastic stress, Pa
+  std::vector<double> force_coef;       ///< (sigma + sigma_visc) A / L: force on i = coef (x_j - x_i), N/m
+
+  /// One entry of a particle's rod list: the rod and the particle at its other end.
+  struct Entry {
+    std::int32_t rod;
+    std::int32_t other;
+  };
+  // Per-particle rod lists (compressed rows), in ascending rod order.
+  std::vector<std::int32_t> row_start;  ///< size particles + 1
+  std::vector<Entry> entries;
+
+  std::size_t size() const { return ends.size(); }
+
+  /// Sets the committed state to virgin (no shift, all intact) and sizes the scratch arrays.
+  void reset_state();
+  /// Builds the per-particle rod lists for n particles.
+  void build_rows(std::size_t n_particles);
+  /// Number of rods broken for good.
+  std::size_t broken_count() const;
+};
+
+}  // namespace swarf

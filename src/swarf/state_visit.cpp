@@ -1,0 +1,129 @@
+// state_visit.cpp: every field of the step's state, named once (see state_archive.h).
+// Simulation::visit_state and ContactSystem::visit_state are here so that everything a
+// checkpoint holds, and everything the state hash covers, is listed in one file.
+#include <fmt/format.h>
+
+#include "swarf/contacts/contacts.h"
+#include "swarf/core/errors.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+void ContactSystem::visit_state(StateArchive& ar, const Particles& p) {
+  const bool load = ar.loading();
+  // Lists as flat index arrays (i, j) and (i, triangle), their histories beside them.
+  std::vector<std::int32_t> pairs(2 * pairs_.size()), tris(2 * tris_.size());
+  std::vector<Vec3> th(tris_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    pairs[2 * k] = pairs_[k].i;
+    pairs[2 * k + 1] = pairs_[k].j;
+  }
+  for (std::size_t k = 0; k < tris_.size(); ++k) {
+    tris[2 * k] = tris_[k].i;
+    tris[2 * k + 1] = tris_[k].tri;
+    th[k] = tris_[k].history;
+  }
+  ar.array("contacts/pairs", pairs, StateArchive::kAnySize);
+  const std::size_t np = pairs.size() / 2;
+  ar.array("contacts/pair_history", phist_, load ? np : StateArchive::kAnySize);
+  ar.array("contacts/triangle_contacts", tris, StateArchive::kAnySize);
+  const std::size_t nt = tris.size() / 2;
+  ar.array("contacts/triangle_history", th, load ? nt : StateArchive::kAnySize);
+  ar.array("contacts/x_build", x_build_, load ? p.size() : StateArchive::kAnySize);
+  ar.array("contacts/mesh_build", mesh_build_, load ? meshes_->size() : StateArchive::kAnySize);
+  ar.scalar("contacts/builds", builds_);
+  if (!load) return;
+  if (pairs.size() % 2 != 0 || tris.size() % 2 != 0)
+    throw InputError("state field 'contacts/pairs' or 'contacts/triangle_contacts' is not a list of index pairs");
+  pairs_.resize(np);
+  for (std::size_t k = 0; k < np; ++k) {
+    pairs_[k] = Pair{pairs[2 * k], pairs[2 * k + 1]};
+    const Pair& q = pairs_[k];
+    if (q.i < 0 || q.j <= q.i || std::size_t(q.j) >= p.size())
+      throw InputError(fmt::format("state field 'contacts/pairs': contact pair ({}, {}) out of range", q.i, q.j));
+  }
+  tris_.assign(nt, TriPair{});
+  for (std::size_t k = 0; k < nt; ++k) {
+    tris_[k].i = tris[2 * k];
+    tris_[k].tri = tris[2 * k + 1];
+    tris_[k].history = th[k];
+    if (tris_[k].i < 0 || std::size_t(tris_[k].i) >= p.size() || tris_[k].tri < 0 ||
+        std::size_t(tris_[k].tri) >= tri_mesh_.size())
+      throw InputError(fmt::format("state field 'contacts/triangle_contacts': triangle contact {} out of range", k));
+  }
+  finish_build(p);
+}
+
+void Simulation::visit_state(StateArchive& ar) {
+  const bool load = ar.loading();
+  auto& p = m_.particles;
+  auto& r = m_.rods;
+  const std::size_t n = p.size(), m = r.size(), ng = m_.groups.size(), nm = m_.meshes.size();
+  ar.array("particles/position", p.position, n);
+  ar.array("particles/velocity", p.velocity, n);
+  ar.array("particles/acceleration", p.acceleration, n);
+  ar.array("particles/force", p.force, n);
+  ar.array("particles/orientation", p.orientation, n);
+  ar.array("particles/omega", p.omega, n);
+  ar.array("particles/omega_dot", p.omega_dot, n);
+  ar.array("particles/torque", p.torque, n);
+  ar.array("rods/shift", r.shift, m);
+  ar.array("rods/intact", r.intact, m);
+  ar.array("rods/trial_shift", r.trial_shift, m);
+  ar.array("rods/trial_broken", r.trial_broken, m);
+  ar.array("rods/stress", r.stress, m);
+  ar.array("rods/force_coef", r.force_coef, m);
+  std::vector<Vec3> offset, velocity;
+  for (const auto& mb : m_.meshes) {
+    offset.push_back(mb.offset);
+    velocity.push_back(mb.velocity);
+  }
+  ar.array("meshes/offset", offset, nm);
+  ar.array("meshes/velocity", velocity, nm);
+  if (load)
+    for (std::size_t k = 0; k < nm; ++k) {
+      m_.meshes[k].offset = offset[k];
+      m_.meshes[k].velocity = velocity[k];
+    }
+  ar.array("groups/u_old", group_u_old_, ng);
+  ar.array("groups/u_new", group_u_new_, ng);
+  ar.array("groups/reaction", reaction_, ng);
+  ar.array("groups/reaction_old", reaction_old_, StateArchive::kAnySize);  // (empty before the first step)
+  ar.array("groups/velocity", group_v_, ng);
+  ar.array("mesh_force", mesh_force_, StateArchive::kAnySize);
+  ar.array("contact_force", contact_force_, contact_force_.size());
+  ar.scalar("time", time_);
+  ar.scalar("dt", dt_);
+  ar.scalar("last_dt", last_dt_);
+  ar.scalar("broken_rods", broken_);
+  ar.scalar("rotations", rotations_);
+  ar.scalar("rebuild_lists", rebuild_lists_);
+  ar.scalar("contact_power_old", contact_power_old_);
+  ar.scalar("ledger/external_work", ledger_.external_work);
+  ar.scalar("ledger/plastic_work", ledger_.plastic_work);
+  ar.scalar("ledger/viscous_work", ledger_.viscous_work);
+  ar.scalar("ledger/fracture_energy", ledger_.fracture_energy);
+  ar.scalar("ledger/contact_work", ledger_.contact_work);
+  ar.scalar("stats/accepted", stats_.accepted);
+  ar.scalar("stats/rejected", stats_.rejected);
+  ar.scalar("stats/iterations", stats_.iterations);
+  ar.scalar("stats/force_evaluations", stats_.force_evaluations);
+  ar.scalar("stats/max_iterations", stats_.max_iterations);
+  ar.scalar("stats/last_iterations", stats_.last_iterations);
+  if (contacts_.enabled()) contacts_.visit_state(ar, p);
+  if (load) {
+    if (mesh_force_.size() != nm && !mesh_force_.empty())
+      throw InputError(fmt::format("state field 'mesh_force' has {} entries, expected {}", mesh_force_.size(), nm));
+    if (rotations_) update_free_to_rotate();
+  }
+}
+
+std::uint64_t Simulation::state_hash() const {
+  HashArchive h;
+  // The visit reads the state when the archive is not loading; it is one function for all
+  // three uses, so it takes the state as non-const.
+  const_cast<Simulation*>(this)->visit_state(h);
+  return h.value();
+}
+
+}  // namespace swarf
