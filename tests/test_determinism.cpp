@@ -45,6 +45,7 @@ struct Snapshot {
   EnergyLedger ledger;
   double ke;
   std::size_t broken;
+  std::uint64_t hash;  ///< Simulation::state_hash: every field of the state
 };
 
 Snapshot run(int threads, int steps) {
@@ -53,7 +54,7 @@ Snapshot run(int threads, int steps) {
   Simulation sim(m, m.step);
   for (int s = 0; s < steps; ++s) sim.step();
   Snapshot out{m.particles.position, m.particles.velocity, m.rods.shift, m.rods.intact, sim.ledger(),
-               sim.kinetic_energy(), sim.broken_rods()};
+               sim.kinetic_energy(), sim.broken_rods(), sim.state_hash()};
   return out;
 }
 
@@ -77,6 +78,7 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalBits) {
     EXPECT_TRUE(same_bits(a.shift, o->shift));
     EXPECT_TRUE(same_bits(a.intact, o->intact));
     EXPECT_EQ(a.broken, o->broken);
+    EXPECT_EQ(a.hash, o->hash);
     EXPECT_EQ(a.ke, o->ke);
     EXPECT_EQ(a.ledger.external_work, o->ledger.external_work);
     EXPECT_EQ(a.ledger.plastic_work, o->ledger.plastic_work);
@@ -97,6 +99,7 @@ TEST(Determinism, AGranularGasWithFrictionGivesIdenticalBitsOnOneTwoAndThreeThre
     std::vector<Quat> q;
     double contact_work;
     std::size_t touching;
+    std::uint64_t hash;
   };
   auto run_gas = [&](int threads) {
     omp_set_num_threads(threads);
@@ -108,7 +111,7 @@ TEST(Determinism, AGranularGasWithFrictionGivesIdenticalBitsOnOneTwoAndThreeThre
       touching = std::max(touching, sim.contacts().touching_pairs());
     }
     return State{m.particles.position, m.particles.velocity, m.particles.omega, m.particles.orientation,
-                 sim.ledger().contact_work, touching};
+                 sim.ledger().contact_work, touching, sim.state_hash()};
   };
   const int saved = omp_get_max_threads();
   const State a = run_gas(1), b = run_gas(2), c = run_gas(3);
@@ -120,7 +123,41 @@ TEST(Determinism, AGranularGasWithFrictionGivesIdenticalBitsOnOneTwoAndThreeThre
     EXPECT_TRUE(same_bits(a.w, o->w));
     EXPECT_TRUE(same_bits(a.q, o->q));
     EXPECT_EQ(a.contact_work, o->contact_work);
+    EXPECT_EQ(a.hash, o->hash);  // (the contact lists and friction histories too)
   }
+}
+
+// The hash sees every field: one bit of one particle's velocity, one rod's committed shift
+// or one contact history changes it (a hash that missed a field would let a restart or a
+// thread count differ unseen).
+TEST(StateHash, ChangesWithOneBitOfAnyField) {
+  test::TempDir dir("hash_gas");
+  Model m = build_model(parse_case(test::granular_gas_case(dir), "gas", {}));
+  Simulation sim(m, m.step);
+  for (int s = 0; s < 300; ++s) sim.step();
+  const std::uint64_t h0 = sim.state_hash();
+  EXPECT_EQ(h0, sim.state_hash());  // a pure function of the state
+  auto flip = [](double& x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    b ^= 1;
+    std::memcpy(&x, &b, sizeof b);
+  };
+  flip(m.particles.velocity[7][1]);
+  EXPECT_NE(h0, sim.state_hash());
+  flip(m.particles.velocity[7][1]);
+  EXPECT_EQ(h0, sim.state_hash());
+  flip(m.particles.omega[3][2]);
+  EXPECT_NE(h0, sim.state_hash());
+  flip(m.particles.omega[3][2]);
+  ASSERT_EQ(h0, sim.state_hash());
+
+  Model bar = build_model(parse_case(kCase, "det", {}));
+  Simulation bsim(bar, bar.step);
+  for (int s = 0; s < 50; ++s) bsim.step();
+  const std::uint64_t b0 = bsim.state_hash();
+  flip(bar.rods.shift[5]);
+  EXPECT_NE(b0, bsim.state_hash());
 }
 
 }  // namespace

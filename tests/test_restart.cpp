@@ -91,6 +91,8 @@ TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
                            "/particles/broken_fraction"})
     EXPECT_EQ(dataset(dir / "a/results.h5", name), dataset(dir / "b/results.h5", name)) << name;
   const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  EXPECT_EQ(sa["state_hash"], sb["state_hash"]);  // every field of the final state
+  EXPECT_EQ(sa["state_hash"].get<std::string>().size(), 16u);
   EXPECT_EQ(sa["results"], sb["results"]);
   EXPECT_EQ(sa["chip"], sb["chip"]);
   EXPECT_EQ(sa["cutting"], sb["cutting"]);
@@ -147,6 +149,8 @@ TEST(Restart, ExplicitGranularGasContinuesBitIdentically) {
   // The gas collides (contacts touch before and after the checkpoint at step 2,000) and loses energy.
   const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
   EXPECT_GT(sa["results"]["contact_work_J"].get<double>(), 0.0) << sa["results"].dump();
+  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  EXPECT_EQ(sa["state_hash"], sb["state_hash"]);  // the contact lists and histories too
 }
 
 // Contacts are found by lists with a skin; which candidates a list holds (a larger skin, more

@@ -440,6 +440,9 @@ void run_case(const RunOptions& opt) {
   nlohmann::json sum;
   sum["swarf_version"] = SWARF_VERSION;
   sum["status"] = "completed";
+  // 64-bit hash of the final state (Simulation::state_hash, every field bit for bit): two runs
+  // ended in the same state if and only if (up to collisions) their hashes agree.
+  sum["state_hash"] = fmt::format("{:016x}", sim.state_hash());
   sum["case_file"] = settings.source;
   sum["overrides"] = settings.overrides;
   if (restarting) sum["restarted_from"] = opt.restart;

@@ -25,7 +25,6 @@ void put(H5File& f, const std::string& name, const std::vector<Vec3>& v) {
 void put(H5File& f, const std::string& name, const std::vector<double>& v) {
   f.write(name, v.data(), v.size(), 1);
 }
-void put(H5File& f, const std::string& name, const std::vector<std::uint8_t>& v) { f.write(name, v.data(), v.size()); }
 
 std::vector<double> get(const H5File& f, const std::string& name, std::size_t rows, std::size_t cols) {
   std::size_t r = 0, c = 0;
@@ -40,20 +39,6 @@ std::vector<double> get_any(const H5File& f, const std::string& name) {
   std::size_t r = 0, c = 0;
   return f.read_doubles(name, r, c);
 }
-void get(const H5File& f, const std::string& name, std::vector<Vec3>& out) {
-  const auto v = get(f, name, out.size(), 3);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
-}
-void get(const H5File& f, const std::string& name, std::vector<double>& out) { out = get(f, name, out.size(), 1); }
-void get(const H5File& f, const std::string& name, std::vector<std::uint8_t>& out) {
-  std::size_t r = 0, c = 0;
-  const auto v = f.read_ints(name, r, c);
-  if (r != out.size() || c != 1)
-    throw InputError(fmt::format("checkpoint '{}': dataset '{}' has {} entries, expected {}", f.path(), name, r,
-                                 out.size()));
-  for (std::size_t i = 0; i < r; ++i) out[i] = static_cast<std::uint8_t>(v[i]);
-}
-
 std::string join_lines(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += x + "\n";

@@ -81,6 +81,12 @@ void Simulation::set_rotations(bool on) {
 }
 
 void Simulation::step(double max_dt) {
+  for (StepListener* l : listeners_) l->before_step(*this);
+  step_scheme(max_dt);
+  for (StepListener* l : listeners_) l->after_step(*this);
+}
+
+void Simulation::step_scheme(double max_dt) {
   if (!implicit_) {
     step_explicit();
     return;

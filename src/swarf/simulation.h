@@ -28,6 +28,7 @@
 
 #include "swarf/core/stage_clock.h"
 #include "swarf/state_archive.h"
+#include "swarf/step_listener.h"
 #include "swarf/step_settings.h"
 #include "swarf/world.h"
 
@@ -61,6 +62,10 @@ class Simulation {
   /// Advances one step (Newmark: of at most max_dt, e.g. the time left to the end).
   /// Throws SimulationError when the state blows up or the step falls below dt_min.
   void step(double max_dt = std::numeric_limits<double>::infinity());
+
+  /// Registers a listener called around every step (not owned; remove it before it dies).
+  void add_listener(StepListener* l) { listeners_.push_back(l); }
+  void remove_listener(StepListener* l) { std::erase(listeners_, l); }
 
   double time() const { return time_; }
   std::int64_t steps() const { return stats_.accepted; }
@@ -109,6 +114,7 @@ class Simulation {
   std::uint64_t state_hash() const;
 
  private:
+  void step_scheme(double max_dt);
   void step_explicit();
   bool try_newmark(double h);  // true if converged (state advanced, not yet committed)
 
@@ -135,6 +141,7 @@ class Simulation {
 
   World& m_;
   StepSettings set_;
+  std::vector<StepListener*> listeners_;
   bool implicit_ = false;
   bool rotations_ = false;
   double time_ = 0;
