@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "swarf/laws/friction.h"
 #include "swarf/laws/hertz.h"
 #include "swarf/state/bodies.h"
 #include "swarf/state/mesh.h"
@@ -34,8 +35,6 @@ namespace swarf {
 struct Particles;
 struct Rods;
 class StateArchive;
-
-enum class FrictionLaw { None, Spring, Regularized };
 
 /// Material and law parameters, derived once from [contact] and the meshes.
 struct ContactParams {

@@ -1,0 +1,118 @@
+// rod_forces.cpp: the rod kernel (see rod_forces.h).
+#include "swarf/forces/rod_forces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "swarf/core/parallel.h"
+
+namespace swarf {
+
+namespace {
+
+// The rod kernel over one block of rods. Raw pointers keep the compiler from reloading the
+// arrays' bases after every store (the uint8_t stores may alias anything). 'Viscous' is a
+// compile-time switch so the undamped lattice does not gather velocities.
+template <class Law, bool Viscous, bool Wrap>
+void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
+               const double* rest_length, const double* inv_rest_length, const double* shift, const std::uint8_t* intact, const Vec3* x, const Vec3* v,
+               double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power,
+               int& changed, Periodic periodic) {
+  double visc = 0.0;
+  int any = 0;
+  // In chunks, three passes: the rods' vectors (scalar gathers), their lengths and inverse
+  // lengths (a loop of square roots and divisions the compiler vectorises: in one loop with
+  // the law, their latency bound the kernel), then the law. The same values, bit for bit.
+  constexpr std::size_t kChunk = 256;
+  alignas(64) double dxs[3][kChunk], len_c[kChunk], inv_c[kChunk];
+  for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
+    const std::size_t nc = std::min(kChunk, end - c0);
+    for (std::size_t c = 0; c < nc; ++c) {
+      const std::size_t k = c0 + c;
+      Vec3 dx = x[ends[k][1]] - x[ends[k][0]];
+      if constexpr (Wrap) periodic.wrap(dx);
+      dxs[0][c] = dx[0];
+      dxs[1][c] = dx[1];
+      dxs[2][c] = dx[2];
+      len_c[c] = intact[k] ? dx.squaredNorm() : 1.0;  // (broken rods are skipped below)
+    }
+#pragma omp simd
+    for (std::size_t c = 0; c < nc; ++c) {
+      len_c[c] = std::sqrt(len_c[c]);
+      inv_c[c] = 1.0 / len_c[c];
+    }
+    for (std::size_t c = 0; c < nc; ++c) {
+      const std::size_t k = c0 + c;
+      if (!intact[k]) continue;
+      const double len = len_c[c];
+      const double inv_len = inv_c[c];
+      const double l0 = rest_length[k];
+      const double inv_l0 = inv_rest_length[k];
+      const double strain = (len - l0) * inv_l0;
+      double rate = 0.0;
+      if constexpr (Viscous) {
+        const std::int32_t i = ends[k][0], j = ends[k][1];
+        const Vec3 dx(dxs[0][c], dxs[1][c], dxs[2][c]);
+        rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
+      }
+      const RodResponse res = evaluate(law, strain, rate, shift[k]);
+      trial_shift[k] = res.shift;
+      trial_broken[k] = res.broken;
+      stress[k] = res.stress;
+      any |= (res.shift != shift[k]) | res.broken;
+      if (res.broken) {
+        coef[k] = 0.0;
+      } else {
+        coef[k] = (res.stress + res.viscous_stress) * A * inv_len;
+        if constexpr (Viscous) visc += res.viscous_stress * rate * A * l0;
+      }
+    }
+  }
+  viscous_power = visc;
+  changed = any;
+}
+
+}  // namespace
+
+void evaluate_rods(const RodLaw& rod_law, double area, const RodKernelView& view, Periodic periodic) {
+  // Copies in locals: through references the compiler would reload them after every store
+  // (the uint8_t stores may alias anything).
+  const RodLaw law = rod_law;
+  const double A = area;
+  const std::size_t m = view.rods, nb = block_count(m);
+  if (m == 0) return;
+  const auto* ends = view.ends;
+  const double* l0 = view.rest_length;
+  const double* inv_l0 = view.inv_rest_length;
+  const double* shift = view.shift;
+  const std::uint8_t* intact = view.intact;
+  const Vec3* x = view.x;
+  const Vec3* v = view.v;
+  double* trial_shift = view.trial_shift;
+  std::uint8_t* trial_broken = view.trial_broken;
+  double* stress = view.stress;
+  double* coef = view.coef;
+  double* block_visc = view.block_viscous;
+  int* block_changed = view.block_changed;
+  const bool viscous = law.viscosity != 0.0;
+  using Law = RodLaw;
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
+    // Compile-time switches: the common undamped or non-periodic cases pay for neither.
+    if (viscous && periodic.on())
+      rod_block<Law, true, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
+                                 stress, coef, block_visc[b], block_changed[b], periodic);
+    else if (viscous)
+      rod_block<Law, true, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
+                                  stress, coef, block_visc[b], block_changed[b], periodic);
+    else if (periodic.on())
+      rod_block<Law, false, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
+                                  stress, coef, block_visc[b], block_changed[b], periodic);
+    else
+      rod_block<Law, false, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift,
+                                   trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
+  }
+}
+
+}  // namespace swarf

@@ -1,0 +1,52 @@
+// friction.h: the tangential contact law, a pure function of the relative tangential
+// velocity, the committed history and the normal force (physics notes section 3).
+//
+// Three laws: none; Cundall-Strack (a tangential spring with a dashpot, capped by Coulomb,
+// whose stretch is the contact's history, committed with the step); regularized Coulomb
+// (mu fn tanh(|vt|/v0), no history).
+#pragma once
+
+#include <cmath>
+
+#include "swarf/core/vec3.h"
+
+namespace swarf {
+
+enum class FrictionLaw { None, Spring, Regularized };
+
+struct FrictionRule {
+  FrictionLaw law;
+  double mu;  // 1
+  double v0;  // regularization speed, m/s
+  double h;   // step, s
+};
+
+// Tangential force on body j from the relative tangential velocity vt (j relative to i, m/s),
+// the committed history 'hist' (m) and the normal force fn (N), with the tangential stiffness
+// kt (N/m) and dashpot eta (N s/m); returns the trial history through 'hist'.
+[[gnu::always_inline]] inline Vec3 friction_force(const FrictionRule& r, const Vec3& n, const Vec3& vt, double fn,
+                                                  double kt, double eta, Vec3& hist) {
+  if (r.law == FrictionLaw::None || r.mu == 0.0) {
+    hist = Vec3::Zero();
+    return Vec3::Zero();
+  }
+  if (r.law == FrictionLaw::Regularized) {
+    hist = Vec3::Zero();
+    const double s = vt.norm();
+    if (s == 0.0) return Vec3::Zero();
+    return (-r.mu * fn * std::tanh(s / r.v0) / s) * vt;
+  }
+  // Cundall-Strack spring with a dashpot: the history, kept in the tangent plane, grows
+  // with the slip; when the force exceeds Coulomb's cap the spring is reset to it.
+  Vec3 xi = hist - hist.dot(n) * n + r.h * vt;
+  Vec3 ft = -kt * xi - eta * vt;
+  const double cap = r.mu * fn, f2 = ft.squaredNorm();
+  if (f2 > cap * cap) {
+    ft *= cap / std::sqrt(f2);
+    xi = kt > 0.0 ? Vec3(-(ft + eta * vt) / kt) : Vec3::Zero();
+  }
+  hist = xi;
+  return ft;
+}
+
+}  // namespace swarf

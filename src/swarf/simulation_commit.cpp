@@ -1,0 +1,104 @@
+// simulation_commit.cpp: the commit stage (plastic shifts and breakage of the final
+// evaluation written back, broken rods' pairs handed to the contact lists) and the account
+// stage (energy ledger, reactions, time and counters); see simulation.h.
+#include <cmath>
+
+#include "swarf/core/parallel.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+void Simulation::commit() {
+  auto& r = m_.rods;
+  const double E = r.law.youngs_modulus, k_h = r.law.hardening, A = r.area;
+  const double plastic_factor = (E - k_h) / E;  // eps_p = (E - k)/E * shift
+  const std::size_t m = r.size();
+  // Plastic work and fracture energy per rod block, summed in block order.
+  const std::size_t nb = block_count(m);
+  std::vector<double> plastic(nb, 0.0), fracture(nb, 0.0);
+  std::vector<std::size_t> broke(nb, 0);
+  // The rods that break now, per block: their pairs become contact candidates.
+  const bool contacts = contacts_.enabled();
+  std::vector<std::vector<std::array<std::int32_t, 2>>> broken_pairs(contacts ? nb : 0);
+#pragma omp parallel for schedule(static) if (nb > 0)
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (!block_changed_[b]) continue;  // no rod of the block yielded or broke
+    const std::size_t end = std::min(m, (b + 1) * kBlock);
+    for (std::size_t k = b * kBlock; k < end; ++k) {
+      if (!r.intact[k]) continue;
+      const double dshift = r.trial_shift[k] - r.shift[k];
+      if (dshift != 0.0) {
+        plastic[b] += r.stress[k] * plastic_factor * dshift * A * r.rest_length[k];
+        r.shift[k] = r.trial_shift[k];
+      }
+      if (r.trial_broken[k]) {
+        r.intact[k] = 0;
+        fracture[b] += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
+        r.stress[k] = 0.0;
+        ++broke[b];
+        if (contacts) broken_pairs[b].push_back(r.ends[k]);
+      }
+    }
+  }
+  bool any_broke = false;
+  for (std::size_t b = 0; b < nb; ++b) {
+    ledger_.plastic_work += plastic[b];
+    ledger_.fracture_energy += fracture[b];
+    broken_ += broke[b];
+    any_broke = any_broke || broke[b] > 0;
+  }
+  if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
+  if (contacts && any_broke) {
+    // Added to the lists as they are (a full rebuild for each break cost a tenth of a cut).
+    std::vector<std::array<std::int32_t, 2>> fresh;
+    for (const auto& v : broken_pairs) fresh.insert(fresh.end(), v.begin(), v.end());
+    contacts_.add_pairs(m_.particles, std::move(fresh));
+  }
+  if (any_broke && rotations_) update_free_to_rotate();
+}
+
+void Simulation::compute_reactions(std::vector<Vec3>& out) const {
+  const auto& p = m_.particles;
+  out.assign(m_.groups.size(), Vec3::Zero());
+  for (std::size_t g = 0; g < m_.groups.size(); ++g)
+    for (auto i : m_.groups[g].members) out[g] -= p.force[i];
+}
+
+void Simulation::account(double h) {
+  double visc = 0.0;
+  for (double v : block_viscous_) visc += v;
+  ledger_.viscous_work += visc * h;
+  reaction_old_.swap(reaction_);
+  compute_reactions(reaction_);
+  for (std::size_t g = 0; g < m_.groups.size(); ++g) {
+    const Vec3 du = group_u_new_[g] - group_u_old_[g];
+    const Vec3 v = du / h;
+    for (int c = 0; c < 3; ++c) {
+      if (!(m_.groups[g].dofs & (1u << c))) continue;
+      // Work on the body through the reaction, plus the work that changes the prescribed
+      // particles' own kinetic energy (a grip that starts or reverses accelerates them).
+      ledger_.external_work += 0.5 * (reaction_old_[g][c] + reaction_[g][c]) * du[c];
+      ledger_.external_work += 0.5 * group_mass_[g] * (v[c] * v[c] - group_v_[g][c] * group_v_[g][c]);
+    }
+    group_v_[g] = v;
+  }
+  // Moving meshes (tools) work on the particles: minus the force the particles exert on the
+  // mesh times its displacement (trapezoid over the step).
+  if (contacts_.enabled()) {
+    std::vector<Vec3> previous;
+    previous.swap(mesh_force_);
+    contacts_.mesh_forces(mesh_force_);
+    for (std::size_t k = 0; k < m_.meshes.size(); ++k)
+      ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
+    // What the contacts take up (stored + dissipated): minus the power of their forces,
+    // trapezoid over the step.
+    const double power = contact_power(!implicit_);
+    ledger_.contact_work -= 0.5 * (contact_power_old_ + power) * h;
+    contact_power_old_ = power;
+  }
+  time_ += h;
+  last_dt_ = h;
+  ++stats_.accepted;
+}
+
+}  // namespace swarf
