@@ -76,6 +76,9 @@ class H5StateWriter final : public StateArchive {
     const std::vector<std::int64_t> w(v.begin(), v.end());
     f_.write(key(name), w.data(), w.size(), 1);
   }
+  void array(std::string_view name, std::vector<std::int64_t>& v, std::size_t) override {
+    f_.write(key(name), v.data(), v.size(), 1);
+  }
   void scalar(std::string_view name, double& v) override { f_.write(key(name), &v, 1, 1); }
   void scalar(std::string_view name, std::int64_t& v) override { f_.write(key(name), &v, 1, 1); }
 
@@ -108,6 +111,9 @@ class H5StateReader final : public StateArchive {
   void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t expected) override {
     const auto d = ints(name, expected);
     v.assign(d.begin(), d.end());
+  }
+  void array(std::string_view name, std::vector<std::int64_t>& v, std::size_t expected) override {
+    v = ints(name, expected);
   }
   void scalar(std::string_view name, double& v) override { v = doubles(name, 1, 1)[0]; }
   void scalar(std::string_view name, std::int64_t& v) override { v = ints(name, 1)[0]; }

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "swarf/core/stage_clock.h"
+#include "swarf/state/reindex.h"
 #include "swarf/state_archive.h"
 #include "swarf/step_listener.h"
 #include "swarf/step_settings.h"
@@ -66,6 +67,19 @@ class Simulation {
   /// Registers a listener called around every step (not owned; remove it before it dies).
   void add_listener(StepListener* l) { listeners_.push_back(l); }
   void remove_listener(StepListener* l) { std::erase(listeners_, l); }
+
+  // The one door for changing the particles between steps: every per-particle array, rod
+  // end, group member list and contact (with its friction history) follows. Ids
+  // (Particles::id) stay with their particles.
+  /// Reorders the particles: order[k] is the current index of the particle placed at k.
+  void apply_permutation(const std::vector<std::int32_t>& order);
+  /// Removes the particles with remove[i] != 0, their rods and their contacts; the others
+  /// keep their order. Returns the number of rods removed with them.
+  std::size_t remove_particles(const std::vector<std::uint8_t>& remove);
+  /// Appends 'extra' (its arrays sized alike, as Particles::resize makes them; its ids are
+  /// ignored: new ones are given). The new particles have no rods; the contact lists are
+  /// rebuilt at the next evaluation so that they take part.
+  void append_particles(const Particles& extra);
 
   double time() const { return time_; }
   std::int64_t steps() const { return stats_.accepted; }
@@ -134,6 +148,9 @@ class Simulation {
   void account(double h);
 
   void update_free_to_rotate();
+  void reindex_all(const Reindex& r);  // the door's common part
+  void resize_scratch();
+  void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows               // per-particle, per-rod-block and per-group scratch after a change
   void save_state();
   void restore_state();
   [[noreturn]] void throw_too_far(double h) const;

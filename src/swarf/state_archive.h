@@ -34,6 +34,7 @@ class StateArchive {
   virtual void array(std::string_view name, std::vector<Quat>& v, std::size_t expected) = 0;
   virtual void array(std::string_view name, std::vector<std::uint8_t>& v, std::size_t expected) = 0;
   virtual void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t expected) = 0;
+  virtual void array(std::string_view name, std::vector<std::int64_t>& v, std::size_t expected) = 0;
   virtual void scalar(std::string_view name, double& v) = 0;
   virtual void scalar(std::string_view name, std::int64_t& v) = 0;
 
@@ -64,6 +65,7 @@ class HashArchive final : public StateArchive {
   void array(std::string_view name, std::vector<Quat>& v, std::size_t) override { add(name, v); }
   void array(std::string_view name, std::vector<std::uint8_t>& v, std::size_t) override { add(name, v); }
   void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t) override { add(name, v); }
+  void array(std::string_view name, std::vector<std::int64_t>& v, std::size_t) override { add(name, v); }
   void scalar(std::string_view name, double& v) override { add_named(name, &v, sizeof v, 1); }
   void scalar(std::string_view name, std::int64_t& v) override { add_named(name, &v, sizeof v, 1); }
   std::uint64_t value() const { return h_; }

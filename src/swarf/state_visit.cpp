@@ -3,6 +3,8 @@
 // checkpoint holds, and everything the state hash covers, is listed in one file.
 #include <fmt/format.h>
 
+#include <string>
+
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
@@ -59,20 +61,23 @@ void Simulation::visit_state(StateArchive& ar) {
   auto& p = m_.particles;
   auto& r = m_.rods;
   const std::size_t n = p.size(), m = r.size(), ng = m_.groups.size(), nm = m_.meshes.size();
-  ar.array("particles/position", p.position, n);
-  ar.array("particles/velocity", p.velocity, n);
-  ar.array("particles/acceleration", p.acceleration, n);
-  ar.array("particles/force", p.force, n);
-  ar.array("particles/orientation", p.orientation, n);
-  ar.array("particles/omega", p.omega, n);
-  ar.array("particles/omega_dot", p.omega_dot, n);
-  ar.array("particles/torque", p.torque, n);
-  ar.array("rods/shift", r.shift, m);
-  ar.array("rods/intact", r.intact, m);
-  ar.array("rods/trial_shift", r.trial_shift, m);
-  ar.array("rods/trial_broken", r.trial_broken, m);
-  ar.array("rods/stress", r.stress, m);
-  ar.array("rods/force_coef", r.force_coef, m);
+  // (after a load of particles and rods, n and m below are the loaded sizes)
+  // The particles and rods whole, static fields too: the door (simulation.h) may have
+  // removed, appended or reordered them since the World was built, so a load takes the
+  // World's variable part from the archive and checks it (sizes, indices) below.
+  const std::size_t any = StateArchive::kAnySize;
+  p.for_each_field([&](const char* name, auto& v) { ar.array(std::string("particles/") + name, v, load ? any : n); });
+  ar.scalar("particles/next_id", p.next_id);
+  std::vector<std::int32_t> ends(2 * m);
+  for (std::size_t k = 0; k < m; ++k) {
+    ends[2 * k] = r.ends[k][0];
+    ends[2 * k + 1] = r.ends[k][1];
+  }
+  ar.array("rods/ends", ends, load ? any : 2 * m);
+  r.for_each_field([&](const char* name, auto& v) { ar.array(std::string("rods/") + name, v, load ? any : m); });
+  for (std::size_t g = 0; g < ng; ++g)
+    ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
+  if (load) check_loaded_world(ends);
   std::vector<Vec3> offset, velocity;
   for (const auto& mb : m_.meshes) {
     offset.push_back(mb.offset);
@@ -85,13 +90,14 @@ void Simulation::visit_state(StateArchive& ar) {
       m_.meshes[k].offset = offset[k];
       m_.meshes[k].velocity = velocity[k];
     }
+  const std::size_t n_now = p.size();
   ar.array("groups/u_old", group_u_old_, ng);
   ar.array("groups/u_new", group_u_new_, ng);
   ar.array("groups/reaction", reaction_, ng);
   ar.array("groups/reaction_old", reaction_old_, StateArchive::kAnySize);  // (empty before the first step)
   ar.array("groups/velocity", group_v_, ng);
   ar.array("mesh_force", mesh_force_, StateArchive::kAnySize);
-  ar.array("contact_force", contact_force_, contact_force_.size());
+  ar.array("contact_force", contact_force_, contacts_.enabled() ? n_now : 0);
   ar.scalar("time", time_);
   ar.scalar("dt", dt_);
   ar.scalar("last_dt", last_dt_);
@@ -114,8 +120,34 @@ void Simulation::visit_state(StateArchive& ar) {
   if (load) {
     if (mesh_force_.size() != nm && !mesh_force_.empty())
       throw InputError(fmt::format("state field 'mesh_force' has {} entries, expected {}", mesh_force_.size(), nm));
-    if (rotations_) update_free_to_rotate();
+    resize_scratch();
   }
+}
+
+void Simulation::check_loaded_world(const std::vector<std::int32_t>& ends) {
+  auto& p = m_.particles;
+  auto& r = m_.rods;
+  const std::size_t n = p.size();
+  bool same = true;
+  p.for_each_field([&](const char*, auto& v) { same = same && v.size() == n; });
+  if (!same) throw InputError("state fields 'particles/*' differ in length");
+  if (ends.size() % 2 != 0) throw InputError("state field 'rods/ends' is not a list of index pairs");
+  const std::size_t m = ends.size() / 2;
+  r.ends.resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    r.ends[k] = {ends[2 * k], ends[2 * k + 1]};
+    if (r.ends[k][0] < 0 || r.ends[k][1] <= r.ends[k][0] || std::size_t(r.ends[k][1]) >= n)
+      throw InputError(fmt::format("state field 'rods/ends': rod {} joins particles ({}, {}) of {}", k, r.ends[k][0],
+                                   r.ends[k][1], n));
+  }
+  same = true;
+  r.for_each_field([&](const char*, auto& v) { same = same && v.size() == m; });
+  if (!same) throw InputError("state fields 'rods/*' differ in length from 'rods/ends'");
+  for (std::size_t g = 0; g < m_.groups.size(); ++g)
+    for (auto i : m_.groups[g].members)
+      if (i < 0 || std::size_t(i) >= n)
+        throw InputError(fmt::format("state field 'groups/{}/members': particle {} of {}", g, i, n));
+  r.build_rows(n);
 }
 
 std::uint64_t Simulation::state_hash() const {

@@ -449,4 +449,49 @@ void ContactSystem::fill_constants(const Particles& p) {
   }
 }
 
+void ContactSystem::reindex(const std::vector<std::int32_t>& new_index, std::size_t new_count, const Particles& p) {
+  if (!enabled_) return;
+  constexpr std::int32_t kGone = -1;
+  const bool built = x_build_.size() == new_index.size();
+  std::vector<std::pair<Pair, Vec3>> pairs;
+  pairs.reserve(pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    std::int32_t i = new_index[pairs_[k].i], j = new_index[pairs_[k].j];
+    if (i == kGone || j == kGone) continue;
+    Vec3 h = phist_[k];
+    if (i > j) {
+      std::swap(i, j);
+      h = -h;
+    }
+    pairs.push_back({Pair{i, j}, h});
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) {
+    return a.first.i < b.first.i || (a.first.i == b.first.i && a.first.j < b.first.j);
+  });
+  pairs_.resize(pairs.size());
+  phist_.resize(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    pairs_[k] = pairs[k].first;
+    phist_[k] = pairs[k].second;
+  }
+  std::vector<TriPair> tris;
+  tris.reserve(tris_.size());
+  for (const TriPair& t : tris_) {
+    const std::int32_t i = new_index[t.i];
+    if (i == kGone) continue;
+    tris.push_back(t);
+    tris.back().i = i;
+  }
+  std::stable_sort(tris.begin(), tris.end(),
+                   [](const TriPair& a, const TriPair& b) { return a.i < b.i || (a.i == b.i && a.tri < b.tri); });
+  tris_.swap(tris);
+  if (built) {
+    std::vector<Vec3> xb(new_count, Vec3::Zero());
+    for (std::size_t i = 0; i < new_index.size(); ++i)
+      if (new_index[i] != kGone) xb[new_index[i]] = x_build_[i];
+    x_build_.swap(xb);
+  }
+  finish_build(p);
+}
+
 }  // namespace swarf

@@ -142,6 +142,12 @@ class ContactSystem {
   std::size_t touching_pairs() const;
   std::size_t list_builds() const { return builds_; }
 
+  /// Follows a change of particle indices (state/reindex.h): contacts of removed particles
+  /// are dropped, the others renumbered with their histories (a pair whose ends swap keeps
+  /// its history negated: it is j's displacement relative to i) and sorted again. 'p' is the
+  /// particles after the change. A list not built yet stays unbuilt.
+  void reindex(const std::vector<std::int32_t>& new_index, std::size_t new_count, const Particles& p);
+
   /// The state: the lists as built (pairs, triangle contacts, committed histories, build
   /// reference), each field named once (state_visit.cpp); per-contact constants and rows are
   /// derived again on load.

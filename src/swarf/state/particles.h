@@ -1,6 +1,9 @@
 // particles.h: particle state as a structure of arrays.
 //
-// One array per field, indexed by particle id; the rod kernel gathers positions and
+// One array per field, indexed by the particle's position in the arrays (its index); the
+// particle's identity is 'id', which stays with it when particles are reordered, removed or
+// appended (Simulation::apply_permutation, remove_particles, append_particles: the one door
+// that every per-particle array, rod end, group and contact follows). The rod kernel gathers positions and
 // velocities of two particles, so each field keeps its three components together (Vec3).
 // Components that a grip prescribes are flagged per particle in 'prescribed' (bit c set =
 // component c follows the motion of group 'group'); the integrator leaves them alone.
@@ -33,8 +36,33 @@ struct Particles {
   std::vector<Vec3> inertia;           ///< principal moments of inertia, kg m^2 (2/5 m R^2 for a sphere)
   std::vector<double> inv_inertia;     ///< 1/I for isotropic inertia (spheres), 1/(kg m^2); 0 otherwise
   std::vector<Vec3> torque;            ///< world-frame torque of the last evaluation, N m
+  std::vector<std::int64_t> id;        ///< stable identity (0, 1, ... in creation order; never reused)
+  std::int64_t next_id = 0;            ///< the id the next new particle gets
 
   std::size_t size() const { return position.size(); }
+
+  /// Calls f(name, array) for every per-particle array, in one fixed order: what reordering,
+  /// removal, appending and the state visit go through, so that a new field is added here once.
+  template <class F>
+  void for_each_field(F&& f) {
+    f("position", position);
+    f("velocity", velocity);
+    f("acceleration", acceleration);
+    f("force", force);
+    f("initial_position", initial_position);
+    f("mass", mass);
+    f("inv_mass", inv_mass);
+    f("radius", radius);
+    f("prescribed", prescribed);
+    f("group", group);
+    f("orientation", orientation);
+    f("omega", omega);
+    f("omega_dot", omega_dot);
+    f("inertia", inertia);
+    f("inv_inertia", inv_inertia);
+    f("torque", torque);
+    f("id", id);
+  }
 
   /// Resizes every field to n particles (new entries zero, group -1).
   void resize(std::size_t n) {
@@ -54,6 +82,8 @@ struct Particles {
     inertia.resize(n, Vec3::Zero());
     inv_inertia.resize(n, 0.0);
     torque.resize(n, Vec3::Zero());
+    while (id.size() < n) id.push_back(next_id++);
+    id.resize(n);
   }
 };
 

@@ -44,6 +44,20 @@ struct Rods {
 
   std::size_t size() const { return ends.size(); }
 
+  /// Calls f(name, array) for every per-rod array except 'ends', in one fixed order (the
+  /// removal of rods and the state visit go through it, so a new field is added here once).
+  template <class F>
+  void for_each_field(F&& f) {
+    f("rest_length", rest_length);
+    f("inv_rest_length", inv_rest_length);
+    f("shift", shift);
+    f("intact", intact);
+    f("trial_shift", trial_shift);
+    f("trial_broken", trial_broken);
+    f("stress", stress);
+    f("force_coef", force_coef);
+  }
+
   /// Sets the committed state to virgin (no shift, all intact) and sizes the scratch arrays.
   void reset_state();
   /// Builds the per-particle rod lists for n particles.

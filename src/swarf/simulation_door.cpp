@@ -1,0 +1,77 @@
+// simulation_door.cpp: reordering, removing and appending particles between steps (see
+// simulation.h and state/reindex.h).
+#include <stdexcept>
+
+#include "swarf/core/errors.h"
+#include "swarf/core/parallel.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+void Simulation::resize_scratch() {
+  const std::size_t n = m_.particles.size(), m = m_.rods.size();
+  block_viscous_.resize(block_count(m), 0.0);
+  block_changed_.resize(block_count(m), 0);
+  group_mass_.assign(m_.groups.size(), 0.0);
+  for (std::size_t g = 0; g < m_.groups.size(); ++g)
+    for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
+  if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
+  if (rotations_) update_free_to_rotate();
+  broken_ = m_.rods.broken_count();
+  moved2_ = -1.0;
+}
+
+void Simulation::reindex_all(const Reindex& r) {
+  reindex(m_.particles, r);
+  reindex(m_.rods, r);
+  reindex(m_.groups, r);
+  if (contacts_.enabled()) {
+    reindex_array(contact_force_, r);
+    contacts_.reindex(r.new_index, r.new_count, m_.particles);
+  }
+  resize_scratch();
+}
+
+void Simulation::apply_permutation(const std::vector<std::int32_t>& order) {
+  if (order.size() != m_.particles.size())
+    throw InputError("apply_permutation: the order has " + std::to_string(order.size()) + " entries for " +
+                     std::to_string(m_.particles.size()) + " particles");
+  try {
+    reindex_all(Reindex::permutation(order));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("apply_permutation: ") + e.what());
+  }
+}
+
+std::size_t Simulation::remove_particles(const std::vector<std::uint8_t>& remove) {
+  if (remove.size() != m_.particles.size())
+    throw InputError("remove_particles: the mask has " + std::to_string(remove.size()) + " entries for " +
+                     std::to_string(m_.particles.size()) + " particles");
+  const std::size_t rods_before = m_.rods.size();
+  reindex_all(Reindex::removal(remove));
+  return rods_before - m_.rods.size();
+}
+
+void Simulation::append_particles(const Particles& extra) {
+  Particles add = extra;  // (a copy: its fields are moved into the World's arrays)
+  const std::size_t k = add.position.size();
+  bool consistent = true;
+  add.for_each_field([&](const char* name, auto& v) { consistent = consistent && (v.size() == k || std::string(name) == "id"); });
+  if (!consistent) throw InputError("append_particles: the new particles' arrays differ in length (size them with Particles::resize)");
+  auto& p = m_.particles;
+  add.id.resize(k);
+  for (std::size_t q = 0; q < k; ++q) add.id[q] = p.next_id++;
+  // Both for_each_field walks visit the same fields in the same order: pair them by index.
+  std::vector<void*> targets;
+  p.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
+  std::size_t f = 0;
+  add.for_each_field([&](const char*, auto& v) {
+    auto& dst = *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]);
+    dst.insert(dst.end(), v.begin(), v.end());
+  });
+  m_.rods.build_rows(p.size());
+  rebuild_lists_ = true;  // (the lists' build reference no longer matches the particles)
+  resize_scratch();
+}
+
+}  // namespace swarf
