@@ -49,7 +49,8 @@ void Simulation::commit() {
   }
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   if (contacts && any_broke) {
-    // Added to the lists as they are (a full rebuild for each break cost a tenth of a cut).
+    // Added to the lists as they are: a full rebuild for each break is far dearer
+    // (validation/bench/README.md).
     std::vector<std::array<std::int32_t, 2>> fresh;
     for (const auto& v : broken_pairs) fresh.insert(fresh.end(), v.begin(), v.end());
     contacts_.add_pairs(m_.particles, std::move(fresh));

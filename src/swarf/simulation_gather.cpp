@@ -119,7 +119,7 @@ double Simulation::gather_impl(double h) {
     if constexpr (Kick) block_power_[b] = power;
   };
   // Static, as the passes that move the particles and the pair loop: each thread finds its
-  // particles' data in its own core's cache (dynamic blocks were 3 to 10 % slower on W2).
+  // particles' data in its own core's cache (dynamic blocks were slower: validation/bench/README.md).
 #pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
   for (std::size_t b = 0; b < nb; ++b) {
     if (contacts) block.template operator()<true>(b, dmax, fmax, damax);

@@ -1,7 +1,8 @@
 // chung_ooi.cpp: benchmark tests of Chung and Ooi (2011, Granular Matter 13:643-656) run
 // through swarf's case parser, model and step, compared with the analytic Hertz solution
 // and, for oblique impacts, with the rigid-body impulse theory in the sliding regime.
-// Writes results.md and oblique.csv into the directory given as the first argument.
+// Writes results.md and oblique.csv into the directory given as the first argument (default:
+// validation/chung_ooi of the source tree).
 //
 // Tests 1-3 compare with the analytic Hertz impact; tests 4-8 (oblique impacts, spin, two
 // spheres of equal and different size) with the rigid-body impulse theory where the contact
@@ -148,7 +149,8 @@ double hertz_rows(std::string& md, const char* name, const ImpactResult& r, cons
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = argc > 1 ? argv[1] : ".";
+  // Without an argument, into its own folder (validation/chung_ooi), never the working directory.
+  const std::string out = argc > 1 ? argv[1] : SWARF_CHUNG_OOI_DIR;
   std::string md = "<!-- written by chung_ooi (validation/chung_ooi); do not edit -->\n";
   int failures = 0;
   auto check = [&](double dev) {

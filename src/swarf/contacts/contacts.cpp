@@ -50,8 +50,8 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   const TriangleFrame* tri_frame = tri_frame_.data();
   // One parallel region for both kinds. Pairs: a fixed partition into contiguous rows, so
   // that each thread evaluates the pairs of particles it moved and will gather (the list is
-  // sorted by first particle); on the 2-core machine static partitions beat dynamic chunks by
-  // 3 to 10 % on W2. Triangle contacts: dynamic, they cost as much as tens of pairs each and
+  // sorted by first particle; static partitions beat dynamic chunks, validation/bench/README.md).
+  // Triangle contacts: dynamic, they cost as much as tens of pairs each and
   // cluster at a wall or the tool; chunks small enough for every thread to get several. Each
   // contact writes only its own slots, and each particle's sum is made in pair order by one
   // thread (or again from the slots, see Sums): the results do not depend on the threads.

@@ -96,7 +96,7 @@ inline void sphere_rotation_step(Quat& q, Vec3& w, Vec3& dw, const Vec3& torque_
     if (t2 < 1e-4) {
       // Small turns (the usual case) by their Taylor series, no division or root: the
       // truncation is below half^6/5040 < 2e-16.
-      // (Products with the reciprocals: a division here cost a tenth of the explicit step.)
+      // (Products with the reciprocals instead of divisions: validation/bench/README.md.)
       c = 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0));
       s_over_rate = 0.5 * h * (1.0 - t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0)));
     } else {
