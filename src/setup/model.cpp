@@ -1,16 +1,16 @@
 // model.cpp: building particles, rods and groups from the settings (see model.h).
 #include "setup/model.h"
-#include "io/mesh_file.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
-#include "swarf/core/errors.h"
+#include "io/mesh_file.h"
+#include "io/particle_file.h"
 #include "lattice_gen/lattice_file.h"
+#include "swarf/core/errors.h"
 #include "tool_paths/tool_geometry.h"
-#include <fstream>
-#include <sstream>
 
 namespace swarf {
 
@@ -75,85 +75,81 @@ static std::uint8_t dof_mask(const std::string& dofs) {
   return m;
 }
 
-Model build_model(const CaseSettings& cs) {
-  Model model;
-  model.settings = cs;
-  Lattice lat;
-  if (!cs.workpiece.enabled) {
-    // No workpiece: only free particles.
-  } else if (!cs.workpiece.lattice_file.empty()) {
-    lat = read_lattice(cs.workpiece.lattice_file);
-  } else {
-    FccSpec spec;
-    spec.radius = cs.workpiece.radius;
-    spec.cells = cs.workpiece.cells;
-    spec.size = cs.workpiece.size;
-    spec.bond_tolerance = cs.workpiece.bond_tolerance;
-    lat = generate_fcc(spec);
-    if (cs.workpiece.periodic_width) {
-      // Bond the two y faces across the boundary: the layer at y = 0 and the one at
-      // y = period - a/2 are nearest neighbours through the periodic image.
-      const double a = lat.cell_edge, L = cs.workpiece.cells[1] * a, d0 = 2.0 * spec.radius;
-      model.periodic = Periodic::along_y(L);
-      std::vector<std::int32_t> low, high;
-      for (std::size_t i = 0; i < lat.position.size(); ++i) {
-        if (lat.position[i][1] < 0.25 * a) low.push_back(static_cast<std::int32_t>(i));
-        if (lat.position[i][1] > L - 0.75 * a) high.push_back(static_cast<std::int32_t>(i));
-      }
-      const double tol = spec.bond_tolerance;
-      for (auto i : low)
-        for (auto j : high) {
-          Vec3 dx = lat.position[j] - lat.position[i];
-          model.periodic.wrap(dx);
-          const double len = dx.norm();
-          if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
-          lat.bonds.push_back({std::min(i, j), std::max(i, j)});
-          lat.rest_length.push_back(len);
-        }
-      // Keep the rods sorted as the generator gives them (the gather order follows the rods).
-      std::vector<std::size_t> order(lat.bonds.size());
-      for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-      std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
-      std::vector<std::array<std::int32_t, 2>> bonds(order.size());
-      std::vector<double> rest(order.size());
-      for (std::size_t k = 0; k < order.size(); ++k) {
-        bonds[k] = lat.bonds[order[k]];
-        rest[k] = lat.rest_length[order[k]];
-      }
-      lat.bonds.swap(bonds);
-      lat.rest_length.swap(rest);
-    }
+namespace {
+
+// Bonds the two y faces across the periodic boundary: the layer at y = 0 and the one at
+// y = period - a/2 are nearest neighbours through the periodic image.
+void bond_across_periodic_width(const CaseSettings& cs, const FccSpec& spec, Lattice& lat, Periodic& periodic) {
+  const double a = lat.cell_edge, L = cs.workpiece.cells[1] * a, d0 = 2.0 * spec.radius;
+  periodic = Periodic::along_y(L);
+  std::vector<std::int32_t> low, high;
+  for (std::size_t i = 0; i < lat.position.size(); ++i) {
+    if (lat.position[i][1] < 0.25 * a) low.push_back(static_cast<std::int32_t>(i));
+    if (lat.position[i][1] > L - 0.75 * a) high.push_back(static_cast<std::int32_t>(i));
   }
-  model.lattice_particles = lat.position.size();
-  // Free particles follow the lattice (no bonds).
-  std::vector<Vec3> free_velocity, free_spin;
+  const double tol = spec.bond_tolerance;
+  for (auto i : low)
+    for (auto j : high) {
+      Vec3 dx = lat.position[j] - lat.position[i];
+      periodic.wrap(dx);
+      const double len = dx.norm();
+      if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
+      lat.bonds.push_back({std::min(i, j), std::max(i, j)});
+      lat.rest_length.push_back(len);
+    }
+  // Keep the rods sorted as the generator gives them (the gather order follows the rods).
+  std::vector<std::size_t> order(lat.bonds.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
+  std::vector<std::array<std::int32_t, 2>> bonds(order.size());
+  std::vector<double> rest(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    bonds[k] = lat.bonds[order[k]];
+    rest[k] = lat.rest_length[order[k]];
+  }
+  lat.bonds.swap(bonds);
+  lat.rest_length.swap(rest);
+}
+
+// The workpiece's lattice: from a lattice file, generated, or none (free particles only).
+Lattice workpiece_lattice(const CaseSettings& cs, Periodic& periodic) {
+  Lattice lat;
+  if (!cs.workpiece.enabled) return lat;
+  if (!cs.workpiece.lattice_file.empty()) return read_lattice(cs.workpiece.lattice_file);
+  FccSpec spec;
+  spec.radius = cs.workpiece.radius;
+  spec.cells = cs.workpiece.cells;
+  spec.size = cs.workpiece.size;
+  spec.bond_tolerance = cs.workpiece.bond_tolerance;
+  lat = generate_fcc(spec);
+  if (cs.workpiece.periodic_width) bond_across_periodic_width(cs, spec, lat, periodic);
+  return lat;
+}
+
+// The free particles ([[particle]] and [particles] file) appended to the lattice's
+// positions and radii (no bonds); their velocities and spins returned beside.
+void append_free_particles(const CaseSettings& cs, Lattice& lat, std::vector<Vec3>& free_velocity,
+                           std::vector<Vec3>& free_spin) {
   for (const auto& ps : cs.particles) {
     lat.position.emplace_back(ps.position[0], ps.position[1], ps.position[2]);
     lat.radius.push_back(ps.radius);
     free_velocity.emplace_back(ps.velocity[0], ps.velocity[1], ps.velocity[2]);
     free_spin.emplace_back(ps.angular_velocity[0], ps.angular_velocity[1], ps.angular_velocity[2]);
   }
-  if (!cs.particles_file.file.empty()) {
-    std::ifstream in(cs.particles_file.file);
-    std::string line;
-    int lineno = 0;
-    while (std::getline(in, line)) {
-      ++lineno;
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream ls(line);
-      double id, x, y, z, vx, vy, vz;
-      if (!(ls >> id >> x >> y >> z >> vx >> vy >> vz) || !std::isfinite(x + y + z + vx + vy + vz))
-        throw InputError(fmt::format("{}:{}: expected 'id x y z vx vy vz' (SI units), got '{}'", cs.particles_file.file,
-                                     lineno, line.substr(0, 80)));
-      lat.position.emplace_back(x, y, z);
+  if (!cs.particles_file.file.empty())
+    for (const FreeParticleRow& row : read_particle_file(cs.particles_file.file)) {
+      lat.position.push_back(row.position);
       lat.radius.push_back(cs.particles_file.radius);
-      free_velocity.emplace_back(vx, vy, vz);
+      free_velocity.push_back(row.velocity);
       free_spin.emplace_back(Vec3::Zero());
     }
-  }
-  model.derived = compute_derived(cs, lat);
-  const Derived& d = model.derived;
+}
 
+// Masses and inertias (lattice particles from the derived mass basis, free ones as solid
+// spheres), positions, the free particles' velocities and spins.
+void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vector<Vec3>& free_velocity,
+                    const std::vector<Vec3>& free_spin, Model& model) {
+  const Derived& d = model.derived;
   auto& p = model.particles;
   const std::size_t n = lat.position.size();
   p.resize(n);
@@ -178,28 +174,25 @@ Model build_model(const CaseSettings& cs) {
     p.velocity[i] = free_velocity[k];
     p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
   }
+}
 
-  auto& r = model.rods;
-  r.law = d.law;
-  r.area = d.rod_area;
-  r.ends = lat.bonds;
-  r.rest_length = lat.rest_length;
-  r.reset_state();
-  r.build_rows(n);
+void add_group(Model& model, const std::string& source, const std::string& name, std::vector<std::int32_t> members,
+               std::uint8_t dofs, Motion motion) {
+  auto& p = model.particles;
+  if (members.empty()) throw InputError(fmt::format("{}: group '{}' selects no particle", source, name));
+  for (auto i : members) {
+    if (p.group[i] >= 0)
+      throw InputError(fmt::format("{}: particle {} belongs to groups '{}' and '{}'; groups must not overlap", source,
+                                   i, model.groups[p.group[i]].name, name));
+    p.group[i] = static_cast<std::int32_t>(model.groups.size());
+    p.prescribed[i] = dofs;
+  }
+  model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
+}
 
-  const double h = 0.5 * d.cell_edge;  // spacing of lattice layers along a cube axis
-  auto add_group = [&](const std::string& name, std::vector<std::int32_t> members, std::uint8_t dofs, Motion motion) {
-    if (members.empty()) throw InputError(fmt::format("{}: group '{}' selects no particle", cs.source, name));
-    for (auto i : members) {
-      if (p.group[i] >= 0)
-        throw InputError(fmt::format("{}: particle {} belongs to groups '{}' and '{}'; groups must not overlap",
-                                     cs.source, i, model.groups[p.group[i]].name, name));
-      p.group[i] = static_cast<std::int32_t>(model.groups.size());
-      p.prescribed[i] = dofs;
-    }
-    model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
-  };
-
+// The [[group]] tables: by a side of the box or by a region.
+void build_groups(const CaseSettings& cs, const Lattice& lat, double h, Model& model) {
+  const std::size_t n = lat.position.size();
   for (const auto& gs : cs.groups) {
     std::vector<std::int32_t> members;
     if (!gs.side.empty()) {
@@ -207,59 +200,66 @@ Model build_model(const CaseSettings& cs) {
     } else {
       for (std::size_t i = 0; i < n; ++i) {
         bool in = true;
-        for (int c = 0; c < 3; ++c) in = in && lat.position[i][c] >= gs.box_min[c] && lat.position[i][c] <= gs.box_max[c];
+        for (int c = 0; c < 3; ++c)
+          in = in && lat.position[i][c] >= gs.box_min[c] && lat.position[i][c] <= gs.box_max[c];
         if (in) members.push_back(static_cast<std::int32_t>(i));
       }
     }
-    add_group(gs.name, std::move(members), dof_mask(gs.dofs),
-              motion_from(gs.motion));
+    add_group(model, cs.source, gs.name, std::move(members), dof_mask(gs.dofs), motion_from(gs.motion));
   }
+}
 
-  if (cs.uniaxial.enabled) {
-    const auto& u = cs.uniaxial;
-    auto& info = model.uniaxial;
-    info.enabled = true;
-    info.axis = u.axis[0] - 'x';
-    const int ax = info.axis;
-    Vec3 lo = lat.position[0], hi = lat.position[0];
-    for (const auto& x : lat.position) {
-      lo = lo.cwiseMin(x);
-      hi = hi.cwiseMax(x);
-    }
-    info.gauge_length = (hi[ax] - lo[ax]) - 2.0 * (u.grip_layers - 1) * h;
-    if (!(info.gauge_length > 0.5 * h))
-      throw InputError(fmt::format("{}: key 'uniaxial.grip_layers' = {}: the grips leave no free bar between them",
-                                   cs.source, u.grip_layers));
-    info.cross_section = 1.0;
-    for (int c = 0; c < 3; ++c)
-      if (c != ax) info.cross_section *= (hi[c] - lo[c]) + h;
-    // Grip motion: each grip moves half the separation change, along the strain path.
-    Motion mmin, mmax;
-    mmin.kind = mmax.kind = Motion::Kind::Table;
-    double t = 0.0;
-    for (std::size_t k = 0; k < u.strain_path.size(); ++k) {
-      if (k > 0) t += std::abs(u.strain_path[k] - u.strain_path[k - 1]) / u.strain_rate;
-      const double half = 0.5 * u.strain_path[k] * info.gauge_length;
-      Vec3 e = Vec3::Zero();
-      e[ax] = half;
-      mmin.time.push_back(t);
-      mmax.time.push_back(t);
-      mmin.displacement.push_back(-e);
-      mmax.displacement.push_back(e);
-    }
-    const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
-    const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
-    info.grip_min = static_cast<int>(model.groups.size());
-    add_group("grip_min", select_side(lat.position, smin, u.grip_layers, h), dofs, mmin);
-    info.grip_max = static_cast<int>(model.groups.size());
-    add_group("grip_max", select_side(lat.position, smax, u.grip_layers, h), dofs, mmax);
-    if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
-    const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
-    for (std::size_t b = 0; b < r.size(); ++b) {
-      const double xi = lat.position[r.ends[b][0]][ax], xj = lat.position[r.ends[b][1]][ax];
-      if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
-    }
+// [uniaxial]: the grips as two groups moving along the strain path, the bar's gauge length
+// and cross-section, and the rods through its mid-plane.
+void build_uniaxial(const CaseSettings& cs, const Lattice& lat, double h, Model& model) {
+  const auto& r = model.rods;
+  const auto& u = cs.uniaxial;
+  auto& info = model.uniaxial;
+  info.enabled = true;
+  info.axis = u.axis[0] - 'x';
+  const int ax = info.axis;
+  Vec3 lo = lat.position[0], hi = lat.position[0];
+  for (const auto& x : lat.position) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
   }
+  info.gauge_length = (hi[ax] - lo[ax]) - 2.0 * (u.grip_layers - 1) * h;
+  if (!(info.gauge_length > 0.5 * h))
+    throw InputError(fmt::format("{}: key 'uniaxial.grip_layers' = {}: the grips leave no free bar between them",
+                                 cs.source, u.grip_layers));
+  info.cross_section = 1.0;
+  for (int c = 0; c < 3; ++c)
+    if (c != ax) info.cross_section *= (hi[c] - lo[c]) + h;
+  // Grip motion: each grip moves half the separation change, along the strain path.
+  Motion mmin, mmax;
+  mmin.kind = mmax.kind = Motion::Kind::Table;
+  double t = 0.0;
+  for (std::size_t k = 0; k < u.strain_path.size(); ++k) {
+    if (k > 0) t += std::abs(u.strain_path[k] - u.strain_path[k - 1]) / u.strain_rate;
+    const double half = 0.5 * u.strain_path[k] * info.gauge_length;
+    Vec3 e = Vec3::Zero();
+    e[ax] = half;
+    mmin.time.push_back(t);
+    mmax.time.push_back(t);
+    mmin.displacement.push_back(-e);
+    mmax.displacement.push_back(e);
+  }
+  const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
+  const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
+  info.grip_min = static_cast<int>(model.groups.size());
+  add_group(model, cs.source, "grip_min", select_side(lat.position, smin, u.grip_layers, h), dofs, mmin);
+  info.grip_max = static_cast<int>(model.groups.size());
+  add_group(model, cs.source, "grip_max", select_side(lat.position, smax, u.grip_layers, h), dofs, mmax);
+  if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
+  const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
+  for (std::size_t b = 0; b < r.size(); ++b) {
+    const double xi = lat.position[r.ends[b][0]][ax], xj = lat.position[r.ends[b][1]][ax];
+    if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
+  }
+}
+
+// The [[mesh]] tables: from a file, a generated tool, or a rectangle; with their motions.
+void build_meshes(const CaseSettings& cs, Model& model) {
   for (const auto& ms : cs.meshes) {
     MeshBody mb;
     mb.name = ms.name;
@@ -290,21 +290,49 @@ Model build_model(const CaseSettings& cs) {
     model.meshes.push_back(std::move(mb));
     model.mesh_motion.push_back(motion_from(ms.motion));
   }
-  if (cs.contact.enabled) {
-    auto& c = model.contact;
-    c.youngs_modulus = cs.contact.youngs_modulus;
-    c.poisson_ratio = cs.contact.poisson_ratio;
-    c.alpha = restitution_to_alpha(cs.contact.restitution);
-    c.friction = cs.contact.friction;
-    c.law = cs.contact.friction_law == "spring"        ? FrictionLaw::Spring
-            : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
-                                                       : FrictionLaw::None;
-    c.regularization_speed = cs.contact.regularization_speed;
-    c.tangential_damping = cs.contact.tangential_damping;
-    double rmax = 0;
-    for (double rr : p.radius) rmax = std::max(rmax, rr);
-    c.skin = cs.contact.skin * rmax;
-  }
+}
+
+// [contact]: the contact law's parameters.
+ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
+  ContactParams c;
+  c.youngs_modulus = cs.contact.youngs_modulus;
+  c.poisson_ratio = cs.contact.poisson_ratio;
+  c.alpha = restitution_to_alpha(cs.contact.restitution);
+  c.friction = cs.contact.friction;
+  c.law = cs.contact.friction_law == "spring"        ? FrictionLaw::Spring
+          : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
+                                                     : FrictionLaw::None;
+  c.regularization_speed = cs.contact.regularization_speed;
+  c.tangential_damping = cs.contact.tangential_damping;
+  double rmax = 0;
+  for (double rr : p.radius) rmax = std::max(rmax, rr);
+  c.skin = cs.contact.skin * rmax;
+  return c;
+}
+
+}  // namespace
+
+Model build_model(const CaseSettings& cs) {
+  Model model;
+  model.settings = cs;
+  Lattice lat = workpiece_lattice(cs, model.periodic);
+  model.lattice_particles = lat.position.size();
+  std::vector<Vec3> free_velocity, free_spin;
+  append_free_particles(cs, lat, free_velocity, free_spin);
+  model.derived = compute_derived(cs, lat);
+  fill_particles(cs, lat, free_velocity, free_spin, model);
+  auto& r = model.rods;
+  r.law = model.derived.law;
+  r.area = model.derived.rod_area;
+  r.ends = lat.bonds;
+  r.rest_length = lat.rest_length;
+  r.reset_state();
+  r.build_rows(model.particles.size());
+  const double h = 0.5 * model.derived.cell_edge;  // spacing of lattice layers along a cube axis
+  build_groups(cs, lat, h, model);
+  if (cs.uniaxial.enabled) build_uniaxial(cs, lat, h, model);
+  build_meshes(cs, model);
+  if (cs.contact.enabled) model.contact = contact_params(cs, model.particles);
   model.contacts = cs.contact.enabled;
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
   model.step = step_settings(model.settings, model.derived);
