@@ -17,9 +17,9 @@ class StepListener {
  public:
   virtual ~StepListener() = default;
   /// Before the step from sim.time().
-  virtual void before_step(Simulation& sim) {}
+  virtual void before_step(Simulation& /*sim*/) {}
   /// After the step was accepted and committed; sim.time() is its end.
-  virtual void after_step(Simulation& sim) {}
+  virtual void after_step(Simulation& /*sim*/) {}
 };
 
 }  // namespace swarf
