@@ -2,10 +2,6 @@
 #include "app/run.h"
 #include "swarf/version.h"
 
-#include <omp.h>
-#include <pthread.h>
-#include <sched.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -21,6 +17,8 @@
 #include "postprocess/hysteresis.h"
 #include "app/plots.h"
 #include "app/progress.h"
+#include "app/run_directory.h"
+#include "app/setup_report.h"
 #include "io/series.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
@@ -31,84 +29,7 @@ namespace swarf {
 
 namespace {
 
-// Pins OpenMP thread t to the t-th CPU this process may run on, when it runs 2 or more
-// threads, has at least as many CPUs, and the environment does not place threads itself
-// (OMP_PROC_BIND, OMP_PLACES, GOMP_CPU_AFFINITY; OMP_PROC_BIND=false keeps them free).
-// Measured on the 2-core machine: unpinned threads were migrated and W2 ran 1.1 to 1.3x
-// faster on 2 threads than on 1; pinned, 1.8 to 1.9x. A process limited to one CPU (a
-// sweep's case, an MPI rank bound to a core) is left alone.
-void pin_threads(int threads) {
-  if (threads < 2 || std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("GOMP_CPU_AFFINITY"))
-    return;
-  cpu_set_t allowed;
-  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
-  std::vector<int> cpus;
-  for (int c = 0; c < CPU_SETSIZE; ++c)
-    if (CPU_ISSET(c, &allowed)) cpus.push_back(c);
-  if (static_cast<int>(cpus.size()) < threads) return;
-#pragma omp parallel num_threads(threads)
-  {
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(cpus[omp_get_thread_num()], &one);
-    pthread_setaffinity_np(pthread_self(), sizeof one, &one);  // (on failure the thread stays free)
-  }
-}
-
-}  // namespace
-
-int set_threads(int n) {
-  if (n > 0) omp_set_num_threads(n);
-  const int used = omp_get_max_threads();
-  pin_threads(used);
-  return used;
-}
-
-namespace {
-
-void print_setup(const Model& m, int threads) {
-  const Derived& d = m.derived;
-  fmt::print("swarf {}: case {}\n", SWARF_VERSION, m.settings.source);
-  fmt::print("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(),
-             threads);
-  for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
-  fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
-             d.particle_mass);
-  if (m.periodic.on())
-    fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
-               m.periodic.period);
-  if (!m.rods.ends.empty()) {
-    if (d.converted)
-      fmt::print("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
-                 "strength {:.4g} Pa):\n", m.settings.material.youngs_modulus, m.settings.material.yield_stress,
-                 m.settings.material.hardening_modulus, m.settings.material.tensile_strength);
-    fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
-               d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
-    fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
-               d.rod_stiffness, d.rod_damping);
-  }
-  const double nu = m.settings.material.poisson_ratio;
-  if (nu > -1 && std::abs(nu - 1.0 / 3.0) > 1e-3)
-    fmt::print(stderr, "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
-               "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n", nu);
-  if (!m.rods.ends.empty())
-    fmt::print("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} kg/m^3\n",
-               d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
-  fmt::print("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
-             d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
-             d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
-             m.settings.integrator.end_time);
-  if (m.uniaxial.enabled)
-    fmt::print("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
-               m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
-  std::fflush(stdout);
-}
-
 double deviation_percent(double measured, double predicted) { return 100.0 * (measured - predicted) / predicted; }
-
-}  // namespace
-
-namespace {
 
 // The uniaxial bar's loop against the rod-law prediction: summary "uniaxial" and the printed table.
 void report_uniaxial(const Model& model, const RunRecord& rec, nlohmann::json& sum) {
@@ -192,35 +113,6 @@ bool cut_setup(const Model& model, CutSetup& cs) {
   return true;
 }
 
-// A restart into another directory: the frames the checkpoint's run wrote before it (numbers
-// below 'frames') are copied from its frames/ into the new one, so that particles.pvd, which
-// lists them, is complete there. Frames that cannot be found are named in a warning.
-void carry_frames(const std::filesystem::path& from_dir, const std::string& to_dir, std::size_t frames) {
-  namespace fs = std::filesystem;
-  if (frames == 0) return;
-  const fs::path from = (from_dir.empty() ? fs::path(".") : from_dir) / "frames", to = fs::path(to_dir) / "frames";
-  fs::create_directories(to);
-  std::error_code ec;
-  if (fs::exists(from) && !fs::equivalent(from, to, ec)) {
-    for (const auto& e : fs::directory_iterator(from)) {
-      const std::string stem = e.path().stem().string();  // particles_00003, rods_00003, mesh_<name>_00003
-      const auto us = stem.rfind('_');
-      if (us == std::string::npos || stem.size() - us != 6) continue;
-      const std::string digits = stem.substr(us + 1);
-      if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-      if (std::stoul(digits) < frames) fs::copy_file(e.path(), to / e.path().filename(), fs::copy_options::overwrite_existing);
-    }
-  }
-  std::size_t missing = 0;
-  for (std::size_t k = 0; k < frames; ++k)
-    if (!fs::exists(to / fmt::format("particles_{:05d}.vtu", k))) ++missing;
-  if (missing > 0)
-    fmt::print(stderr,
-               "swarf: warning: {} of the {} frames written before the checkpoint are neither in {} nor in {}: "
-               "particles.pvd lists them\n",
-               missing, frames, to.string(), from.string());
-}
-
 int mesh_index(const Model& model, const std::string& name) {
   for (std::size_t k = 0; k < model.meshes.size(); ++k)
     if (model.meshes[k].name == name) return static_cast<int>(k);
@@ -253,22 +145,7 @@ void run_case(const RunOptions& opt) {
   const int threads = set_threads(opt.threads);
   print_setup(model, threads);
 
-  std::string dir = opt.out_dir;
-  if (dir.empty()) {
-    const auto parent = fs::path(opt.restart).parent_path();
-    dir = restarting ? (parent.empty() ? "." : parent.string()) : "swarf-out";
-  }
-  fs::create_directories(dir);
-  // Outputs of an earlier run in the same directory would mix with this one's (and a previous
-  // summary would make an interrupted run look complete). A restart keeps the frames.
-  for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",
-                           "stress_strain.png", "energy.png", "forces.png", "chip.png", "chip_surface.vtp"})
-    fs::remove(fs::path(dir) / name);
-  if (!restarting) {
-    fs::remove(fs::path(dir) / "particles.pvd");
-    fs::remove(fs::path(dir) / "checkpoint.h5");
-    fs::remove_all(fs::path(dir) / "frames");
-  }
+  const std::string dir = prepare_run_directory(opt);
 
   Simulation sim(model, model.step);
   RunRecord rec;
