@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "app/threads.h"  // (set_threads, which the run's callers use beside run_case)
+
 namespace swarf {
 
 struct RunOptions {
@@ -17,8 +19,5 @@ struct RunOptions {
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView
 /// series and the plots. Throws InputError / SimulationError.
 void run_case(const RunOptions& options);
-
-/// Sets the OpenMP thread count (n > 0) and returns the count in effect.
-int set_threads(int n);
 
 }  // namespace swarf

@@ -4,11 +4,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fmt/format.h>
 #include <sstream>
 #include <toml++/toml.h>
 
 #include "io/h5file.h"
 #include "io/vtk_output.h"
+#include "setup/model.h"
 
 namespace swarf {
 
@@ -77,6 +79,24 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"bar_hardening_tangent_Pa", d.bar_hardening_tangent},
       {"bar_failure_stress_Pa", number(d.bar_failure_stress)},
   };
+}
+
+nlohmann::json summary_head(const Model& model, const Simulation& sim, const std::string& restarted_from) {
+  const CaseSettings& settings = model.settings;
+  nlohmann::json sum;
+  sum["swarf_version"] = SWARF_VERSION;
+  sum["status"] = "completed";
+  // 64-bit hash of the final state (Simulation::state_hash, every field bit for bit): two runs
+  // ended in the same state if and only if (up to collisions) their hashes agree.
+  sum["state_hash"] = fmt::format("{:016x}", sim.state_hash());
+  sum["case_file"] = settings.source;
+  sum["overrides"] = settings.overrides;
+  if (!restarted_from.empty()) sum["restarted_from"] = restarted_from;
+  sum["case"] = case_to_json(settings);
+  sum["derived"] = derived_to_json(model.derived);
+  sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
+  for (const auto& g : model.groups) sum["counts"]["group_" + g.name] = g.members.size();
+  return sum;
 }
 
 void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra) {

@@ -1,4 +1,5 @@
-// summary.h: pieces of DIR/summary.json and the final-state HDF5 file DIR/results.h5.
+// summary.h: pieces of DIR/summary.json and the final-state HDF5 file DIR/results.h5. The
+// observers (app/observers/) write the parts they measure; these are the rest.
 #pragma once
 
 #include <functional>
@@ -11,6 +12,7 @@
 namespace swarf {
 
 class H5File;
+struct Model;
 
 /// The effective case (after overrides) as JSON; non-finite numbers become "inf"/"-inf".
 nlohmann::json case_to_json(const CaseSettings& cs);
@@ -18,6 +20,11 @@ nlohmann::json case_to_json(const CaseSettings& cs);
 nlohmann::json derived_to_json(const Derived& d);
 /// A finite number, or the string "inf"/"-inf"/"nan" (JSON has no such numbers).
 nlohmann::json number(double v);
+
+/// The summary's head: version, status "completed", the final state's hash, the case (file,
+/// overrides, effective settings), the derived quantities and the counts; 'restarted_from'
+/// names the checkpoint of a restart (empty: none).
+nlohmann::json summary_head(const Model& model, const Simulation& sim, const std::string& restarted_from);
 
 /// Writes the final state (particles with their broken-rod fraction, rods with plastic state)
 /// atomically; 'extra' may add datasets (the cut's setup) before the file is closed.

@@ -1,6 +1,6 @@
 // checkpoint.cpp: writing and reading restart files (see checkpoint.h). The step's state is
-// Simulation::visit_state (swarf/state_visit.cpp) walked by the HDF5 archives below; the run
-// loop's record follows it.
+// Simulation::visit_state (swarf/state_visit.cpp) walked by the HDF5 archives below under
+// /sim/; the run loop's record (visit_record) and the caller's visit follow under /run/.
 #include "io/checkpoint.h"
 #include "swarf/version.h"
 
@@ -15,29 +15,14 @@
 namespace swarf {
 namespace {
 
-// Checkpoint layout version. 2: the state as the named fields of Simulation::visit_state
-// (1 packed the step's scalars by position).
-constexpr double kFormat = 2.0;
+// Checkpoint layout version. 3: the run's part as named fields too (/run/loop/ and one group
+// per observer; 2 packed the loop's and the probes' scalars into /run/scalars by position).
+// 2: the state as the named fields of Simulation::visit_state (1 packed the step's scalars by
+// position).
+constexpr double kFormat = 3.0;
 
 void put(H5File& f, const std::string& name, const std::vector<Vec3>& v) {
   f.write(name, v.empty() ? nullptr : v[0].data(), v.size(), 3);
-}
-void put(H5File& f, const std::string& name, const std::vector<double>& v) {
-  f.write(name, v.data(), v.size(), 1);
-}
-
-std::vector<double> get(const H5File& f, const std::string& name, std::size_t rows, std::size_t cols) {
-  std::size_t r = 0, c = 0;
-  auto v = f.read_doubles(name, r, c);
-  if (r != rows || c != cols)
-    throw InputError(fmt::format("checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
-                                 "(the checkpoint belongs to another case or version)",
-                                 f.path(), name, r, c, rows, cols));
-  return v;
-}
-std::vector<double> get_any(const H5File& f, const std::string& name) {
-  std::size_t r = 0, c = 0;
-  return f.read_doubles(name, r, c);
 }
 std::string join_lines(const std::vector<std::string>& v) {
   std::string s;
@@ -60,11 +45,12 @@ std::vector<std::string> split_lines(const std::string& s) {
 
 namespace {
 
-// The state visit written to and read from datasets under /sim/ (state_archive.h). Arrays
-// keep their element shape (Vec3: N x 3, quaternions: N x 4); scalars are 1-element datasets.
+// A state visit written to and read from datasets under a root ("/sim/", "/run/"; see
+// state_archive.h). Arrays keep their element shape (Vec3: N x 3, quaternions: N x 4);
+// scalars are 1-element datasets.
 class H5StateWriter final : public StateArchive {
  public:
-  explicit H5StateWriter(H5File& f) : f_(f) {}
+  H5StateWriter(H5File& f, std::string root) : f_(f), root_(std::move(root)) {}
   bool loading() const override { return false; }
   void array(std::string_view name, std::vector<double>& v, std::size_t) override { f_.write(key(name), v.data(), v.size(), 1); }
   void array(std::string_view name, std::vector<Vec3>& v, std::size_t) override { put(f_, key(name), v); }
@@ -83,13 +69,14 @@ class H5StateWriter final : public StateArchive {
   void scalar(std::string_view name, std::int64_t& v) override { f_.write(key(name), &v, 1, 1); }
 
  private:
-  static std::string key(std::string_view name) { return "/sim/" + std::string(name); }
+  std::string key(std::string_view name) const { return root_ + std::string(name); }
   H5File& f_;
+  std::string root_;
 };
 
 class H5StateReader final : public StateArchive {
  public:
-  explicit H5StateReader(const H5File& f) : f_(f) {}
+  H5StateReader(const H5File& f, std::string root) : f_(f), root_(std::move(root)) {}
   bool loading() const override { return true; }
   void array(std::string_view name, std::vector<double>& v, std::size_t expected) override {
     v = doubles(name, expected, 1);
@@ -119,7 +106,7 @@ class H5StateReader final : public StateArchive {
   void scalar(std::string_view name, std::int64_t& v) override { v = ints(name, 1)[0]; }
 
  private:
-  static std::string key(std::string_view name) { return "/sim/" + std::string(name); }
+  std::string key(std::string_view name) const { return root_ + std::string(name); }
   std::vector<double> doubles(std::string_view name, std::size_t expected, std::size_t cols) const {
     std::size_t r = 0, c = 0;
     auto v = f_.read_doubles(key(name), r, c);
@@ -142,11 +129,37 @@ class H5StateReader final : public StateArchive {
     return v;
   }
   const H5File& f_;
+  std::string root_;
 };
+
+// The loop's record, each field named once for save and load.
+void visit_record(StateArchive& ar, RunRecord& rec) {
+  ar.scalar("loop/series_columns", rec.columns);
+  ar.array("loop/series_rows", rec.rows, StateArchive::kAnySize);  // row-major, columns a row
+  ar.scalar("loop/next_row_s", rec.next_row);
+  ar.scalar("loop/next_frame_s", rec.next_frame);
+  ar.array("loop/frame_times_s", rec.frame_times, StateArchive::kAnySize);
+  ar.scalar("loop/wall_s", rec.wall_s);
+  ar.scalar("loop/output_wall_s", rec.output_s);
+}
+
+// Runs a visit of a load, naming the checkpoint in an error that does not name it already
+// (the archive's own errors begin "checkpoint '...'", the caller's may begin "--restart ...").
+template <class Visit>
+void loading(const std::string& path, Visit&& visit) {
+  try {
+    visit();
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.rfind("checkpoint", 0) == 0 || what.rfind("--restart", 0) == 0) throw;
+    throw InputError(fmt::format("checkpoint '{}': {}", path, what));
+  }
+}
 
 }  // namespace
 
-void write_checkpoint(const std::string& path, const Simulation& sim, const RunRecord& rec, const CheckpointCase& c) {
+void write_checkpoint(const std::string& path, const Simulation& sim, const RunRecord& rec, const CheckpointCase& c,
+                      const RunStateVisit& run_state) {
   const std::string tmp = path + ".part";
   {
     H5File f(tmp, H5File::Mode::Create);
@@ -158,18 +171,11 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const RunR
     f.write_attribute("case_overrides", join_lines(c.overrides));
     f.write_attribute("time_s", sim.time());
     f.write_attribute("steps", double(sim.steps()));
-    H5StateWriter w(f);
-    const_cast<Simulation&>(sim).visit_state(w);  // (a writer only reads the state)
-    f.write("/run/rows", rec.rows.data(), rec.columns ? rec.rows.size() / rec.columns : 0,
-            std::max<std::size_t>(rec.columns, 1));
-    const std::vector<double> s{double(rec.columns), rec.e0,         rec.next_row,   rec.next_frame,
-                                rec.predicted,       rec.bar_shift,  rec.bar_broken, rec.max_stress,
-                                rec.max_mismatch,    rec.wall_s,     rec.output_s,   double(sim.steps())};
-    put(f, "/run/scalars", s);
-    put(f, "/run/s_strain", rec.s_strain);
-    put(f, "/run/s_stress", rec.s_stress);
-    put(f, "/run/s_segment", rec.s_segment);
-    put(f, "/run/frame_times", rec.frame_times);
+    H5StateWriter sim_part(f, "/sim/");
+    const_cast<Simulation&>(sim).visit_state(sim_part);  // (a writer only reads the state)
+    H5StateWriter run_part(f, "/run/");
+    visit_record(run_part, const_cast<RunRecord&>(rec));  // (likewise)
+    if (run_state) run_state(run_part);
   }  // closed (flushed) before the rename
   std::filesystem::rename(tmp, path);
 }
@@ -192,36 +198,14 @@ CheckpointCase read_checkpoint_case(const std::string& path) {
   return c;
 }
 
-void read_checkpoint(const std::string& path, Simulation& sim, RunRecord& rec) {
+void read_checkpoint(const std::string& path, Simulation& sim, RunRecord& rec, const RunStateVisit& run_state) {
   H5File f(path, H5File::Mode::Read);
-  H5StateReader reader(f);
-  try {
-    sim.visit_state(reader);
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.rfind("checkpoint", 0) == 0) throw;
-    throw InputError(fmt::format("checkpoint '{}': {}", path, what));
-  }
-  const auto s = get(f, "/run/scalars", 12, 1);
-  rec.columns = static_cast<std::size_t>(s[0]);
-  rec.e0 = s[1];
-  rec.next_row = s[2];
-  rec.next_frame = s[3];
-  rec.predicted = s[4];
-  rec.bar_shift = s[5];
-  rec.bar_broken = s[6];
-  rec.max_stress = s[7];
-  rec.max_mismatch = s[8];
-  rec.wall_s = s[9];
-  rec.output_s = s[10];
-  rec.last_checkpoint_step = static_cast<std::int64_t>(s[11]);
-  rec.rows = get_any(f, "/run/rows");
+  H5StateReader sim_part(f, "/sim/"), run_part(f, "/run/");
+  loading(path, [&] { sim.visit_state(sim_part); });
+  loading(path, [&] { visit_record(run_part, rec); });
   if (rec.columns == 0 || rec.rows.size() % rec.columns != 0)
     throw InputError(fmt::format("checkpoint '{}': series rows do not match {} columns", path, rec.columns));
-  rec.s_strain = get_any(f, "/run/s_strain");
-  rec.s_stress = get_any(f, "/run/s_stress");
-  rec.s_segment = get_any(f, "/run/s_segment");
-  rec.frame_times = get_any(f, "/run/frame_times");
+  if (run_state) loading(path, [&] { run_state(run_part); });
 }
 
 }  // namespace swarf

@@ -1,0 +1,28 @@
+// bond_counts.cpp: broken rods and touching contacts (see bond_counts.h).
+#include "app/observers/bond_counts.h"
+
+#include <algorithm>
+
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+double BondCounts::broken_fraction(const Simulation& sim) const {
+  return double(sim.broken_rods()) / std::max<double>(1.0, double(rods_));  // (no rods: 0, not NaN)
+}
+
+void BondCounts::columns(std::vector<std::string>& names) const {
+  names.insert(names.end(), {"broken_rods", "broken_fraction", "contacts"});
+}
+
+void BondCounts::row(const Simulation& sim, std::vector<double>& values) {
+  values.insert(values.end(), {double(sim.broken_rods()), broken_fraction(sim),
+                               double(sim.contacts().enabled() ? sim.contacts().touching() : 0)});
+}
+
+void BondCounts::finish(const RunEnd& end, nlohmann::json& summary) {
+  summary["results"]["broken_rods"] = end.sim.broken_rods();
+  summary["results"]["broken_fraction"] = broken_fraction(end.sim);
+}
+
+}  // namespace swarf

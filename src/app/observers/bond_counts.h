@@ -1,0 +1,22 @@
+// bond_counts.h: what holds the particles together, counted per row: rods broken (and their
+// fraction of all rods) and contacts touching; the breakage in summary.json "results".
+#pragma once
+
+#include "app/observers/observer.h"
+
+namespace swarf {
+
+class BondCounts final : public Observer {
+ public:
+  explicit BondCounts(std::size_t rods) : rods_(rods) {}
+  std::string_view name() const override { return "bonds"; }
+  void columns(std::vector<std::string>& names) const override;
+  void row(const Simulation& sim, std::vector<double>& values) override;
+  void finish(const RunEnd& end, nlohmann::json& summary) override;
+
+ private:
+  double broken_fraction(const Simulation& sim) const;
+  std::size_t rods_;
+};
+
+}  // namespace swarf

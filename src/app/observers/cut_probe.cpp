@@ -1,0 +1,81 @@
+// cut_probe.cpp: the orthogonal cut (see cut_probe.h).
+#include "app/observers/cut_probe.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/post.h"
+#include "io/vtk_output.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
+  const auto& settings = model.settings;
+  int tool = -1;
+  for (std::size_t k = 0; k < settings.meshes.size() && tool < 0; ++k)
+    if (settings.meshes[k].tool) tool = static_cast<int>(k);
+  if (tool < 0 || model.lattice_particles == 0) return nullptr;
+  double lo = HUGE_VAL, hi = -HUGE_VAL, top = -HUGE_VAL;  // m
+  for (std::size_t i = 0; i < model.lattice_particles; ++i) {
+    const Vec3& x0 = model.particles.initial_position[i];
+    lo = std::min(lo, x0[1]);
+    hi = std::max(hi, x0[1]);
+    top = std::max(top, x0[2]);
+  }
+  const auto& ms = settings.meshes[tool];
+  CutSetup cs;
+  cs.tool_mesh = ms.name;
+  cs.width = hi - lo + 0.5 * model.derived.cell_edge;
+  cs.steady_from = settings.output.steady_from >= 0 ? settings.output.steady_from : 0.5 * settings.integrator.end_time;
+  cs.tool_tip = Vec3(ms.origin[0], ms.origin[1], ms.origin[2]);
+  cs.rake_angle_deg = ms.rake_angle;
+  cs.face_length = ms.face_length;
+  cs.uncut_surface_z = top;
+  cs.radius = model.derived.radius;
+  cs.lattice_particles = model.lattice_particles;
+  // The World's mesh of that name (the case's [[mesh]] tables and the World's meshes meet by name).
+  int mesh = -1;
+  for (std::size_t k = 0; k < model.meshes.size() && mesh < 0; ++k)
+    if (model.meshes[k].name == cs.tool_mesh) mesh = static_cast<int>(k);
+  return std::make_unique<CutProbe>(model, cs, mesh);
+}
+
+Vec3 CutProbe::tool_tip() const { return setup_.tool_tip + model_.meshes[tool_mesh_].offset; }
+
+CutSetup CutProbe::setup_now() const {
+  CutSetup s = setup_;
+  s.tool_tip = tool_tip();
+  return s;
+}
+
+void CutProbe::columns(std::vector<std::string>& names) const {
+  names.insert(names.end(), {"tool_travel", "cutting_force_per_width", "thrust_force_per_width", "chip_thickness"});
+}
+
+void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
+  const Vec3 f = sim.mesh_force(tool_mesh_);
+  const auto& x = model_.particles.position;
+  const std::vector<Vec3> workpiece(x.begin(), x.begin() + setup_.lattice_particles);
+  values.insert(values.end(), {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width,
+                               measure_chip(chip_input(setup_, workpiece, tool_tip())).thickness});
+}
+
+void CutProbe::write_results(H5File& f) const { write_cut_setup(f, setup_now()); }
+
+void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
+  CutData data;
+  data.time = end.series["time"];
+  data.fc = end.series["cutting_force_per_width"];
+  data.ft = end.series["thrust_force_per_width"];
+  data.chip_thickness = end.series["chip_thickness"];
+  const std::size_t n = setup_.lattice_particles;
+  const auto bf = broken_fraction_per_particle(model_.particles, model_.rods);
+  data.position.assign(model_.particles.position.begin(), model_.particles.position.begin() + n);
+  data.broken_fraction.assign(bf.begin(), bf.begin() + n);
+  data.broken_rod_fraction = double(end.sim.broken_rods()) / std::max<double>(1.0, double(model_.rods.size()));
+  finish_cut(end.dir, setup_now(), data, summary, end.vtk, end.pictures);
+}
+
+}  // namespace swarf

@@ -1,0 +1,66 @@
+// energy_balance.cpp: the energy balance (see energy_balance.h).
+#include "app/observers/energy_balance.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+EnergyBalanceNow EnergyBalance::measure(const Simulation& sim) const {
+  EnergyBalanceNow b;
+  const EnergyLedger& L = sim.ledger();
+  b.kinetic = sim.kinetic_energy();
+  b.rotational = sim.rotational_energy();
+  b.elastic = sim.elastic_energy();
+  b.contact = sim.contact_energy();
+  b.contact_work = L.contact_work;
+  b.potential = sim.potential_energy();
+  b.external_work = L.external_work;
+  b.plastic_work = L.plastic_work;
+  b.viscous_work = L.viscous_work;
+  b.fracture_energy = L.fracture_energy;
+  b.error = L.external_work - (b.kinetic + b.elastic + b.potential - initial_ + L.plastic_work + L.viscous_work +
+                               L.fracture_energy + L.contact_work);
+  return b;
+}
+
+void EnergyBalance::columns(std::vector<std::string>& names) const {
+  names.insert(names.end(), {"kinetic_energy", "rotational_energy", "elastic_energy", "contact_energy", "contact_work",
+                             "potential_energy", "external_work", "plastic_work", "viscous_work", "fracture_energy",
+                             "energy_error"});
+}
+
+void EnergyBalance::row(const Simulation& sim, std::vector<double>& values) {
+  const EnergyBalanceNow b = measure(sim);
+  values.insert(values.end(), {b.kinetic, b.rotational, b.elastic, b.contact, b.contact_work, b.potential,
+                               b.external_work, b.plastic_work, b.viscous_work, b.fracture_energy, b.error});
+}
+
+void EnergyBalance::begin(const Simulation& sim) {
+  initial_ = sim.kinetic_energy() + sim.elastic_energy() + sim.potential_energy();
+}
+
+void EnergyBalance::visit_state(StateArchive& ar) { ar.scalar("initial_energy_J", initial_); }
+
+void EnergyBalance::finish(const RunEnd& end, nlohmann::json& summary) {
+  const EnergyBalanceNow b = measure(end.sim);
+  nlohmann::json& r = summary["results"];
+  r["kinetic_energy_J"] = b.kinetic;
+  r["elastic_energy_J"] = b.elastic;
+  r["external_work_J"] = b.external_work;
+  r["plastic_work_J"] = b.plastic_work;
+  r["viscous_work_J"] = b.viscous_work;
+  r["fracture_energy_J"] = b.fracture_energy;
+  r["potential_energy_J"] = b.potential;
+  r["contact_energy_J"] = b.contact;
+  r["contact_work_J"] = b.contact_work;
+  r["energy_error_J"] = b.error;
+  // The report's health line: the breakage beside the balance that its fracture energy enters.
+  const std::size_t broken = end.sim.broken_rods();
+  fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", broken, rods_,
+             100.0 * broken / std::max<double>(1.0, double(rods_)), b.error, b.external_work);
+}
+
+}  // namespace swarf

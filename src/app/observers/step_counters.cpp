@@ -1,0 +1,47 @@
+// step_counters.cpp: the integrator's counters (see step_counters.h).
+#include "app/observers/step_counters.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+void StepCounters::columns(std::vector<std::string>& names) const {
+  names.insert(names.end(), {"step", "dt", "iterations"});
+}
+
+void StepCounters::row(const Simulation& sim, std::vector<double>& values) {
+  values.insert(values.end(), {double(sim.steps()), sim.last_dt(), double(sim.stats().last_iterations)});
+}
+
+void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
+  const Simulation& sim = end.sim;
+  const StepStats& st = sim.stats();
+  const double sweeps_mean = double(st.iterations) / double(std::max<std::int64_t>(1, st.accepted));
+  const double evaluations_per_us = double(st.force_evaluations) / (sim.time() * 1e6);
+  const double ns_per_particle_step = end.step_wall_s * 1e9 / (double(sim.steps()) * double(particles_));
+  summary["run"] = {{"threads", end.threads},
+                    {"scheme", sim.implicit() ? "newmark" : "verlet"},
+                    {"steps", sim.steps()},
+                    {"steps_rejected", st.rejected},
+                    {"iterations_per_step_mean", sweeps_mean},
+                    {"iterations_per_step_max", st.max_iterations},
+                    {"force_evaluations", st.force_evaluations},
+                    {"force_evaluations_per_us", evaluations_per_us},
+                    {"dt_last_s", sim.last_dt()},
+                    {"simulated_time_s", sim.time()},
+                    {"end_time_s", end_time_},
+                    {"wall_time_s", end.wall_s},
+                    {"step_wall_time_s", end.step_wall_s},
+                    {"ns_per_particle_step", ns_per_particle_step}};
+  fmt::print("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n",
+             sim.steps(), sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s, ns_per_particle_step,
+             end.threads);
+  if (sim.implicit())
+    fmt::print("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",
+               st.rejected, sweeps_mean, st.max_iterations, evaluations_per_us);
+}
+
+}  // namespace swarf

@@ -1,0 +1,59 @@
+// run_directory.cpp: the run directory (see run_directory.h).
+#include "app/run_directory.h"
+
+#include <cstdio>
+#include <fmt/format.h>
+
+#include "app/run.h"
+
+namespace swarf {
+
+std::string prepare_run_directory(const RunOptions& opt) {
+  namespace fs = std::filesystem;
+  const bool restarting = !opt.restart.empty();
+  std::string dir = opt.out_dir;
+  if (dir.empty()) {
+    const auto parent = fs::path(opt.restart).parent_path();
+    dir = restarting ? (parent.empty() ? "." : parent.string()) : "swarf-out";
+  }
+  fs::create_directories(dir);
+  // Outputs of an earlier run in the same directory would mix with this one's (and a previous
+  // summary would make an interrupted run look complete). A restart keeps the frames.
+  for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",
+                           "stress_strain.png", "energy.png", "forces.png", "chip.png", "chip_surface.vtp"})
+    fs::remove(fs::path(dir) / name);
+  if (!restarting) {
+    fs::remove(fs::path(dir) / "particles.pvd");
+    fs::remove(fs::path(dir) / "checkpoint.h5");
+    fs::remove_all(fs::path(dir) / "frames");
+  }
+  return dir;
+}
+
+void carry_frames(const std::filesystem::path& from_dir, const std::string& to_dir, std::size_t frames) {
+  namespace fs = std::filesystem;
+  if (frames == 0) return;
+  const fs::path from = (from_dir.empty() ? fs::path(".") : from_dir) / "frames", to = fs::path(to_dir) / "frames";
+  fs::create_directories(to);
+  std::error_code ec;
+  if (fs::exists(from) && !fs::equivalent(from, to, ec)) {
+    for (const auto& e : fs::directory_iterator(from)) {
+      const std::string stem = e.path().stem().string();  // particles_00003, rods_00003, mesh_<name>_00003
+      const auto us = stem.rfind('_');
+      if (us == std::string::npos || stem.size() - us != 6) continue;
+      const std::string digits = stem.substr(us + 1);
+      if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+      if (std::stoul(digits) < frames) fs::copy_file(e.path(), to / e.path().filename(), fs::copy_options::overwrite_existing);
+    }
+  }
+  std::size_t missing = 0;
+  for (std::size_t k = 0; k < frames; ++k)
+    if (!fs::exists(to / fmt::format("particles_{:05d}.vtu", k))) ++missing;
+  if (missing > 0)
+    fmt::print(stderr,
+               "swarf: warning: {} of the {} frames written before the checkpoint are neither in {} nor in {}: "
+               "particles.pvd lists them\n",
+               missing, frames, to.string(), from.string());
+}
+
+}  // namespace swarf

@@ -1,0 +1,106 @@
+// run_outputs.cpp: rows, frames and checkpoints at their times (see run_outputs.h).
+#include "app/run_outputs.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "app/observers/observer_set.h"
+#include "app/run_directory.h"
+#include "io/vtk_output.h"
+#include "setup/model.h"
+#include "swarf/core/errors.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers,
+                       CheckpointCase stored)
+    : dir_(dir),
+      model_(model),
+      sim_(sim),
+      observers_(observers),
+      stored_(std::move(stored)),
+      columns_(observers.columns()),
+      series_interval_(model.settings.output.series_interval > 0 ? model.settings.output.series_interval
+                                                                 : model.settings.integrator.end_time / 2000),
+      frame_interval_(model.settings.output.frame_interval),
+      checkpoint_every_(model.settings.output.checkpoint_every),
+      vtk_(model.settings.output.vtk ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk,
+                                                                   model.settings.output.orientations)
+                                     : nullptr),
+      series_(dir + "/series.csv", columns_) {
+  if (vtk_) vtk_->set_periodic(model.periodic);
+  rec_.columns = columns_.size();
+}
+
+RunOutputs::~RunOutputs() = default;
+
+double RunOutputs::seconds_since(std::chrono::steady_clock::time_point t) const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void RunOutputs::write_row() {
+  const std::vector<double> row = observers_.row();
+  series_.row(row);
+  rec_.rows.insert(rec_.rows.end(), row.begin(), row.end());
+}
+
+void RunOutputs::begin() {
+  observers_.begin();
+  write_row();
+  if (vtk_) vtk_->write_frame(0.0, model_.particles, model_.rods, model_.meshes);
+  rec_.next_row = series_interval_;
+  rec_.next_frame = frame_interval_ > 0 ? frame_interval_ : HUGE_VAL;
+  start_ = std::chrono::steady_clock::now();
+}
+
+void RunOutputs::restore(const std::string& checkpoint) {
+  read_checkpoint(checkpoint, sim_, rec_, [&](StateArchive& ar) {
+    if (rec_.columns != columns_.size())
+      throw InputError(fmt::format("--restart {}: the checkpoint's series has {} columns, this case {}", checkpoint,
+                                   rec_.columns, columns_.size()));
+    observers_.visit_state(ar);
+  });
+  for (std::size_t r = 0; r * rec_.columns < rec_.rows.size(); ++r)
+    series_.row(std::vector<double>(rec_.rows.begin() + r * rec_.columns, rec_.rows.begin() + (r + 1) * rec_.columns));
+  if (vtk_) {
+    vtk_->resume(rec_.frame_times);
+    carry_frames(std::filesystem::path(checkpoint).parent_path(), dir_, rec_.frame_times.size());
+  }
+  fmt::print("  restarted from {} at t = {:.6g} s, step {} ({} series rows, {} frames)\n", checkpoint, sim_.time(),
+             sim_.steps(), rec_.rows.size() / rec_.columns, rec_.frame_times.size());
+  wall_before_ = rec_.wall_s;
+  output_s_ = rec_.output_s;
+  start_ = std::chrono::steady_clock::now();
+}
+
+void RunOutputs::after_step(bool last) {
+  const double t = sim_.time();
+  const bool row = t >= rec_.next_row * (1.0 - 1e-12) || last;
+  const bool frame = vtk_ && (t >= rec_.next_frame * (1.0 - 1e-12) || last);
+  const bool checkpoint = checkpoint_every_ > 0 && !last && sim_.steps() % checkpoint_every_ == 0;
+  if (!row && !frame && !checkpoint) return;
+  const auto o0 = std::chrono::steady_clock::now();
+  if (row) write_row();
+  if (frame) vtk_->write_frame(t, model_.particles, model_.rods, model_.meshes);
+  while (rec_.next_row <= t * (1.0 + 1e-12)) rec_.next_row += series_interval_;
+  while (rec_.next_frame <= t * (1.0 + 1e-12)) rec_.next_frame += frame_interval_;
+  if (checkpoint) write_checkpoint_now();
+  output_s_ += seconds_since(o0);
+}
+
+void RunOutputs::write_checkpoint_now() {
+  if (vtk_) rec_.frame_times = vtk_->times();
+  rec_.wall_s = wall_before_ + seconds_since(start_);
+  rec_.output_s = output_s_;
+  write_checkpoint(dir_ + "/checkpoint.h5", sim_, rec_, stored_, [&](StateArchive& ar) { observers_.visit_state(ar); });
+}
+
+RunOutputs::WallTimes RunOutputs::finish() {
+  const WallTimes w{wall_before_ + seconds_since(start_), output_s_};
+  series_.finish();
+  return w;
+}
+
+}  // namespace swarf

@@ -1,0 +1,78 @@
+// run_outputs.h: what the run loop writes while it goes: series rows, ParaView frames and
+// checkpoints, each at the first step that reaches its time, and the record (RunRecord) that
+// lets a restart go on with them.
+//
+// A row is the observers' (ObserverSet::row); every row written is kept (the checkpoint
+// carries them, a restart rewrites series.csv whole, the observers read them back by column
+// name at the end). Output time is measured apart from the steps for the summary's speed.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/series_columns.h"
+#include "io/checkpoint.h"
+#include "io/series.h"
+
+namespace swarf {
+
+class ObserverSet;
+class Simulation;
+class VtkSeries;
+struct Model;
+
+class RunOutputs {
+ public:
+  /// Opens DIR/series.csv.part (and the ParaView series with output.vtk); the observers'
+  /// columns make the header. 'stored' is the case a checkpoint records.
+  RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers,
+             CheckpointCase stored);
+  ~RunOutputs();
+
+  /// A fresh run: the observers begin, the initial row and frame, the schedule from t = 0.
+  void begin();
+  /// A restart: the state, the record and the observers' state from the checkpoint; the rows
+  /// and frames written before it. Throws InputError.
+  void restore(const std::string& checkpoint);
+  /// After a step: the row, frame and checkpoint due now ('last': the final step, which
+  /// writes a row and a frame and no checkpoint).
+  void after_step(bool last);
+
+  struct WallTimes {
+    double wall_s = 0;    ///< the whole run so far (the part before a restart too), s
+    double output_s = 0;  ///< of it, writing outputs, s
+  };
+  /// Closes series.csv (renamed from .part) and returns the wall times.
+  WallTimes finish();
+
+  /// Every row written, by column name.
+  SeriesColumns series() const { return SeriesColumns(columns_, rec_.rows); }
+  /// The ParaView series, or null without output.vtk.
+  VtkSeries* vtk() { return vtk_.get(); }
+  bool checkpoints() const { return checkpoint_every_ > 0; }
+
+ private:
+  void write_row();
+  void write_checkpoint_now();
+  double seconds_since(std::chrono::steady_clock::time_point t) const;
+
+  std::string dir_;
+  const Model& model_;
+  Simulation& sim_;
+  ObserverSet& observers_;
+  CheckpointCase stored_;
+  std::vector<std::string> columns_;
+  double series_interval_;   ///< s
+  double frame_interval_;    ///< s; 0 = the first and the last frame only
+  int checkpoint_every_;     ///< steps; 0 = none
+  std::unique_ptr<VtkSeries> vtk_;
+  SeriesWriter series_;
+  RunRecord rec_;
+  std::chrono::steady_clock::time_point start_;  ///< of this process's steps
+  double wall_before_ = 0;   ///< wall time before a restart, s
+  double output_s_ = 0;      ///< wall time spent writing outputs (the part before a restart too), s
+};
+
+}  // namespace swarf

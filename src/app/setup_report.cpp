@@ -1,0 +1,51 @@
+// setup_report.cpp: the run's set-up as printed (see setup_report.h).
+#include "app/setup_report.h"
+#include "swarf/version.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+
+#include "setup/model.h"
+
+namespace swarf {
+
+void print_setup(const Model& m, int threads) {
+  const Derived& d = m.derived;
+  fmt::print("swarf {}: case {}\n", SWARF_VERSION, m.settings.source);
+  fmt::print("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(),
+             threads);
+  for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
+  fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
+             d.particle_mass);
+  if (m.periodic.on())
+    fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
+               m.periodic.period);
+  if (!m.rods.ends.empty()) {
+    if (d.converted)
+      fmt::print("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
+                 "strength {:.4g} Pa):\n", m.settings.material.youngs_modulus, m.settings.material.yield_stress,
+                 m.settings.material.hardening_modulus, m.settings.material.tensile_strength);
+    fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
+               d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
+    fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
+               d.rod_stiffness, d.rod_damping);
+  }
+  const double nu = m.settings.material.poisson_ratio;
+  if (nu > -1 && std::abs(nu - 1.0 / 3.0) > 1e-3)
+    fmt::print(stderr, "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
+               "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n", nu);
+  if (!m.rods.ends.empty())
+    fmt::print("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} kg/m^3\n",
+               d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
+  fmt::print("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
+             d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
+             d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
+             m.settings.integrator.end_time);
+  if (m.uniaxial.enabled)
+    fmt::print("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
+               m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
+  std::fflush(stdout);
+}
+
+}  // namespace swarf

@@ -1,0 +1,47 @@
+// threads.cpp: the OpenMP thread count and pinning (see threads.h).
+#include "app/threads.h"
+
+#include <omp.h>
+#include <pthread.h>
+#include <sched.h>
+
+#include <cstdlib>
+#include <vector>
+
+namespace swarf {
+namespace {
+
+// Pins OpenMP thread t to the t-th CPU this process may run on, when it runs 2 or more
+// threads, has at least as many CPUs, and the environment does not place threads itself
+// (OMP_PROC_BIND, OMP_PLACES, GOMP_CPU_AFFINITY; OMP_PROC_BIND=false keeps them free).
+// Measured on the 2-core machine: unpinned threads were migrated and W2 ran 1.1 to 1.3x
+// faster on 2 threads than on 1; pinned, 1.8 to 1.9x. A process limited to one CPU (a
+// sweep's case, an MPI rank bound to a core) is left alone.
+void pin_threads(int threads) {
+  if (threads < 2 || std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("GOMP_CPU_AFFINITY"))
+    return;
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
+  std::vector<int> cpus;
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &allowed)) cpus.push_back(c);
+  if (static_cast<int>(cpus.size()) < threads) return;
+#pragma omp parallel num_threads(threads)
+  {
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpus[omp_get_thread_num()], &one);
+    pthread_setaffinity_np(pthread_self(), sizeof one, &one);  // (on failure the thread stays free)
+  }
+}
+
+}  // namespace
+
+int set_threads(int n) {
+  if (n > 0) omp_set_num_threads(n);
+  const int used = omp_get_max_threads();
+  pin_threads(used);
+  return used;
+}
+
+}  // namespace swarf
