@@ -10,8 +10,7 @@ namespace swarf {
 
 void Simulation::commit() {
   auto& r = m_.rods;
-  const double E = r.law.youngs_modulus, k_h = r.law.hardening, A = r.area;
-  const double plastic_factor = (E - k_h) / E;  // eps_p = (E - k)/E * shift
+  const double A = r.area;
   const std::size_t m = r.size();
   // Plastic work and fracture energy per rod block, summed in block order.
   const std::size_t nb = block_count(m);
@@ -28,7 +27,7 @@ void Simulation::commit() {
       if (!r.intact[k]) continue;
       const double dshift = r.trial_shift[k] - r.shift[k];
       if (dshift != 0.0) {
-        plastic[b] += r.stress[k] * plastic_factor * dshift * A * r.rest_length[k];
+        plastic[b] += plastic_work_density(r.law, r.stress[k], dshift) * A * r.rest_length[k];
         r.shift[k] = r.trial_shift[k];
       }
       if (r.trial_broken[k]) {

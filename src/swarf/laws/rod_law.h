@@ -12,6 +12,11 @@
 // evaluate() is a pure function of (strain, strain rate, committed shift): it returns the
 // trial shift and a trial break flag and changes nothing, so that an implicit step can
 // iterate and commit only the converged state.
+//
+// The law in one file: its parameters (RodLaw), its state per rod (the shift, Rods::shift),
+// the trial (evaluate), the commit rule (the converged evaluation's shift and break flag are
+// written back; plastic_work_density is what that commit dissipates) and the energy
+// (elastic_energy_density). The rod kernel (forces/rod_forces.cpp) is a template on the law.
 #pragma once
 
 #include <cmath>
@@ -60,6 +65,12 @@ inline RodResponse evaluate(const RodLaw& law, double strain, double strain_rate
   // Failure only in tension (eq. 31 and the paper's remark below it).
   r.broken = strain > 0.0 && r.stress > law.tensile_strength;
   return r;
+}
+
+/// Plastic work density of committing a change 'dshift' of the shift at stress sigma, J/m^3:
+/// sigma d(eps_p), the plastic strain being eps_p = (E - k)/E eps0 (physics notes section 4).
+inline double plastic_work_density(const RodLaw& law, double stress, double dshift) {
+  return stress * ((law.youngs_modulus - law.hardening) / law.youngs_modulus) * dshift;
 }
 
 /// Recoverable elastic energy density of a rod at stress sigma, J/m^3 (sigma^2 / 2E).
