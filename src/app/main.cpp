@@ -1,4 +1,4 @@
-// main.cpp: the 'swarf' command line: lattice, rod, run, post, tool, bench, sweep, report.
+// main.cpp: the 'swarf' command line: lattice, rod, run, post, tool, bench, sweep, report, case keys.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <iostream>
@@ -7,6 +7,7 @@
 #include "app/bench.h"
 #include "swarf/version.h"
 #include "setup/case_config.h"
+#include "setup/case_keys_doc.h"
 #include "swarf/core/errors.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
@@ -122,6 +123,15 @@ int main(int argc, char** argv) {
   std::string report_dir;
   report->add_option("dir", report_dir, "Study directory")->required();
 
+  // swarf case keys
+  auto* case_cmd = app.add_subcommand("case", "Describe the case file format");
+  case_cmd->require_subcommand(1);
+  auto* keys = case_cmd->add_subcommand("keys", "List every case key: table.key, type, unit, default");
+  bool keys_markdown = false;
+  std::string keys_update;
+  keys->add_flag("--markdown", keys_markdown, "Print the key tables of docs/case-reference.md, with their marker lines");
+  keys->add_option("--update", keys_update, "Rewrite the key tables between the marker lines of this markdown file");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -175,6 +185,13 @@ int main(int argc, char** argv) {
       return swarf::run_sweep(so);
     } else if (*report) {
       fmt::print("wrote {}\n", swarf::write_report(report_dir));
+    } else if (*keys) {
+      if (!keys_update.empty()) {
+        swarf::update_key_tables_file(keys_update);
+        fmt::print("updated the key tables of {}\n", keys_update);
+      } else {
+        fmt::print("{}", keys_markdown ? swarf::key_tables_markdown() : swarf::key_list_text());
+      }
     }
   } catch (const swarf::InputError& e) {
     fmt::print(stderr, "swarf: error: {}\n", e.what());

@@ -1,10 +1,12 @@
 // case_config.h: the case file (TOML) as settings structs with defaults and units.
 //
-// Every key of a case file maps to one field below; the comment gives the unit and the
-// meaning, and docs/case-reference.md documents the same keys for users. Reading rejects
-// unknown keys, wrong types and out-of-range values with the file, the key and the value.
-// Command-line overrides (--set key=value) are applied to the TOML tree before reading, so
-// they are checked exactly like keys in the file.
+// Every key of a case file maps to one field below, whose default member initialiser is the
+// key's default. The key table (case_keys.cpp) names each key once, with its field, unit,
+// range and doc line: the reader checks against it and the key tables of
+// docs/case-reference.md are generated from it, so a new key is a field here and an entry
+// there. Reading rejects unknown keys, wrong types and out-of-range values with the file,
+// the key and the value. Command-line overrides (--set key=value) are applied to the TOML
+// tree before reading, so they are checked exactly like keys in the file.
 #pragma once
 
 #include <array>

@@ -1,0 +1,203 @@
+// case_bodies.cpp: the tables that repeat or name files: [[group]] with its motion, [[mesh]],
+// [[particle]] and [particles] (see case_tables.h). The key tables check each key; the
+// rules here check the keys against each other and against the files they name.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "setup/case_tables.h"
+#include "swarf/core/errors.h"
+
+namespace swarf {
+namespace {
+
+// Reads a CSV velocity table 'time,vx,vy,vz' (header line first) for motion = "velocity_table".
+void read_velocity_csv(const TableReader& r, const std::string& path, MotionSettings& m) {
+  std::ifstream in(path);
+  if (!in) r.fail("velocity_file", r.get("velocity_file"), "file not found or unreadable: " + path);
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (lineno == 1 || line.empty()) continue;  // header
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream ls(line);
+    double t, vx, vy, vz;
+    if (!(ls >> t >> vx >> vy >> vz) || !std::isfinite(t + vx + vy + vz))
+      r.fail("velocity_file", r.get("velocity_file"),
+             fmt::format("{}:{}: expected 'time,vx,vy,vz' in s and m/s", path, lineno));
+    m.table_time.push_back(t);
+    m.table_velocity.push_back({vx, vy, vz});
+  }
+}
+
+// The rules of the motion keys shared by [[group]] and [[mesh]] (read by motion_keys()).
+void check_motion(const TableReader& r, const std::string& directory, MotionSettings& m) {
+  // Every key only where the motion uses it.
+  const std::map<std::string, std::vector<std::string>> uses{
+      {"velocity", {"velocity", "ramp"}},     {"ramp_time", {"ramp"}},
+      {"table_time", {"table", "velocity_table"}}, {"table_displacement", {"table"}},
+      {"table_velocity", {"velocity_table"}}, {"velocity_file", {"velocity_table"}}};
+  for (const auto& [key, kinds] : uses)
+    if (r.has(key) && std::find(kinds.begin(), kinds.end(), m.kind) == kinds.end())
+      r.fail(key, r.get(key), fmt::format("is not used with motion = \"{}\"", m.kind));
+  if ((m.kind == "velocity" || m.kind == "ramp") && !r.has("velocity"))
+    r.fail("velocity", nullptr, fmt::format("motion = \"{}\" needs a velocity [vx, vy, vz] in m/s", m.kind));
+  if (m.kind == "ramp" && !r.has("ramp_time"))
+    r.fail("ramp_time", nullptr, "motion = \"ramp\" needs ramp_time in s");
+  if (m.kind == "velocity_table") {
+    if (!m.velocity_file.empty()) {
+      if (r.has("table_time") || r.has("table_velocity"))
+        r.fail("velocity_file", r.get("velocity_file"), "give either velocity_file or table_time/table_velocity");
+      read_velocity_csv(r, resolve(m.velocity_file, directory), m);
+    }
+    if (m.table_time.size() < 2 || m.table_time.size() != m.table_velocity.size())
+      r.fail("table_time", r.get("table_time"),
+             "motion = \"velocity_table\" needs table_time (s) and table_velocity (m/s) of equal length >= 2, "
+             "or velocity_file");
+  }
+  if (m.kind == "table") {
+    if (m.table_time.size() < 2 || m.table_time.size() != m.table_displacement.size())
+      r.fail("table_time", r.get("table_time"),
+             "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
+    for (double u : m.table_displacement[0])
+      if (u != 0.0)
+        r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
+  }
+  if (m.kind == "table" || m.kind == "velocity_table") {
+    const char* key = r.has("table_time") ? "table_time" : "velocity_file";
+    if (m.table_time[0] != 0.0) r.fail(key, r.get(key), "the table must start at 0 s");
+    for (std::size_t k = 1; k < m.table_time.size(); ++k)
+      if (!(m.table_time[k] > m.table_time[k - 1])) r.fail(key, r.get(key), "times must be strictly ascending");
+  }
+}
+
+// Names become CSV columns (reaction_<name>_x, force_<name>_x).
+void check_name(const TableReader& r, const std::string& name) {
+  for (char ch : name)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
+      r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");
+  if (name.empty()) r.fail("name", r.get("name"), "must not be empty");
+}
+
+// The entries of an array of tables ([[group]]), or none when the key is absent.
+const toml::array* entries(const CaseInput& in, const char* name) {
+  const toml::node* n = in.root.get(name);
+  if (!n) return nullptr;
+  auto arr = n->as_array();
+  if (!arr || !arr->is_array_of_tables())
+    throw InputError(fmt::format("{}: '{}' must be an array of tables ([[{}]])", in.source, name, name));
+  return arr;
+}
+
+void check_mesh(const TableReader& r, const std::string& directory, MeshSettings& m) {
+  if (static_cast<double>(m.divisions[0]) * m.divisions[1] > 1e7)
+    r.fail("divisions", r.get("divisions"), "must be two positive integers [n1, n2]");
+  m.tool = r.has("rake_angle");
+  for (const char* key : {"clearance_angle", "edge_radius", "width", "face_length"})
+    if (!m.tool && r.has(key)) r.fail(key, r.get(key), "is a tool key: give rake_angle (deg) to make a tool");
+  if (m.tool && (!r.has("width") || !r.has("face_length")))
+    r.fail("rake_angle", r.get("rake_angle"), "a tool needs width (m) and face_length (m) too");
+  check_motion(r, directory, m.motion);
+  const bool rect = r.has("edge1") || r.has("edge2") || r.has("divisions");
+  if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) > 1)
+    r.fail("file", r.get("file") ? r.get("file") : r.get("rake_angle"),
+           "give one of: file, a rectangle (edge1, edge2, divisions) or a tool (rake_angle, ...)");
+  if (m.file.empty() && !m.tool && !(r.has("edge1") && r.has("edge2")))
+    r.fail("file", nullptr,
+           "a mesh needs file = \"...stl|obj\", a rectangle (origin, edge1, edge2 in m) or a tool (rake_angle, ...)");
+  if (!m.file.empty()) {
+    m.file = resolve(m.file, directory);
+    if (!std::filesystem::exists(m.file)) r.fail("file", r.get("file"), "file not found: " + m.file);
+  } else if (!m.tool) {  // a tool's angles and sizes are checked by its generator, which names them
+    const auto& e1 = m.edge1;
+    const auto& e2 = m.edge2;
+    const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+                 cz = e1[0] * e2[1] - e1[1] * e2[0];
+    if (!(cx * cx + cy * cy + cz * cz > 0.0)) r.fail("edge2", r.get("edge2"), "edge1 and edge2 must span a rectangle");
+  }
+}
+
+}  // namespace
+
+std::string resolve(const std::string& file, const std::string& directory) {
+  std::filesystem::path p(file);
+  if (p.is_relative()) p = std::filesystem::path(directory) / p;
+  return p.string();
+}
+
+void read_groups(const CaseInput& in, CaseSettings& cs) {
+  const toml::array* arr = entries(in, "group");
+  if (!arr) return;
+  std::set<std::string> names;
+  for (std::size_t g = 0; g < arr->size(); ++g) {
+    TableReader r = in.reader((*arr)[g].as_table(), "group");
+    GroupSettings gs;
+    r.read(group_keys(), gs);
+    r.read(motion_keys(), gs.motion);
+    if (!r.has("name")) gs.name = fmt::format("group{}", g);
+    if (!names.insert(gs.name).second) r.fail("name", r.get("name"), "two groups have this name");
+    check_motion(r, in.directory, gs.motion);
+    const bool has_box = r.has("box_min") || r.has("box_max");
+    if (!gs.side.empty() && has_box) {
+      const char* key = r.has("box_min") ? "box_min" : "box_max";
+      r.fail(key, r.get(key), "give either side (with layers) or box_min/box_max, not both");
+    }
+    if (gs.side.empty() && r.has("layers")) r.fail("layers", r.get("layers"), "layers needs side");
+    if (gs.side.empty() && !has_box) r.fail("side", nullptr, "a group needs side = \"x-\" ... or box_min/box_max (m)");
+    for (int c = 0; c < 3; ++c)
+      if (gs.box_min[c] > gs.box_max[c]) r.fail("box_min", r.get("box_min"), "must not exceed box_max");
+    check_name(r, gs.name);
+    r.finish();
+    cs.groups.push_back(gs);
+  }
+}
+
+void read_meshes(const CaseInput& in, CaseSettings& cs) {
+  const toml::array* arr = entries(in, "mesh");
+  if (!arr) return;
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < arr->size(); ++k) {
+    TableReader r = in.reader((*arr)[k].as_table(), "mesh");
+    MeshSettings m;
+    r.read(mesh_keys(), m);
+    r.read(motion_keys(), m.motion);
+    if (!r.has("name")) m.name = fmt::format("mesh{}", k);
+    check_name(r, m.name);
+    if (!names.insert(m.name).second) r.fail("name", r.get("name"), "two meshes have this name");
+    check_mesh(r, in.directory, m);
+    r.finish();
+    cs.meshes.push_back(m);
+  }
+}
+
+void read_free_particles(const CaseInput& in, CaseSettings& cs) {
+  if (const toml::array* arr = entries(in, "particle")) {
+    for (std::size_t k = 0; k < arr->size(); ++k) {
+      TableReader r = in.reader((*arr)[k].as_table(), "particle");
+      ParticleSettings p;
+      r.read(particle_keys(), p);
+      if (!r.has("radius")) r.fail("radius", nullptr, "every particle needs a radius in m");
+      if (!r.has("position")) r.fail("position", nullptr, "every particle needs a position [x, y, z] in m");
+      r.finish();
+      cs.particles.push_back(p);
+    }
+  }
+  if (const toml::table* t = in.table("particles")) {
+    TableReader r = in.reader(t, "particles");
+    auto& f = cs.particles_file;
+    r.read(particles_file_keys(), f);
+    f.file = resolve(f.file, in.directory);
+    if (!r.has("file")) r.fail("file", nullptr, "[particles] needs file = \"...\" (columns id x y z vx vy vz)");
+    if (!r.has("radius")) r.fail("radius", nullptr, "[particles] needs radius in m");
+    if (!std::filesystem::exists(f.file)) r.fail("file", r.get("file"), "file not found: " + f.file);
+    r.finish();
+  }
+}
+
+}  // namespace swarf

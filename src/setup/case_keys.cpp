@@ -1,0 +1,363 @@
+// case_keys.cpp: every key of a case file, once (see case_keys.h). The docs' key tables are
+// generated from these entries: edit a doc line here, then run
+// 'swarf case keys --update docs/case-reference.md'.
+#include "setup/case_keys.h"
+
+namespace swarf {
+
+const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
+  using S = WorkpieceSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "cells", .field = &S::cells, .unit = "1", .no_default = true, .range = in(1, 100000, "[]"),
+       .rule = "not with `size` or `lattice_file`",
+       .doc = "Conventional FCC cells NX, NY, NZ. The lattice has 4 NX NY NZ sites."},
+      {.name = "size", .field = &S::size, .unit = "m", .no_default = true,
+       .rule = "each > 0; not with `cells` or `lattice_file`",
+       .doc = "Box LX, LY, LZ. Every lattice site in the closed box [0, L] is included."},
+      {.name = "lattice_file", .field = &S::lattice_file, .default_note = "generate",
+       .rule = "existing file; not with `cells`/`size`",
+       .doc = "HDF5 lattice, for example from `swarf lattice` (layout in "
+              "[outputs.md](outputs.md#swarf-lattice-hdf5-file))."},
+      {.name = "radius", .field = &S::radius, .unit = "m", .range = kPositive, .rule = "not with `lattice_file`",
+       .doc = "Particle radius R. The nearest-neighbour distance and rod length are 2R."},
+      {.name = "bond_tolerance", .field = &S::bond_tolerance, .unit = "1", .range = in(0, 0.2, "[)"),
+       .rule = "not with `lattice_file`",
+       .doc = "Relative tolerance on the bond length 2R when bonding generated sites."},
+      {.name = "periodic_width", .field = &S::periodic_width, .rule = "only with `cells`, and `cells[1]` >= 2",
+       .doc = "Periodic boundaries across the width (y): plane strain, the usual idealisation of orthogonal "
+              "cutting. The period is `cells[1]` x a (m); the faces y = 0 and y = period - a/2 are bonded through "
+              "the boundary, and rods and contacts take the nearest image along y. Positions are not wrapped (a "
+              "particle that drifts across keeps its coordinate; ParaView draws the wrapped rods as lines across "
+              "the block). Forces per width are divided by the period. Meshes do not wrap: a tool must span the "
+              "period with a margin, as with free side faces. `side = \"y-\"`/`\"y+\"` groups still select the "
+              "outer layers."},
+  };
+  return keys;
+}
+
+const std::vector<Key<MaterialSettings>>& material_keys() {
+  using S = MaterialSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "density", .field = &S::density, .unit = "kg/m^3", .range = kPositive, .doc = "Material density rho."},
+      {.name = "mass_basis", .field = &S::mass_basis, .choices = {"cell", "sphere"},
+       .doc = "How particle mass m is computed. See below."},
+      {.name = "youngs_modulus", .field = &S::youngs_modulus, .unit = "Pa", .no_default = true, .range = kPositive,
+       .doc = "Macroscopic Young's modulus along a cube axis [100]. Giving it makes swarf derive the rod law from "
+              "the keys of this table (below); `[rod]` may then give only `area` and `damping_ratio`."},
+      {.name = "yield_stress", .field = &S::yield_stress, .unit = "Pa", .range = kPositiveOrInf,
+       .rule = "needs `youngs_modulus`", .doc = "Uniaxial yield stress along [100]. inf = elastic."},
+      {.name = "hardening_modulus", .field = &S::hardening_modulus, .unit = "Pa", .range = kNonNegative,
+       .rule = "below `youngs_modulus`; needs `youngs_modulus`", .doc = "Tangent modulus after yield along [100]."},
+      {.name = "tensile_strength", .field = &S::tensile_strength, .unit = "Pa", .range = kPositiveOrInf,
+       .rule = "needs `youngs_modulus`",
+       .doc = "Uniaxial stress along [100] at which the rods break. inf = unbreakable."},
+      {.name = "poisson_ratio", .field = &S::poisson_ratio, .unit = "1", .no_default = true,
+       .range = in(-1, 0.5, "()"), .rule = "needs `youngs_modulus`",
+       .doc = "Only checked: a lattice of central rods has 1/3 along [100] (1/4 as an isotropic average) and "
+              "cannot represent another value; any other value prints a warning and the run continues with the "
+              "lattice's."},
+  };
+  return keys;
+}
+
+const std::vector<Key<RodSettings>>& rod_keys() {
+  using S = RodSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "youngs_modulus", .field = &S::youngs_modulus, .unit = "Pa", .range = kPositive,
+       .rule = "not with `material.youngs_modulus`", .doc = "E of the rod."},
+      {.name = "area", .field = &S::area, .unit = "m^2", .range = kNonNegative,
+       .doc = "Cross-section A. 0 means pi R^2."},
+      {.name = "yield_strain", .field = &S::yield_strain, .unit = "1", .range = kPositiveOrInf,
+       .rule = "not with `material.youngs_modulus`", .doc = "eps_y = sigma_02/E. `inf` means purely elastic."},
+      {.name = "hardening_modulus", .field = &S::hardening_modulus, .unit = "Pa", .range = kNonNegative,
+       .rule = "< `youngs_modulus`; not with `material.youngs_modulus`", .doc = "Slope k of the plastic branch."},
+      {.name = "tensile_strength", .field = &S::tensile_strength, .unit = "Pa", .range = kPositiveOrInf,
+       .rule = "not with `material.youngs_modulus`", .doc = "sigma_max. `inf` means unbreakable."},
+      {.name = "damping_ratio", .field = &S::damping_ratio, .unit = "1", .range = in(0, 10, "[]"),
+       .doc = "Viscous part, as a fraction zeta of critical damping of one rod between two particles."},
+  };
+  return keys;
+}
+
+const std::vector<Key<IntegratorSettings>>& integrator_keys() {
+  using S = IntegratorSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "scheme", .field = &S::scheme, .choices = {"auto", "verlet", "newmark"},
+       .doc = "`\"verlet\"`: velocity Verlet, explicit, constant step. `\"newmark\"`: implicit Newmark with step "
+              "size control (see [Newmark step](#newmark-step)). `\"auto\"`: `\"newmark\"` if "
+              "`rod.tensile_strength` is finite (rods can break), otherwise `\"verlet\"`."},
+      {.name = "dt", .field = &S::dt, .unit = "s", .range = kNonNegative,
+       .rule = "newmark: within [`dt_min`, `dt_max`]",
+       .doc = "verlet: the time step. newmark: the first step. 0 means `dt_safety` x the stable step."},
+      {.name = "dt_safety", .field = &S::dt_safety, .unit = "1", .range = in(0, 1, "(]"),
+       .doc = "Fraction of the stable step used when `dt` = 0; an explicit `dt` > 0 takes precedence."},
+      {.name = "allow_unstable_dt", .field = &S::allow_unstable_dt,
+       .doc = "verlet only: run even when dt exceeds the stable step estimate."},
+      {.name = "end_time", .field = &S::end_time, .unit = "s", .range = kNonNegative,
+       .rule = "> 0 unless `[uniaxial]` is present",
+       .doc = "Simulated time. With `[uniaxial]`, 0 means the duration of the strain path."},
+      {.name = "max_step_displacement", .field = &S::max_step_displacement, .unit = "1", .range = kPositive,
+       .doc = "Largest move of any particle (group members included) in one step, in its radii. verlet: measured "
+              "on the free components; the run stops (exit code 3) if a particle moves further, or if the state "
+              "becomes non-finite. newmark: measured on the whole displacement from the start of the step, "
+              "prescribed components included; the step is rejected and retried shorter."},
+      {.name = "beta", .field = &S::beta, .unit = "1",
+       .range = in(0, 0.5, "(]", "beta = 0 is the explicit scheme: use scheme = \"verlet\""),
+       .doc = "Newmark beta. 0 would be the explicit scheme: use `scheme = \"verlet\"`.", .section = "newmark"},
+      {.name = "gamma", .field = &S::gamma, .unit = "1", .range = in(0.5, 1, "[]"), .doc = "Newmark gamma.",
+       .section = "newmark"},
+      {.name = "tolerance", .field = &S::tolerance, .unit = "1", .range = in(0, 1, "()"),
+       .doc = "The fixed-point iteration has converged when the sweep's relative change is at most this (see "
+              "[convergence](#newmark-step)).",
+       .section = "newmark"},
+      {.name = "max_iterations", .field = &S::max_iterations, .unit = "1", .range = in(2, 10000, "[]"),
+       .doc = "Sweeps allowed per step. A step that has not converged after this many is rejected.",
+       .section = "newmark"},
+      {.name = "dt_min", .field = &S::dt_min, .unit = "s", .range = kNonNegative,
+       .rule = "not above `dt_max` when both are > 0",
+       .doc = "Smallest step. 0 means 1e-3 x the stable step. A rejected step whose retry would be shorter stops "
+              "the run (exit code 3).",
+       .section = "newmark"},
+      {.name = "dt_max", .field = &S::dt_max, .unit = "s", .range = kNonNegative,
+       .doc = "Largest step. 0 means 0.4/sqrt(`beta`) x the stable step: 0.8 x at `beta` = 1/4 (see "
+              "[Fixed-point limit](#newmark-step)).",
+       .section = "newmark"},
+      {.name = "iterations_grow", .field = &S::iterations_grow, .unit = "1", .range = in(1, 10000, "[]"),
+       .rule = "below `iterations_shrink`",
+       .doc = "A step that converged in at most this many sweeps lengthens the next step.", .section = "newmark"},
+      {.name = "iterations_shrink", .field = &S::iterations_shrink, .unit = "1", .range = in(2, 10000, "[]"),
+       .rule = "not above `max_iterations`",
+       .doc = "A step that needed at least this many sweeps shortens the next step.", .section = "newmark"},
+      {.name = "grow_factor", .field = &S::grow_factor, .unit = "1", .range = in(1, 10, "(]"),
+       .doc = "Factor on the step when it grows.", .section = "newmark"},
+      {.name = "shrink_factor", .field = &S::shrink_factor, .unit = "1", .range = in(0, 1, "()"),
+       .doc = "Factor on the step when it shrinks.", .section = "newmark"},
+      {.name = "reject_factor", .field = &S::reject_factor, .unit = "1", .range = in(0, 1, "()"),
+       .doc = "A rejected step is retried with its size times this factor.", .section = "newmark"},
+      {.name = "relaxation", .field = &S::relaxation, .unit = "1", .range = in(0, 1, "(]"),
+       .doc = "Relaxation w of the fixed-point sweeps: after a sweep that has not converged, the next one places "
+              "with (1 - w) a_guess + w a_swept instead of the swept accelerations alone. 0.75 cuts the default "
+              "cut's force evaluations by a third; see **Relaxation** below.",
+       .section = "newmark"},
+  };
+  return keys;
+}
+
+const std::vector<Key<GroupSettings>>& group_keys() {
+  using S = GroupSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "name", .field = &S::name, .no_default = true, .default_note = "`group<index>`",
+       .rule = "non-empty; letters, digits, `_` and `-` only; unique among groups. `grip_min` and `grip_max` are "
+               "reserved when `[uniaxial]` is present.",
+       .doc = "Name used in outputs (`reaction_<name>_x`, ...)."},
+      {.name = "side", .field = &S::side, .default_note = "select by box",
+       .choices = {"x-", "x+", "y-", "y+", "z-", "z+"}, .rule = "not with `box_min`/`box_max`",
+       .doc = "Select by side: lattice layers at that face."},
+      {.name = "layers", .field = &S::layers, .unit = "1", .range = in(1, 1000, "[]"), .rule = "only with `side`",
+       .doc = "Number of lattice layers taken at `side`."},
+      {.name = "box_min", .field = &S::box_min, .unit = "m",
+       .rule = "each <= the `box_max` entry; not with `side`", .doc = "Lower corner of the selection box."},
+      {.name = "box_max", .field = &S::box_max, .unit = "m", .rule = "not with `side`",
+       .doc = "Upper corner of the selection box."},
+      {.name = "dofs", .field = &S::dofs, .choices = {"x", "y", "z", "xy", "xz", "yz", "xyz"},
+       .doc = "Prescribed components. The others stay free."},
+  };
+  return keys;
+}
+
+const std::vector<Key<MotionSettings>>& motion_keys() {
+  using S = MotionSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "motion", .field = &S::kind, .choices = {"fixed", "velocity", "ramp", "table", "velocity_table"},
+       .doc = "How the prescribed components move."},
+      {.name = "velocity", .field = &S::velocity, .unit = "m/s", .no_default = true,
+       .rule = "required for `\"velocity\"` and `\"ramp\"`, rejected for the other motions",
+       .doc = "Constant velocity; for `\"ramp\"` the velocity reached at `ramp_time`."},
+      {.name = "ramp_time", .field = &S::ramp_time, .unit = "s", .no_default = true, .range = kPositive,
+       .rule = "required for and only with `\"ramp\"`",
+       .doc = "The velocity rises linearly from 0 to `velocity` over this time, then stays: u = v t^2/(2 T) for "
+              "t < T, v (t - T/2) after."},
+      {.name = "table_time", .field = &S::table_time, .unit = "s", .no_default = true,
+       .rule = "first 0; strictly ascending; at least 2 entries; only with `\"table\"` and `\"velocity_table\"`",
+       .doc = "Times of the table."},
+      {.name = "table_displacement", .field = &S::table_displacement, .unit = "m", .no_default = true,
+       .rule = "same length as `table_time`; first row [0, 0, 0]; only with `\"table\"`",
+       .doc = "Displacements [x, y, z] from the start position at each `table_time` (piecewise linear; constant "
+              "after the last)."},
+      {.name = "table_velocity", .field = &S::table_velocity, .unit = "m/s", .no_default = true,
+       .rule = "same length as `table_time`; only with `\"velocity_table\"`",
+       .doc = "Velocities at each `table_time`, piecewise linear in time; the displacement is their exact "
+              "integral, and the last velocity holds after the last time."},
+      {.name = "velocity_file", .field = &S::velocity_file, .no_default = true,
+       .rule = "an existing CSV file, relative paths from the case file's folder; only with `\"velocity_table\"`, "
+               "not with `table_time`/`table_velocity`",
+       .doc = "CSV with a header line and rows `time,vx,vy,vz` (s, m/s), read as `table_time`/`table_velocity`."},
+  };
+  return keys;
+}
+
+const std::vector<Key<UniaxialSettings>>& uniaxial_keys() {
+  using S = UniaxialSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "axis", .field = &S::axis, .choices = {"x", "y", "z"},
+       .doc = "Bar axis. The grips are the sides `<axis>-` and `<axis>+`."},
+      {.name = "grip_layers", .field = &S::grip_layers, .unit = "1", .range = in(1, 1000, "[]"),
+       .rule = "the gauge length must stay > h/2",
+       .doc = "Lattice layers held by each grip. Selection is the same as for `side`."},
+      {.name = "grip_dofs", .field = &S::grip_dofs, .choices = {"axis", "xyz"},
+       .doc = "`\"axis\"`: the grips hold only the axial component, so the bar contracts freely. `\"xyz\"`: "
+              "clamped ends."},
+      {.name = "strain_path", .field = &S::strain_path, .unit = "1",
+       .default_note = "invalid, so effectively required",
+       .rule = "at least 2 entries, first 0, each in (-0.5, 0.5), no two consecutive equal",
+       .doc = "Turning points of the nominal strain."},
+      {.name = "strain_rate", .field = &S::strain_rate, .unit = "1/s", .range = kPositive,
+       .doc = "Absolute rate of change of the nominal strain."},
+  };
+  return keys;
+}
+
+const std::vector<Key<ContactSettings>>& contact_keys() {
+  using S = ContactSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "youngs_modulus", .field = &S::youngs_modulus, .unit = "Pa", .range = kPositive,
+       .doc = "E of the particles in contacts (independent of `rod.youngs_modulus`)."},
+      {.name = "poisson_ratio", .field = &S::poisson_ratio, .unit = "1", .range = in(-1, 0.5, "()"),
+       .doc = "nu of the particles."},
+      {.name = "restitution", .field = &S::restitution, .unit = "1", .range = in(0.01, 1, "[]"),
+       .doc = "Normal coefficient of restitution e, the same at every impact speed. 1 means no damping."},
+      {.name = "friction", .field = &S::friction, .unit = "1", .range = kNonNegative,
+       .doc = "Coulomb coefficient mu. 0 means frictionless."},
+      {.name = "friction_law", .field = &S::friction_law, .choices = {"spring", "regularized", "none"},
+       .doc = "Tangential law, see [Tangential force](#tangential-force). `\"none\"` is frictionless whatever "
+              "`friction` says."},
+      {.name = "regularization_speed", .field = &S::regularization_speed, .unit = "m/s", .range = kPositive,
+       .doc = "v0 of the `\"regularized\"` law."},
+      {.name = "tangential_damping", .field = &S::tangential_damping, .unit = "1", .range = in(0, 10, "[]"),
+       .doc = "`\"spring\"` law only: tangential dashpot as a multiple of the normal damping coefficient. 0 means "
+              "none."},
+      {.name = "skin", .field = &S::skin, .unit = "1", .range = in(0, 2, "(]"),
+       .doc = "Verlet-list skin s as a fraction of the largest particle radius: s = `skin` x R_max (m)."},
+  };
+  return keys;
+}
+
+const std::vector<Key<CaseSettings>>& environment_keys() {
+  using S = CaseSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "gravity", .field = &S::gravity, .unit = "m/s^2",
+       .doc = "Gravitational acceleration g. The force m_i g acts on every particle, prescribed ones included "
+              "(their weight enters the group reactions)."},
+  };
+  return keys;
+}
+
+const std::vector<Key<MeshSettings>>& mesh_keys() {
+  using S = MeshSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "name", .field = &S::name, .no_default = true, .default_note = "`mesh<index>`",
+       .rule = "non-empty; letters, digits, `_` and `-` only; unique among meshes", .doc = "Name used in outputs."},
+      {.name = "file", .field = &S::file, .default_note = "rectangle",
+       .rule = "an existing `.stl` or `.obj` file (extension in any case); not with `edge1`, `edge2`, "
+               "`divisions` or `rake_angle`",
+       .doc = "Mesh file, see [Mesh files](#mesh-files)."},
+      {.name = "scale", .field = &S::scale, .unit = "1", .range = kPositive,
+       .doc = "Factor on the file's coordinates, for example 1e-3 for a file in mm. It has no effect on a "
+              "rectangle."},
+      {.name = "origin", .field = &S::origin, .unit = "m",
+       .doc = "Corner of the rectangle, or the sharp tip of a generated tool. No effect with `file`."},
+      {.name = "edge1", .field = &S::edge1, .unit = "m", .no_default = true,
+       .rule = "both edges required for a rectangle; edge1 x edge2 non-zero; not with `file`",
+       .doc = "First edge of the rectangle (a parallelogram in general) from `origin`."},
+      {.name = "edge2", .field = &S::edge2, .unit = "m", .no_default = true, .rule = "as `edge1`",
+       .doc = "Second edge of the rectangle from `origin`."},
+      {.name = "divisions", .field = &S::divisions, .unit = "1", .range = in(1, 1e7, "[]"),
+       .rule = "product <= 1e7; not with `file`",
+       .doc = "Cells n1, n2 along `edge1` and `edge2`. Each cell is cut into 2 triangles, so the rectangle has "
+              "2 n1 n2 triangles."},
+      {.name = "rake_angle", .field = &S::rake_angle, .unit = "deg", .no_default = true,
+       .rule = "(-60, 60), checked when the tool is built; not with `file` or a rectangle",
+       .doc = "Makes the mesh a generated cutting tool (`tool_paths/tool_geometry.h`): the rake face leaves the "
+              "edge upwards, tilted back from +z by this angle."},
+      {.name = "clearance_angle", .field = &S::clearance_angle, .unit = "deg",
+       .rule = "(0, 45), checked when the tool is built; only with `rake_angle`",
+       .doc = "The flank face leaves the edge backwards, tilted up from -x by this angle. The wedge 90 - rake - "
+              "clearance must exceed 5 deg."},
+      {.name = "edge_radius", .field = &S::edge_radius, .unit = "m", .range = kNonNegative,
+       .rule = "only with `rake_angle`",
+       .doc = "Cutting-edge radius (an arc tangent to both faces, steps of at most 5 deg); 0 = sharp."},
+      {.name = "width", .field = &S::width, .unit = "m", .no_default = true, .range = kNonNegative,
+       .rule = "> 0 when the tool is built; required with `rake_angle`",
+       .doc = "Extent of the tool along y, centred on `origin`'s y."},
+      {.name = "face_length", .field = &S::face_length, .unit = "m", .no_default = true, .range = kNonNegative,
+       .rule = "> 0 when the tool is built; required with `rake_angle`",
+       .doc = "Length of the rake and flank faces from the sharp tip."},
+      {.name = "youngs_modulus", .field = &S::youngs_modulus, .unit = "Pa", .range = kPositiveOrInf,
+       .doc = "E_w of the mesh. `inf` means rigid."},
+      {.name = "poisson_ratio", .field = &S::poisson_ratio, .unit = "1", .range = in(-1, 0.5, "()"),
+       .doc = "nu_w of the mesh. No effect when `youngs_modulus` is `inf`."},
+  };
+  return keys;
+}
+
+const std::vector<Key<ParticleSettings>>& particle_keys() {
+  using S = ParticleSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "position", .field = &S::position, .unit = "m", .no_default = true, .default_note = "required",
+       .doc = "Centre."},
+      {.name = "velocity", .field = &S::velocity, .unit = "m/s", .doc = "Initial velocity."},
+      {.name = "angular_velocity", .field = &S::angular_velocity, .unit = "rad/s",
+       .doc = "Initial angular velocity, in the world frame."},
+      {.name = "radius", .field = &S::radius, .unit = "m", .no_default = true, .default_note = "required",
+       .range = kPositive, .doc = "Radius."},
+  };
+  return keys;
+}
+
+const std::vector<Key<ParticlesFileSettings>>& particles_file_keys() {
+  using S = ParticlesFileSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "file", .field = &S::file, .no_default = true, .default_note = "required", .rule = "existing file",
+       .doc = "One particle per line, columns `id x y z vx vy vz` (m, m/s) separated by white space."},
+      {.name = "radius", .field = &S::radius, .unit = "m", .no_default = true, .default_note = "required",
+       .range = kPositive, .doc = "Radius of every particle of the file."},
+  };
+  return keys;
+}
+
+const std::vector<Key<OutputSettings>>& output_keys() {
+  using S = OutputSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "frame_interval", .field = &S::frame_interval, .unit = "s", .range = kNonNegative,
+       .doc = "Interval between ParaView frames. 0 means only the first and last states."},
+      {.name = "series_interval", .field = &S::series_interval, .unit = "s", .range = kNonNegative,
+       .doc = "Interval between `series.csv` rows. 0 means end_time/2000, about 2001 rows (fewer if steps are "
+              "longer than the interval)."},
+      {.name = "vtk", .field = &S::vtk, .doc = "Write `particles.pvd` and `frames/*.vtu`."},
+      {.name = "rods_in_vtk", .field = &S::rods_in_vtk, .doc = "Add the rods as lines (part 1) to each frame."},
+      {.name = "plots", .field = &S::plots,
+       .doc = "Write PNG plots at the end. This needs `python3` with matplotlib. In "
+              "[cutting runs](outputs.md#cutting-runs) it also renders the picture `chip.png` from the last frame "
+              "(needs VTK's Python module and `vtk = true`). If plotting or rendering fails, you get a warning and "
+              "the run still completes."},
+      {.name = "progress", .field = &S::progress, .doc = "Print the progress line on stderr."},
+      {.name = "steady_from", .field = &S::steady_from, .unit = "s", .no_default = true,
+       .default_note = "half of `end_time`", .range = kNonNegative,
+       .doc = "Cutting runs: the summary's force statistics (`cutting` in summary.json) use the rows with time >= "
+              "this. It is stored in `results.h5` (`/cutting/setup`), which `swarf post` uses."},
+      {.name = "checkpoint_every", .field = &S::checkpoint_every, .unit = "1", .range = in(0, 1000000000, "[]"),
+       .doc = "Write the restart file `DIR/checkpoint.h5` after every this many accepted steps (newmark: "
+              "rejected tries do not count). 0 means no checkpoints. See "
+              "[Restart](#restart-swarf-run---restart)."},
+      {.name = "orientations", .field = &S::orientations,
+       .doc = "Integrate the spheres' orientations (unit quaternions, body to world) and write them and the "
+              "angular velocities (rad/s, world frame) to `results.h5` and the ParaView frames "
+              "([outputs.md](outputs.md)). Without it a sphere's orientation stays as it started (identity): "
+              "nothing in a sphere's dynamics depends on it (isotropic inertia, central rods and normal forces), "
+              "so it is not integrated, as LAMMPS's sphere atoms have none. Angular velocities are integrated "
+              "either way."},
+  };
+  return keys;
+}
+
+}  // namespace swarf

@@ -1,0 +1,36 @@
+// case_tables.h: the readers of a case file's tables, internal to setup/.
+//
+// Each reader reads its table's keys through the key table (type and range checks, unknown
+// keys), then checks by hand the rules that involve several keys or files, in the order
+// parse_case calls them (case_config.cpp).
+#pragma once
+
+#include <set>
+#include <string>
+#include <toml++/toml.h>
+
+#include "setup/case_config.h"
+#include "setup/case_reader.h"
+
+namespace swarf {
+
+/// The parsed tree (overrides applied) and what the messages and paths need.
+struct CaseInput {
+  const toml::table& root;
+  const std::string& source;     ///< names the case in messages
+  const std::string& directory;  ///< relative paths resolve here
+  const std::set<std::string>& overridden;
+
+  const toml::table* table(const char* name) const { return root.get_as<toml::table>(name); }
+  TableReader reader(const toml::table* t, const char* prefix) const { return {t, prefix, source, overridden}; }
+};
+
+/// 'file' relative to 'directory' unless it is absolute.
+std::string resolve(const std::string& file, const std::string& directory);
+
+// [[group]], [[mesh]], [[particle]] and [particles] (case_bodies.cpp).
+void read_groups(const CaseInput& in, CaseSettings& cs);
+void read_meshes(const CaseInput& in, CaseSettings& cs);
+void read_free_particles(const CaseInput& in, CaseSettings& cs);
+
+}  // namespace swarf
