@@ -10,6 +10,7 @@
 
 #include "io/h5file.h"
 #include "io/vtk_output.h"
+#include "setup/case_keys.h"
 #include "setup/model.h"
 
 namespace swarf {
@@ -93,6 +94,7 @@ nlohmann::json summary_head(const Model& model, const Simulation& sim, const std
   sum["overrides"] = settings.overrides;
   if (!restarted_from.empty()) sum["restarted_from"] = restarted_from;
   sum["case"] = case_to_json(settings);
+  sum["case_units"] = case_key_units();  // (every key's unit, from the key table)
   sum["derived"] = derived_to_json(model.derived);
   sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
   for (const auto& g : model.groups) sum["counts"]["group_" + g.name] = g.members.size();
