@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "io/h5file.h"
+#include "io/results_format.h"
+#include "swarf/core/errors.h"
 
 namespace swarf {
 namespace {
@@ -143,7 +145,10 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
   if (!f.has("/cutting/setup")) return false;
   std::size_t r = 0, c = 0;
   const auto v = f.read_doubles("/cutting/setup", r, c);
-  if (v.size() != 9 && v.size() != 10) return false;  // (9: runs before the face length was stored)
+  const int format = results_format(f);  // (1: runs before the face length was stored, 9 values)
+  if (v.size() != (format >= 2 ? 10u : 9u))
+    throw InputError(fmt::format("'{}': /cutting/setup has {} values; layout {} has {}", f.path(), v.size(), format,
+                                 format >= 2 ? 10 : 9));
   s.width = v[0];
   s.steady_from = v[1];
   s.tool_tip = Vec3(v[2], v[3], v[4]);
@@ -151,7 +156,7 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
   s.uncut_surface_z = v[6];
   s.radius = v[7];
   s.lattice_particles = static_cast<std::size_t>(v[8]);
-  s.face_length = v.size() > 9 ? v[9] : HUGE_VAL;
+  s.face_length = format >= 2 ? v[9] : HUGE_VAL;
   s.tool_mesh = f.has_attribute("cutting_tool_mesh") ? f.read_string_attribute("cutting_tool_mesh") : "";
   return true;
 }

@@ -7,6 +7,10 @@
 
 #include "postprocess/chip.h"
 #include "postprocess/cut_report.h"
+#include "io/h5file.h"
+#include "io/results_format.h"
+#include "swarf/core/errors.h"
+#include "test_helpers.h"
 
 namespace swarf {
 namespace {
@@ -129,6 +133,48 @@ TEST(CutReport, ChipThicknessIsTheMedianOfTheSteadyRows) {
   const CutResult few = analyze_cut(s, d);
   EXPECT_FALSE(few.chip.contains("thickness_m"));
   EXPECT_NE(few.chip["note"].get<std::string>().find("4 steady rows"), std::string::npos) << few.chip.dump();
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// results.h5 layouts: a file of layout 1 (no 'format' attribute, 9 setup values) is read with
+// an unknown face length; a file of layout 2 (format = 2) must hold all 10, or it is refused.
+TEST(CutReport, TheSetupIsReadByTheFilesLayoutVersion) {
+  test::TempDir dir("results_format");
+  CutSetup s;
+  s.tool_mesh = "tool";
+  s.width = 1.5e-3;
+  s.tool_tip = Vec3(1e-3, 0.0, 2e-3);
+  s.face_length = 2e-3;
+  {
+    H5File f(dir / "new.h5", H5File::Mode::Create);
+    f.write_attribute("format", kResultsFormat);
+    write_cut_setup(f, s);
+  }
+  CutSetup r;
+  ASSERT_TRUE(read_cut_setup(H5File(dir / "new.h5", H5File::Mode::Read), r));
+  EXPECT_EQ(r.face_length, 2e-3);
+  EXPECT_EQ(r.tool_tip, s.tool_tip);
+  const std::vector<double> nine{1.5e-3, 0, 1e-3, 0, 2e-3, 10, 3e-3, 1e-4, 100};
+  {
+    H5File f(dir / "old.h5", H5File::Mode::Create);  // layout 1: no attribute
+    f.write("/cutting/setup", nine.data(), nine.size());
+  }
+  CutSetup o;
+  ASSERT_TRUE(read_cut_setup(H5File(dir / "old.h5", H5File::Mode::Read), o));
+  EXPECT_EQ(o.face_length, HUGE_VAL);
+  EXPECT_EQ(o.lattice_particles, 100u);
+  {
+    H5File f(dir / "bad.h5", H5File::Mode::Create);  // claims layout 2 with 9 values
+    f.write_attribute("format", kResultsFormat);
+    f.write("/cutting/setup", nine.data(), nine.size());
+  }
+  CutSetup b;
+  EXPECT_THROW(read_cut_setup(H5File(dir / "bad.h5", H5File::Mode::Read), b), InputError);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "swarf/core/errors.h"
 #include "io/h5file.h"
+#include "io/results_format.h"
 #include "postprocess/chip_surface.h"
 #include "app/plots.h"
 #include "io/vtk_output.h"
@@ -155,7 +156,9 @@ void post_run(const std::string& dir) {
   data.time = cols[0];
   data.fc = cols[1];
   data.ft = cols[2];
-  if (has_column(dir + "/series.csv", "chip_thickness"))
+  // Layout 1 (runs before 2026-12-01) may lack the per-row chip thickness; the report then
+  // takes the last state's. From layout 2 on the column is required.
+  if (results_format(f) >= 2 || has_column(dir + "/series.csv", "chip_thickness"))
     data.chip_thickness = read_columns(dir + "/series.csv", {"chip_thickness"})[0];
   std::size_t r = 0, c = 0;
   const auto x = f.read_doubles("/particles/position", r, c);

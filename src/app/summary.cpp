@@ -10,6 +10,7 @@
 
 #include "io/h5file.h"
 #include "io/vtk_output.h"
+#include "io/results_format.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
 
@@ -127,6 +128,7 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     }
     for (std::size_t i = 0; i < n; ++i) group[i] = p.group[i];
     f.write("/particles/group", group.data(), n);
+    f.write("/particles/id", p.id.data(), n);
     f.write("/bonds/pairs", pairs.data(), m, 2);
     f.write("/bonds/rest_length", r.rest_length.data(), m);
     f.write("/bonds/plastic_shift", r.shift.data(), m);
@@ -135,6 +137,7 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     f.write_attribute("time_s", sim.time());
     f.write_attribute("steps", static_cast<double>(sim.steps()));
     f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION);
+    f.write_attribute("format", kResultsFormat);
     if (extra) extra(f);
   }
   std::filesystem::rename(tmp, path);

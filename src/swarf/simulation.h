@@ -189,8 +189,7 @@ class Simulation {
   StageClock clock_;
   std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods
   std::vector<std::int32_t> free_list_;       // those particles, in order
-  bool rebuild_lists_ = false;      // rebuild the contact lists at the next evaluation (set by checkpoints of
-                                    // earlier versions, which rebuilt when a rod broke)
+  bool rebuild_lists_ = false;      // rebuild the contact lists at the next evaluation (set by append_particles)
   double sweep_dt_ = 0;             // step size of the current sweep, s
   double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
   double moved2_ = -1.0;            // largest squared displacement since the contact lists' build, m^2 (< 0: unknown)

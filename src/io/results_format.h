@@ -1,0 +1,20 @@
+// results_format.h: the layout version of DIR/results.h5 (root attribute 'format').
+//
+// Readers of older files go through this number, not through guesses from the data:
+//   1 (no attribute): runs before 2026-12-01: /cutting/setup has 9 values (no face length),
+//     series.csv may lack the chip_thickness column;
+//   2: /cutting/setup has 10 values, /particles/id holds the particles' stable ids.
+#pragma once
+
+#include "io/h5file.h"
+
+namespace swarf {
+
+inline constexpr double kResultsFormat = 2.0;
+
+/// The layout of an open results.h5: its 'format' attribute, 1 when it has none.
+inline int results_format(const H5File& f) {
+  return f.has_attribute("format") ? static_cast<int>(f.read_double_attribute("format")) : 1;
+}
+
+}  // namespace swarf
