@@ -14,9 +14,9 @@ namespace {
 // Pins OpenMP thread t to the t-th CPU this process may run on, when it runs 2 or more
 // threads, has at least as many CPUs, and the environment does not place threads itself
 // (OMP_PROC_BIND, OMP_PLACES, GOMP_CPU_AFFINITY; OMP_PROC_BIND=false keeps them free).
-// Measured on the 2-core machine: unpinned threads were migrated and W2 ran 1.1 to 1.3x
-// faster on 2 threads than on 1; pinned, 1.8 to 1.9x. A process limited to one CPU (a
-// sweep's case, an MPI rank bound to a core) is left alone.
+// Unpinned threads were migrated between the cores and lost most of the second thread's gain
+// (validation/bench/README.md). A process limited to one CPU (a sweep's case, an MPI rank
+// bound to a core) is left alone.
 void pin_threads(int threads) {
   if (threads < 2 || std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("GOMP_CPU_AFFINITY"))
     return;
