@@ -1,8 +1,9 @@
 // fcc_lattice.cpp: FCC site generation and bonding (see fcc_lattice.h).
 #include "lattice_gen/fcc_lattice.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "swarf/core/errors.h"
 #include "swarf/neighbors/neighbor_pairs.h"
@@ -20,13 +21,13 @@ Lattice generate_fcc(const FccSpec& spec) {
   for (int c = 0; c < 3; ++c) {
     if (by_cells) {
       if (spec.cells[c] <= 0)
-        throw InputError(fmt::format("lattice: cells must be three positive integers, got {},{},{}",
-                                     spec.cells[0], spec.cells[1], spec.cells[2]));
+        throw InputError(fmt::format("lattice: cells must be three positive integers, got {},{},{}", spec.cells[0],
+                                     spec.cells[1], spec.cells[2]));
       count[c] = 2L * spec.cells[c];
     } else {
       if (!(spec.size[c] > 0.0) || !std::isfinite(spec.size[c]))
-        throw InputError(fmt::format("lattice: size must be three positive lengths in m, got {},{},{}",
-                                     spec.size[0], spec.size[1], spec.size[2]));
+        throw InputError(fmt::format("lattice: size must be three positive lengths in m, got {},{},{}", spec.size[0],
+                                     spec.size[1], spec.size[2]));
       count[c] = static_cast<long>(std::floor(spec.size[c] / h * (1.0 + 1e-9))) + 1;
     }
   }

@@ -1,13 +1,14 @@
 // lattice_file.cpp: HDF5 reading and writing of a lattice (see lattice_file.h).
 #include "lattice_gen/lattice_file.h"
-#include "swarf/version.h"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 
-#include "swarf/core/errors.h"
 #include "io/h5file.h"
+#include "swarf/core/errors.h"
+#include "swarf/version.h"
 
 namespace swarf {
 
@@ -64,7 +65,8 @@ Lattice read_lattice(const std::string& path) {
   if (rows != m || cols != 1) throw InputError(fmt::format("'{}': /bonds/rest_length must have {} entries", path, m));
   for (std::size_t b = 0; b < m; ++b)
     if (!(lat.rest_length[b] > 0.0) || !std::isfinite(lat.rest_length[b]))
-      throw InputError(fmt::format("'{}': /bonds/rest_length[{}] = {} is not a positive length", path, b, lat.rest_length[b]));
+      throw InputError(
+          fmt::format("'{}': /bonds/rest_length[{}] = {} is not a positive length", path, b, lat.rest_length[b]));
   if (f.has_attribute("cell_edge")) lat.cell_edge = f.read_double_attribute("cell_edge");
   return lat;
 }

@@ -7,10 +7,10 @@
 // between the 2nd and 98th percentiles (robust to stray fragments), plus one particle
 // diameter (the centres lie a radius inside each free surface), measured on a section of the
 // chip that lies on the face: from 2 to 3 depths of cut from the tip along the face, and not
-// past the face's end (past the edge region, before the chip curls away from the face; the chip beyond, lifted off the face
-// by its curl, made the spread grow with the length of the chip: 0.66 to 1.37 mm over the
-// second half of the default cut, against 0.65 to 0.79 mm in the section).
-// Then, with h the depth of cut (uncut chip thickness) and alpha the rake angle:
+// past the face's end (past the edge region, before the chip curls away from the face; the chip beyond, lifted off the
+// face by its curl, made the spread grow with the length of the chip: 0.66 to 1.37 mm over the second half of the
+// default cut, against 0.65 to 0.79 mm in the section). Then, with h the depth of cut (uncut chip thickness) and alpha
+// the rake angle:
 //   compression ratio r = h / h_c,  shear angle phi: tan(phi) = r cos(alpha) / (1 - r sin(alpha)),
 //   friction angle beta = alpha + atan(Ft / Fc),  Merchant: phi_M = 45 deg + alpha/2 - beta/2.
 #pragma once
@@ -33,12 +33,12 @@ struct ChipInput {
 };
 
 struct ChipMetrics {
-  std::size_t chip_particles = 0;     ///< particles above the uncut surface
-  std::size_t measured_particles = 0; ///< of these, those in the measured section
-  double thickness = 0;               ///< h_c, m (0 if too few particles)
-  double compression_ratio = 0;       ///< r = h / h_c, 1
-  double shear_angle_deg = 0;         ///< from r and the rake angle, deg
-  std::vector<std::size_t> members;   ///< indices (into ChipInput::position) of the chip particles
+  std::size_t chip_particles = 0;      ///< particles above the uncut surface
+  std::size_t measured_particles = 0;  ///< of these, those in the measured section
+  double thickness = 0;                ///< h_c, m (0 if too few particles)
+  double compression_ratio = 0;        ///< r = h / h_c, 1
+  double shear_angle_deg = 0;          ///< from r and the rake angle, deg
+  std::vector<std::size_t> members;    ///< indices (into ChipInput::position) of the chip particles
 };
 
 /// Identifies the chip and measures it.

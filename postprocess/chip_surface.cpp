@@ -2,13 +2,13 @@
 // (see chip_surface.h); the OpenVDB rasterisation itself is in chip_surface_vdb.cpp.
 #include "postprocess/chip_surface.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <unordered_map>
-
-#include <fmt/format.h>
 
 #include "swarf/core/errors.h"
 
@@ -150,9 +150,10 @@ ChipSurface build_chip_surface(const std::vector<Vec3>& centres, const std::vect
   double estimate = 0;
   for (double r : radii) estimate += 4.0 * std::numbers::pi * std::pow((r + d) / voxel, 2) * 2.0 * kHalfWidth;
   if (estimate > options.max_voxels)
-    throw InputError(fmt::format("chip surface: voxel {:.4g} m is too fine for {} particles of radius {:.4g} to {:.4g} m "
-                                 "(about {:.3g} narrow-band voxels, limit {:.3g}): use a larger voxel size",
-                                 voxel, centres.size(), r_min, r_max, estimate, options.max_voxels));
+    throw InputError(
+        fmt::format("chip surface: voxel {:.4g} m is too fine for {} particles of radius {:.4g} to {:.4g} m "
+                    "(about {:.3g} narrow-band voxels, limit {:.3g}): use a larger voxel size",
+                    voxel, centres.size(), r_min, r_max, estimate, options.max_voxels));
   s.voxel_m = voxel;
 
   // Rasterise relative to the lower corner of the centres: OpenVDB's mesh points are floats.

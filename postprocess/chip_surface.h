@@ -45,27 +45,27 @@
 #include <string>
 #include <vector>
 
-#include "swarf/state/mesh.h"
 #include "swarf/core/vec3.h"
+#include "swarf/state/mesh.h"
 
 namespace swarf {
 
 struct ChipSurface {
-  TriangleMesh mesh;                  ///< closed surface, m; triangles counterclockwise from outside; name "chip_surface"
-  double volume_m3 = 0;               ///< enclosed by the mesh (divergence theorem), m^3: THE chip volume reported
-  double level_set_volume_m3 = 0;     ///< the same from openvdb::tools::levelSetVolume, m^3 (cross-check)
-  double sphere_volume_m3 = 0;        ///< sum of 4/3 pi r^3 (undilated), m^3
-  double packing_volume_m3 = 0;       ///< sum of 4 sqrt(2) r^3: FCC volume per particle, m^3
-  double voxel_m = 0;                 ///< voxel edge used, m
-  double dilation_m = 0;              ///< added to every radius, m
-  std::size_t particles = 0;          ///< particles given
-  std::string note;                   ///< empty, or why the surface is empty or the voxel changed
+  TriangleMesh mesh;               ///< closed surface, m; triangles counterclockwise from outside; name "chip_surface"
+  double volume_m3 = 0;            ///< enclosed by the mesh (divergence theorem), m^3: THE chip volume reported
+  double level_set_volume_m3 = 0;  ///< the same from openvdb::tools::levelSetVolume, m^3 (cross-check)
+  double sphere_volume_m3 = 0;     ///< sum of 4/3 pi r^3 (undilated), m^3
+  double packing_volume_m3 = 0;    ///< sum of 4 sqrt(2) r^3: FCC volume per particle, m^3
+  double voxel_m = 0;              ///< voxel edge used, m
+  double dilation_m = 0;           ///< added to every radius, m
+  std::size_t particles = 0;       ///< particles given
+  std::string note;                ///< empty, or why the surface is empty or the voxel changed
 };
 
 struct ChipSurfaceOptions {
-  double voxel_size = 0;              ///< m; 0 = median radius / 3
-  double dilation = 0;                ///< m, >= 0, added to every radius before rasterising
-  double max_voxels = 2e8;            ///< upper bound on the estimated narrow-band voxel count
+  double voxel_size = 0;    ///< m; 0 = median radius / 3
+  double dilation = 0;      ///< m, >= 0, added to every radius before rasterising
+  double max_voxels = 2e8;  ///< upper bound on the estimated narrow-band voxel count
 };
 
 /// Builds the surface of the union of spheres (centres[i], radii[i] + dilation), m.
@@ -75,8 +75,8 @@ struct ChipSurfaceOptions {
 ChipSurface build_chip_surface(const std::vector<Vec3>& centres, const std::vector<double>& radii,
                                const ChipSurfaceOptions& options = {});
 /// Shorthand: voxel_size (m, 0 = auto) and dilation (m).
-ChipSurface build_chip_surface(const std::vector<Vec3>& centres, const std::vector<double>& radii,
-                               double voxel_size, double dilation = 0);
+ChipSurface build_chip_surface(const std::vector<Vec3>& centres, const std::vector<double>& radii, double voxel_size,
+                               double dilation = 0);
 
 /// Signed volume enclosed by a closed triangle mesh (positive for outward normals), m^3.
 double mesh_volume(const TriangleMesh& mesh);
@@ -86,12 +86,12 @@ namespace detail {
 /// slow to compile). Rasterises the spheres at the given voxel edge (m) and extracts the zero
 /// isosurface. Radii already include any dilation.
 struct VdbSurface {
-  std::vector<Vec3> points;                       ///< m
-  std::vector<std::array<int, 3>> triangles;      ///< as volumeToMesh gives them
-  std::vector<std::array<int, 4>> quads;          ///< as volumeToMesh gives them
-  double level_set_volume = 0;                    ///< m^3
-  std::size_t skipped_small = 0;                  ///< spheres ParticlesToLevelSet ignored (< Rmin voxels)
-  std::size_t skipped_large = 0;                  ///< spheres ParticlesToLevelSet ignored (> Rmax voxels)
+  std::vector<Vec3> points;                   ///< m
+  std::vector<std::array<int, 3>> triangles;  ///< as volumeToMesh gives them
+  std::vector<std::array<int, 4>> quads;      ///< as volumeToMesh gives them
+  double level_set_volume = 0;                ///< m^3
+  std::size_t skipped_small = 0;              ///< spheres ParticlesToLevelSet ignored (< Rmin voxels)
+  std::size_t skipped_large = 0;              ///< spheres ParticlesToLevelSet ignored (> Rmax voxels)
 };
 VdbSurface vdb_sphere_surface(const std::vector<Vec3>& centres, const std::vector<double>& radii, double voxel,
                               double rmin_voxels, double rmax_voxels);

@@ -4,12 +4,12 @@
 // Kept in a translation unit of its own and free of swarf logic: ParticlesToLevelSet takes
 // 40-55 s and 1.5 GB to compile, so this file should rarely change. The checks, the voxel
 // choice and the triangle mesh are in chip_surface.cpp.
-#include <mutex>
-
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
 #include <openvdb/tools/VolumeToMesh.h>
+
+#include <mutex>
 
 #include "postprocess/chip_surface.h"
 

@@ -1,9 +1,10 @@
 // cut_report.cpp: the end-of-cut analysis and table (see cut_report.h).
 #include "postprocess/cut_report.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "io/h5file.h"
 #include "io/results_format.h"
@@ -78,7 +79,8 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
               {"friction_angle_deg", beta},
               {"merchant_shear_angle_deg", merchant_shear_angle_deg(s.rake_angle_deg, beta)},
               {"chip_broken_fraction_mean", cm.members.empty() ? 0.0 : chip_broken / double(cm.members.size())},
-              {"damaged_particle_fraction", d.broken_fraction.empty() ? 0.0 : double(damaged) / double(d.broken_fraction.size())}};
+              {"damaged_particle_fraction",
+               d.broken_fraction.empty() ? 0.0 : double(damaged) / double(d.broken_fraction.size())}};
   if (cm.thickness > 0) out.chip["thickness_final_m"] = cm.thickness;
   double hc = 0.0;
   if (steady_hc.size() >= kMinThicknessRows) {
@@ -95,9 +97,10 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
     out.chip["compression_ratio"] = ci.depth_of_cut / hc;
     out.chip["shear_angle_deg"] = shear_angle_deg(ci.depth_of_cut / hc, s.rake_angle_deg);
   } else {
-    out.chip["note"] = fmt::format("chip thickness not measured: {} steady rows measured it (at least {} needed; "
-                                   "a row needs 10 chip particles beyond the edge region)",
-                                   steady_hc.size(), kMinThicknessRows);
+    out.chip["note"] = fmt::format(
+        "chip thickness not measured: {} steady rows measured it (at least {} needed; "
+        "a row needs 10 chip particles beyond the edge region)",
+        steady_hc.size(), kMinThicknessRows);
   }
   return out;
 }
@@ -134,9 +137,10 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
 }
 
 void write_cut_setup(H5File& f, const CutSetup& s) {
-  const std::vector<double> v{s.width,       s.steady_from,    s.tool_tip[0], s.tool_tip[1],
-                              s.tool_tip[2], s.rake_angle_deg, s.uncut_surface_z, s.radius,
-                              double(s.lattice_particles), s.face_length};
+  const std::vector<double> v{s.width,           s.steady_from, s.tool_tip[0],
+                              s.tool_tip[1],     s.tool_tip[2], s.rake_angle_deg,
+                              s.uncut_surface_z, s.radius,      double(s.lattice_particles),
+                              s.face_length};
   f.write("/cutting/setup", v.data(), v.size());
   f.write_attribute("cutting_tool_mesh", s.tool_mesh);
 }

@@ -24,30 +24,30 @@ class H5File;
 
 /// The cut's geometry as the analysis needs it (stored in results.h5 under /cutting).
 struct CutSetup {
-  std::string tool_mesh;          ///< name of the tool's [[mesh]]
-  double width = 0;               ///< workpiece width (lattice extent along y + a/2), m
-  double steady_from = 0;         ///< force statistics over times >= this, s
-  Vec3 tool_tip = Vec3::Zero();   ///< sharp tip of the tool at the end, m
-  double rake_angle_deg = 0;      ///< deg
-  double uncut_surface_z = 0;     ///< highest initial workpiece centre, m
-  double radius = 0;              ///< particle radius, m
+  std::string tool_mesh;              ///< name of the tool's [[mesh]]
+  double width = 0;                   ///< workpiece width (lattice extent along y + a/2), m
+  double steady_from = 0;             ///< force statistics over times >= this, s
+  Vec3 tool_tip = Vec3::Zero();       ///< sharp tip of the tool at the end, m
+  double rake_angle_deg = 0;          ///< deg
+  double uncut_surface_z = 0;         ///< highest initial workpiece centre, m
+  double radius = 0;                  ///< particle radius, m
   std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
-  double face_length = HUGE_VAL;  ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
+  double face_length = HUGE_VAL;      ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
 };
 
 /// The run's data the analysis reads.
 struct CutData {
-  std::vector<double> time, fc, ft;        ///< series rows: s, N/m, N/m
-  std::vector<double> chip_thickness;      ///< series rows: the chip's thickness then (measure_chip), m; 0 = not measured;
-                                           ///< empty for runs of earlier versions (then the last state's is used)
-  std::vector<Vec3> position;              ///< workpiece particle centres at the end, m
-  std::vector<double> broken_fraction;     ///< per workpiece particle: broken rods / rods, 1
-  double broken_rod_fraction = 0;          ///< broken rods / all rods, 1
+  std::vector<double> time, fc, ft;     ///< series rows: s, N/m, N/m
+  std::vector<double> chip_thickness;   ///< series rows: the chip's thickness then (measure_chip), m; 0 = not measured;
+                                        ///< empty for runs of earlier versions (then the last state's is used)
+  std::vector<Vec3> position;           ///< workpiece particle centres at the end, m
+  std::vector<double> broken_fraction;  ///< per workpiece particle: broken rods / rods, 1
+  double broken_rod_fraction = 0;       ///< broken rods / all rods, 1
 };
 
 struct CutResult {
-  nlohmann::json cutting;   ///< summary.json "cutting"
-  nlohmann::json chip;      ///< summary.json "chip"
+  nlohmann::json cutting;  ///< summary.json "cutting"
+  nlohmann::json chip;     ///< summary.json "chip"
   ChipMetrics metrics;
 };
 

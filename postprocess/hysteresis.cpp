@@ -53,8 +53,9 @@ LoopMeasurement analyze_loop(const std::vector<double>& strain, const std::vecto
     yp.resize(keep);
   }
   if (xe.size() < 3 || xp.size() < 3) {
-    m.note = "first segment too short to fit both the elastic and the hardening branch (needs strain beyond 1.5x "
-             "the predicted yield strain and enough samples)";
+    m.note =
+        "first segment too short to fit both the elastic and the hardening branch (needs strain beyond 1.5x "
+        "the predicted yield strain and enough samples)";
     return m;
   }
   const LineFit el = fit_line(xe, ye), pl = fit_line(xp, yp);
@@ -89,7 +90,9 @@ LoopMeasurement analyze_loop(const std::vector<double>& strain, const std::vecto
     m.reverse_modulus = un.slope;
     m.reverse_ok = true;
   } else {
-    m.note = "second segment too short to fit the reverse yield (needs a reversal beyond 3x the predicted yield strain)";
+    m.note =
+        "second segment too short to fit the reverse yield (needs a reversal beyond 3x the predicted yield "
+        "strain)";
   }
   return m;
 }

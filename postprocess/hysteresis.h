@@ -51,15 +51,15 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
 struct LoopMeasurement {
   bool ok = false;
-  std::string note;                  ///< why a quantity could not be measured
-  double modulus = 0;                ///< slope of the first elastic loading, Pa
-  double yield_strain = 0;           ///< intersection of the elastic and hardening lines, 1
-  double yield_stress = 0;           ///< Pa
-  double hardening_tangent = 0;      ///< slope of the first plastic loading, Pa
+  std::string note;              ///< why a quantity could not be measured
+  double modulus = 0;            ///< slope of the first elastic loading, Pa
+  double yield_strain = 0;       ///< intersection of the elastic and hardening lines, 1
+  double yield_stress = 0;       ///< Pa
+  double hardening_tangent = 0;  ///< slope of the first plastic loading, Pa
   bool reverse_ok = false;
-  double turn_stress = 0;            ///< stress at the first turning point, Pa
-  double reverse_yield_stress = 0;   ///< yield on the second segment (Bauschinger), Pa
-  double reverse_modulus = 0;        ///< unloading slope, Pa
+  double turn_stress = 0;           ///< stress at the first turning point, Pa
+  double reverse_yield_stress = 0;  ///< yield on the second segment (Bauschinger), Pa
+  double reverse_modulus = 0;       ///< unloading slope, Pa
 };
 
 /// Measures the loop from samples (strain, stress) taken along the path; 'segment' gives the

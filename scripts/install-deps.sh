@@ -6,7 +6,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PKGS=(
   # toolchain
-  build-essential cmake g++ pkg-config git
+  build-essential cmake g++ pkg-config git clang-format
   # numerics and I/O
   libeigen3-dev libhdf5-dev libvtk9-dev libopenvdb-dev libboost-iostreams-dev libtbb-dev
   # case files, command line, JSON, formatting

@@ -3,8 +3,9 @@
 // x+ face is clamped and whose other particles are guided; its closed form; the series' last row.
 #pragma once
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
@@ -12,12 +13,12 @@
 namespace swarf::test {
 
 struct PushCase {
-  int nx = 4, ny = 3, nz = 3;       ///< cells
-  double R = 1e-4;                  ///< m
-  double u = 1e-6;                  ///< tool displacement, m
-  double E_contact = 2e14, nu = 0.3;  ///< Pa, 1 (stiff contacts: the lattice dominates)
-  bool periodic = false;            ///< periodic width instead of guided y faces
-  std::string guide_dofs = "yz";    ///< components held for all but the clamped layer
+  int nx = 4, ny = 3, nz = 3;              ///< cells
+  double R = 1e-4;                         ///< m
+  double u = 1e-6;                         ///< tool displacement, m
+  double E_contact = 2e14, nu = 0.3;       ///< Pa, 1 (stiff contacts: the lattice dominates)
+  bool periodic = false;                   ///< periodic width instead of guided y faces
+  std::string guide_dofs = "yz";           ///< components held for all but the clamped layer
   double tool_y = 0, tool_width = 1.2e-3;  ///< m
 };
 
@@ -56,7 +57,8 @@ end_time = 3e-5
 vtk = false
 plots = false
 series_interval = 1e-6
-)", fmt::arg("nx", c.nx), fmt::arg("ny", c.ny), fmt::arg("nz", c.nz), fmt::arg("R", c.R),
+)",
+                     fmt::arg("nx", c.nx), fmt::arg("ny", c.ny), fmt::arg("nz", c.nz), fmt::arg("R", c.R),
                      fmt::arg("per", c.periodic ? "true" : "false"), fmt::arg("Ec", c.E_contact), fmt::arg("nu", c.nu),
                      fmt::arg("xg", x_max - 0.5 * h), fmt::arg("dofs", c.guide_dofs), fmt::arg("tw", c.tool_width),
                      fmt::arg("x0", -c.R), fmt::arg("yc", c.tool_y), fmt::arg("u", c.u));

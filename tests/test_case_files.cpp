@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "setup/case_config.h"
-#include "swarf/core/errors.h"
 #include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -54,9 +54,7 @@ TEST(CaseFiles, UnknownKey) {
                   {"bad.toml:7", "unknown key", "rod.yeild_strain"});
 }
 
-TEST(CaseFiles, UnknownTable) {
-  expect_mentions(error_of(kGood + "\n[solver]\nx = 1\n"), {"bad.toml", "solver"});
-}
+TEST(CaseFiles, UnknownTable) { expect_mentions(error_of(kGood + "\n[solver]\nx = 1\n"), {"bad.toml", "solver"}); }
 
 TEST(CaseFiles, WrongType) {
   expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = \"big\"")),
@@ -79,8 +77,7 @@ TEST(CaseFiles, MissingLatticeFile) {
 }
 
 TEST(CaseFiles, LatticeFileAndCellsTogether) {
-  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "lattice_file = \"x.h5\"")),
-                  {"lattice_file", "either"});
+  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "lattice_file = \"x.h5\"")), {"lattice_file", "either"});
 }
 
 TEST(CaseFiles, RadiusWithLatticeFile) {
@@ -134,8 +131,9 @@ TEST(CaseFiles, EmptyGroup) {
 }
 
 TEST(CaseFiles, OverridesApplyAndAreChecked) {
-  const CaseSettings cs = parse_case(kGood, "bad.toml", {"integrator.dt=2e-9", "group.0.motion=velocity",
-                                                         "group.0.velocity=[1, 2, 3]", "rod.damping_ratio=0.1"});
+  const CaseSettings cs = parse_case(
+      kGood, "bad.toml",
+      {"integrator.dt=2e-9", "group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "rod.damping_ratio=0.1"});
   EXPECT_EQ(cs.integrator.dt, 2e-9);
   EXPECT_EQ(cs.groups[0].motion.kind, "velocity");
   EXPECT_EQ(cs.groups[0].motion.velocity[2], 3.0);
@@ -145,8 +143,8 @@ TEST(CaseFiles, OverridesApplyAndAreChecked) {
   expect_mentions(error_of(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
   expect_mentions(error_of(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});
   // One entry of an array: its index as the last component; the others stay.
-  const CaseSettings one =
-      parse_case(kGood, "bad.toml", {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=-4.5"});
+  const CaseSettings one = parse_case(
+      kGood, "bad.toml", {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=-4.5"});
   EXPECT_EQ(one.groups[0].motion.velocity[0], 1.0);
   EXPECT_EQ(one.groups[0].motion.velocity[1], 2.0);
   EXPECT_EQ(one.groups[0].motion.velocity[2], -4.5);
@@ -190,12 +188,14 @@ table_velocity = [[1.0, 0.0, 0.0], [3.0, 0.0, 0.0]]
   // Inline velocity table on a mesh: 1 -> 3 m/s over 1 ms covers 2 mm.
   EXPECT_NEAR(m.mesh_motion[0].displacement_at(1e-3)[0], 2e-3, 1e-15);
   // Keys of another motion are refused, and a table must start at 0 s.
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nmotion = \"velocity\"\n"
-                                                             "velocity = [1.0, 0.0, 0.0]\nramp_time = 1e-3")),
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"",
+                                   "side = \"x-\"\nmotion = \"velocity\"\n"
+                                   "velocity = [1.0, 0.0, 0.0]\nramp_time = 1e-3")),
                   {"group.ramp_time", "not used with motion = \"velocity\""});
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nmotion = \"velocity_table\"\n"
-                                                             "table_time = [1e-3, 2e-3]\n"
-                                                             "table_velocity = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]")),
+  expect_mentions(error_of(replace(kGood, "side = \"x-\"",
+                                   "side = \"x-\"\nmotion = \"velocity_table\"\n"
+                                   "table_time = [1e-3, 2e-3]\n"
+                                   "table_velocity = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]")),
                   {"group.table_time", "start at 0 s"});
 }
 

@@ -139,8 +139,10 @@ struct AnyMember {
 };
 template <class T, class... A>
 constexpr std::size_t member_count() {
-  if constexpr (requires { T{A{}..., AnyMember{}}; }) return member_count<T, A..., AnyMember>();
-  else return sizeof...(A);
+  if constexpr (requires { T{A{}..., AnyMember{}}; })
+    return member_count<T, A..., AnyMember>();
+  else
+    return sizeof...(A);
 }
 
 // Where a member lies in an S: members are told apart by their offsets.

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "postprocess/chip.h"
-#include "postprocess/cut_report.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
+#include "postprocess/chip.h"
+#include "postprocess/cut_report.h"
 #include "swarf/core/errors.h"
 #include "test_helpers.h"
 
@@ -76,7 +76,8 @@ TEST(Chip, ACurledChipIsMeasuredWhereItLiesOnTheFace) {
   // The section ends at the face's end: half of it on a face 2.5 h long, none on one of 1.9 h.
   in.face_length = 2.5 * h;
   const ChipMetrics shorter = measure_chip(in);
-  EXPECT_NEAR(double(shorter.measured_particles), 0.5 * double(m.measured_particles), 0.05 * double(m.measured_particles));
+  EXPECT_NEAR(double(shorter.measured_particles), 0.5 * double(m.measured_particles),
+              0.05 * double(m.measured_particles));
   EXPECT_NEAR(shorter.thickness, hc, 0.05 * hc);
   in.face_length = 1.9 * h;
   EXPECT_EQ(measure_chip(in).thickness, 0.0);

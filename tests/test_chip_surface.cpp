@@ -9,11 +9,11 @@
 #include <numbers>
 #include <utility>
 
-#include "swarf/core/errors.h"
+#include "io/vtk_output.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "postprocess/chip_surface.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
-#include "io/vtk_output.h"
 
 namespace swarf {
 namespace {

@@ -1,22 +1,22 @@
 // test_contacts.cpp: circle-triangle overlap area against closed forms and Monte Carlo; a
 // flat surface pushes the same however it is triangulated; Hertz impacts against the closed
 // form; restitution; sticking and sliding friction; the neighbour search against brute force.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
 #include <random>
 
+#include "io/mesh_file.h"
 #include "setup/case_config.h"
+#include "setup/model.h"
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/errors.h"
-#include "swarf/state/mesh.h"
-#include "io/mesh_file.h"
-#include "setup/model.h"
 #include "swarf/geometry/overlap_area.h"
+#include "swarf/simulation.h"
+#include "swarf/state/mesh.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
-#include "swarf/simulation.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -186,7 +186,7 @@ TEST(FlatSurface, SameForceHoweverTriangulated) {
   const TriangleMesh two = square(1, 0.0, 1), many = square(16, 0.3, 5);
   ASSERT_EQ(two.triangles.size(), 2u);
   ASSERT_EQ(many.triangles.size(), 512u);
-  const double delta = 2e-6;  // m
+  const double delta = 2e-6;         // m
   const Vec3 v(0.02, -0.01, -0.05);  // m/s: normal damping and tangential slip both act
   // Over the middle of a face, over the 2-triangle diagonal, over a vertex and an edge of the
   // irregular mesh (its vertex nearest the centre), and a general point.
@@ -206,8 +206,8 @@ TEST(FlatSurface, SameForceHoweverTriangulated) {
     const Vec3 c(s[0], s[1], 1e-3 - delta);
     const Vec3 f2 = force_on_sphere(two, c, v), fn = force_on_sphere(many, c, v);
     ASSERT_GT(f2[2], 0.0);
-    EXPECT_LT((f2 - fn).norm(), 1e-9 * f2.norm()) << "at " << s.transpose() << ": " << f2.transpose() << " vs "
-                                                   << fn.transpose();
+    EXPECT_LT((f2 - fn).norm(), 1e-9 * f2.norm())
+        << "at " << s.transpose() << ": " << f2.transpose() << " vs " << fn.transpose();
   }
 }
 
@@ -242,7 +242,8 @@ friction = 0.0
 scheme = "verlet"
 dt = {dt:.17g}
 end_time = 1e-4
-)", fmt::arg("v", v), fmt::arg("e", restitution), fmt::arg("dt", dt));
+)",
+                     fmt::arg("v", v), fmt::arg("e", restitution), fmt::arg("dt", dt));
 }
 
 TEST(Impact, TwoSpheresMatchTheHertzClosedForm) {
@@ -319,7 +320,9 @@ divisions = [3, 3]
 [integrator]
 scheme = "verlet"
 end_time = 1
-)", fmt::arg("mu", mu), fmt::arg("law", law), fmt::arg("gx", g * std::sin(angle)), fmt::arg("gz", -g * std::cos(angle)));
+)",
+                                       fmt::arg("mu", mu), fmt::arg("law", law), fmt::arg("gx", g * std::sin(angle)),
+                                       fmt::arg("gz", -g * std::cos(angle)));
   return build_model(parse_case(text, "block", {}));
 }
 
@@ -497,8 +500,9 @@ TEST(Meshes, StlAndObjRoundTripAndBadMeshesAreRejected) {
   EXPECT_EQ(back.vertices.size(), sq.vertices.size());  // welded
   test::write_file(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n");
   EXPECT_EQ(read_mesh(dir / "t.obj").triangles.size(), 2u);
-  test::write_file(dir / "a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                                  "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n");
+  test::write_file(dir / "a.stl",
+                   "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                   "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n");
   EXPECT_EQ(read_mesh(dir / "a.stl", 1e-3).vertices[1][0], 1e-3);
   // Degenerate, empty, non-finite, missing, unknown format.
   test::write_file(dir / "deg.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
@@ -546,7 +550,8 @@ velocity = [{v}, 0.0, 0.0]
 scheme = "verlet"
 dt = 2e-8
 end_time = 1
-)", fmt::arg("R", R), fmt::arg("v", v), fmt::arg("e", e));
+)",
+                                         fmt::arg("R", R), fmt::arg("v", v), fmt::arg("e", e));
     Model m = build_model(parse_case(text, "pusher", {}));
     Simulation sim(m, m.step);
     // The 0.1 mm gap closes in 0.2 ms; the contact lasts about 0.03 ms.
@@ -558,8 +563,10 @@ end_time = 1
     // Trapezoidal work and power over steps of 1/1000 of the contact: balance to 1e-3 of the energy.
     const auto& L = sim.ledger();
     EXPECT_NEAR(L.external_work, ke + L.contact_work, 1e-3 * ke) << "e " << e;
-    if (e == 1.0) EXPECT_NEAR(L.contact_work, 0.0, 1e-3 * ke);
-    else EXPECT_GT(L.contact_work, 0.1 * ke);
+    if (e == 1.0)
+      EXPECT_NEAR(L.contact_work, 0.0, 1e-3 * ke);
+    else
+      EXPECT_GT(L.contact_work, 0.1 * ke);
   }
 }
 

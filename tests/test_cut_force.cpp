@@ -8,10 +8,10 @@
 //   u_tool = (gaps) 2 F / (N kb) + (F / (N_face K))^(2/3),  K = 4/3 E* sqrt(R).
 // The tool's force (series force_tool_x), the clamp's reaction and the cutting force per width
 // must all give this F.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -47,7 +47,8 @@ TEST(CutForce, ToolPushingAClampedBlockMatchesTheLatticeStiffness) {
   const int gaps = static_cast<int>(std::lround(x_max / h));  // the last layer is clamped
 
   test::TempDir dir("cut_force");
-  const test::PushCase pc{.nx = nx, .ny = ny, .nz = nz, .R = R, .u = u, .E_contact = E_contact, .nu = nu, .tool_y = 0.5 * y_max};
+  const test::PushCase pc{
+      .nx = nx, .ny = ny, .nz = nz, .R = R, .u = u, .E_contact = E_contact, .nu = nu, .tool_y = 0.5 * y_max};
   test::write_file(dir / "c.toml", test::push_case_toml(pc));
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;

@@ -53,8 +53,8 @@ Snapshot run(int threads, int steps) {
   Model m = build_model(parse_case(kCase, "det", {}));
   Simulation sim(m, m.step);
   for (int s = 0; s < steps; ++s) sim.step();
-  Snapshot out{m.particles.position, m.particles.velocity, m.rods.shift, m.rods.intact, sim.ledger(),
-               sim.kinetic_energy(), sim.broken_rods(), sim.state_hash()};
+  Snapshot out{m.particles.position, m.particles.velocity, m.rods.shift,      m.rods.intact,
+               sim.ledger(),         sim.kinetic_energy(), sim.broken_rods(), sim.state_hash()};
   return out;
 }
 
@@ -110,8 +110,9 @@ TEST(Determinism, AGranularGasWithFrictionGivesIdenticalBitsOnOneTwoAndThreeThre
       sim.step();
       touching = std::max(touching, sim.contacts().touching_pairs());
     }
-    return State{m.particles.position, m.particles.velocity, m.particles.omega, m.particles.orientation,
-                 sim.ledger().contact_work, touching, sim.state_hash()};
+    return State{m.particles.position,    m.particles.velocity,      m.particles.omega,
+                 m.particles.orientation, sim.ledger().contact_work, touching,
+                 sim.state_hash()};
   };
   const int saved = omp_get_max_threads();
   const State a = run_gas(1), b = run_gas(2), c = run_gas(3);

@@ -33,9 +33,10 @@ TEST(Golden, DefaultCutSeriesIsByteIdenticalToTheReference) {
   GTEST_SKIP() << "the reference was written by a native build with fused multiply-adds";
 #endif
   TempDir dir("golden");
-  const auto r = run_command(fmt::format("{} run --out {} --threads 1 --set integrator.end_time=3e-5 "
-                                         "--set output.plots=false --set output.vtk=false",
-                                         SWARF_BINARY, dir / "cut"));
+  const auto r = run_command(
+      fmt::format("{} run --out {} --threads 1 --set integrator.end_time=3e-5 "
+                  "--set output.plots=false --set output.vtk=false",
+                  SWARF_BINARY, dir / "cut"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string got = read_file(dir / "cut/series.csv");
   const std::string want = read_file(std::string(SWARF_SOURCE_DIR) + "/tests/data/golden/default_cut_3e-5s_series.csv");

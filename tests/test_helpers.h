@@ -1,16 +1,16 @@
 // test_helpers.h: small helpers shared by the tests (temporary directories, running the CLI).
 #pragma once
 
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <fmt/format.h>
 
 namespace swarf::test {
 
@@ -78,12 +78,10 @@ inline std::string granular_gas_case(const TempDir& dir) {
                                  0.55e-3 + 1.05e-3 * z, uniform(), uniform(), uniform());
   write_file(dir / "p.txt", particles);
   std::string walls;
-  const char* planes[6][4] = {{"xmin", "[0, 0, 0]", "[0, 7e-3, 0]", "[0, 0, 7e-3]"},
-                              {"xmax", "[7e-3, 0, 0]", "[0, 7e-3, 0]", "[0, 0, 7e-3]"},
-                              {"ymin", "[0, 0, 0]", "[7e-3, 0, 0]", "[0, 0, 7e-3]"},
-                              {"ymax", "[0, 7e-3, 0]", "[7e-3, 0, 0]", "[0, 0, 7e-3]"},
-                              {"zmin", "[0, 0, 0]", "[7e-3, 0, 0]", "[0, 7e-3, 0]"},
-                              {"zmax", "[0, 0, 7e-3]", "[7e-3, 0, 0]", "[0, 7e-3, 0]"}};
+  const char* planes[6][4] = {
+      {"xmin", "[0, 0, 0]", "[0, 7e-3, 0]", "[0, 0, 7e-3]"}, {"xmax", "[7e-3, 0, 0]", "[0, 7e-3, 0]", "[0, 0, 7e-3]"},
+      {"ymin", "[0, 0, 0]", "[7e-3, 0, 0]", "[0, 0, 7e-3]"}, {"ymax", "[0, 7e-3, 0]", "[7e-3, 0, 0]", "[0, 0, 7e-3]"},
+      {"zmin", "[0, 0, 0]", "[7e-3, 0, 0]", "[0, 7e-3, 0]"}, {"zmax", "[0, 0, 7e-3]", "[7e-3, 0, 0]", "[0, 7e-3, 0]"}};
   for (const auto& w : planes)
     walls += fmt::format("[[mesh]]\nname = \"{}\"\norigin = {}\nedge1 = {}\nedge2 = {}\nyoungs_modulus = 1e7\n", w[0],
                          w[1], w[2], w[3]);

@@ -1,16 +1,16 @@
 // test_newmark.cpp: the implicit Newmark step against its own discrete recurrence, its
 // fixed-point limit, commit after convergence, and rejection without a trace.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 #include <random>
 
-#include "setup/case_config.h"
-#include "swarf/core/errors.h"
 #include "lattice_gen/lattice_file.h"
+#include "setup/case_config.h"
 #include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "swarf/simulation.h"
 #include "test_helpers.h"
 
@@ -37,9 +37,10 @@ Model pair_model(const test::TempDir& dir, const std::string& integrator, double
 double pair_omega(const Model& m) { return std::sqrt(2 * m.derived.rod_stiffness / m.particles.mass[0]); }
 
 std::string fixed_step(double h, double tol = 1e-11, int max_it = 200) {
-  return fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_min = {:.17g}\ndt_max = {:.17g}\ntolerance = {}\n"
-                     "max_iterations = {}\n",
-                     h, h, h, tol, max_it);
+  return fmt::format(
+      "scheme = \"newmark\"\ndt = {:.17g}\ndt_min = {:.17g}\ndt_max = {:.17g}\ntolerance = {}\n"
+      "max_iterations = {}\n",
+      h, h, h, tol, max_it);
 }
 
 // Newmark beta = 1/4, gamma = 1/2 on u'' = -w^2 u, solved exactly per step:
@@ -115,7 +116,8 @@ youngs_modulus = 200e9
 tensile_strength = 1e12
 [integrator]
 end_time = 1
-)" + overrides_toml, "block", {}));
+)" + overrides_toml,
+                                   "block", {}));
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-0.1, 0.1);
   for (auto& v : m.particles.velocity) v = Vec3(u(rng), u(rng), u(rng));
@@ -127,8 +129,10 @@ TEST(Newmark, FixedPointConvergesBelowTheLimitAndDivergesAbove) {
   const Model probe = random_block("");
   const double ds = probe.derived.dt_stable;
   auto first_step = [&](double factor) {
-    Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
-                                       "tolerance = 1e-6\n", factor * ds, 2 * ds));
+    Model m = random_block(
+        fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
+                    "tolerance = 1e-6\n",
+                    factor * ds, 2 * ds));
     Simulation sim(m, m.step);
     sim.step();
     return std::make_pair(sim.stats(), sim.last_dt() / ds);
@@ -138,8 +142,8 @@ TEST(Newmark, FixedPointConvergesBelowTheLimitAndDivergesAbove) {
   EXPECT_GT(below.last_iterations, 20);  // slow contraction near the limit: about log(1e-6)/log(0.81) sweeps
   EXPECT_DOUBLE_EQ(dt_below, 0.9);
   const auto [above, dt_above] = first_step(1.15);
-  EXPECT_GE(above.rejected, 1);          // diverged, rejected
-  EXPECT_LT(dt_above, 1.0);              // and retried below the limit
+  EXPECT_GE(above.rejected, 1);  // diverged, rejected
+  EXPECT_LT(dt_above, 1.0);      // and retried below the limit
   const auto [far_below, dt_far] = first_step(0.3);
   EXPECT_LE(far_below.last_iterations, 8);  // (0.3)^2 = 0.09 per sweep
 }
@@ -154,9 +158,10 @@ TEST(Newmark, RelaxationContractsFasterAndConvergesBeyondTheLimit) {
   const Model probe = random_block("");
   const double ds = probe.derived.dt_stable;
   auto first_step = [&](double factor, double w) {
-    Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
-                                       "tolerance = 1e-6\nrelaxation = {}\n",
-                                       factor * ds, 2 * ds, w));
+    Model m = random_block(
+        fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\nmax_iterations = 400\n"
+                    "tolerance = 1e-6\nrelaxation = {}\n",
+                    factor * ds, 2 * ds, w));
     Simulation sim(m, m.step);
     sim.step();
     return std::make_tuple(sim.stats(), sim.last_dt() / ds, m.particles.position);
@@ -208,8 +213,8 @@ TEST(Newmark, RodBrokenOnlyInAnUnconvergedIterateStaysIntact) {
   EXPECT_GT(sweeps, 3);
   // The explicit scheme evaluates once at u = U (its predictor) and breaks the rod: the
   // scenario does reach the strength in the first iterate.
-  const auto [broken_vv, u_vv, s_vv] =
-      run(fmt::format("scheme = \"verlet\"\ndt = {:.17g}\nallow_unstable_dt = true\n", h));
+  const auto [broken_vv, u_vv,
+              s_vv] = run(fmt::format("scheme = \"verlet\"\ndt = {:.17g}\nallow_unstable_dt = true\n", h));
   EXPECT_EQ(broken_vv, 1u);
   (void)u_vv;
   (void)s_vv;
@@ -250,8 +255,8 @@ TEST(Newmark, StopsBelowDtMinWithAMessage) {
   // A step far beyond the limit with a dt_min that forbids shrinking enough.
   const Model probe = random_block("");
   const double ds = probe.derived.dt_stable;
-  Model m = random_block(fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\ndt_min = {:.17g}\n", 3 * ds,
-                                     4 * ds, 2 * ds));
+  Model m = random_block(
+      fmt::format("scheme = \"newmark\"\ndt = {:.17g}\ndt_max = {:.17g}\ndt_min = {:.17g}\n", 3 * ds, 4 * ds, 2 * ds));
   Simulation sim(m, m.step);
   try {
     sim.step();

@@ -43,12 +43,34 @@ TEST(Observers, LayTheSeriesOutByNameTimeFirst) {
   Model m = build_model(parse_case(kBar, "bar", {}));
   Simulation sim(m, m.step);
   ObserverSet observers(sim, observers_for(m));
-  const std::vector<std::string> expected{
-      "time", "strain", "stress", "stress_predicted", "stress_midplane", "step", "dt", "iterations",
-      "kinetic_energy", "rotational_energy", "elastic_energy", "contact_energy", "contact_work", "potential_energy",
-      "external_work", "plastic_work", "viscous_work", "fracture_energy", "energy_error", "broken_rods",
-      "broken_fraction", "contacts", "reaction_grip_min_x", "reaction_grip_min_y", "reaction_grip_min_z",
-      "reaction_grip_max_x", "reaction_grip_max_y", "reaction_grip_max_z"};
+  const std::vector<std::string> expected{"time",
+                                          "strain",
+                                          "stress",
+                                          "stress_predicted",
+                                          "stress_midplane",
+                                          "step",
+                                          "dt",
+                                          "iterations",
+                                          "kinetic_energy",
+                                          "rotational_energy",
+                                          "elastic_energy",
+                                          "contact_energy",
+                                          "contact_work",
+                                          "potential_energy",
+                                          "external_work",
+                                          "plastic_work",
+                                          "viscous_work",
+                                          "fracture_energy",
+                                          "energy_error",
+                                          "broken_rods",
+                                          "broken_fraction",
+                                          "contacts",
+                                          "reaction_grip_min_x",
+                                          "reaction_grip_min_y",
+                                          "reaction_grip_min_z",
+                                          "reaction_grip_max_x",
+                                          "reaction_grip_max_y",
+                                          "reaction_grip_max_z"};
   EXPECT_EQ(observers.columns(), expected);
   observers.begin();
   for (int s = 0; s < 20; ++s) sim.step();
@@ -138,8 +160,7 @@ TEST(Restart, UniaxialRunContinuesBitIdenticallyWithItsPredictionAndLoop) {
     EXPECT_NE(ck.read_doubles("/run/uniaxial/prediction_plastic_shift", r, c).at(0), 0.0)
         << "the checkpoint is past yield: the prediction's plastic shift crosses the restart";
   }
-  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") +
-                             " --threads 2");
+  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
   ASSERT_EQ(b.exit_code, 0) << b.output;
   EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
   const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));

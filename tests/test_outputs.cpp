@@ -2,16 +2,16 @@
 // (series, summary, HDF5, ParaView series readable by VTK's own reader, plots), and a run
 // that blows up stops with a message and leaves no file that looks complete.
 #include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-#include <algorithm>
-#include <regex>
-#include <sstream>
+#include <vtkCellData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 
 #include "io/h5file.h"
 #include "test_helpers.h"
@@ -110,9 +110,9 @@ TEST(Outputs, OrientationsAndAngularVelocitiesWhenAskedFor) {
   test::write_file(dir / "gas.toml", test::granular_gas_case(dir));
   for (const bool on : {true, false}) {
     const std::string out = dir / (on ? "on" : "off");
-    const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "gas.toml") + " --out " + out +
-                                     " --set integrator.end_time=5e-4 --set output.vtk=true --set output.orientations=" +
-                                     (on ? "true" : "false"));
+    const auto r = test::run_command(
+        std::string(SWARF_BINARY) + " run " + (dir / "gas.toml") + " --out " + out +
+        " --set integrator.end_time=5e-4 --set output.vtk=true --set output.orientations=" + (on ? "true" : "false"));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     H5File h5(out + "/results.h5", H5File::Mode::Read);
     EXPECT_EQ(h5.has("/particles/orientation"), on);
@@ -147,7 +147,8 @@ TEST(Outputs, BlowUpStopsWithMessageAndNoCompleteLookingFiles) {
   // Three times the stable step, forced: the lattice explodes within a few steps.
   test::write_file(dir / "unstable.toml", kTiny);
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "unstable.toml") + " --out " +
-                                   (dir / "out") + " --set integrator.dt=3.6e-7 --set integrator.allow_unstable_dt=true");
+                                   (dir / "out") +
+                                   " --set integrator.dt=3.6e-7 --set integrator.allow_unstable_dt=true");
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("unstable"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("particle"), std::string::npos) << r.output;

@@ -85,7 +85,7 @@ TEST(ParticleDoor, AShuffledBarContinuesBitIdenticallyParticleByParticle) {
     ASSERT_TRUE(same_bits(a.particles.position[i], b.particles.position[j])) << "id " << a.particles.id[i];
     ASSERT_TRUE(same_bits(a.particles.velocity[i], b.particles.velocity[j])) << "id " << a.particles.id[i];
   }
-  EXPECT_EQ(a.rods.shift, b.rods.shift);    // rods keep their order
+  EXPECT_EQ(a.rods.shift, b.rods.shift);  // rods keep their order
   EXPECT_EQ(a.rods.intact, b.rods.intact);
   for (std::size_t g = 0; g < a.groups.size(); ++g) {  // groups follow their particles
     ASSERT_EQ(a.groups[g].members.size(), b.groups[g].members.size());
@@ -182,8 +182,10 @@ class MemoryArchive final : public StateArchive {
  private:
   template <class T>
   void io(T& stored, T& v) {
-    if (loading_) v = stored;
-    else stored = v;
+    if (loading_)
+      v = stored;
+    else
+      stored = v;
   }
   bool loading_ = false;
   std::map<std::string, std::vector<double>> d_;

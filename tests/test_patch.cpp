@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "setup/case_config.h"
-#include "swarf/core/errors.h"
 #include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
@@ -40,8 +40,10 @@ PatchResult deform(const Eigen::Matrix3d& F) {
   for (std::size_t i = 0; i < m.particles.size(); ++i) {
     const int rods = m.rods.row_start[i + 1] - m.rods.row_start[i];
     const double f = m.particles.force[i].norm();
-    if (rods == 12) out.max_interior_force = std::max(out.max_interior_force, f);
-    else out.max_surface_force = std::max(out.max_surface_force, f);
+    if (rods == 12)
+      out.max_interior_force = std::max(out.max_interior_force, f);
+    else
+      out.max_surface_force = std::max(out.max_surface_force, f);
   }
   out.energy = sim.elastic_energy();
   return out;

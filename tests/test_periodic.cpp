@@ -1,22 +1,22 @@
 // Periodic width (y): the lattice is bonded across the boundary, contacts see the nearest
 // image, and a block pushed by a tool carries the load through the wrapped rods exactly as
 // the closed form of a laterally confined lattice says.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 
+#include "io/h5file.h"
+#include "push_case.h"
+#include "setup/model.h"
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/errors.h"
-#include "io/h5file.h"
-#include "setup/model.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
-#include "push_case.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -37,7 +37,8 @@ radius = 1e-4
 periodic_width = true
 [integrator]
 end_time = 1e-6
-)", "periodic.toml", {});
+)",
+                             "periodic.toml", {});
   const Model m = build_model(cs);
   ASSERT_TRUE(m.periodic.on());
   const double a = m.derived.cell_edge;
@@ -135,7 +136,17 @@ TEST(Periodic, ToolPushingAPeriodicBlockMatchesTheLatticeStiffness) {
   const int nx = 4, ny = 2, nz = 3;
   const double L = ny * a;
   test::TempDir dir("periodic_push");
-  const test::PushCase pc{.nx = nx, .ny = ny, .nz = nz, .R = R, .u = u, .E_contact = E_contact, .nu = nu, .periodic = true, .guide_dofs = "z", .tool_y = 0.5 * L - 0.5 * h, .tool_width = 1.5e-3};
+  const test::PushCase pc{.nx = nx,
+                          .ny = ny,
+                          .nz = nz,
+                          .R = R,
+                          .u = u,
+                          .E_contact = E_contact,
+                          .nu = nu,
+                          .periodic = true,
+                          .guide_dofs = "z",
+                          .tool_y = 0.5 * L - 0.5 * h,
+                          .tool_width = 1.5e-3};
   test::write_file(dir / "c.toml", test::push_case_toml(pc));
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -150,7 +161,8 @@ TEST(Periodic, ToolPushingAPeriodicBlockMatchesTheLatticeStiffness) {
   auto x0 = [&](std::int64_t i) { return x[3 * i] - disp[3 * i]; };
   int n_cross = 0, n_face = 0;
   for (std::size_t b = 0; b < rows; ++b) {
-    const double xa = std::min(x0(pairs[2 * b]), x0(pairs[2 * b + 1])), xb = std::max(x0(pairs[2 * b]), x0(pairs[2 * b + 1]));
+    const double xa = std::min(x0(pairs[2 * b]), x0(pairs[2 * b + 1])),
+                 xb = std::max(x0(pairs[2 * b]), x0(pairs[2 * b + 1]));
     n_cross += xa < 0.25 * h && xb > 0.75 * h ? 1 : 0;
   }
   int n_edge = 0;  // face particles on the bottom or top z layer (one z rod fewer)
@@ -177,7 +189,8 @@ TEST(Periodic, ToolPushingAPeriodicBlockMatchesTheLatticeStiffness) {
 
 TEST(Periodic, NeedsCellsAndTwoCellsAcross) {
   EXPECT_THROW(parse_case("[workpiece]\nsize = [1e-3, 1e-3, 1e-3]\nradius = 1e-4\nperiodic_width = true\n"
-                          "[integrator]\nend_time = 1e-6\n", "p.toml", {}),
+                          "[integrator]\nend_time = 1e-6\n",
+                          "p.toml", {}),
                InputError);
   try {
     parse_case("[workpiece]\ncells = [3, 1, 3]\nradius = 1e-4\nperiodic_width = true\n[integrator]\nend_time = 1e-6\n",

@@ -1,15 +1,14 @@
 // Restart from checkpoints (bit-identical continuation), the short-cut run's progress, table
 // and summary, and 'swarf post' reproducing the run's own analysis.
-#include <gtest/gtest.h>
-
-#include <filesystem>
-#include <regex>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
+#include <gtest/gtest.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <regex>
 
 #include "io/h5file.h"
 #include "test_helpers.h"
@@ -164,8 +163,8 @@ TEST(ContactLists, ResultsDoNotDependOnTheSkin) {
   test::write_file(dir / "c.toml", honed);
   const std::string bin = SWARF_BINARY;
   for (const char* skin : {"0.2", "0.9"}) {
-    auto r = test::run_command(bin + " run " + (dir / "c.toml") + " --out " + (dir / skin) + " --set contact.skin=" + skin +
-                               " --set output.vtk=false --threads 1");
+    auto r = test::run_command(bin + " run " + (dir / "c.toml") + " --out " + (dir / skin) +
+                               " --set contact.skin=" + skin + " --set output.vtk=false --threads 1");
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   EXPECT_EQ(test::read_file(dir / "0.2/series.csv"), test::read_file(dir / "0.9/series.csv"));
@@ -203,8 +202,8 @@ TEST(ShortCut, ShowsProgressPrintsTheTableAndPostReproducesTheSummary) {
     EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
   auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
   ASSERT_TRUE(sum.contains("cutting") && sum.contains("chip")) << sum.dump(2);
-  for (const char* k : {"cutting_force_per_width_mean_N_per_m", "thrust_force_per_width_std_N_per_m", "width_m",
-                        "broken_fraction"})
+  for (const char* k :
+       {"cutting_force_per_width_mean_N_per_m", "thrust_force_per_width_std_N_per_m", "width_m", "broken_fraction"})
     EXPECT_TRUE(sum["cutting"].contains(k)) << k;
   for (const char* k : {"depth_of_cut_m", "friction_angle_deg", "merchant_shear_angle_deg", "chip_particles"})
     EXPECT_TRUE(sum["chip"].contains(k)) << k;

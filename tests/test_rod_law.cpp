@@ -44,16 +44,19 @@ TEST(RodLaw, LoopWithTwoReversalsAndFailure) {
   // kinematic hardening the return map is exact for any monotone increment, so large
   // increments give the same points as a fine path.
   const RodLaw law = steel();
-  struct Point { double strain, stress, shift; bool broken; };
+  struct Point {
+    double strain, stress, shift;
+    bool broken;
+  };
   const Point pts[] = {
-      {0.001, 200e6, 0.0, false},      // trial 200e6 = upper band 20e9*0.001 + 180e6: first yield, elastic
-      {0.004, 260e6, 0.003, false},    // trial 800e6 > 80e6 + 180e6: hardening; eps0 = 540e6/180e9
-      {0.002, -140e6, 0.003, false},   // unloading: 60e6 + 200e9*(-0.001) = -140e6 = lower band (260 - 2*200)
-      {0.001, -160e6, 0.002, false},   // trial -340e6 < 20e6 - 180e6: reverse flow; eps0 = 360e6/180e9
-      {-0.004, -260e6, -0.003, false}, // trial -1160e6 < -80e6 - 180e6; eps0 = -540e6/180e9
-      {0.0, 180e6, -0.001, false},     // second reversal: trial 540e6 > 0 + 180e6; eps0 = -180e6/180e9
-      {0.005, 280e6, 0.004, false},    // trial 1180e6 > 100e6 + 180e6; eps0 = 720e6/180e9
-      {0.007, 320e6, 0.006, true},     // upper band 140e6 + 180e6 = 320e6 > 300e6: breaks; eps0 = 1080e6/180e9
+      {0.001, 200e6, 0.0, false},       // trial 200e6 = upper band 20e9*0.001 + 180e6: first yield, elastic
+      {0.004, 260e6, 0.003, false},     // trial 800e6 > 80e6 + 180e6: hardening; eps0 = 540e6/180e9
+      {0.002, -140e6, 0.003, false},    // unloading: 60e6 + 200e9*(-0.001) = -140e6 = lower band (260 - 2*200)
+      {0.001, -160e6, 0.002, false},    // trial -340e6 < 20e6 - 180e6: reverse flow; eps0 = 360e6/180e9
+      {-0.004, -260e6, -0.003, false},  // trial -1160e6 < -80e6 - 180e6; eps0 = -540e6/180e9
+      {0.0, 180e6, -0.001, false},      // second reversal: trial 540e6 > 0 + 180e6; eps0 = -180e6/180e9
+      {0.005, 280e6, 0.004, false},     // trial 1180e6 > 100e6 + 180e6; eps0 = 720e6/180e9
+      {0.007, 320e6, 0.006, true},      // upper band 140e6 + 180e6 = 320e6 > 300e6: breaks; eps0 = 1080e6/180e9
   };
   double shift = 0.0;
   for (int n = 0; n < 8; ++n) {
@@ -149,8 +152,9 @@ TEST(RodDriver, ReproducesClosedFormLoopIncludingFailure) {
 }
 
 TEST(RodDriver, CliWritesCsv) {
-  const auto r = test::run_command(std::string(SWARF_BINARY) +
-                                   " rod --E 200e9 --yield-strain 1e-3 --hardening 20e9 --path 0,0.004,-0.004 --steps 4");
+  const auto r = test::run_command(
+      std::string(SWARF_BINARY) +
+      " rod --E 200e9 --yield-strain 1e-3 --hardening 20e9 --path 0,0.004,-0.004 --steps 4");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::istringstream in(r.output);
   std::string line;

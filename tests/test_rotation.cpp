@@ -43,7 +43,7 @@ struct Drift {
 // Largest relative drift of energy and |L| (world) and of |q| - 1 over a time T.
 Drift free_spin(double h, double T, const RotationSettings& rs) {
   RotState s;
-  s.w = Vec3(0.4, 0.05, 1.1);  // rad/s, mostly about the major axis
+  s.w = Vec3(0.4, 0.05, 1.1);                        // rad/s, mostly about the major axis
   s.dw = euler_acceleration(Vec3::Zero(), s.w, kI);  // a consistent start (gyroscopic acceleration)
   const double e0 = rotational_energy(s, kI);
   const Vec3 l0 = angular_momentum_world(s, kI);
@@ -140,8 +140,8 @@ TEST(Rotation, SimulationStageSpinsParticles) {
       Model m = build_model(parse_case(std::string("[[particle]]\nposition = [0.0, 0.0, 0.0]\nradius = 0.5e-3\n"
                                                    "[[particle]]\nposition = [0.01, 0.0, 0.0]\nradius = 0.5e-3\n"
                                                    "[contact]\n[output]\norientations = ") +
-                                           (orientations ? "true" : "false") + "\n[integrator]\nend_time = 1\nscheme = \"" +
-                                           scheme + "\"\n",
+                                           (orientations ? "true" : "false") +
+                                           "\n[integrator]\nend_time = 1\nscheme = \"" + scheme + "\"\n",
                                        "spin", {}));
       for (auto& w : m.particles.omega) w = Vec3(0, 0, 100.0);
       Simulation sim(m, m.step);

@@ -1,16 +1,16 @@
 // test_sweep.cpp: parameter studies: study-file expansion and errors, case states and
 // resuming, the report's fits on synthetic summaries, and end-to-end sweeps of a tiny bar
 // with --jobs 2 and (test sweep_mpi_two_ranks) with mpirun -n 2.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "swarf/core/errors.h"
 #include "study/report.h"
 #include "study/study_table.h"
 #include "study/sweep.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -69,8 +69,8 @@ integrator.scheme = "newmark"
                               "study.toml", "/x");
   EXPECT_EQ(s.base_path, "/abs/case.toml");
   ASSERT_EQ(s.cases.size(), 12u);
-  EXPECT_EQ(s.parameters, (std::vector<std::string>{"integrator.scheme", "mesh.0.origin", "rod.damping_ratio",
-                                                    "workpiece.seed"}));
+  EXPECT_EQ(s.parameters,
+            (std::vector<std::string>{"integrator.scheme", "mesh.0.origin", "rod.damping_ratio", "workpiece.seed"}));
   EXPECT_EQ(s.cases[0].values.at("mesh.0.origin"), "[-0.0003, 0.00035, 0.0022]");
   EXPECT_EQ(s.cases[0].values.count("integrator.scheme"), 0u);
   EXPECT_EQ(s.cases[0].values.at("workpiece.seed"), "7");
@@ -135,7 +135,8 @@ void write_summary(const std::string& out, const Study& s, const StudyCase& c, c
 TEST(Resume, CaseStatesAndChangedStudies) {
   test::TempDir dir("sweep_resume");
   const std::string out = dir / "out";
-  const std::string text = "base = \"c.toml\"\n[set]\noutput.vtk = false\n[grid]\nrod.damping_ratio = [0.1, 0.2, 0.3, 0.4]\n";
+  const std::string
+      text = "base = \"c.toml\"\n[set]\noutput.vtk = false\n[grid]\nrod.damping_ratio = [0.1, 0.2, 0.3, 0.4]\n";
   Study s = parse_study(text, "study.toml", dir.str());
   s.base_hash = "0123456789abcdef";
   write_study_json(s, out);
@@ -170,7 +171,8 @@ TEST(Resume, CaseStatesAndChangedStudies) {
   };
   // Same study: same ids. A new value: a new case numbered after the others, even when listed first.
   EXPECT_EQ(reconciled(text).cases[3].id, "0003");
-  const Study grown = reconciled("base = \"c.toml\"\n[set]\noutput.vtk = false\n[grid]\nrod.damping_ratio = [0.05, 0.1, 0.2, 0.3, 0.4]\n");
+  const Study grown = reconciled(
+      "base = \"c.toml\"\n[set]\noutput.vtk = false\n[grid]\nrod.damping_ratio = [0.05, 0.1, 0.2, 0.3, 0.4]\n");
   ASSERT_EQ(grown.cases.size(), 5u);
   EXPECT_EQ(grown.cases[0].values.at("rod.damping_ratio"), "0.1");
   EXPECT_EQ(grown.cases[4].id, "0004");
@@ -188,8 +190,9 @@ TEST(Resume, CaseStatesAndChangedStudies) {
                 .find("rod.hardening_modulus is newly varied"),
             std::string::npos);
   // Removing only unfinished cases is allowed.
-  EXPECT_EQ(reconciled("base = \"c.toml\"\n[set]\noutput.vtk = false\n[grid]\nrod.damping_ratio = [0.1, 0.4]\n").cases[1].id,
-            "0003");
+  EXPECT_EQ(
+      reconciled("base = \"c.toml\"\n[set]\noutput.vtk = false\n[grid]\nrod.damping_ratio = [0.1, 0.4]\n").cases[1].id,
+      "0003");
 }
 
 TEST(StudyTable, UnitsFromKeySuffixes) {
@@ -235,9 +238,12 @@ mesh.0.origin = "m"
     const double beta = 10.0 - amb[k];  // rake 10 deg
     nlohmann::json j;
     j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 2e8 * depth[k] + 3e4},
-                    {"thrust_force_per_width_mean_N_per_m", ft[k]}, {"tool_mesh", "tool"}};
-    j["chip"] = {{"depth_of_cut_m", depth[k]}, {"friction_angle_deg", beta},
-                 {"merchant_shear_angle_deg", 45.0 + 0.5 * amb[k]}, {"shear_angle_deg", 45.0 + 0.5 * amb[k]}};
+                    {"thrust_force_per_width_mean_N_per_m", ft[k]},
+                    {"tool_mesh", "tool"}};
+    j["chip"] = {{"depth_of_cut_m", depth[k]},
+                 {"friction_angle_deg", beta},
+                 {"merchant_shear_angle_deg", 45.0 + 0.5 * amb[k]},
+                 {"shear_angle_deg", 45.0 + 0.5 * amb[k]}};
     j["results"] = {{"broken_fraction", 0.01 * k}};
     write_summary(out, s, s.cases[k], j);
   }
@@ -301,11 +307,13 @@ TEST(Sweep, JobsTwoFailureResumeRefusalAndReport) {
   const std::string out = dir / "out";
   auto r = test::run_command(sweep_cmd(dir / "study.toml", out));
   ASSERT_EQ(r.exit_code, 1) << r.output;  // two cases failed
-  EXPECT_NE(r.output.find("6 cases, 0 finished earlier, 6 to run; 2 at once x 1 thread(s)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("6 cases, 0 finished earlier, 6 to run; 2 at once x 1 thread(s)"), std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("FAILED"), std::string::npos);
   EXPECT_NE(r.output.find("ETA"), std::string::npos);
   const std::string csv = test::read_file(out + "/study.csv");
-  EXPECT_EQ(csv.rfind("case,integrator.dt,rod.damping_ratio,rod.hardening_modulus,status,results.broken_fraction,", 0), 0u)
+  EXPECT_EQ(csv.rfind("case,integrator.dt,rod.damping_ratio,rod.hardening_modulus,status,results.broken_fraction,", 0),
+            0u)
       << csv;
   EXPECT_NE(csv.find("\n-,s,1,Pa,-,1,"), std::string::npos);
   EXPECT_NE(csv.find("\n0000,,0.1,1e+10,completed,0,"), std::string::npos) << csv;

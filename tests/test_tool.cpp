@@ -5,13 +5,13 @@
 #include <cmath>
 #include <map>
 
+#include "io/mesh_file.h"
+#include "io/vtk_output.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "test_helpers.h"
 #include "tool_paths/tool_geometry.h"
-#include "setup/case_config.h"
-#include "setup/model.h"
-#include "io/mesh_file.h"
-#include "io/vtk_output.h"
 
 namespace swarf {
 namespace {
@@ -41,8 +41,7 @@ TEST(Tool, MeshIsClosedAndOutwardOriented) {
     }
     // Outward normals give a positive volume equal to the profile area times the width.
     double vol = 0;
-    for (const auto& t : m.triangles)
-      vol += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]])) / 6.0;
+    for (const auto& t : m.triangles) vol += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]])) / 6.0;
     const auto prof = tool_profile(spec(10, 7, r));
     double area = 0;
     for (std::size_t k = 0; k < prof.size(); ++k) {
@@ -95,9 +94,9 @@ TEST(Tool, EdgeArcHasTheRadiusAndIsTangent) {
 }
 
 TEST(Tool, BadSpecsAreRejected) {
-  EXPECT_THROW(make_tool(spec(50, 45, 0)), InputError);    // no wedge left
-  EXPECT_THROW(make_tool(spec(10, -1, 0)), InputError);    // negative clearance
-  EXPECT_THROW(make_tool(spec(10, 7, -1e-5)), InputError); // negative radius
+  EXPECT_THROW(make_tool(spec(50, 45, 0)), InputError);      // no wedge left
+  EXPECT_THROW(make_tool(spec(10, -1, 0)), InputError);      // negative clearance
+  EXPECT_THROW(make_tool(spec(10, 7, -1e-5)), InputError);   // negative radius
   EXPECT_THROW(make_tool(spec(10, 7, 1.5e-3)), InputError);  // radius too large for the faces
 }
 
@@ -105,7 +104,8 @@ TEST(Tool, CliWritesStlAndVtp) {
   test::TempDir dir("tool");
   const auto r = test::run_command(std::string(SWARF_BINARY) +
                                    " tool --rake-angle 10 --clearance-angle 7 --edge-radius 2e-5 --width 5e-3 "
-                                   "--face-length 2e-3 --out " + (dir / "t.stl") + " --vtp " + (dir / "t.vtp"));
+                                   "--face-length 2e-3 --out " +
+                                   (dir / "t.stl") + " --vtp " + (dir / "t.vtp"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const TriangleMesh m = read_mesh(dir / "t.stl");
   EXPECT_GT(m.triangles.size(), 40u);
@@ -141,7 +141,8 @@ name = "tool"
   for (const auto& v : m.meshes[0].mesh.vertices) zmin = std::min(zmin, v[2]);
   EXPECT_NEAR(zmin, 1e-3, 1e-15);
   try {
-    build_model(parse_case(base + "clearance_angle = 5.0\nedge1 = [1.0, 0.0, 0.0]\nedge2 = [0.0, 1.0, 0.0]\n", "cut", {}));
+    build_model(
+        parse_case(base + "clearance_angle = 5.0\nedge1 = [1.0, 0.0, 0.0]\nedge2 = [0.0, 1.0, 0.0]\n", "cut", {}));
     ADD_FAILURE() << "a tool key without rake_angle was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("mesh.clearance_angle"), std::string::npos) << e.what();

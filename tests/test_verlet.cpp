@@ -1,12 +1,12 @@
 // test_verlet.cpp: velocity Verlet against its own discrete recurrence (two particles on a
 // rod), second-order convergence, and energy conservation of an undamped vibrating bar.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
 
-#include "setup/case_config.h"
 #include "lattice_gen/lattice_file.h"
+#include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
 #include "test_helpers.h"
@@ -25,7 +25,8 @@ Model two_particles(const test::TempDir& dir, double dt) {
   lat.rest_length = {2 * kRadius};
   write_lattice(dir / "two.h5", lat);
   const std::string toml = "[workpiece]\nlattice_file = \"" + (dir / "two.h5") +
-                           "\"\n[rod]\nyoungs_modulus = 200e9\n[integrator]\nend_time = 1\ndt = " + fmt::format("{:.17g}", dt) + "\n";
+                           "\"\n[rod]\nyoungs_modulus = 200e9\n[integrator]\nend_time = 1\ndt = " +
+                           fmt::format("{:.17g}", dt) + "\n";
   return build_model(parse_case(toml, "two", {}));
 }
 

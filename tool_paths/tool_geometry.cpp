@@ -1,9 +1,10 @@
 // tool_geometry.cpp: tool profile and extrusion (see tool_geometry.h).
 #include "tool_paths/tool_geometry.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "swarf/core/errors.h"
 
@@ -35,8 +36,8 @@ std::vector<Eigen::Vector2d> tool_profile(const ToolSpec& s) {
     const V2 c = s.edge_radius / std::sin(0.5 * wedge) * bis;
     const V2 tf = c.dot(df) * df, tr = c.dot(dr) * dr;  // tangent points
     if (!(c.dot(df) < 0.5 * s.face_length))
-      throw InputError(fmt::format("tool: edge radius {} m is too large for the face length {} m", s.edge_radius,
-                                   s.face_length));
+      throw InputError(
+          fmt::format("tool: edge radius {} m is too large for the face length {} m", s.edge_radius, s.face_length));
     // Arc from the flank tangent point to the rake tangent point, the way that passes the
     // tip (the arc point farthest out along -bis).
     auto wrap = [](double x) { return x - 2 * M_PI * std::floor(x / (2 * M_PI)); };  // into [0, 2 pi)

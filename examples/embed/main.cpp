@@ -30,18 +30,18 @@ using swarf::Vec3;
 
 // The block: 8 x 3 x 4 conventional FCC cells of spheres of radius R. The numbers are the
 // steel of swarf's default cut, at a coarse resolution so that the example runs in seconds.
-constexpr double kRadius = 0.25e-3;       // m
-constexpr int kCells[3] = {8, 3, 4};      // conventional cells along x, y, z
-constexpr double kDensity = 7850.0;       // kg/m^3
-constexpr double kYoungs = 200e9;         // Pa, of the rods (the lattice's own modulus along [100] is 4 kb/(3a))
-constexpr double kDampingRatio = 0.1;     // 1, of critical damping of one rod between two particles
-constexpr double kToolSpeed = 2.0;        // m/s, along -x
-constexpr double kTravel = 0.5e-3;        // m, the tool's path once it touches (one particle diameter)
+constexpr double kRadius = 0.25e-3;    // m
+constexpr int kCells[3] = {8, 3, 4};   // conventional cells along x, y, z
+constexpr double kDensity = 7850.0;    // kg/m^3
+constexpr double kYoungs = 200e9;      // Pa, of the rods (the lattice's own modulus along [100] is 4 kb/(3a))
+constexpr double kDampingRatio = 0.1;  // 1, of critical damping of one rod between two particles
+constexpr double kToolSpeed = 2.0;     // m/s, along -x
+constexpr double kTravel = 0.5e-3;     // m, the tool's path once it touches (one particle diameter)
 
 // Everything the tool and the clamp need to know about the block.
 struct Block {
-  double layer = 0;   // m: spacing of lattice layers along a cube axis, a/2
-  Vec3 top = Vec3::Zero();  // m: the largest x, y, z of the particle centres
+  double layer = 0;                             // m: spacing of lattice layers along a cube axis, a/2
+  Vec3 top = Vec3::Zero();                      // m: the largest x, y, z of the particle centres
   double particle_mass = 0, rod_stiffness = 0;  // kg, N/m
 };
 
@@ -89,7 +89,7 @@ Block add_fcc_block(swarf::World& w) {
   // Damping as a fraction of critical for two particles and one rod, c = 2 zeta sqrt(kb m/2),
   // written as the rod's viscosity eta = c L0 / A: it calms the ringing the cut starts.
   r.law.viscosity = kDampingRatio * 2.0 * std::sqrt(b.rod_stiffness * b.particle_mass / 2.0) * d / r.area;
-  r.reset_state();               // every rod intact, no plastic shift
+  r.reset_state();  // every rod intact, no plastic shift
   r.build_rows(p.size());
   return b;
 }
@@ -117,18 +117,22 @@ void clamp_base(swarf::World& w, const Block& b) {
 // clears the rest. It starts just clear of the block's +x face and moves along -x.
 double add_tool(swarf::World& w, const Block& b) {
   const double rake = 10.0 * M_PI / 180.0, clearance = 7.0 * M_PI / 180.0;  // rad
-  const double face = 1.5e-3;                                              // m, length of each face
-  const double x0 = b.top.x() + 1.05 * kRadius;                            // m, a twentieth of R clear
-  const double z0 = b.top.z() - 2.0 * b.layer + kRadius;                   // m, the edge's height
-  const double y0 = -b.layer, y1 = b.top.y() + b.layer;                    // m, wider than the block
+  const double face = 1.5e-3;                                               // m, length of each face
+  const double x0 = b.top.x() + 1.05 * kRadius;                             // m, a twentieth of R clear
+  const double z0 = b.top.z() - 2.0 * b.layer + kRadius;                    // m, the edge's height
+  const double y0 = -b.layer, y1 = b.top.y() + b.layer;                     // m, wider than the block
   swarf::MeshBody tool;
   tool.name = "tool";
   auto& m = tool.mesh;
   m.name = "tool";
   const Vec3 rake_up(face * std::sin(rake), 0.0, face * std::cos(rake));
   const Vec3 flank_back(face * std::cos(clearance), 0.0, face * std::sin(clearance));
-  m.vertices = {{x0, y0, z0}, {x0, y1, z0}, Vec3(x0, y0, z0) + rake_up, Vec3(x0, y1, z0) + rake_up,
-                Vec3(x0, y0, z0) + flank_back, Vec3(x0, y1, z0) + flank_back};
+  m.vertices = {{x0, y0, z0},
+                {x0, y1, z0},
+                Vec3(x0, y0, z0) + rake_up,
+                Vec3(x0, y1, z0) + rake_up,
+                Vec3(x0, y0, z0) + flank_back,
+                Vec3(x0, y1, z0) + flank_back};
   // Counterclockwise seen from outside (the side the block is on), as mesh.h asks.
   m.triangles = {{0, 3, 1}, {0, 2, 3}, {0, 1, 5}, {0, 5, 4}};
   m.validate("examples/embed tool");
@@ -210,9 +214,9 @@ int run() {
   const double end_time = (gap + kTravel) / kToolSpeed;  // s
   const long rows = 20, steps_per_row = static_cast<long>(std::ceil(end_time / settings.dt / rows));
   const long steps = rows * steps_per_row;
-  std::printf("swarf %s: %zu particles, %zu rods, %zu clamped; dt = %.4g s (stable %.4g s), %ld steps\n",
-              SWARF_VERSION, world.particles.size(), world.rods.size(), world.groups[0].members.size(),
-              settings.dt, std::min(dt_rods, 0.2 * rayleigh), steps);
+  std::printf("swarf %s: %zu particles, %zu rods, %zu clamped; dt = %.4g s (stable %.4g s), %ld steps\n", SWARF_VERSION,
+              world.particles.size(), world.rods.size(), world.groups[0].members.size(), settings.dt,
+              std::min(dt_rods, 0.2 * rayleigh), steps);
   // Each row: the mean forces over the interval since the previous row (impulse / time),
   // which the step-to-step noise of a cut does not blur.
   std::printf("time_s,tool_travel_m,tool_force_x_N,tool_force_z_N,clamp_reaction_x_N,clamp_reaction_z_N,broken_rods\n");
@@ -223,8 +227,8 @@ int run() {
     if (s % steps_per_row != 0) continue;
     const double span = sim.time() - t_before;
     const Vec3 f = (impulses.tool - tool_before) / span, r = (impulses.clamp - clamp_before) / span;
-    std::printf("%.4e,%.4e,%.2f,%.2f,%.2f,%.2f,%zu\n", sim.time(), -world.meshes[0].offset.x(), f.x(), f.z(),
-                r.x(), r.z(), sim.broken_rods());
+    std::printf("%.4e,%.4e,%.2f,%.2f,%.2f,%.2f,%zu\n", sim.time(), -world.meshes[0].offset.x(), f.x(), f.z(), r.x(),
+                r.z(), sim.broken_rods());
     tool_before = impulses.tool;
     clamp_before = impulses.clamp;
     t_before = sim.time();
@@ -253,16 +257,20 @@ int run() {
   std::printf("\nover %.4g s: mean tool force (%.2f, %.2f, %.2f) N, mean clamp reaction (%.2f, %.2f, %.2f) N\n", T,
               impulses.tool.x() / T, impulses.tool.y() / T, impulses.tool.z() / T, impulses.clamp.x() / T,
               impulses.clamp.y() / T, impulses.clamp.z() / T);
-  std::printf("momentum change of the free particles %.4g N s; clamp - tool impulse %.4g N s; "
-              "|difference| / |tool impulse| = %.3g (tolerance %.0e)\n",
-              dp.norm(), external.norm(), newton_error, newton_tolerance);
-  std::printf("|mean reaction - mean tool force| = %.4g N = %.3g %% of the tool force; "
-              "bound (free mass %.4g kg x tool speed) / time = %.4g N\n",
-              imbalance / T, 100.0 * imbalance / impulses.tool.norm(), free_mass, bound / T);
+  std::printf(
+      "momentum change of the free particles %.4g N s; clamp - tool impulse %.4g N s; "
+      "|difference| / |tool impulse| = %.3g (tolerance %.0e)\n",
+      dp.norm(), external.norm(), newton_error, newton_tolerance);
+  std::printf(
+      "|mean reaction - mean tool force| = %.4g N = %.3g %% of the tool force; "
+      "bound (free mass %.4g kg x tool speed) / time = %.4g N\n",
+      imbalance / T, 100.0 * imbalance / impulses.tool.norm(), free_mass, bound / T);
   bool ok = true;
   if (!(impulses.tool.norm() > bound)) {
-    std::fprintf(stderr, "embed: FAILED: the tool's impulse %.4g N s is not above the momentum bound %.4g N s: "
-                 "did it touch the block?\n", impulses.tool.norm(), bound);
+    std::fprintf(stderr,
+                 "embed: FAILED: the tool's impulse %.4g N s is not above the momentum bound %.4g N s: "
+                 "did it touch the block?\n",
+                 impulses.tool.norm(), bound);
     ok = false;
   }
   if (!(newton_error <= newton_tolerance)) {
@@ -271,8 +279,10 @@ int run() {
     ok = false;
   }
   if (!(imbalance <= bound)) {
-    std::fprintf(stderr, "embed: FAILED: clamp and tool impulses differ by %.4g N s, above the quasi-static bound "
-                 "%.4g N s\n", imbalance, bound);
+    std::fprintf(stderr,
+                 "embed: FAILED: clamp and tool impulses differ by %.4g N s, above the quasi-static bound "
+                 "%.4g N s\n",
+                 imbalance, bound);
     ok = false;
   }
   std::printf("%s\n", ok ? "embed: checks passed" : "embed: checks FAILED");

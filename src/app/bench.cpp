@@ -2,16 +2,17 @@
 // building and the initial force evaluation are not.
 #include "app/bench.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 
-#include "setup/case_config.h"
-#include "swarf/core/errors.h"
-#include "setup/model.h"
 #include "app/run.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
@@ -32,8 +33,9 @@ std::string stage_row(const std::string& scene, int threads, const StageClock& c
 }  // namespace
 
 void run_bench(const BenchOptions& opt) {
-  fmt::print("| scene | scheme | particles | rods | steps | force evaluations | threads | median s (min-max) | "
-             "ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
+  fmt::print(
+      "| scene | scheme | particles | rods | steps | force evaluations | threads | median s (min-max) | "
+      "ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
   fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::fflush(stdout);
   std::vector<std::string> stage_rows;
@@ -73,8 +75,8 @@ void run_bench(const BenchOptions& opt) {
       }
       std::sort(secs.begin(), secs.end());
       const double med = secs[secs.size() / 2];
-      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n", scene,
-                 implicit ? "newmark" : "verlet", np, nr, n, evals, used, med, secs.front(), secs.back(),
+      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n",
+                 scene, implicit ? "newmark" : "verlet", np, nr, n, evals, used, med, secs.front(), secs.back(),
                  med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke);
       if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n), builds));
       std::fflush(stdout);

@@ -1,25 +1,26 @@
 // main.cpp: the 'swarf' command line: lattice, rod, run, post, tool, bench, sweep, report, case keys.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <sstream>
 
 #include "app/bench.h"
-#include "swarf/version.h"
-#include "setup/case_config.h"
-#include "setup/case_keys_doc.h"
-#include "swarf/core/errors.h"
+#include "app/post.h"
+#include "app/rod_driver.h"
+#include "app/run.h"
+#include "io/mesh_file.h"
+#include "io/vtk_output.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
-#include "swarf/state/mesh.h"
-#include "io/mesh_file.h"
-#include "app/rod_driver.h"
-#include "tool_paths/tool_geometry.h"
-#include "io/vtk_output.h"
-#include "app/post.h"
-#include "app/run.h"
+#include "setup/case_config.h"
+#include "setup/case_keys_doc.h"
 #include "study/report.h"
 #include "study/sweep.h"
+#include "swarf/core/errors.h"
+#include "swarf/state/mesh.h"
+#include "swarf/version.h"
+#include "tool_paths/tool_geometry.h"
 
 namespace {
 
@@ -76,9 +77,11 @@ int main(int argc, char** argv) {
   swarf::RunOptions ro;
   run->add_option("case", ro.case_path, "Case file (TOML); see docs/case-reference.md");
   run->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
-  run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")->allow_extra_args(false);
+  run->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")
+      ->allow_extra_args(false);
   run->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
-  run->add_option("--restart", ro.restart, "Continue from a checkpoint (DIR/checkpoint.h5, written every "
+  run->add_option("--restart", ro.restart,
+                  "Continue from a checkpoint (DIR/checkpoint.h5, written every "
                   "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");
 
   // swarf post
@@ -116,7 +119,8 @@ int main(int argc, char** argv) {
   sweep->add_option("--out", so.out_dir, "Study directory: cases/, study.csv, plots/ (re-run to resume)")->required();
   sweep->add_option("--jobs", so.jobs, "Cases run at once (per MPI rank; default 1)");
   sweep->add_option("--threads", so.threads, "Threads per case (default max(1, cores / (jobs x ranks on the machine)))");
-  sweep->add_flag("--list", so.list_only, "Check the study and list its cases (id, state, --set overrides); run nothing");
+  sweep->add_flag("--list", so.list_only,
+                  "Check the study and list its cases (id, state, --set overrides); run nothing");
 
   // swarf report
   auto* report = app.add_subcommand("report", "Write DIR/report.md for a study directory of 'swarf sweep'");
@@ -177,7 +181,8 @@ int main(int argc, char** argv) {
     } else if (*bench) {
       bo.threads.clear();
       for (double t : parse_list(threads_s, "--threads")) {
-        if (t < 1 || t != std::floor(t)) throw swarf::InputError("--threads: '" + threads_s + "' must be positive integers");
+        if (t < 1 || t != std::floor(t))
+          throw swarf::InputError("--threads: '" + threads_s + "' must be positive integers");
         bo.threads.push_back(static_cast<int>(t));
       }
       swarf::run_bench(bo);

@@ -2,11 +2,12 @@
 // of a plotting library; the script only draws columns that swarf computed.
 #include "app/plots.h"
 
+#include <fmt/format.h>
+#include <sys/wait.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
-#include <sys/wait.h>
 
 namespace swarf {
 

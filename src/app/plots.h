@@ -8,8 +8,8 @@ namespace swarf {
 
 struct PlotResult {
   bool ok = false;
-  std::string message;               ///< why it failed
-  std::vector<std::string> files;    ///< PNG files written (relative to the run directory)
+  std::string message;             ///< why it failed
+  std::vector<std::string> files;  ///< PNG files written (relative to the run directory)
 };
 
 /// Runs the plot script on DIR/series.csv with the given summary file.
@@ -17,8 +17,8 @@ PlotResult make_plots(const std::string& dir, const std::string& summary_path);
 
 /// Result of running one of postprocess/'s Python scripts.
 struct ScriptRun {
-  bool ok = false;       ///< started and exited with status 0
-  std::string output;    ///< stdout and stderr together (or why it could not start)
+  bool ok = false;     ///< started and exited with status 0
+  std::string output;  ///< stdout and stderr together (or why it could not start)
 };
 
 /// Runs postprocess/NAME (the build tree's folder, or $SWARF_POSTPROCESS_DIR) with

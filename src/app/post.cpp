@@ -1,19 +1,20 @@
 // post.cpp: end-of-cut outputs and 'swarf post DIR' (see post.h).
 #include "app/post.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 
+#include "app/plots.h"
 #include "io/atomic_file.h"
-#include "swarf/core/errors.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
-#include "postprocess/chip_surface.h"
-#include "app/plots.h"
 #include "io/vtk_output.h"
+#include "postprocess/chip_surface.h"
+#include "swarf/core/errors.h"
 
 namespace swarf {
 namespace {
@@ -85,8 +86,8 @@ std::string render_picture(const std::string& dir, std::string& message) {
   return out;
 }
 
-void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum,
-                VtkSeries* vtk, bool pictures) {
+void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
+                bool pictures) {
   const CutResult res = analyze_cut(setup, data);
   sum["cutting"] = res.cutting;
   sum["chip"] = res.chip;
@@ -135,8 +136,10 @@ void post_run(const std::string& dir) {
   namespace fs = std::filesystem;
   const std::string summary_path = dir + "/summary.json";
   if (!fs::exists(summary_path))
-    throw InputError(fmt::format("post: '{}' does not exist: the run in '{}' did not finish (or this is not a run "
-                                 "directory)", summary_path, dir));
+    throw InputError(
+        fmt::format("post: '{}' does not exist: the run in '{}' did not finish (or this is not a run "
+                    "directory)",
+                    summary_path, dir));
   nlohmann::json sum;
   try {
     std::ifstream in(summary_path);
@@ -149,8 +152,10 @@ void post_run(const std::string& dir) {
   H5File f(dir + "/results.h5", H5File::Mode::Read);
   CutSetup setup;
   if (!read_cut_setup(f, setup))
-    throw InputError(fmt::format("post: '{}/results.h5' has no /cutting setup: the run had no tool mesh "
-                                 "(a [[mesh]] with rake_angle) and a workpiece", dir));
+    throw InputError(
+        fmt::format("post: '{}/results.h5' has no /cutting setup: the run had no tool mesh "
+                    "(a [[mesh]] with rake_angle) and a workpiece",
+                    dir));
   CutData data;
   const auto cols = read_columns(dir + "/series.csv", {"time", "cutting_force_per_width", "thrust_force_per_width"});
   data.time = cols[0];

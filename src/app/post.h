@@ -15,8 +15,8 @@ class VtkSeries;
 /// Analyses the cut into sum["cutting"] and sum["chip"], writes the chip surface (listed in the
 /// ParaView series when 'vtk' is given) and, if 'pictures', renders DIR/chip.png; prints the
 /// result table.
-void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum,
-                VtkSeries* vtk, bool pictures);
+void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
+                bool pictures);
 
 /// Renders DIR/chip.png headless (xvfb-run + VTK); returns the file or an empty string with
 /// 'message' set.

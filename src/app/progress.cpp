@@ -1,15 +1,19 @@
 // progress.cpp: the progress line (see progress.h).
 #include "app/progress.h"
 
-#include <cstdio>
 #include <fmt/format.h>
 #include <unistd.h>
+
+#include <cstdio>
 
 namespace swarf {
 
 Progress::Progress(bool enabled, double end_time)
-    : enabled_(enabled), tty_(isatty(STDERR_FILENO)), end_time_(end_time),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+    : enabled_(enabled),
+      tty_(isatty(STDERR_FILENO)),
+      end_time_(end_time),
+      start_(std::chrono::steady_clock::now()),
+      last_(start_) {}
 
 double Progress::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -25,10 +29,12 @@ void Progress::print(double time, long long steps, bool final) {
   const double frac = end_time_ > 0 ? time / end_time_ : 1.0;
   const double el = elapsed();
   const double eta = frac > 0 ? el * (1.0 - frac) / frac : -1.0;
-  const std::string line = fmt::format("[{:5.1f}%] t = {:.4e} s of {:.4e} s, step {}, elapsed {}, ETA {}",
-                                       100.0 * frac, time, end_time_, steps, hms(el), final ? hms(0) : hms(eta));
-  if (tty_) fmt::print(stderr, "\r{}{}", line, final ? "\n" : "");
-  else fmt::print(stderr, "{}\n", line);
+  const std::string line = fmt::format("[{:5.1f}%] t = {:.4e} s of {:.4e} s, step {}, elapsed {}, ETA {}", 100.0 * frac,
+                                       time, end_time_, steps, hms(el), final ? hms(0) : hms(eta));
+  if (tty_)
+    fmt::print(stderr, "\r{}{}", line, final ? "\n" : "");
+  else
+    fmt::print(stderr, "{}\n", line);
   std::fflush(stderr);
 }
 

@@ -1,8 +1,9 @@
 // rod_driver.cpp: the single-rod driver (see rod_driver.h).
 #include "app/rod_driver.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "swarf/core/errors.h"
 
@@ -15,7 +16,8 @@ std::vector<RodSample> drive_rod(const RodLaw& law, const std::vector<double>& p
   if (steps < 1) throw InputError(fmt::format("--steps: must be a positive integer, got {}", steps));
   if (!(law.youngs_modulus > 0) || !std::isfinite(law.youngs_modulus))
     throw InputError(fmt::format("--E: must be a positive modulus in Pa, got {}", law.youngs_modulus));
-  if (!(law.yield_strain > 0)) throw InputError(fmt::format("--yield-strain: must be positive, got {}", law.yield_strain));
+  if (!(law.yield_strain > 0))
+    throw InputError(fmt::format("--yield-strain: must be positive, got {}", law.yield_strain));
   if (!(law.hardening >= 0 && law.hardening < law.youngs_modulus))
     throw InputError(fmt::format("--hardening: must lie in [0, E) Pa, got {}", law.hardening));
   if (!(law.tensile_strength > 0))

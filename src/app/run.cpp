@@ -5,9 +5,10 @@
 // summary.json around the head (summary.h).
 #include "app/run.h"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
 
 #include "app/observers/case_observers.h"
 #include "app/observers/observer_set.h"
@@ -31,9 +32,10 @@ namespace {
 CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
   if (!opt.restart.empty()) {
     if (!opt.case_path.empty() || !opt.overrides.empty())
-      throw InputError(fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case file "
-                                   "and no --set (got '{}'{})", opt.restart, opt.case_path,
-                                   opt.overrides.empty() ? "" : " and --set " + opt.overrides.front()));
+      throw InputError(
+          fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case file "
+                      "and no --set (got '{}'{})",
+                      opt.restart, opt.case_path, opt.overrides.empty() ? "" : " and --set " + opt.overrides.front()));
     stored = read_checkpoint_case(opt.restart);
     return parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
   }

@@ -9,11 +9,11 @@
 namespace swarf {
 
 struct RunOptions {
-  std::string case_path;                 ///< empty = the built-in default case
-  std::string out_dir;                   ///< empty: "swarf-out", or the checkpoint's directory on restart
-  std::string restart;                   ///< checkpoint to continue from (--restart)
-  std::vector<std::string> overrides;    ///< --set key=value
-  int threads = 0;                       ///< 0 = OpenMP default
+  std::string case_path;               ///< empty = the built-in default case
+  std::string out_dir;                 ///< empty: "swarf-out", or the checkpoint's directory on restart
+  std::string restart;                 ///< checkpoint to continue from (--restart)
+  std::vector<std::string> overrides;  ///< --set key=value
+  int threads = 0;                     ///< 0 = OpenMP default
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

@@ -1,8 +1,9 @@
 // run_directory.cpp: the run directory (see run_directory.h).
 #include "app/run_directory.h"
 
-#include <cstdio>
 #include <fmt/format.h>
+
+#include <cstdio>
 
 #include "app/run.h"
 
@@ -43,7 +44,8 @@ void carry_frames(const std::filesystem::path& from_dir, const std::string& to_d
       if (us == std::string::npos || stem.size() - us != 6) continue;
       const std::string digits = stem.substr(us + 1);
       if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-      if (std::stoul(digits) < frames) fs::copy_file(e.path(), to / e.path().filename(), fs::copy_options::overwrite_existing);
+      if (std::stoul(digits) < frames)
+        fs::copy_file(e.path(), to / e.path().filename(), fs::copy_options::overwrite_existing);
     }
   }
   std::size_t missing = 0;

@@ -1,9 +1,10 @@
 // run_outputs.cpp: rows, frames and checkpoints at their times (see run_outputs.h).
 #include "app/run_outputs.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 
 #include "app/observers/observer_set.h"
 #include "app/run_directory.h"
@@ -26,9 +27,9 @@ RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& s
                                                                  : model.settings.integrator.end_time / 2000),
       frame_interval_(model.settings.output.frame_interval),
       checkpoint_every_(model.settings.output.checkpoint_every),
-      vtk_(model.settings.output.vtk ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk,
-                                                                   model.settings.output.orientations)
-                                     : nullptr),
+      vtk_(model.settings.output.vtk
+               ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk, model.settings.output.orientations)
+               : nullptr),
       series_(dir + "/series.csv", columns_) {
   if (vtk_) vtk_->set_periodic(model.periodic);
   rec_.columns = columns_.size();

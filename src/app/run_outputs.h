@@ -27,8 +27,7 @@ class RunOutputs {
  public:
   /// Opens DIR/series.csv.part (and the ParaView series with output.vtk); the observers'
   /// columns make the header. 'stored' is the case a checkpoint records.
-  RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers,
-             CheckpointCase stored);
+  RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers, CheckpointCase stored);
   ~RunOutputs();
 
   /// A fresh run: the observers begin, the initial row and frame, the schedule from t = 0.
@@ -64,15 +63,15 @@ class RunOutputs {
   ObserverSet& observers_;
   CheckpointCase stored_;
   std::vector<std::string> columns_;
-  double series_interval_;   ///< s
-  double frame_interval_;    ///< s; 0 = the first and the last frame only
-  int checkpoint_every_;     ///< steps; 0 = none
+  double series_interval_;  ///< s
+  double frame_interval_;   ///< s; 0 = the first and the last frame only
+  int checkpoint_every_;    ///< steps; 0 = none
   std::unique_ptr<VtkSeries> vtk_;
   SeriesWriter series_;
   RunRecord rec_;
   std::chrono::steady_clock::time_point start_;  ///< of this process's steps
-  double wall_before_ = 0;   ///< wall time before a restart, s
-  double output_s_ = 0;      ///< wall time spent writing outputs (the part before a restart too), s
+  double wall_before_ = 0;                       ///< wall time before a restart, s
+  double output_s_ = 0;                          ///< wall time spent writing outputs (the part before a restart too), s
 };
 
 }  // namespace swarf

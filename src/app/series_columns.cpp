@@ -1,10 +1,10 @@
 // series_columns.cpp: series rows by column name (see series_columns.h).
 #include "app/series_columns.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace swarf {
 

@@ -15,8 +15,7 @@ namespace swarf {
 class SeriesColumns {
  public:
   /// 'rows' is row-major with names.size() values a row; both are held by reference.
-  SeriesColumns(const std::vector<std::string>& names, const std::vector<double>& rows)
-      : names_(names), rows_(rows) {}
+  SeriesColumns(const std::vector<std::string>& names, const std::vector<double>& rows) : names_(names), rows_(rows) {}
   bool has(std::string_view name) const;
   /// The column's values, one a row; throws std::logic_error naming a column the series lacks
   /// (a probe asked for a column no observer writes: a bug, not an input error).

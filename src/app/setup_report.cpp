@@ -1,12 +1,13 @@
 // setup_report.cpp: the run's set-up as printed (see setup_report.h).
 #include "app/setup_report.h"
-#include "swarf/version.h"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 
 #include "setup/model.h"
+#include "swarf/version.h"
 
 namespace swarf {
 
@@ -23,9 +24,11 @@ void print_setup(const Model& m, int threads) {
                m.periodic.period);
   if (!m.rods.ends.empty()) {
     if (d.converted)
-      fmt::print("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
-                 "strength {:.4g} Pa):\n", m.settings.material.youngs_modulus, m.settings.material.yield_stress,
-                 m.settings.material.hardening_modulus, m.settings.material.tensile_strength);
+      fmt::print(
+          "  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
+          "strength {:.4g} Pa):\n",
+          m.settings.material.youngs_modulus, m.settings.material.yield_stress, m.settings.material.hardening_modulus,
+          m.settings.material.tensile_strength);
     fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
                d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
     fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
@@ -33,18 +36,23 @@ void print_setup(const Model& m, int threads) {
   }
   const double nu = m.settings.material.poisson_ratio;
   if (nu > -1 && std::abs(nu - 1.0 / 3.0) > 1e-3)
-    fmt::print(stderr, "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
-               "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n", nu);
+    fmt::print(stderr,
+               "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
+               "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n",
+               nu);
   if (!m.rods.ends.empty())
-    fmt::print("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} kg/m^3\n",
-               d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
+    fmt::print(
+        "  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "
+        "kg/m^3\n",
+        d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
   fmt::print("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
              d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
              d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
              m.settings.integrator.end_time);
   if (m.uniaxial.enabled)
-    fmt::print("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
-               m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
+    fmt::print(
+        "  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
+        m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
   std::fflush(stdout);
 }
 

@@ -1,18 +1,19 @@
 // summary.cpp: JSON and HDF5 result writers (see summary.h).
 #include "app/summary.h"
-#include "swarf/version.h"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "io/h5file.h"
-#include "io/vtk_output.h"
 #include "io/results_format.h"
+#include "io/vtk_output.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
+#include "swarf/version.h"
 
 namespace swarf {
 
@@ -42,9 +43,7 @@ static nlohmann::json node_to_json(const toml::node& n) {
   return os.str();
 }
 
-nlohmann::json case_to_json(const CaseSettings& cs) {
-  return node_to_json(toml::parse(cs.effective_toml));
-}
+nlohmann::json case_to_json(const CaseSettings& cs) { return node_to_json(toml::parse(cs.effective_toml)); }
 
 nlohmann::json derived_to_json(const Derived& d) {
   return {

@@ -28,7 +28,6 @@ nlohmann::json summary_head(const Model& model, const Simulation& sim, const std
 
 /// Writes the final state (particles with their broken-rod fraction, rods with plastic state)
 /// atomically; 'extra' may add datasets (the cut's setup) before the file is closed.
-void write_results_h5(const std::string& path, const Simulation& sim,
-                      const std::function<void(H5File&)>& extra = {});
+void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra = {});
 
 }  // namespace swarf

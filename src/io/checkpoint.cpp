@@ -2,15 +2,16 @@
 // Simulation::visit_state (swarf/state_visit.cpp) walked by the HDF5 archives below under
 // /sim/; the run loop's record (visit_record) and the caller's visit follow under /run/.
 #include "io/checkpoint.h"
-#include "swarf/version.h"
 
-#include <filesystem>
 #include <fmt/format.h>
 
-#include "swarf/core/errors.h"
+#include <filesystem>
+
 #include "io/h5file.h"
-#include "swarf/state_archive.h"
+#include "swarf/core/errors.h"
 #include "swarf/simulation.h"
+#include "swarf/state_archive.h"
+#include "swarf/version.h"
 
 namespace swarf {
 namespace {
@@ -52,12 +53,16 @@ class H5StateWriter final : public StateArchive {
  public:
   H5StateWriter(H5File& f, std::string root) : f_(f), root_(std::move(root)) {}
   bool loading() const override { return false; }
-  void array(std::string_view name, std::vector<double>& v, std::size_t) override { f_.write(key(name), v.data(), v.size(), 1); }
+  void array(std::string_view name, std::vector<double>& v, std::size_t) override {
+    f_.write(key(name), v.data(), v.size(), 1);
+  }
   void array(std::string_view name, std::vector<Vec3>& v, std::size_t) override { put(f_, key(name), v); }
   void array(std::string_view name, std::vector<Quat>& v, std::size_t) override {
     f_.write(key(name), v.empty() ? nullptr : v[0].data(), v.size(), 4);
   }
-  void array(std::string_view name, std::vector<std::uint8_t>& v, std::size_t) override { f_.write(key(name), v.data(), v.size()); }
+  void array(std::string_view name, std::vector<std::uint8_t>& v, std::size_t) override {
+    f_.write(key(name), v.data(), v.size());
+  }
   void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t) override {
     const std::vector<std::int64_t> w(v.begin(), v.end());
     f_.write(key(name), w.data(), w.size(), 1);
@@ -112,10 +117,10 @@ class H5StateReader final : public StateArchive {
     auto v = f_.read_doubles(key(name), r, c);
     if (v.empty()) r = 0, c = cols;  // (an empty dataset reads as 0 x 1)
     if (c != cols || (expected != kAnySize && r != expected))
-      throw InputError(fmt::format("checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
-                                   "(the checkpoint belongs to another case or version)",
-                                   f_.path(), key(name), r, c,
-                                   expected == kAnySize ? std::string("N") : std::to_string(expected), cols));
+      throw InputError(fmt::format(
+          "checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
+          "(the checkpoint belongs to another case or version)",
+          f_.path(), key(name), r, c, expected == kAnySize ? std::string("N") : std::to_string(expected), cols));
     return v;
   }
   std::vector<std::int64_t> ints(std::string_view name, std::size_t expected) const {
@@ -123,9 +128,10 @@ class H5StateReader final : public StateArchive {
     auto v = f_.read_ints(key(name), r, c);
     if (v.empty()) r = 0, c = 1;
     if (c != 1 || (expected != kAnySize && r != expected))
-      throw InputError(fmt::format("checkpoint '{}': dataset '{}' has {} entries, expected {} "
-                                   "(the checkpoint belongs to another case or version)",
-                                   f_.path(), key(name), r, expected));
+      throw InputError(
+          fmt::format("checkpoint '{}': dataset '{}' has {} entries, expected {} "
+                      "(the checkpoint belongs to another case or version)",
+                      f_.path(), key(name), r, expected));
     return v;
   }
   const H5File& f_;

@@ -34,17 +34,17 @@ using RunStateVisit = std::function<void(StateArchive&)>;
 
 /// The case stored in a checkpoint.
 struct CheckpointCase {
-  std::string toml;        ///< effective TOML (after overrides)
-  std::string source;      ///< the case file's name
-  std::string directory;   ///< where its relative paths resolve
+  std::string toml;       ///< effective TOML (after overrides)
+  std::string source;     ///< the case file's name
+  std::string directory;  ///< where its relative paths resolve
   std::vector<std::string> overrides;
-  double time = 0;         ///< simulated time of the checkpoint, s
+  double time = 0;  ///< simulated time of the checkpoint, s
   double steps = 0;
 };
 
 /// Writes the checkpoint atomically (path.part, then rename).
-void write_checkpoint(const std::string& path, const Simulation& sim, const RunRecord& rec,
-                      const CheckpointCase& c, const RunStateVisit& run_state);
+void write_checkpoint(const std::string& path, const Simulation& sim, const RunRecord& rec, const CheckpointCase& c,
+                      const RunStateVisit& run_state);
 /// Reads the case of a checkpoint (to rebuild the model). Throws InputError.
 CheckpointCase read_checkpoint_case(const std::string& path);
 /// Restores the state, the record and then the rest of the run's state (run_state, which may

@@ -39,8 +39,8 @@ H5File::~H5File() {
   if (id_ >= 0) H5Fclose(static_cast<hid_t>(id_));
 }
 
-static void write_any(hid_t file, const std::string& path, const std::string& name, hid_t type,
-                      const void* data, std::size_t rows, std::size_t cols) {
+static void write_any(hid_t file, const std::string& path, const std::string& name, hid_t type, const void* data,
+                      std::size_t rows, std::size_t cols) {
   hsize_t dims[2] = {rows, cols};
   hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
   hid_t lcpl = link_props();

@@ -1,11 +1,12 @@
 // mesh_file.cpp: STL and OBJ reading, STL writing (see mesh_file.h).
 #include "io/mesh_file.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -124,9 +125,12 @@ TriangleMesh read_mesh(const std::string& path, double scale) {
   if (!std::filesystem::exists(path)) throw InputError(fmt::format("mesh file '{}' does not exist", path));
   const std::string ext = lower_ext(path);
   TriangleMesh m;
-  if (ext == ".stl") m = read_stl(path, scale);
-  else if (ext == ".obj") m = read_obj(path, scale);
-  else throw InputError(fmt::format("mesh file '{}': unknown format '{}' (use .stl or .obj)", path, ext));
+  if (ext == ".stl")
+    m = read_stl(path, scale);
+  else if (ext == ".obj")
+    m = read_obj(path, scale);
+  else
+    throw InputError(fmt::format("mesh file '{}': unknown format '{}' (use .stl or .obj)", path, ext));
   m.validate(path);
   return m;
 }

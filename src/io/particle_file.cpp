@@ -1,8 +1,9 @@
 // particle_file.cpp: see particle_file.h.
 #include "io/particle_file.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -21,8 +22,8 @@ std::vector<FreeParticleRow> read_particle_file(const std::string& path) {
     std::istringstream ls(line);
     double id, x, y, z, vx, vy, vz;
     if (!(ls >> id >> x >> y >> z >> vx >> vy >> vz) || !std::isfinite(x + y + z + vx + vy + vz))
-      throw InputError(fmt::format("{}:{}: expected 'id x y z vx vy vz' (SI units), got '{}'", path, lineno,
-                                   line.substr(0, 80)));
+      throw InputError(
+          fmt::format("{}:{}: expected 'id x y z vx vy vz' (SI units), got '{}'", path, lineno, line.substr(0, 80)));
     rows.push_back({Vec3(x, y, z), Vec3(vx, vy, vz)});
   }
   return rows;

@@ -1,8 +1,9 @@
 // series.cpp: the CSV time series writer (see series.h).
 #include "io/series.h"
 
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "swarf/core/errors.h"
 

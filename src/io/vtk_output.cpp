@@ -1,7 +1,6 @@
 // vtk_output.cpp: VTK XML writers for particle and rod frames (see vtk_output.h).
 #include "io/vtk_output.h"
 
-#include <filesystem>
 #include <fmt/format.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -11,16 +10,17 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include "swarf/state/mesh.h"
+#include <filesystem>
 
 #include "io/atomic_file.h"
 #include "swarf/core/errors.h"
+#include "swarf/state/mesh.h"
 
 namespace swarf {
 namespace {
@@ -189,17 +189,22 @@ void VtkSeries::add_final_part(const std::string& name, const std::string& file)
 }
 
 void VtkSeries::write_pvd() const {
-  std::string x = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                  "  <Collection>\n";
+  std::string
+      x = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+          "  <Collection>\n";
   for (std::size_t k = 0; k < times_.size(); ++k) {
-    x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" name=\"particles\" file=\"frames/particles_{:05d}.vtu\"/>\n",
-                     times_[k], k);
+    x += fmt::format(
+        "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" name=\"particles\" "
+        "file=\"frames/particles_{:05d}.vtu\"/>\n",
+        times_[k], k);
     if (with_rods_)
-      x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"1\" name=\"rods\" file=\"frames/rods_{:05d}.vtu\"/>\n",
-                       times_[k], k);
+      x += fmt::format(
+          "    <DataSet timestep=\"{}\" group=\"\" part=\"1\" name=\"rods\" file=\"frames/rods_{:05d}.vtu\"/>\n",
+          times_[k], k);
     for (std::size_t m = 0; m < mesh_names_.size(); ++m)
-      x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"frames/mesh_{}_{:05d}.vtp\"/>\n",
-                       times_[k], m + 2, mesh_names_[m], mesh_names_[m], k);
+      x += fmt::format(
+          "    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"frames/mesh_{}_{:05d}.vtp\"/>\n",
+          times_[k], m + 2, mesh_names_[m], mesh_names_[m], k);
     if (k + 1 == times_.size())
       for (std::size_t e = 0; e < final_parts_.size(); ++e)
         x += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"{}\" name=\"{}\" file=\"{}\"/>\n", times_[k],

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "swarf/contacts/contacts.h"
-#include "swarf/state/mesh.h"
 #include "swarf/core/periodic.h"
+#include "swarf/state/mesh.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
 

@@ -1,11 +1,12 @@
 // case_bodies.cpp: the tables that repeat or name files: [[group]] with its motion, [[mesh]],
 // [[particle]] and [particles] (see case_tables.h). The key tables check each key; the
 // rules here check the keys against each other and against the files they name.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -40,16 +41,15 @@ void read_velocity_csv(const TableReader& r, const std::string& path, MotionSett
 void check_motion(const TableReader& r, const std::string& directory, MotionSettings& m) {
   // Every key only where the motion uses it.
   const std::map<std::string, std::vector<std::string>> uses{
-      {"velocity", {"velocity", "ramp"}},     {"ramp_time", {"ramp"}},
+      {"velocity", {"velocity", "ramp"}},          {"ramp_time", {"ramp"}},
       {"table_time", {"table", "velocity_table"}}, {"table_displacement", {"table"}},
-      {"table_velocity", {"velocity_table"}}, {"velocity_file", {"velocity_table"}}};
+      {"table_velocity", {"velocity_table"}},      {"velocity_file", {"velocity_table"}}};
   for (const auto& [key, kinds] : uses)
     if (r.has(key) && std::find(kinds.begin(), kinds.end(), m.kind) == kinds.end())
       r.fail(key, r.get(key), fmt::format("is not used with motion = \"{}\"", m.kind));
   if ((m.kind == "velocity" || m.kind == "ramp") && !r.has("velocity"))
     r.fail("velocity", nullptr, fmt::format("motion = \"{}\" needs a velocity [vx, vy, vz] in m/s", m.kind));
-  if (m.kind == "ramp" && !r.has("ramp_time"))
-    r.fail("ramp_time", nullptr, "motion = \"ramp\" needs ramp_time in s");
+  if (m.kind == "ramp" && !r.has("ramp_time")) r.fail("ramp_time", nullptr, "motion = \"ramp\" needs ramp_time in s");
   if (m.kind == "velocity_table") {
     if (!m.velocity_file.empty()) {
       if (r.has("table_time") || r.has("table_velocity"))

@@ -2,13 +2,14 @@
 // (case_keys.cpp) and its rules, and the rules between tables (see case_config.h).
 #include "setup/case_config.h"
 
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "setup/case_override.h"
 #include "setup/case_tables.h"
@@ -70,7 +71,8 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   r.know(rod_keys());
   if (cs.material.macroscopic)
     for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength"})
-      if (r.has(key)) r.fail(key, r.get(key), "the rod law comes from the [material] properties here; give one or the other");
+      if (r.has(key))
+        r.fail(key, r.get(key), "the rod law comes from the [material] properties here; give one or the other");
   r.read(rod_keys(), d);
   if (!(d.hardening_modulus < d.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
@@ -141,11 +143,14 @@ void check_top_level(const toml::table& root, const std::string& source, const s
     const std::string key(k.str());
     if (!tables.count(key)) {
       std::string where = source;
-      if (ov.count(key) || !v.source().begin.line) where += " (--set)";
-      else where += ":" + std::to_string(v.source().begin.line);
-      throw InputError(fmt::format("{}: unknown table or key '{}' (known: workpiece, material, rod, integrator, "
-                                   "group, uniaxial, contact, mesh, particle, particles, environment, output)",
-                                   where, key));
+      if (ov.count(key) || !v.source().begin.line)
+        where += " (--set)";
+      else
+        where += ":" + std::to_string(v.source().begin.line);
+      throw InputError(
+          fmt::format("{}: unknown table or key '{}' (known: workpiece, material, rod, integrator, "
+                      "group, uniaxial, contact, mesh, particle, particles, environment, output)",
+                      where, key));
     }
     if (!arrays_of_tables.count(key) && !v.is_table())
       throw InputError(fmt::format("{}: '{}' must be a table ([{}])", source, key, key));
@@ -188,16 +193,19 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   read_meshes(in, cs);
   read_free_particles(in, cs);
   if ((!cs.meshes.empty() || !cs.particles.empty() || !cs.particles_file.file.empty()) && !cs.contact.enabled)
-    throw InputError(fmt::format("{}: meshes and free particles interact only through contacts: add a [contact] "
-                                 "table (youngs_modulus, poisson_ratio, restitution, friction)", source));
+    throw InputError(
+        fmt::format("{}: meshes and free particles interact only through contacts: add a [contact] "
+                    "table (youngs_modulus, poisson_ratio, restitution, friction)",
+                    source));
   if (cs.uniaxial.enabled && !cs.workpiece.enabled)
     throw InputError(fmt::format("{}: [uniaxial] needs a [workpiece] (the bar)", source));
   if (!cs.workpiece.enabled && cs.particles.empty() && cs.particles_file.file.empty())
-    throw InputError(fmt::format("{}: no particles: give a [workpiece], [[particle]] tables or [particles] file", source));
+    throw InputError(
+        fmt::format("{}: no particles: give a [workpiece], [[particle]] tables or [particles] file", source));
   read_output(in, cs);
   if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))
-    throw InputError(fmt::format("{}: key 'integrator.end_time' must be set (s) when there is no [uniaxial] path",
-                                 source));
+    throw InputError(
+        fmt::format("{}: key 'integrator.end_time' must be set (s) when there is no [uniaxial] path", source));
   return cs;
 }
 

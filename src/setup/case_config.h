@@ -20,139 +20,142 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// [workpiece]: the bonded FCC block (optional when [[particle]] or [particles] give particles).
 struct WorkpieceSettings {
-  bool enabled = false;                   ///< true when the table is present
-  std::string lattice_file;               ///< HDF5 lattice from 'swarf lattice'; empty = generate
-  std::array<int, 3> cells{0, 0, 0};      ///< conventional FCC cells per axis (generate by cells)
-  std::array<double, 3> size{0, 0, 0};    ///< box size, m (generate by size, if cells not given)
-  double radius = 0.5e-3;                 ///< particle radius R, m (nearest-neighbour distance 2R)
-  double bond_tolerance = 1e-6;           ///< relative tolerance on the bond length 2R, 1
-  bool periodic_width = false;            ///< periodic along y (plane strain): period = cells[1] x a
+  bool enabled = false;                 ///< true when the table is present
+  std::string lattice_file;             ///< HDF5 lattice from 'swarf lattice'; empty = generate
+  std::array<int, 3> cells{0, 0, 0};    ///< conventional FCC cells per axis (generate by cells)
+  std::array<double, 3> size{0, 0, 0};  ///< box size, m (generate by size, if cells not given)
+  double radius = 0.5e-3;               ///< particle radius R, m (nearest-neighbour distance 2R)
+  double bond_tolerance = 1e-6;         ///< relative tolerance on the bond length 2R, 1
+  bool periodic_width = false;          ///< periodic along y (plane strain): period = cells[1] x a
 };
 
 /// [material]: what the particles are made of.
 struct MaterialSettings {
-  double density = 7800.0;            ///< kg/m^3
-  std::string mass_basis = "cell";    ///< "cell": m = rho a^3/4 (bulk density right); "sphere": m = rho 4/3 pi R^3
+  double density = 7800.0;          ///< kg/m^3
+  std::string mass_basis = "cell";  ///< "cell": m = rho a^3/4 (bulk density right); "sphere": m = rho 4/3 pi R^3
   // Macroscopic properties along a cube axis [100]; when youngs_modulus is given, swarf
   // derives the rod parameters from them through the FCC lattice relations (derived.h).
-  bool macroscopic = false;           ///< true when youngs_modulus is given here
-  double youngs_modulus = 0.0;        ///< E along [100], Pa
-  double yield_stress = kInf;         ///< uniaxial yield stress along [100], Pa; inf = elastic
-  double hardening_modulus = 0.0;     ///< tangent after yield, Pa
-  double tensile_strength = kInf;     ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
-  double poisson_ratio = -1.0;        ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
+  bool macroscopic = false;        ///< true when youngs_modulus is given here
+  double youngs_modulus = 0.0;     ///< E along [100], Pa
+  double yield_stress = kInf;      ///< uniaxial yield stress along [100], Pa; inf = elastic
+  double hardening_modulus = 0.0;  ///< tangent after yield, Pa
+  double tensile_strength = kInf;  ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
+  double poisson_ratio = -1.0;     ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
 };
 
 /// [rod]: the rod law (paper eqs. 23-31) between bonded neighbours.
 struct RodSettings {
-  double youngs_modulus = 200e9;      ///< E of the rod, Pa
-  double area = 0.0;                  ///< cross-section A, m^2; 0 = pi R^2
-  double yield_strain = kInf;         ///< eps_y = sigma_02/E, 1; inf = elastic
-  double hardening_modulus = 0.0;     ///< slope k of the plastic branch, Pa, 0 <= k < E
-  double tensile_strength = kInf;     ///< sigma_max, Pa; inf = unbreakable
-  double damping_ratio = 0.0;         ///< viscous part as a fraction of critical damping of one rod between two particles, 1
+  double youngs_modulus = 200e9;   ///< E of the rod, Pa
+  double area = 0.0;               ///< cross-section A, m^2; 0 = pi R^2
+  double yield_strain = kInf;      ///< eps_y = sigma_02/E, 1; inf = elastic
+  double hardening_modulus = 0.0;  ///< slope k of the plastic branch, Pa, 0 <= k < E
+  double tensile_strength = kInf;  ///< sigma_max, Pa; inf = unbreakable
+  double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
 };
 
 /// [integrator]
 struct IntegratorSettings {
-  std::string scheme = "auto";        ///< "verlet", "newmark", or "auto": newmark if rods can break, else verlet
-  double dt = 0.0;                    ///< s; 0 = dt_safety * stable step (newmark: the first step)
-  double dt_safety = 0.5;             ///< fraction of the stable step used when dt = 0, 1
-  bool allow_unstable_dt = false;     ///< run even if dt exceeds the stable step estimate
-  double end_time = 0.0;              ///< simulated time, s (the [uniaxial] path sets it when 0)
+  std::string scheme = "auto";          ///< "verlet", "newmark", or "auto": newmark if rods can break, else verlet
+  double dt = 0.0;                      ///< s; 0 = dt_safety * stable step (newmark: the first step)
+  double dt_safety = 0.5;               ///< fraction of the stable step used when dt = 0, 1
+  bool allow_unstable_dt = false;       ///< run even if dt exceeds the stable step estimate
+  double end_time = 0.0;                ///< simulated time, s (the [uniaxial] path sets it when 0)
   double max_step_displacement = 0.25;  ///< stop if a particle moves more than this many radii in one step, 1
   // Newmark (implicit) step, solved by fixed-point iteration on the new accelerations.
-  double beta = 0.25;                 ///< Newmark beta, 1
-  double gamma = 0.5;                 ///< Newmark gamma, 1
-  double tolerance = 1e-6;            ///< converged when the force change or the position correction of a sweep is below this, relative (Simulation::gather), 1
-  int max_iterations = 25;            ///< sweeps before the step is rejected
-  double dt_min = 0.0;                ///< s; 0 = 1e-3 * stable step. Below it the run stops
-  double dt_max = 0.0;                ///< s; 0 = 0.8 x the stable step (the fixed-point limit for beta = 1/4 is 1x)
-  int iterations_grow = 4;            ///< a step that needed at most this many sweeps grows the next one
-  int iterations_shrink = 10;         ///< a step that needed at least this many sweeps shrinks the next one
-  double grow_factor = 1.2;           ///< 1
-  double shrink_factor = 0.7;         ///< 1
-  double reject_factor = 0.5;         ///< a rejected step is retried with dt times this, 1
-  double relaxation = 1.0;            ///< w in (0, 1]: each sweep places with (1 - w) a_guess + w a_swept, 1
+  double beta = 0.25;          ///< Newmark beta, 1
+  double gamma = 0.5;          ///< Newmark gamma, 1
+  double tolerance = 1e-6;     ///< converged when the force change or the position correction of a sweep is below this,
+                               ///< relative (Simulation::gather), 1
+  int max_iterations = 25;     ///< sweeps before the step is rejected
+  double dt_min = 0.0;         ///< s; 0 = 1e-3 * stable step. Below it the run stops
+  double dt_max = 0.0;         ///< s; 0 = 0.8 x the stable step (the fixed-point limit for beta = 1/4 is 1x)
+  int iterations_grow = 4;     ///< a step that needed at most this many sweeps grows the next one
+  int iterations_shrink = 10;  ///< a step that needed at least this many sweeps shrinks the next one
+  double grow_factor = 1.2;    ///< 1
+  double shrink_factor = 0.7;  ///< 1
+  double reject_factor = 0.5;  ///< a rejected step is retried with dt times this, 1
+  double relaxation = 1.0;     ///< w in (0, 1]: each sweep places with (1 - w) a_guess + w a_swept, 1
 };
 
 /// The prescribed translation of a group or a mesh (keys shared by [[group]] and [[mesh]]).
 struct MotionSettings {
-  std::string kind = "fixed";         ///< key 'motion': "fixed", "velocity", "ramp", "table" or "velocity_table"
-  std::array<double, 3> velocity{0, 0, 0};             ///< m/s ("velocity"; the final velocity of "ramp")
-  double ramp_time = 0.0;             ///< s: "ramp" reaches 'velocity' linearly in this time
-  std::vector<double> table_time;                      ///< s, ascending, first 0 ("table", "velocity_table")
+  std::string kind = "fixed";               ///< key 'motion': "fixed", "velocity", "ramp", "table" or "velocity_table"
+  std::array<double, 3> velocity{0, 0, 0};  ///< m/s ("velocity"; the final velocity of "ramp")
+  double ramp_time = 0.0;                   ///< s: "ramp" reaches 'velocity' linearly in this time
+  std::vector<double> table_time;           ///< s, ascending, first 0 ("table", "velocity_table")
   std::vector<std::array<double, 3>> table_displacement;  ///< m, piecewise linear in time ("table")
   std::vector<std::array<double, 3>> table_velocity;      ///< m/s, piecewise linear in time ("velocity_table")
-  std::string velocity_file;          ///< CSV 'time,vx,vy,vz' (s, m/s) for "velocity_table" instead of the arrays
+  std::string velocity_file;  ///< CSV 'time,vx,vy,vz' (s, m/s) for "velocity_table" instead of the arrays
 };
 
 /// [[group]]: particles selected by a side of the box or a region, fixed or moved.
 struct GroupSettings {
   std::string name;
-  std::string side;                   ///< "x-", "x+", "y-", "y+", "z-", "z+" (lattice layers at that face), or empty
-  int layers = 1;                     ///< number of lattice layers taken at 'side'
+  std::string side;  ///< "x-", "x+", "y-", "y+", "z-", "z+" (lattice layers at that face), or empty
+  int layers = 1;    ///< number of lattice layers taken at 'side'
   std::array<double, 3> box_min{-kInf, -kInf, -kInf};  ///< region selection, m (used when side is empty)
   std::array<double, 3> box_max{kInf, kInf, kInf};     ///< m
-  std::string dofs = "xyz";           ///< prescribed components ("x", "xz", "xyz", ...)
+  std::string dofs = "xyz";                            ///< prescribed components ("x", "xz", "xyz", ...)
   MotionSettings motion;
 };
 
 /// [uniaxial]: a bar between two grips driven along a strain path (hysteresis test).
 struct UniaxialSettings {
-  bool enabled = false;               ///< true when the table is present
-  std::string axis = "x";             ///< bar axis: "x", "y" or "z"
-  int grip_layers = 1;                ///< lattice layers held by each grip
-  std::string grip_dofs = "axis";     ///< "axis": grips hold only the axial component (free lateral contraction); "xyz": clamped
+  bool enabled = false;    ///< true when the table is present
+  std::string axis = "x";  ///< bar axis: "x", "y" or "z"
+  int grip_layers = 1;     ///< lattice layers held by each grip
+  std::string
+      grip_dofs = "axis";  ///< "axis": grips hold only the axial component (free lateral contraction); "xyz": clamped
   std::vector<double> strain_path{0.0};  ///< turning points of the nominal strain, 1, first 0
-  double strain_rate = 10.0;          ///< |d strain/dt| of the grips, 1/s
+  double strain_rate = 10.0;             ///< |d strain/dt| of the grips, 1/s
 };
 
 /// [output]
 struct OutputSettings {
-  double frame_interval = 0.0;        ///< ParaView frame interval, s; 0 = first and last state only
-  double series_interval = 0.0;       ///< series.csv row interval, s; 0 = end_time/2000
-  bool vtk = true;                    ///< write the ParaView series
-  bool rods_in_vtk = true;            ///< include the rods as lines in each frame
-  bool plots = true;                  ///< write PNG plots at the end (needs python3-matplotlib)
-  bool progress = true;               ///< progress line on stderr
-  double steady_from = -1.0;          ///< cutting: force statistics over rows with time >= this, s; < 0 = half the end time
-  int checkpoint_every = 0;           ///< write DIR/checkpoint.h5 every this many steps; 0 = never
-  bool orientations = false;          ///< integrate the spheres' orientations and write them and the angular velocities
+  double frame_interval = 0.0;   ///< ParaView frame interval, s; 0 = first and last state only
+  double series_interval = 0.0;  ///< series.csv row interval, s; 0 = end_time/2000
+  bool vtk = true;               ///< write the ParaView series
+  bool rods_in_vtk = true;       ///< include the rods as lines in each frame
+  bool plots = true;             ///< write PNG plots at the end (needs python3-matplotlib)
+  bool progress = true;          ///< progress line on stderr
+  double steady_from = -1.0;     ///< cutting: force statistics over rows with time >= this, s; < 0 = half the end time
+  int checkpoint_every = 0;      ///< write DIR/checkpoint.h5 every this many steps; 0 = never
+  bool orientations = false;     ///< integrate the spheres' orientations and write them and the angular velocities
 };
 
 /// [contact]: Hertz contacts with friction between unbonded particles and with meshes.
 struct ContactSettings {
-  bool enabled = false;               ///< true when the table is present
-  double youngs_modulus = 200e9;      ///< E of the particles' material for contacts, Pa
-  double poisson_ratio = 0.3;         ///< nu of the particles, 1
-  double restitution = 0.5;           ///< normal coefficient of restitution, 1 (0.01..1)
-  double friction = 0.0;              ///< Coulomb coefficient mu, 1
-  std::string friction_law = "spring";  ///< "spring" (Cundall-Strack, capped by Coulomb), "regularized" (tanh slip law), "none"
-  double regularization_speed = 1e-3; ///< v0 in tanh(|v_t|/v0) of the regularized law, m/s
-  double tangential_damping = 0.0;    ///< spring law: tangential dashpot as a multiple of the normal damping coefficient, 1
-  double skin = 0.2;                  ///< Verlet-list skin as a fraction of the largest radius, 1
+  bool enabled = false;           ///< true when the table is present
+  double youngs_modulus = 200e9;  ///< E of the particles' material for contacts, Pa
+  double poisson_ratio = 0.3;     ///< nu of the particles, 1
+  double restitution = 0.5;       ///< normal coefficient of restitution, 1 (0.01..1)
+  double friction = 0.0;          ///< Coulomb coefficient mu, 1
+  std::string
+      friction_law = "spring";  ///< "spring" (Cundall-Strack, capped by Coulomb), "regularized" (tanh slip law), "none"
+  double regularization_speed = 1e-3;  ///< v0 in tanh(|v_t|/v0) of the regularized law, m/s
+  double tangential_damping = 0.0;  ///< spring law: tangential dashpot as a multiple of the normal damping coefficient, 1
+  double skin = 0.2;                ///< Verlet-list skin as a fraction of the largest radius, 1
 };
 
 /// [[mesh]]: a rigid triangle mesh (wall, tool) from a file or a built-in rectangle.
 struct MeshSettings {
   std::string name;
-  std::string file;                   ///< .stl or .obj; empty = rectangle
-  double scale = 1.0;                 ///< coordinate factor applied to the file (e.g. 1e-3 for mm), 1
-  std::array<double, 3> origin{0, 0, 0};   ///< rectangle corner, m
-  std::array<double, 3> edge1{0, 0, 0};    ///< rectangle edge, m
-  std::array<double, 3> edge2{0, 0, 0};    ///< rectangle edge, m (normal = edge1 x edge2)
-  std::array<int, 2> divisions{1, 1};      ///< rectangle cells along edge1, edge2 (2 triangles each)
+  std::string file;                       ///< .stl or .obj; empty = rectangle
+  double scale = 1.0;                     ///< coordinate factor applied to the file (e.g. 1e-3 for mm), 1
+  std::array<double, 3> origin{0, 0, 0};  ///< rectangle corner, m
+  std::array<double, 3> edge1{0, 0, 0};   ///< rectangle edge, m
+  std::array<double, 3> edge2{0, 0, 0};   ///< rectangle edge, m (normal = edge1 x edge2)
+  std::array<int, 2> divisions{1, 1};     ///< rectangle cells along edge1, edge2 (2 triangles each)
   // Generated cutting tool (tool_geometry.h), placed with its sharp tip at 'origin':
-  bool tool = false;                  ///< true when rake_angle is given
-  double rake_angle = 0.0;            ///< deg
-  double clearance_angle = 7.0;       ///< deg
-  double edge_radius = 0.0;           ///< m
-  double width = 0.0;                 ///< m
-  double face_length = 0.0;           ///< m
-  MotionSettings motion;              ///< as for groups
-  double youngs_modulus = kInf;       ///< Pa; inf = rigid
-  double poisson_ratio = 0.3;         ///< 1
+  bool tool = false;             ///< true when rake_angle is given
+  double rake_angle = 0.0;       ///< deg
+  double clearance_angle = 7.0;  ///< deg
+  double edge_radius = 0.0;      ///< m
+  double width = 0.0;            ///< m
+  double face_length = 0.0;      ///< m
+  MotionSettings motion;         ///< as for groups
+  double youngs_modulus = kInf;  ///< Pa; inf = rigid
+  double poisson_ratio = 0.3;    ///< 1
 };
 
 /// [[particle]]: a single free particle (contact tests, packings written by hand).
@@ -166,12 +169,12 @@ struct ParticleSettings {
 /// [particles]: free particles from a text file (columns id x y z vx vy vz, SI units).
 struct ParticlesFileSettings {
   std::string file;
-  double radius = 0.0;                ///< m
+  double radius = 0.0;  ///< m
 };
 
 struct CaseSettings {
-  std::string source;                 ///< file name, or "<built-in>"
-  std::string directory;              ///< directory of the case file (relative paths resolve here)
+  std::string source;     ///< file name, or "<built-in>"
+  std::string directory;  ///< directory of the case file (relative paths resolve here)
   WorkpieceSettings workpiece;
   MaterialSettings material;
   RodSettings rod;
@@ -184,16 +187,16 @@ struct CaseSettings {
   ParticlesFileSettings particles_file;
   std::array<double, 3> gravity{0, 0, 0};  ///< [environment] gravity, m/s^2
   OutputSettings output;
-  std::vector<std::string> overrides; ///< the --set arguments, in order
-  std::string effective_toml;         ///< the TOML tree after overrides, as read
-  std::string text;                   ///< the case text as given (before overrides)
+  std::vector<std::string> overrides;  ///< the --set arguments, in order
+  std::string effective_toml;          ///< the TOML tree after overrides, as read
+  std::string text;                    ///< the case text as given (before overrides)
 };
 
 /// Reads a case file and applies overrides ("dotted.key=value"). Throws InputError.
 CaseSettings load_case(const std::string& path, const std::vector<std::string>& overrides);
 /// Same, from TOML text (tests, built-in cases); 'source' names it in messages.
-CaseSettings parse_case(const std::string& text, const std::string& source,
-                        const std::vector<std::string>& overrides, const std::string& directory = ".");
+CaseSettings parse_case(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
+                        const std::string& directory = ".");
 
 /// The built-in default case (until the cutting case exists: the hysteresis bar).
 extern const char* const kDefaultCaseToml;

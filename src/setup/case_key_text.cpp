@@ -1,7 +1,8 @@
 // case_key_text.cpp: the key table as text: the phrases of a range (for error messages and
 // the docs) and one row per key with its type, unit, default, allowed values and meaning.
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <string>
 
 #include "setup/case_keys.h"
@@ -58,21 +59,33 @@ std::string value_text(int v) { return std::to_string(v); }
 std::string value_text(bool v) { return v ? "true" : "false"; }
 std::string value_text(const std::string& v) { return "`\"" + v + "\"`"; }
 template <std::size_t N>
-std::string value_text(const std::array<double, N>& v) { return list(v, [](double x) { return doc_number(x, false); }); }
+std::string value_text(const std::array<double, N>& v) {
+  return list(v, [](double x) { return doc_number(x, false); });
+}
 template <std::size_t N>
-std::string value_text(const std::array<int, N>& v) { return list(v, [](int x) { return std::to_string(x); }); }
-std::string value_text(const std::vector<double>& v) { return list(v, [](double x) { return doc_number(x, true); }); }
+std::string value_text(const std::array<int, N>& v) {
+  return list(v, [](int x) { return std::to_string(x); });
+}
+std::string value_text(const std::vector<double>& v) {
+  return list(v, [](double x) { return doc_number(x, true); });
+}
 std::string value_text(const std::vector<std::array<double, 3>>& v) {
   return list(v, [](const std::array<double, 3>& x) { return value_text(x); });
 }
 
 // What the type and range checks admit, before the hand-checked rule.
 template <class S>
-std::string checked_text(const Key<S>& k, double) { return k.range.text(); }
+std::string checked_text(const Key<S>& k, double) {
+  return k.range.text();
+}
 template <class S>
-std::string checked_text(const Key<S>& k, int) { return k.range.text(true); }
+std::string checked_text(const Key<S>& k, int) {
+  return k.range.text(true);
+}
 template <class S>
-std::string checked_text(const Key<S>&, bool) { return ""; }
+std::string checked_text(const Key<S>&, bool) {
+  return "";
+}
 template <class S>
 std::string checked_text(const Key<S>& k, const std::string&) {
   std::string out;
@@ -80,13 +93,17 @@ std::string checked_text(const Key<S>& k, const std::string&) {
   return out;
 }
 template <class S>
-std::string checked_text(const Key<S>& k, const std::array<int, 3>&) { return "each in " + k.range.text(true); }
+std::string checked_text(const Key<S>& k, const std::array<int, 3>&) {
+  return "each in " + k.range.text(true);
+}
 template <class S>
 std::string checked_text(const Key<S>& k, const std::array<int, 2>&) {
   return "whole numbers in " + k.range.text(true);
 }
 template <class S, class T>
-std::string checked_text(const Key<S>&, const T&) { return "finite"; }  // number arrays
+std::string checked_text(const Key<S>&, const T&) {
+  return "finite";
+}  // number arrays
 
 template <class S>
 void append(std::vector<KeyRow>& rows, std::string_view table, const std::vector<Key<S>>& keys,
@@ -121,9 +138,11 @@ void append(std::vector<KeyRow>& rows, std::string_view table, const std::vector
 }  // namespace
 
 std::string Range::problem() const {
-  if (lo == 0.0 && lo_open && hi == kInf) return hi_open ? "must be positive and finite" : "must be positive (inf allowed)";
+  if (lo == 0.0 && lo_open && hi == kInf)
+    return hi_open ? "must be positive and finite" : "must be positive (inf allowed)";
   if (lo == 0.0 && !lo_open && hi == kInf && hi_open) return "must be >= 0 and finite";
-  std::string out = fmt::format("must lie in {}{}, {}{}", lo_open ? '(' : '[', bound(lo), bound(hi), hi_open ? ')' : ']');
+  std::string out = fmt::format("must lie in {}{}, {}{}", lo_open ? '(' : '[', bound(lo), bound(hi),
+                                hi_open ? ')' : ']');
   if (!hint.empty()) out += fmt::format(" ({})", hint);
   return out;
 }

@@ -59,14 +59,14 @@ template <class S>
 struct Key {
   std::string_view name = {};
   Field<S> field = {};
-  std::string_view unit = {};             ///< SI unit of the value; "1" dimensionless; "" for text and bool
-  bool no_default = false;                ///< the member's initial value only means "not given"
-  std::string_view default_note = {};     ///< docs: follows the default, or replaces it when no_default
-  Range range = {};                       ///< numbers (each entry of a number array) and integers
+  std::string_view unit = {};                  ///< SI unit of the value; "1" dimensionless; "" for text and bool
+  bool no_default = false;                     ///< the member's initial value only means "not given"
+  std::string_view default_note = {};          ///< docs: follows the default, or replaces it when no_default
+  Range range = {};                            ///< numbers (each entry of a number array) and integers
   std::vector<std::string_view> choices = {};  ///< strings: the accepted values; empty = any text
-  std::string_view rule = {};             ///< docs: the conditions that the reader checks by hand
-  std::string_view doc = {};              ///< docs: the meaning, one line
-  std::string_view section = {};          ///< docs: the sub-table it is listed in ("newmark"); empty = the main one
+  std::string_view rule = {};                  ///< docs: the conditions that the reader checks by hand
+  std::string_view doc = {};                   ///< docs: the meaning, one line
+  std::string_view section = {};  ///< docs: the sub-table it is listed in ("newmark"); empty = the main one
 };
 
 // The keys of each table, in reading order. [[group]] and [[mesh]] read the motion keys too.
@@ -89,13 +89,13 @@ struct KeyRow {
   std::string table;    ///< TOML table: "integrator", "group" (for [[group]])
   std::string section;  ///< sub-table of the docs, or empty
   std::string name;
-  std::string type;     ///< "float", "int", "bool", "string", "float[3]", "int[3]", "int[2]", "float[]",
-                        ///< "array of float[3]"
+  std::string type;  ///< "float", "int", "bool", "string", "float[3]", "int[3]", "int[2]", "float[]",
+                     ///< "array of float[3]"
   std::string unit;
   std::string default_value;  ///< markdown
   std::string allowed;        ///< markdown: range or choices, then the hand-checked rule
   std::string doc;
-  std::string shared_with;    ///< the table whose docs list this key ("group" for the motion keys of [[mesh]])
+  std::string shared_with;  ///< the table whose docs list this key ("group" for the motion keys of [[mesh]])
 };
 
 /// Every key of every table, in the order of the tables in a case file and of their keys.

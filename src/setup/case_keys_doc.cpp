@@ -1,8 +1,9 @@
 // case_keys_doc.cpp: markdown key tables and their blocks in docs/case-reference.md (see case_keys_doc.h).
 #include "setup/case_keys_doc.h"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -35,8 +36,8 @@ std::string shared_line(const std::vector<const KeyRow*>& shared) {
   std::string names;
   for (const KeyRow* r : shared) names += (names.empty() ? "`" : ", `") + r->name + "`";
   const std::string& other = shared.front()->shared_with;
-  return fmt::format("| {} | | | | as for `[[{}]]` | The keys and checks of `[[{}]]`, for the whole {}. |", names, other,
-                     other, shared.front()->table);
+  return fmt::format("| {} | | | | as for `[[{}]]` | The keys and checks of `[[{}]]`, for the whole {}. |", names,
+                     other, other, shared.front()->table);
 }
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -81,7 +82,8 @@ std::vector<Block> blocks_of(const std::vector<std::string>& lines) {
     i = j;
   }
   for (const auto& id : ids)
-    if (!seen.count(id)) throw std::runtime_error(fmt::format("no block for key table '{}' ({})", id, begin_marker(id)));
+    if (!seen.count(id))
+      throw std::runtime_error(fmt::format("no block for key table '{}' ({})", id, begin_marker(id)));
   return blocks;
 }
 
@@ -196,13 +198,14 @@ std::string key_tables_difference(const std::string& document) {
       const std::string gen = k < want.size() ? want[k] : "(nothing)";
       if (doc == gen) continue;
       const std::string doc_key = k < have ? key_of(doc) : "", gen_key = k < want.size() ? key_of(gen) : "";
-      const std::string what =
-          doc_key == gen_key || doc_key.empty() || gen_key.empty()
-              ? fmt::format("key '{}' differs", doc_key.empty() ? gen_key : doc_key)
-              : fmt::format("the document has key '{}' where the key table has key '{}'", doc_key, gen_key);
-      return fmt::format("table '{}', line {}: {}\n  document:  {}\n  key table: {}\n"
-                         "(edit src/setup/case_keys.cpp, then run 'swarf case keys --update docs/case-reference.md')",
-                         b.id, b.first + k + 1, what, doc, gen);
+      const std::string what = doc_key == gen_key || doc_key.empty() || gen_key.empty()
+                                   ? fmt::format("key '{}' differs", doc_key.empty() ? gen_key : doc_key)
+                                   : fmt::format("the document has key '{}' where the key table has key '{}'", doc_key,
+                                                 gen_key);
+      return fmt::format(
+          "table '{}', line {}: {}\n  document:  {}\n  key table: {}\n"
+          "(edit src/setup/case_keys.cpp, then run 'swarf case keys --update docs/case-reference.md')",
+          b.id, b.first + k + 1, what, doc, gen);
     }
   }
   return "";

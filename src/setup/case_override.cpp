@@ -1,10 +1,11 @@
 // case_override.cpp: --set overrides on the TOML tree (see case_override.h).
 #include "setup/case_override.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <vector>
 
 #include "swarf/core/errors.h"
@@ -38,8 +39,8 @@ void apply_override(toml::table& root, const std::string& arg, std::set<std::str
     char* end = nullptr;
     const long idx = std::strtol(part.c_str(), &end, 10);
     if (part.empty() || *end || idx < 0 || static_cast<std::size_t>(idx) >= a.size())
-      throw InputError(fmt::format("--set '{}': '{}' is not an index of the array '{}' ({} entries)", arg, part, where,
-                                   a.size()));
+      throw InputError(
+          fmt::format("--set '{}': '{}' is not an index of the array '{}' ({} entries)", arg, part, where, a.size()));
     return static_cast<std::size_t>(idx);
   };
   toml::node* cur = &root;

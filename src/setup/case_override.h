@@ -3,9 +3,10 @@
 // Internal to setup/.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <set>
 #include <string>
-#include <toml++/toml.h>
 
 namespace swarf {
 

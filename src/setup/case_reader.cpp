@@ -1,8 +1,9 @@
 // case_reader.cpp: type and range checks of one TOML table's keys (see case_reader.h).
 #include "setup/case_reader.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,7 +42,8 @@ std::string TableReader::where(const std::string& full, const toml::node* n) con
 void TableReader::check_known(std::string_view key) const {
   // A hand-written rule that asks for a key no key table lists would accept an undocumented key.
   if (!known_.count(key))
-    throw std::logic_error(fmt::format("case reader: key '{}.{}' is not in its key table (case_keys.cpp)", prefix_, key));
+    throw std::logic_error(
+        fmt::format("case reader: key '{}.{}' is not in its key table (case_keys.cpp)", prefix_, key));
 }
 
 bool TableReader::has(std::string_view key) const {
@@ -72,9 +74,12 @@ void TableReader::finish() const {
 void TableReader::number(std::string_view key, const Range& range, double& v) const {
   const toml::node* n = get(key);
   if (!n) return;
-  if (auto f = n->as_floating_point()) v = f->get();
-  else if (auto i = n->as_integer()) v = static_cast<double>(i->get());
-  else fail(key, n, "must be a number");
+  if (auto f = n->as_floating_point())
+    v = f->get();
+  else if (auto i = n->as_integer())
+    v = static_cast<double>(i->get());
+  else
+    fail(key, n, "must be a number");
   if (std::isnan(v)) fail(key, n, "must not be nan");
   if (!range.contains(v)) fail(key, n, range.problem());
 }
@@ -120,9 +125,12 @@ void TableReader::numbers(std::string_view key, std::vector<double>& v) const {
   if (!a) fail(key, n, "must be an array of numbers");
   std::vector<double> out;
   for (const auto& e : *a) {
-    if (auto f = e.as_floating_point()) out.push_back(f->get());
-    else if (auto i = e.as_integer()) out.push_back(static_cast<double>(i->get()));
-    else fail(key, n, "must be an array of numbers");
+    if (auto f = e.as_floating_point())
+      out.push_back(f->get());
+    else if (auto i = e.as_integer())
+      out.push_back(static_cast<double>(i->get()));
+    else
+      fail(key, n, "must be an array of numbers");
     if (!std::isfinite(out.back())) fail(key, n, "entries must be finite");
   }
   v = std::move(out);
@@ -174,9 +182,12 @@ void TableReader::triples(std::string_view key, std::string_view unit, std::vect
     if (!ra || ra->size() != 3) fail(key, n, fmt::format("every entry must be [x, y, z] in {}", unit));
     std::array<double, 3> x{};
     for (int c = 0; c < 3; ++c) {
-      if (auto f = (*ra)[c].as_floating_point()) x[c] = f->get();
-      else if (auto i = (*ra)[c].as_integer()) x[c] = static_cast<double>(i->get());
-      else fail(key, n, "entries must be numbers");
+      if (auto f = (*ra)[c].as_floating_point())
+        x[c] = f->get();
+      else if (auto i = (*ra)[c].as_integer())
+        x[c] = static_cast<double>(i->get());
+      else
+        fail(key, n, "entries must be numbers");
       if (!std::isfinite(x[c])) fail(key, n, "entries must be finite");
     }
     out.push_back(x);

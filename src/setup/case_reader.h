@@ -5,11 +5,12 @@
 // Internal to setup/: only the case readers include it.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <array>
 #include <set>
 #include <string>
 #include <string_view>
-#include <toml++/toml.h>
 #include <variant>
 #include <vector>
 
@@ -50,23 +51,41 @@ class TableReader {
 
  private:
   template <class S>
-  void read_value(const Key<S>& k, double& v) { number(k.name, k.range, v); }
+  void read_value(const Key<S>& k, double& v) {
+    number(k.name, k.range, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, int& v) { integer(k.name, k.range, v); }
+  void read_value(const Key<S>& k, int& v) {
+    integer(k.name, k.range, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, bool& v) { boolean(k.name, v); }
+  void read_value(const Key<S>& k, bool& v) {
+    boolean(k.name, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, std::string& v) { string(k.name, k.choices, v); }
+  void read_value(const Key<S>& k, std::string& v) {
+    string(k.name, k.choices, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, std::array<double, 3>& v) { vec3(k.name, v); }
+  void read_value(const Key<S>& k, std::array<double, 3>& v) {
+    vec3(k.name, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, std::array<int, 3>& v) { ivec3(k.name, k.range, v); }
+  void read_value(const Key<S>& k, std::array<int, 3>& v) {
+    ivec3(k.name, k.range, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, std::array<int, 2>& v) { ivec2(k.name, k.range, v); }
+  void read_value(const Key<S>& k, std::array<int, 2>& v) {
+    ivec2(k.name, k.range, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, std::vector<double>& v) { numbers(k.name, v); }
+  void read_value(const Key<S>& k, std::vector<double>& v) {
+    numbers(k.name, v);
+  }
   template <class S>
-  void read_value(const Key<S>& k, std::vector<std::array<double, 3>>& v) { triples(k.name, k.unit, v); }
+  void read_value(const Key<S>& k, std::vector<std::array<double, 3>>& v) {
+    triples(k.name, k.unit, v);
+  }
 
   void number(std::string_view key, const Range& range, double& v) const;
   void integer(std::string_view key, const Range& range, int& v) const;

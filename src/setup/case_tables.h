@@ -5,9 +5,10 @@
 // parse_case calls them (case_config.cpp).
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <set>
 #include <string>
-#include <toml++/toml.h>
 
 #include "setup/case_config.h"
 #include "setup/case_reader.h"

@@ -1,12 +1,13 @@
 // derived.cpp: the derived quantities and lattice relations (see derived.h).
 #include "setup/derived.h"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 
-#include "swarf/core/errors.h"
+#include <algorithm>
+#include <cmath>
+
 #include "lattice_gen/fcc_lattice.h"
+#include "swarf/core/errors.h"
 
 namespace swarf {
 
@@ -87,16 +88,19 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.dt_max = g.dt_max > 0 ? g.dt_max : 0.4 / std::sqrt(g.beta) * d.dt_stable;
   if (d.implicit) {
     if (d.dt < d.dt_min || d.dt > d.dt_max)
-      throw InputError(fmt::format("{}: the first step dt = {:.6g} s lies outside [dt_min, dt_max] = [{:.6g}, {:.6g}] s "
-                                   "(integrator.dt, dt_min, dt_max)", cs.source, d.dt, d.dt_min, d.dt_max));
+      throw InputError(
+          fmt::format("{}: the first step dt = {:.6g} s lies outside [dt_min, dt_max] = [{:.6g}, {:.6g}] s "
+                      "(integrator.dt, dt_min, dt_max)",
+                      cs.source, d.dt, d.dt_min, d.dt_max));
     return d;  // the step control keeps the fixed-point iteration convergent
   }
   if (d.dt > d.dt_stable && !g.allow_unstable_dt)
-    throw InputError(fmt::format(
-        "{}: key 'integrator.dt' = {:.6g} s exceeds the stable step {:.6g} s of the explicit scheme "
-        "((2/omega_max)(sqrt(1+(2 zeta)^2) - 2 zeta), omega_max^2 = 8 kb/m, m = {:.4g} kg, kb = {:.4g} N/m, zeta = {}); lower dt or set "
-        "integrator.allow_unstable_dt = true to run anyway",
-        cs.source, d.dt, d.dt_stable, m, kb, zeta));
+    throw InputError(
+        fmt::format("{}: key 'integrator.dt' = {:.6g} s exceeds the stable step {:.6g} s of the explicit scheme "
+                    "((2/omega_max)(sqrt(1+(2 zeta)^2) - 2 zeta), omega_max^2 = 8 kb/m, m = {:.4g} kg, kb = {:.4g} "
+                    "N/m, zeta = {}); lower dt or set "
+                    "integrator.allow_unstable_dt = true to run anyway",
+                    cs.source, d.dt, d.dt_stable, m, kb, zeta));
   return d;
 }
 

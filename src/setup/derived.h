@@ -13,38 +13,38 @@ namespace swarf {
 struct Lattice;
 
 struct Derived {
-  double radius = 0;               ///< R (smallest in the lattice), m
-  double nn_distance = 0;          ///< d = 2R, m
-  double cell_edge = 0;            ///< a = sqrt(2) d, m
-  double particle_mass = 0;        ///< m of a particle of radius R, kg
-  double rod_area = 0;             ///< A, m^2
-  double rod_stiffness = 0;        ///< kb = E A / L0 (shortest rod), N/m
-  double rod_damping = 0;          ///< c = zeta 2 sqrt(kb m/2), N s/m
-  double rod_viscosity = 0;        ///< eta = c L0 / A, Pa s
-  double omega_max = 0;            ///< sqrt(8 kb/m), rad/s
-  double dt_stable = 0;            ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
-  double dt = 0;                   ///< step used (newmark: the first step), s
-  bool implicit = false;           ///< the Newmark scheme (scheme "newmark", or "auto" with breakable rods)
-  double dt_min = 0;               ///< newmark: smallest step before the run stops, s
-  double dt_max = 0;               ///< newmark: largest step, s
-  double wave_speed = 0;           ///< longitudinal wave speed along [100], c_L = d sqrt(kb/m), m/s
-  double rayleigh_time = 0;        ///< contacts: pi R sqrt(rho/G)/(0.1631 nu + 0.8766); the stable step uses 0.2 of it, s
+  double radius = 0;         ///< R (smallest in the lattice), m
+  double nn_distance = 0;    ///< d = 2R, m
+  double cell_edge = 0;      ///< a = sqrt(2) d, m
+  double particle_mass = 0;  ///< m of a particle of radius R, kg
+  double rod_area = 0;       ///< A, m^2
+  double rod_stiffness = 0;  ///< kb = E A / L0 (shortest rod), N/m
+  double rod_damping = 0;    ///< c = zeta 2 sqrt(kb m/2), N s/m
+  double rod_viscosity = 0;  ///< eta = c L0 / A, Pa s
+  double omega_max = 0;      ///< sqrt(8 kb/m), rad/s
+  double dt_stable = 0;      ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
+  double dt = 0;             ///< step used (newmark: the first step), s
+  bool implicit = false;     ///< the Newmark scheme (scheme "newmark", or "auto" with breakable rods)
+  double dt_min = 0;         ///< newmark: smallest step before the run stops, s
+  double dt_max = 0;         ///< newmark: largest step, s
+  double wave_speed = 0;     ///< longitudinal wave speed along [100], c_L = d sqrt(kb/m), m/s
+  double rayleigh_time = 0;  ///< contacts: pi R sqrt(rho/G)/(0.1631 nu + 0.8766); the stable step uses 0.2 of it, s
   // Lattice relations (central springs kb, cubic cell a).
-  double c11 = 0;                  ///< 2 kb / a, Pa
-  double c12 = 0;                  ///< kb / a (= C44, Cauchy relation), Pa
-  double youngs_modulus_100 = 0;   ///< E along [100] = 4 kb/(3a), Pa
-  double poisson_ratio_100 = 0;    ///< 1/3
-  double youngs_modulus_voigt = 0; ///< isotropic (Voigt) average 2 kb / a, Pa
-  double bulk_density = 0;         ///< m / (a^3/4), kg/m^3
+  double c11 = 0;                   ///< 2 kb / a, Pa
+  double c12 = 0;                   ///< kb / a (= C44, Cauchy relation), Pa
+  double youngs_modulus_100 = 0;    ///< E along [100] = 4 kb/(3a), Pa
+  double poisson_ratio_100 = 0;     ///< 1/3
+  double youngs_modulus_voigt = 0;  ///< isotropic (Voigt) average 2 kb / a, Pa
+  double bulk_density = 0;          ///< m / (a^3/4), kg/m^3
   // Uniaxial stress along [100]: every rod carries strain eps/3 in magnitude.
-  double bar_yield_strain = 0;     ///< 3 eps_y, 1
-  double bar_yield_stress = 0;     ///< E100 3 eps_y, Pa
+  double bar_yield_strain = 0;       ///< 3 eps_y, 1
+  double bar_yield_stress = 0;       ///< E100 3 eps_y, Pa
   double bar_hardening_tangent = 0;  ///< E100 k / E, Pa
-  double bar_failure_stress = 0;   ///< 3 (E100/E) sigma_max (first rods break), Pa
-  double bar_stress_factor = 0;    ///< 3 E100 / E: sigma_bar = factor * sigma_rod(eps_bar/3), 1
+  double bar_failure_stress = 0;     ///< 3 (E100/E) sigma_max (first rods break), Pa
+  double bar_stress_factor = 0;      ///< 3 E100 / E: sigma_bar = factor * sigma_rod(eps_bar/3), 1
 
-  RodLaw law;                      ///< the rod law with the viscosity filled in
-  bool converted = false;          ///< the rod law was derived from [material] macroscopic properties
+  RodLaw law;              ///< the rod law with the viscosity filled in
+  bool converted = false;  ///< the rod law was derived from [material] macroscopic properties
 };
 
 /// Computes everything from the settings and the lattice (radii, rest lengths). Throws

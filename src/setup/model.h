@@ -19,10 +19,10 @@ namespace swarf {
 /// The uniaxial test's geometry (when [uniaxial] is present).
 struct UniaxialInfo {
   bool enabled = false;
-  int axis = 0;                     ///< 0, 1, 2
-  int grip_min = -1, grip_max = -1; ///< group indices
-  double gauge_length = 0;          ///< initial distance between the innermost gripped layers, m
-  double cross_section = 0;         ///< initial cross-section, m^2 (lattice extent + one layer spacing per side)
+  int axis = 0;                      ///< 0, 1, 2
+  int grip_min = -1, grip_max = -1;  ///< group indices
+  double gauge_length = 0;           ///< initial distance between the innermost gripped layers, m
+  double cross_section = 0;          ///< initial cross-section, m^2 (lattice extent + one layer spacing per side)
   /// Rods crossing the plane halfway between the grips, with +1 if their end i lies on the
   /// low side: the force they carry is the bar's internal force at mid-length.
   std::vector<std::pair<std::int32_t, int>> midplane_rods;
@@ -31,9 +31,9 @@ struct UniaxialInfo {
 /// A case built: the World the step works on (Model is one, so a Simulation takes it as
 /// its World), the StepSettings for it, and what the run needs around the step.
 struct Model : World {
-  CaseSettings settings;              ///< the case as read
-  Derived derived;                    ///< what follows from it (printed, in summary.json)
-  StepSettings step;                  ///< the step's settings, from [integrator] and the derived step
+  CaseSettings settings;  ///< the case as read
+  Derived derived;        ///< what follows from it (printed, in summary.json)
+  StepSettings step;      ///< the step's settings, from [integrator] and the derived step
   UniaxialInfo uniaxial;
   std::size_t lattice_particles = 0;  ///< particles 0..this-1 come from the workpiece; free ones follow
 };

@@ -1,10 +1,11 @@
 // report.cpp: the Markdown report of a study (see report.h and docs/studies.md).
 #include "study/report.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <set>
 
 #include "io/atomic_file.h"
@@ -20,7 +21,8 @@ LinearFit fit_line_r2(const std::vector<double>& x, const std::vector<double>& y
   LinearFit f;
   f.n = std::min(x.size(), y.size());
   if (f.n < 2 || std::set<double>(x.begin(), x.begin() + f.n).size() < 2) return f;
-  const LineFit line = fit_line(std::vector<double>(x.begin(), x.begin() + f.n), std::vector<double>(y.begin(), y.begin() + f.n));
+  const LineFit line = fit_line(std::vector<double>(x.begin(), x.begin() + f.n),
+                                std::vector<double>(y.begin(), y.begin() + f.n));
   f.ok = true;
   f.slope = line.slope;
   f.intercept = line.intercept;
@@ -69,22 +71,24 @@ std::string markdown_table(const StudyTable& t, const std::vector<std::string>& 
 std::string case_label(const StudyTable& t, std::size_t r) {
   std::string out = t.rows[r][0];
   std::string keys;
-  for (std::size_t c = 1; c + 1 < t.first_metric; ++c) keys += (keys.empty() ? "" : ", ") + t.columns[c] + " = " + t.rows[r][c];
+  for (std::size_t c = 1; c + 1 < t.first_metric; ++c)
+    keys += (keys.empty() ? "" : ", ") + t.columns[c] + " = " + t.rows[r][c];
   return keys.empty() ? out : out + " (" + keys + ")";
 }
 
 std::string fit_row(const std::string& what, const LinearFit& f, const char* slope_unit, const char* icpt_unit) {
-  return fmt::format("| {} | {:.6g} {} | {:.6g} {} | {:.6f} | {} |\n", what, f.slope, slope_unit, f.intercept, icpt_unit,
-                     f.r2, f.n);
+  return fmt::format("| {} | {:.6g} {} | {:.6g} {} | {:.6f} | {} |\n", what, f.slope, slope_unit, f.intercept,
+                     icpt_unit, f.r2, f.n);
 }
 
 // Shear angle measured against Merchant's 45 deg + alpha/2 - beta/2 (both from summary.json).
 std::string merchant_section(const StudyTable& t) {
   std::string out = "## Shear angle against Merchant's theory\n\n";
-  out += "Merchant: phi_M = 45 deg + alpha/2 - beta/2, with the rake angle alpha of the tool and the friction angle "
-         "beta = alpha + atan(Ft/Fc) from the mean forces (`chip.merchant_shear_angle_deg`); phi is the shear angle "
-         "measured from the chip thickness (`chip.shear_angle_deg`). alpha is `chip.rake_angle_deg` where the summary has "
-         "it, else recovered as 2 (phi_M - 45 deg) + beta.\n\n";
+  out +=
+      "Merchant: phi_M = 45 deg + alpha/2 - beta/2, with the rake angle alpha of the tool and the friction angle "
+      "beta = alpha + atan(Ft/Fc) from the mean forces (`chip.merchant_shear_angle_deg`); phi is the shear angle "
+      "measured from the chip thickness (`chip.shear_angle_deg`). alpha is `chip.rake_angle_deg` where the summary has "
+      "it, else recovered as 2 (phi_M - 45 deg) + beta.\n\n";
   out += "| case | alpha [deg] | beta [deg] | phi measured [deg] | phi Merchant [deg] | phi - phi_M [deg] |\n";
   out += "|---|---|---|---|---|---|\n";
   std::vector<double> ab, phi, diff;
@@ -110,13 +114,15 @@ std::string merchant_section(const StudyTable& t) {
     mean += d / double(diff.size());
     mabs += std::abs(d) / double(diff.size());
   }
-  out += fmt::format("\nOver {} cases with a measured shear angle: mean phi - phi_M = {} deg, mean |phi - phi_M| = {} deg.\n",
-                     diff.size(), num(mean), num(mabs));
+  out += fmt::format(
+      "\nOver {} cases with a measured shear angle: mean phi - phi_M = {} deg, mean |phi - phi_M| = {} deg.\n",
+      diff.size(), num(mean), num(mabs));
   const LinearFit f = fit_line_r2(ab, phi);
   if (f.ok)
-    out += fmt::format("Least-squares line phi = a (alpha - beta) + b: a = {:.4g} (Merchant: 0.5), b = {:.4g} deg "
-                       "(Merchant: 45 deg), R^2 = {:.4f}, {} cases.\n",
-                       f.slope, f.intercept, f.r2, f.n);
+    out += fmt::format(
+        "Least-squares line phi = a (alpha - beta) + b: a = {:.4g} (Merchant: 0.5), b = {:.4g} deg "
+        "(Merchant: 45 deg), R^2 = {:.4f}, {} cases.\n",
+        f.slope, f.intercept, f.r2, f.n);
   return out + "\n";
 }
 
@@ -130,9 +136,10 @@ std::string depth_section(const StudyTable& t) {
     if (auto d = t.number(r, "chip.depth_of_cut_m")) depths.insert(*d);
   if (depths.size() < 2) return "";
   std::string out = "## Forces against depth of cut\n\n";
-  out += "Least-squares lines F/w = slope h + intercept of the steady mean forces per width of the workpiece against "
-         "the depth of cut h (`chip.depth_of_cut_m`). The slope is the specific cutting energy (N/m^2 = J/m^3); the "
-         "intercept is the force per width that does not scale with h (edge and ploughing).\n\n";
+  out +=
+      "Least-squares lines F/w = slope h + intercept of the steady mean forces per width of the workpiece against "
+      "the depth of cut h (`chip.depth_of_cut_m`). The slope is the specific cutting energy (N/m^2 = J/m^3); the "
+      "intercept is the force per width that does not scale with h (edge and ploughing).\n\n";
   out += "| force | slope | intercept | R^2 | cases |\n|---|---|---|---|---|\n";
   for (const auto& [what, col] : forces) {
     std::vector<double> x, y;
@@ -181,8 +188,9 @@ std::string write_report(const std::string& dir) {
   }
   md += fmt::format("- {} cases: {} completed, {} failed, {} not finished\n", t.rows.size(), completed, failed,
                     t.rows.size() - completed - failed);
-  md += "- all metrics: [study.csv](study.csv) (units in the second header line); wall times: "
-        "[timing.csv](timing.csv)\n\n";
+  md +=
+      "- all metrics: [study.csv](study.csv) (units in the second header line); wall times: "
+      "[timing.csv](timing.csv)\n\n";
 
   const std::vector<std::string> metrics = study.plot_metrics.empty() ? default_plot_metrics(t) : study.plot_metrics;
   md += "## Cases\n\n" + markdown_table(t, metrics) + "\n";
@@ -197,7 +205,8 @@ std::string write_report(const std::string& dir) {
 
   md += "## Plots\n\n";
   const auto files = pngs();
-  if (files.empty()) md += plot_note.empty() ? "No plots (plots = false in the study file).\n\n" : "No plots: " + plot_note + "\n\n";
+  if (files.empty())
+    md += plot_note.empty() ? "No plots (plots = false in the study file).\n\n" : "No plots: " + plot_note + "\n\n";
   for (const auto& f : files) md += fmt::format("![{}](plots/{})\n\n", f.substr(0, f.size() - 4), f);
 
   if (t.column("chip.merchant_shear_angle_deg") >= 0 && t.column("cutting.cutting_force_per_width_mean_N_per_m") >= 0) {

@@ -1,37 +1,35 @@
 // study_file.cpp: study files and their expansion into cases (see sweep.h, docs/studies.md).
-#include "study/sweep.h"
-#include "study/study_text.h"
-
 #include <fcntl.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <thread>
-#include <toml++/toml.h>
 
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
-#include "swarf/core/errors.h"
 #include "study/study_table.h"
+#include "study/study_text.h"
+#include "study/sweep.h"
 #include "study/sweep_mpi.h"
-
+#include "swarf/core/errors.h"
 
 namespace swarf {
 
@@ -54,7 +52,7 @@ std::string fnv1a_hex(const std::string& s) {
 std::string float_text(double v) {
   std::array<char, 64> buf{};
   const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v);  // shortest, either notation
-  std::string s = fmt::format("{}", v);  // fixed notation for exponents in [-4, 16)
+  std::string s = fmt::format("{}", v);                                    // fixed notation for exponents in [-4, 16)
   if (std::string sci(buf.data(), res.ptr); sci.size() + 3 <= s.size()) s = sci;  // 2e+11, not 200000000000
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
   return s;
@@ -64,9 +62,12 @@ std::string toml_string(const std::string& s) {
   std::string q = "\"";
   for (char c : s) {
     if (c == '"' || c == '\\') q += '\\';
-    if (c == '\n') q += "\\n";
-    else if (c == '\t') q += "\\t";
-    else q += c;
+    if (c == '\n')
+      q += "\\n";
+    else if (c == '\t')
+      q += "\\t";
+    else
+      q += c;
   }
   return q + "\"";
 }
@@ -103,7 +104,9 @@ std::string value_text(const std::string& source, const toml::node& n, const std
 
 bool valid_key(const std::string& key) {
   if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos) return false;
-  return std::all_of(key.begin(), key.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'; });
+  return std::all_of(key.begin(), key.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
 }
 
 // Flattens nested tables into dotted keys: [grid] mesh.0.rake_angle = [...] and
@@ -157,8 +160,8 @@ struct StudyKeys {
 // The top-level keys, each checked on its own; the scalars go straight into 's'.
 StudyKeys read_study_keys(const toml::table& root, const std::string& source, Study& s) {
   StudyKeys r;
-  const std::set<std::string> known{"base",         "title", "repetitions", "seed_key", "seed_start", "plots",
-                                    "plot_metrics", "plot_against", "set", "grid",        "point",    "units"};
+  const std::set<std::string> known{"base",         "title",        "repetitions", "seed_key", "seed_start", "plots",
+                                    "plot_metrics", "plot_against", "set",         "grid",     "point",      "units"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
     if (!known.count(key))
@@ -243,15 +246,17 @@ Axes check_varied(const toml::table& root, const std::string& source, const Stud
   if (!s.seed_key.empty() &&
       (r.point_keys.count(s.seed_key) ||
        std::any_of(axes.begin(), axes.end(), [&](const auto& a) { return a.first == s.seed_key; })))
-    throw InputError(fmt::format("{}: key 'seed_key' = \"{}\": that key is also varied by [grid] or [[point]]",
-                                 source, s.seed_key));
+    throw InputError(
+        fmt::format("{}: key 'seed_key' = \"{}\": that key is also varied by [grid] or [[point]]", source, s.seed_key));
   if (s.repetitions > 1 && s.seed_key.empty())
     bad(source, *root.get("repetitions"), "repetitions",
         "swarf runs are deterministic (a case has no random seed), so repetitions would repeat identical "
         "cases; give seed_key = \"<case key>\" to set a key to seed_start + repetition in each repetition");
   if (axes.empty() && r.points.empty() && s.repetitions == 1)
-    throw InputError(fmt::format("{}: nothing varies: give a [grid] table, [[point]] entries, or repetitions > 1 "
-                                 "with seed_key", source));
+    throw InputError(
+        fmt::format("{}: nothing varies: give a [grid] table, [[point]] entries, or repetitions > 1 "
+                    "with seed_key",
+                    source));
 
   // Varied keys: alphabetical, the seed key last.
   std::set<std::string> varied;
@@ -273,8 +278,7 @@ void expand(const std::string& source, const Axes& axes, std::vector<std::map<st
   std::size_t grid_count = 1;
   for (const auto& [k, v] : axes) grid_count *= v.size();
   const std::size_t total = std::max<std::size_t>(1, points.size()) * grid_count * std::size_t(s.repetitions);
-  if (total > 100000)
-    throw InputError(fmt::format("{}: {} cases: more than 100000 (split the study)", source, total));
+  if (total > 100000) throw InputError(fmt::format("{}: {} cases: more than 100000 (split the study)", source, total));
   if (points.empty()) points.emplace_back();
   const int width = id_width(static_cast<long long>(total));
   for (const auto& p : points) {

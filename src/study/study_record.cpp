@@ -1,38 +1,36 @@
 // study_record.cpp: a study's record in its output folder (study.json, reconciling an earlier
 // run's cases, each case's state from its summary) (see sweep.h).
-#include "study/sweep.h"
-#include "study/study_text.h"
-
 #include <fcntl.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <thread>
-#include <toml++/toml.h>
 
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
-#include "swarf/core/errors.h"
 #include "study/study_table.h"
+#include "study/study_text.h"
+#include "study/sweep.h"
 #include "study/sweep_mpi.h"
-
+#include "swarf/core/errors.h"
 
 namespace swarf {
 
@@ -60,7 +58,8 @@ void write_study_json(const Study& s, const std::string& out_dir) {
   j["plot_metrics"] = s.plot_metrics;
   j["plot_against"] = s.plot_against;
   j["cases"] = json::array();
-  for (const auto& c : s.cases) j["cases"].push_back({{"id", c.id}, {"values", c.values}, {"repetition", c.repetition}});
+  for (const auto& c : s.cases)
+    j["cases"].push_back({{"id", c.id}, {"values", c.values}, {"repetition", c.repetition}});
   fs::create_directories(out_dir);
   write_text_atomic((fs::path(out_dir) / "study.json").string(), j.dump(2) + "\n");
 }
@@ -116,10 +115,12 @@ void reconcile_study(Study& s, const std::string& out_dir) {
   for (const auto& k : fixed_keys) {
     const auto a = old.fixed.find(k);
     const auto b = s.fixed.find(k);
-    const std::string va = a == old.fixed.end() ? "not set" : a->second, vb = b == s.fixed.end() ? "not set" : b->second;
+    const std::string va = a == old.fixed.end() ? "not set" : a->second,
+                      vb = b == s.fixed.end() ? "not set" : b->second;
     if (va != vb) changes.push_back(fmt::format("set.{} ({} -> {})", k, va, vb));
   }
-  if (old.seed_key != s.seed_key) changes.push_back(fmt::format("seed_key (\"{}\" -> \"{}\")", old.seed_key, s.seed_key));
+  if (old.seed_key != s.seed_key)
+    changes.push_back(fmt::format("seed_key (\"{}\" -> \"{}\")", old.seed_key, s.seed_key));
 
   // Match the cases by their values; known cases keep their ids.
   std::map<std::map<std::string, std::string>, std::string> old_ids;
@@ -167,12 +168,15 @@ void reconcile_study(Study& s, const std::string& out_dir) {
 
 std::string CaseStatus::text() const {
   switch (state) {
-    case CaseState::completed: return "completed";
+    case CaseState::completed:
+      return "completed";
     case CaseState::failed:
       return exit_code > 128 ? fmt::format("failed (signal {})", exit_code - 128)
                              : fmt::format("failed (exit {})", exit_code);
-    case CaseState::interrupted: return "interrupted";
-    case CaseState::not_run: break;
+    case CaseState::interrupted:
+      return "interrupted";
+    case CaseState::not_run:
+      break;
   }
   return "not run";
 }

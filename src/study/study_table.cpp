@@ -1,15 +1,16 @@
 // study_table.cpp: the study table, its CSV and the plot data (see study_table.h).
 #include "study/study_table.h"
 
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "io/atomic_file.h"
 #include "swarf/core/errors.h"
@@ -128,12 +129,25 @@ std::optional<double> StudyTable::number(std::size_t row, const std::string& nam
 }
 
 std::string unit_of_key(const std::string& flat_key) {
-  static const std::vector<std::pair<std::string, std::string>> suffixes{
-      {"_N_s_per_m", "N s/m"}, {"_N_per_m", "N/m"}, {"_kg_per_m3", "kg/m^3"}, {"_rad_per_s", "rad/s"},
-      {"_m_per_s", "m/s"},     {"_per_us", "1/us"}, {"_Pa_s", "Pa s"},        {"_percent", "%"},
-      {"_m2", "m^2"},          {"_m3", "m^3"},      {"_deg", "deg"},          {"_rad", "rad"},
-      {"_Pa", "Pa"},           {"_J", "J"},         {"_W", "W"},              {"_N", "N"},
-      {"_kg", "kg"},           {"_m", "m"},         {"_s", "s"}};
+  static const std::vector<std::pair<std::string, std::string>> suffixes{{"_N_s_per_m", "N s/m"},
+                                                                         {"_N_per_m", "N/m"},
+                                                                         {"_kg_per_m3", "kg/m^3"},
+                                                                         {"_rad_per_s", "rad/s"},
+                                                                         {"_m_per_s", "m/s"},
+                                                                         {"_per_us", "1/us"},
+                                                                         {"_Pa_s", "Pa s"},
+                                                                         {"_percent", "%"},
+                                                                         {"_m2", "m^2"},
+                                                                         {"_m3", "m^3"},
+                                                                         {"_deg", "deg"},
+                                                                         {"_rad", "rad"},
+                                                                         {"_Pa", "Pa"},
+                                                                         {"_J", "J"},
+                                                                         {"_W", "W"},
+                                                                         {"_N", "N"},
+                                                                         {"_kg", "kg"},
+                                                                         {"_m", "m"},
+                                                                         {"_s", "s"}};
   std::vector<std::string> parts;
   std::stringstream ss(flat_key);
   for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
@@ -220,15 +234,21 @@ std::string table_csv(const StudyTable& t) {
 }
 
 std::vector<std::string> default_plot_metrics(const StudyTable& t) {
-  static const std::vector<std::string> wanted{
-      "cutting.cutting_force_per_width_mean_N_per_m", "cutting.thrust_force_per_width_mean_N_per_m",
-      "cutting.cutting_force_per_width_std_N_per_m",  "cutting.thrust_force_per_width_std_N_per_m",
-      "chip.thickness_m",                             "chip.compression_ratio",
-      "chip.shear_angle_deg",                         "chip.friction_angle_deg",
-      "chip.merchant_shear_angle_deg",                "results.broken_fraction",
-      "results.plastic_work_J",                       "results.external_work_J",
-      "uniaxial.measured.youngs_modulus_Pa",          "uniaxial.measured.yield_stress_Pa",
-      "uniaxial.measured.hardening_tangent_Pa"};
+  static const std::vector<std::string> wanted{"cutting.cutting_force_per_width_mean_N_per_m",
+                                               "cutting.thrust_force_per_width_mean_N_per_m",
+                                               "cutting.cutting_force_per_width_std_N_per_m",
+                                               "cutting.thrust_force_per_width_std_N_per_m",
+                                               "chip.thickness_m",
+                                               "chip.compression_ratio",
+                                               "chip.shear_angle_deg",
+                                               "chip.friction_angle_deg",
+                                               "chip.merchant_shear_angle_deg",
+                                               "results.broken_fraction",
+                                               "results.plastic_work_J",
+                                               "results.external_work_J",
+                                               "uniaxial.measured.youngs_modulus_Pa",
+                                               "uniaxial.measured.yield_stress_Pa",
+                                               "uniaxial.measured.hardening_tangent_Pa"};
   std::vector<std::string> out;
   for (const auto& m : wanted)
     if (t.column(m) >= 0) out.push_back(m);
@@ -328,8 +348,11 @@ std::string draw_plots(const Study& study, const StudyTable& table, const std::s
   j["title"] = study.title.empty() ? study.file : study.title;
   j["plots"] = json::array();
   for (const auto& p : series)
-    j["plots"].push_back({{"file", p.file}, {"x_label", label(p.x_name, p.x_unit)},
-                          {"y_label", label(p.y_name, p.y_unit)}, {"x", p.x}, {"y", p.y}});
+    j["plots"].push_back({{"file", p.file},
+                          {"x_label", label(p.x_name, p.x_unit)},
+                          {"y_label", label(p.y_name, p.y_unit)},
+                          {"x", p.x},
+                          {"y", p.y}});
   write_text_atomic((dir / "plots.json").string(), j.dump(1) + "\n");
   if (series.empty()) return "nothing to plot (no numeric varied key with completed cases)";
   std::string script = std::string(SWARF_POSTPROCESS_DIR) + "/study_plots.py";

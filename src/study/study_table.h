@@ -11,13 +11,13 @@
 namespace swarf {
 
 struct StudyTable {
-  std::vector<std::string> columns;             ///< names
-  std::vector<std::string> units;               ///< one per column ("-" for text columns)
-  std::vector<std::vector<std::string>> rows;   ///< cells as text, rows in case id order
-  std::vector<CaseStatus> status;               ///< one per row
-  std::size_t first_metric = 0;                 ///< columns before this are case, keys, status
+  std::vector<std::string> columns;            ///< names
+  std::vector<std::string> units;              ///< one per column ("-" for text columns)
+  std::vector<std::vector<std::string>> rows;  ///< cells as text, rows in case id order
+  std::vector<CaseStatus> status;              ///< one per row
+  std::size_t first_metric = 0;                ///< columns before this are case, keys, status
 
-  int column(const std::string& name) const;    ///< -1 if absent
+  int column(const std::string& name) const;  ///< -1 if absent
   /// The cell as a number (empty or text: none).
   std::optional<double> number(std::size_t row, const std::string& name) const;
 };
@@ -38,7 +38,7 @@ std::vector<std::string> default_plot_metrics(const StudyTable& table);
 
 /// One plot: a metric against a varied key (or a metric), over the completed cases.
 struct PlotSeries {
-  std::string file;      ///< PNG name in DIR/plots
+  std::string file;  ///< PNG name in DIR/plots
   std::string x_name, x_unit, y_name, y_unit;
   std::vector<double> x, y;
 };

@@ -1,8 +1,9 @@
 // study_text.cpp: see study_text.h.
 #include "study/study_text.h"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <vector>

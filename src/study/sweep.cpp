@@ -1,38 +1,37 @@
 // sweep.cpp: running a study's cases as subprocesses of swarf, several at once and across MPI
 // ranks, and resuming (see sweep.h and docs/studies.md).
 #include "study/sweep.h"
-#include "study/study_text.h"
 
 #include <fcntl.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <thread>
-#include <toml++/toml.h>
 
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
-#include "swarf/core/errors.h"
 #include "study/study_table.h"
+#include "study/study_text.h"
 #include "study/sweep_mpi.h"
-
+#include "swarf/core/errors.h"
 
 extern char** environ;
 
@@ -115,7 +114,8 @@ bool run_one(const Study& s, const StudyCase& c, const SweepOptions& o, int thre
   try {
     fs::create_directories(dir);
     fs::remove(fs::path(dir) / "sweep_status.json");
-    std::vector<std::string> argv{o.swarf_exe.empty() ? "/proc/self/exe" : o.swarf_exe, "run", s.base_path, "--out", dir};
+    std::vector<std::string> argv{o.swarf_exe.empty() ? "/proc/self/exe" : o.swarf_exe, "run", s.base_path, "--out",
+                                  dir};
     for (const auto& ov : case_overrides(s, c)) argv.insert(argv.end(), {"--set", ov});
     argv.insert(argv.end(), {"--threads", std::to_string(threads)});
     code = run_logged(argv, (fs::path(dir) / "log.txt").string());
@@ -201,7 +201,8 @@ int run_sweep(const SweepOptions& o) {
   SweepProgress progress(prefix, mine.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&]() {
-    for (std::size_t k = next++; k < mine.size(); k = next++) run_one(study, study.cases[mine[k]], o, threads, progress);
+    for (std::size_t k = next++; k < mine.size(); k = next++)
+      run_one(study, study.cases[mine[k]], o, threads, progress);
   };
   std::vector<std::thread> pool;
   for (int j = 1; j < std::min<int>(o.jobs, int(mine.size())); ++j) pool.emplace_back(worker);

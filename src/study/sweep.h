@@ -11,28 +11,28 @@ namespace swarf {
 
 /// One case of a study: the overrides that make it.
 struct StudyCase {
-  std::string id;                              ///< "0000", "0001", ...: the folder DIR/cases/<id>
-  std::map<std::string, std::string> values;   ///< varied key (and seed key) -> TOML value text
-  int repetition = 0;                          ///< 0-based repetition (seed = seed_start + repetition)
+  std::string id;                             ///< "0000", "0001", ...: the folder DIR/cases/<id>
+  std::map<std::string, std::string> values;  ///< varied key (and seed key) -> TOML value text
+  int repetition = 0;                         ///< 0-based repetition (seed = seed_start + repetition)
 };
 
 /// A study file, expanded into its cases.
 struct Study {
-  std::string file;                            ///< the study file as given
-  std::string title;                           ///< key 'title' (may be empty)
-  std::string base;                            ///< key 'base' as written
-  std::string base_path;                       ///< 'base' resolved against the study file's directory
-  std::string base_hash;                       ///< FNV-1a 64-bit hash of the base case text, hex
-  std::map<std::string, std::string> fixed;    ///< [set]: key -> TOML value text, applied to every case
-  std::vector<std::string> parameters;         ///< the varied keys in column order (seed key last)
-  std::map<std::string, std::string> units;    ///< [units]: key -> unit text for the study.csv header
+  std::string file;                          ///< the study file as given
+  std::string title;                         ///< key 'title' (may be empty)
+  std::string base;                          ///< key 'base' as written
+  std::string base_path;                     ///< 'base' resolved against the study file's directory
+  std::string base_hash;                     ///< FNV-1a 64-bit hash of the base case text, hex
+  std::map<std::string, std::string> fixed;  ///< [set]: key -> TOML value text, applied to every case
+  std::vector<std::string> parameters;       ///< the varied keys in column order (seed key last)
+  std::map<std::string, std::string> units;  ///< [units]: key -> unit text for the study.csv header
   int repetitions = 1;
-  std::string seed_key;                        ///< case key set to seed_start + repetition (empty: none)
+  std::string seed_key;  ///< case key set to seed_start + repetition (empty: none)
   long long seed_start = 1;
   bool plots = true;
-  std::vector<std::string> plot_metrics;       ///< empty = the default subset (see study_table.h)
-  std::vector<std::string> plot_against;       ///< empty = the numeric varied keys
-  std::vector<StudyCase> cases;                ///< in id order
+  std::vector<std::string> plot_metrics;  ///< empty = the default subset (see study_table.h)
+  std::vector<std::string> plot_against;  ///< empty = the numeric varied keys
+  std::vector<StudyCase> cases;           ///< in id order
 };
 
 /// Parses and expands a study file's text (directory: where 'base' is resolved). Throws
@@ -57,8 +57,8 @@ Study read_study_json(const std::string& out_dir);
 enum class CaseState { completed, failed, interrupted, not_run };
 struct CaseStatus {
   CaseState state = CaseState::not_run;
-  int exit_code = 0;       ///< failed: the exit code (128 + signal when killed by a signal)
-  std::string log_tail;    ///< failed: the last lines of log.txt
+  int exit_code = 0;         ///< failed: the exit code (128 + signal when killed by a signal)
+  std::string log_tail;      ///< failed: the last lines of log.txt
   std::string text() const;  ///< "completed", "failed (exit 3)", "interrupted", "not run"
 };
 std::string case_dir(const std::string& out_dir, const StudyCase& c);
@@ -73,10 +73,10 @@ int run_logged(const std::vector<std::string>& argv, const std::string& log_path
 struct SweepOptions {
   std::string study_path;
   std::string out_dir;
-  int jobs = 1;              ///< cases at once (per MPI rank)
-  int threads = 0;           ///< threads per case; 0 = max(1, cores / (jobs x ranks on the node))
-  std::string swarf_exe;     ///< the swarf binary; empty = /proc/self/exe
-  bool list_only = false;    ///< print the cases (id, state, overrides) and run nothing
+  int jobs = 1;            ///< cases at once (per MPI rank)
+  int threads = 0;         ///< threads per case; 0 = max(1, cores / (jobs x ranks on the node))
+  std::string swarf_exe;   ///< the swarf binary; empty = /proc/self/exe
+  bool list_only = false;  ///< print the cases (id, state, overrides) and run nothing
 };
 
 /// 'swarf sweep': runs the pending cases, then writes study.csv, timing.csv and the plots.

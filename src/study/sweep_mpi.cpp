@@ -57,8 +57,9 @@ int MpiSession::from_root(int v) const {
 
 MpiSession::MpiSession() {
   if (launched())
-    throw InputError("this swarf was built without MPI: run the study without mpirun (swarf sweep --jobs N), "
-                     "or rebuild with the MPI development files (libopenmpi-dev)");
+    throw InputError(
+        "this swarf was built without MPI: run the study without mpirun (swarf sweep --jobs N), "
+        "or rebuild with the MPI development files (libopenmpi-dev)");
 }
 MpiSession::~MpiSession() = default;
 void MpiSession::barrier() const {}

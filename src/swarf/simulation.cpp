@@ -1,8 +1,9 @@
 // simulation.cpp: the step function of both schemes, stage by stage (see simulation.h).
 #include "swarf/simulation.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "swarf/core/errors.h"
 #include "swarf/core/parallel.h"
@@ -100,8 +101,10 @@ void Simulation::step_scheme(double max_dt) {
       clock_.lap(Stage::Account);
       // Step size control from the number of sweeps (paper section 3.4).
       const int it = stats_.last_iterations;
-      if (it <= g.iterations_grow) dt_ = std::min(dt_ * g.grow_factor, g.dt_max);
-      else if (it >= g.iterations_shrink) dt_ = std::max(dt_ * g.shrink_factor, g.dt_min);
+      if (it <= g.iterations_grow)
+        dt_ = std::min(dt_ * g.grow_factor, g.dt_max);
+      else if (it >= g.iterations_shrink)
+        dt_ = std::max(dt_ * g.shrink_factor, g.dt_min);
       return;
     }
     restore_state();
@@ -407,16 +410,15 @@ void Simulation::throw_too_far(double h) const {
           i, p.position[i][0], p.position[i][1], p.position[i][2], moved, stats_.accepted + 1, time_ + h, limit,
           v.norm(), h));
   }
-  throw SimulationError(fmt::format("unstable: non-finite state in step {} at t = {:.6g} s", stats_.accepted + 1,
-                                    time_ + h));
+  throw SimulationError(
+      fmt::format("unstable: non-finite state in step {} at t = {:.6g} s", stats_.accepted + 1, time_ + h));
 }
 
 double Simulation::kinetic_energy() const {
   const auto& p = m_.particles;
   const bool rot = rotations_;
-  return deterministic_sum(p.size(), [&](std::size_t i) {
-    return 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
-  }) + (rot ? rotational_energy() : 0.0);
+  return deterministic_sum(p.size(), [&](std::size_t i) { return 0.5 * p.mass[i] * p.velocity[i].squaredNorm(); }) +
+         (rot ? rotational_energy() : 0.0);
 }
 
 double Simulation::rotational_energy() const {

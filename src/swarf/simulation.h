@@ -16,10 +16,10 @@
 //   the rotation update, particle by particle), commit, account
 // Implicit Newmark (beta 1/4, gamma 1/2 by default), solved by fixed-point iteration:
 //   save, prescribe, then repeat { place (x, v and the rotations from the latest a+), rod_forces,
-//   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with the final
-//   a+, commit, account. A step that does not converge (or diverges, or moves a particle too
-//   far) is rejected: everything is restored from the saved state, bit for bit, and retried
-//   with a smaller step. The number of sweeps drives the next step size (paper section 3.4).
+//   contact_forces, gather } until the sweep's change is below the tolerance (see gather); then place once more with
+//   the final a+, commit, account. A step that does not converge (or diverges, or moves a particle too far) is
+//   rejected: everything is restored from the saved state, bit for bit, and retried with a smaller step. The number of
+//   sweeps drives the next step size (paper section 3.4).
 #pragma once
 
 #include <cstdint>
@@ -37,22 +37,22 @@ namespace swarf {
 
 /// Energy bookkeeping, J. external = kinetic + elastic + plastic + viscous + fracture (+ error).
 struct EnergyLedger {
-  double external_work = 0;     ///< work done by the prescribed motions
-  double plastic_work = 0;      ///< sum of sigma d(eps_p) A L0 over commits
-  double viscous_work = 0;      ///< dissipated by the rods' viscous part
-  double fracture_energy = 0;   ///< elastic energy lost with broken rods
-  double contact_work = 0;      ///< taken up by the contacts: -integral of the contact forces' power on
-                                ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
+  double external_work = 0;    ///< work done by the prescribed motions
+  double plastic_work = 0;     ///< sum of sigma d(eps_p) A L0 over commits
+  double viscous_work = 0;     ///< dissipated by the rods' viscous part
+  double fracture_energy = 0;  ///< elastic energy lost with broken rods
+  double contact_work = 0;     ///< taken up by the contacts: -integral of the contact forces' power on
+                               ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
 };
 
 /// Counters of the step control.
 struct StepStats {
-  std::int64_t accepted = 0;          ///< steps taken
-  std::int64_t rejected = 0;          ///< steps rejected and retried
-  std::int64_t iterations = 0;        ///< fixed-point sweeps of accepted steps
-  std::int64_t force_evaluations = 0; ///< all rod-force evaluations, rejected steps included
-  int max_iterations = 0;             ///< most sweeps an accepted step needed
-  int last_iterations = 0;            ///< sweeps of the last accepted step
+  std::int64_t accepted = 0;           ///< steps taken
+  std::int64_t rejected = 0;           ///< steps rejected and retried
+  std::int64_t iterations = 0;         ///< fixed-point sweeps of accepted steps
+  std::int64_t force_evaluations = 0;  ///< all rod-force evaluations, rejected steps included
+  int max_iterations = 0;              ///< most sweeps an accepted step needed
+  int last_iterations = 0;             ///< sweeps of the last accepted step
 };
 
 class Simulation {
@@ -98,7 +98,7 @@ class Simulation {
   /// and angular velocities (Euler's equations), as the Newmark update assumes.
   void set_rotations(bool on);
 
-  double kinetic_energy() const;  ///< translational + rotational, J
+  double kinetic_energy() const;     ///< translational + rotational, J
   double rotational_energy() const;  ///< rotational part of the kinetic energy, J
   /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy() const;
@@ -134,8 +134,8 @@ class Simulation {
 
   // Stages.
   void prescribe(double h);
-  bool kick_drift(double h);   // explicit predictor; false if a particle moved too far
-  bool place(double h);        // Newmark positions, velocities and rotations from the latest a; false if too far
+  bool kick_drift(double h);  // explicit predictor; false if a particle moved too far
+  bool place(double h);       // Newmark positions, velocities and rotations from the latest a; false if too far
   void rotate_one(std::size_t i, double h, double beta, double gamma);
   void rod_forces();
   void contact_forces(double h, bool final = false);
@@ -150,7 +150,8 @@ class Simulation {
   void update_free_to_rotate();
   void reindex_all(const Reindex& r);  // the door's common part
   void resize_scratch();
-  void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows               // per-particle, per-rod-block and per-group scratch after a change
+  void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows // per-particle,
+                                                                   // per-rod-block and per-group scratch after a change
   void save_state();
   void restore_state();
   [[noreturn]] void throw_too_far(double h) const;
@@ -167,17 +168,17 @@ class Simulation {
   std::size_t broken_ = 0;
   EnergyLedger ledger_;
   StepStats stats_;
-  std::vector<double> block_viscous_;   // per rod block, W
-  std::vector<int> block_changed_;      // per rod block: a trial shift or break to commit
+  std::vector<double> block_viscous_;            // per rod block, W
+  std::vector<int> block_changed_;               // per rod block: a trial shift or break to commit
   std::vector<Vec3> group_u_old_, group_u_new_;  // group displacements at t and t + dt
   std::vector<Vec3> reaction_, reaction_old_;
-  std::vector<Vec3> group_v_;      // velocity of the prescribed components in the last step, m/s
-  std::vector<double> group_mass_; // total mass of each group, kg
-  std::vector<Vec3> mesh_force_;      // force on each mesh after the last accepted step, N
-  std::vector<Vec3> contact_force_;   // contact part of each particle's force, N
-  double contact_power_old_ = 0;      // power of the contact forces at the start of the step, W
-  double kick_power_ = 0;             // power of the contact forces on the particles after the kick, W
-  std::vector<double> block_power_;   // its parts per block of particles, W
+  std::vector<Vec3> group_v_;        // velocity of the prescribed components in the last step, m/s
+  std::vector<double> group_mass_;   // total mass of each group, kg
+  std::vector<Vec3> mesh_force_;     // force on each mesh after the last accepted step, N
+  std::vector<Vec3> contact_force_;  // contact part of each particle's force, N
+  double contact_power_old_ = 0;     // power of the contact forces at the start of the step, W
+  double kick_power_ = 0;            // power of the contact forces on the particles after the kick, W
+  std::vector<double> block_power_;  // its parts per block of particles, W
   /// Power of the contact forces on the particles and the meshes, W; the particles' part
   /// from the fused gather and kick if 'from_kick'.
   double contact_power(bool from_kick = false) const;
@@ -189,10 +190,10 @@ class Simulation {
   StageClock clock_;
   std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods
   std::vector<std::int32_t> free_list_;       // those particles, in order
-  bool rebuild_lists_ = false;      // rebuild the contact lists at the next evaluation (set by append_particles)
-  double sweep_dt_ = 0;             // step size of the current sweep, s
-  double step_disp2_ = 0;           // largest squared displacement of the step so far, m^2
-  double moved2_ = -1.0;            // largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
+  bool rebuild_lists_ = false;  // rebuild the contact lists at the next evaluation (set by append_particles)
+  double sweep_dt_ = 0;         // step size of the current sweep, s
+  double step_disp2_ = 0;       // largest squared displacement of the step so far, m^2
+  double moved2_ = -1.0;        // largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
 };
 
 }  // namespace swarf

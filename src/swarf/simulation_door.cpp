@@ -56,8 +56,10 @@ void Simulation::append_particles(const Particles& extra) {
   Particles add = extra;  // (a copy: its fields are moved into the World's arrays)
   const std::size_t k = add.position.size();
   bool consistent = true;
-  add.for_each_field([&](const char* name, auto& v) { consistent = consistent && (v.size() == k || std::string(name) == "id"); });
-  if (!consistent) throw InputError("append_particles: the new particles' arrays differ in length (size them with Particles::resize)");
+  add.for_each_field(
+      [&](const char* name, auto& v) { consistent = consistent && (v.size() == k || std::string(name) == "id"); });
+  if (!consistent)
+    throw InputError("append_particles: the new particles' arrays differ in length (size them with Particles::resize)");
   auto& p = m_.particles;
   add.id.resize(k);
   for (std::size_t q = 0; q < k; ++q) add.id[q] = p.next_id++;

@@ -122,8 +122,10 @@ double Simulation::gather_impl(double h) {
   // particles' data in its own core's cache (dynamic blocks were slower: validation/bench/README.md).
 #pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
   for (std::size_t b = 0; b < nb; ++b) {
-    if (contacts) block.template operator()<true>(b, dmax, fmax, damax);
-    else block.template operator()<false>(b, dmax, fmax, damax);
+    if (contacts)
+      block.template operator()<true>(b, dmax, fmax, damax);
+    else
+      block.template operator()<false>(b, dmax, fmax, damax);
   }
   if constexpr (Kick) {
     kick_power_ = 0.0;
@@ -141,20 +143,22 @@ double Simulation::gather_impl(double h) {
   //  - the position correction beta h^2 |da| relative to the largest displacement of the
   //    step (fast motion through unstressed states, where the force level vanishes).
   const double by_force = fmax > 0.0 ? std::sqrt(dmax / fmax) : HUGE_VAL;
-  const double by_motion = step_disp2_ > 0.0 ? set_.beta * h * h * std::sqrt(damax / step_disp2_)
-                                             : HUGE_VAL;
+  const double by_motion = step_disp2_ > 0.0 ? set_.beta * h * h * std::sqrt(damax / step_disp2_) : HUGE_VAL;
   return std::min(by_force, by_motion);
 }
 
 double Simulation::gather() {
   const double h = sweep_dt_;
-  if (!implicit_) return m_.periodic.on() ? gather_impl<GatherMode::Plain, true>(h) : gather_impl<GatherMode::Plain, false>(h);
+  if (!implicit_)
+    return m_.periodic.on() ? gather_impl<GatherMode::Plain, true>(h) : gather_impl<GatherMode::Plain, false>(h);
   return m_.periodic.on() ? gather_impl<GatherMode::Measure, true>(h) : gather_impl<GatherMode::Measure, false>(h);
 }
 
 void Simulation::gather_kick(double h) {
-  if (m_.periodic.on()) gather_impl<GatherMode::Kick, true>(h);
-  else gather_impl<GatherMode::Kick, false>(h);
+  if (m_.periodic.on())
+    gather_impl<GatherMode::Kick, true>(h);
+  else
+    gather_impl<GatherMode::Kick, false>(h);
 }
 
 }  // namespace swarf

@@ -75,8 +75,7 @@ void Simulation::visit_state(StateArchive& ar) {
   }
   ar.array("rods/ends", ends, load ? any : 2 * m);
   r.for_each_field([&](const char* name, auto& v) { ar.array(std::string("rods/") + name, v, load ? any : m); });
-  for (std::size_t g = 0; g < ng; ++g)
-    ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
+  for (std::size_t g = 0; g < ng; ++g) ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
   if (load) check_loaded_world(ends);
   std::vector<Vec3> offset, velocity;
   for (const auto& mb : m_.meshes) {

@@ -14,27 +14,28 @@ enum class Scheme {
 
 struct StepSettings {
   Scheme scheme = Scheme::Verlet;
-  double dt = 0;                      ///< s: Verlet's fixed step; Newmark's first step
+  double dt = 0;  ///< s: Verlet's fixed step; Newmark's first step
   // Newmark (ignored by Verlet).
-  double beta = 0.25;                 ///< 1
-  double gamma = 0.5;                 ///< 1
-  double dt_min = 0;                  ///< s: a step that must shrink below this stops the run
-  double dt_max = 0;                  ///< s: largest step the control may take
-  double tolerance = 1e-6;            ///< 1: relative force change between sweeps at convergence
-  int max_iterations = 25;            ///< sweeps before a step is rejected
-  int iterations_grow = 4;            ///< a step that took at most this many sweeps grows the next
-  int iterations_shrink = 10;         ///< a step that took at least this many sweeps shrinks the next
-  double grow_factor = 1.2;           ///< 1
-  double shrink_factor = 0.7;         ///< 1
-  double reject_factor = 0.5;         ///< 1: a rejected step is retried this much smaller
-  double relaxation = 1.0;            ///< 1: w of the relaxed sweeps, (1 - w) a_guess + w a_swept
+  double beta = 0.25;          ///< 1
+  double gamma = 0.5;          ///< 1
+  double dt_min = 0;           ///< s: a step that must shrink below this stops the run
+  double dt_max = 0;           ///< s: largest step the control may take
+  double tolerance = 1e-6;     ///< 1: relative force change between sweeps at convergence
+  int max_iterations = 25;     ///< sweeps before a step is rejected
+  int iterations_grow = 4;     ///< a step that took at most this many sweeps grows the next
+  int iterations_shrink = 10;  ///< a step that took at least this many sweeps shrinks the next
+  double grow_factor = 1.2;    ///< 1
+  double shrink_factor = 0.7;  ///< 1
+  double reject_factor = 0.5;  ///< 1: a rejected step is retried this much smaller
+  double relaxation = 1.0;     ///< 1: w of the relaxed sweeps, (1 - w) a_guess + w a_swept
   // Both schemes.
-  double max_step_displacement = 0.25; ///< radii: a particle moving further in a step stops (Verlet) or rejects (Newmark) it
-  bool sphere_orientations = false;   ///< integrate the free spheres' orientations (nothing in the dynamics depends on them)
+  double max_step_displacement = 0.25;  ///< radii: a particle moving further in a step stops (Verlet) or rejects
+                                        ///< (Newmark) it
+  bool sphere_orientations = false;  ///< integrate the free spheres' orientations (nothing in the dynamics depends on them)
   // Scales of the convergence measure (Newmark): the force level of a rod strained by
   // 1e-8 is stiffness_scale * length_scale * 1e-8, the floor below which forces are noise.
-  double length_scale = 0;            ///< m: nearest-neighbour distance
-  double stiffness_scale = 0;         ///< N/m: axial stiffness of the stiffest rod
+  double length_scale = 0;     ///< m: nearest-neighbour distance
+  double stiffness_scale = 0;  ///< N/m: axial stiffness of the stiffest rod
 
   bool implicit() const { return scheme == Scheme::Newmark; }
 };

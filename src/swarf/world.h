@@ -21,13 +21,13 @@ namespace swarf {
 struct World {
   Particles particles;
   Rods rods;
-  std::vector<Group> groups;          ///< particles whose components follow a prescribed motion
-  Periodic periodic;                  ///< periodic width along y (off unless set)
-  std::vector<MeshBody> meshes;       ///< rigid triangle meshes (placement updated by the step)
-  std::vector<Motion> mesh_motion;    ///< prescribed translation of each mesh
-  bool contacts = false;              ///< Hertz contacts and friction between unbonded particles and with meshes
-  ContactParams contact;              ///< used when 'contacts'
-  Vec3 gravity = Vec3::Zero();        ///< m/s^2
+  std::vector<Group> groups;        ///< particles whose components follow a prescribed motion
+  Periodic periodic;                ///< periodic width along y (off unless set)
+  std::vector<MeshBody> meshes;     ///< rigid triangle meshes (placement updated by the step)
+  std::vector<Motion> mesh_motion;  ///< prescribed translation of each mesh
+  bool contacts = false;            ///< Hertz contacts and friction between unbonded particles and with meshes
+  ContactParams contact;            ///< used when 'contacts'
+  Vec3 gravity = Vec3::Zero();      ///< m/s^2
 };
 
 }  // namespace swarf

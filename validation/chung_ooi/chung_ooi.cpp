@@ -7,10 +7,11 @@
 // Tests 1-3 compare with the analytic Hertz impact; tests 4-8 (oblique impacts, spin, two
 // spheres of equal and different size) with the rigid-body impulse theory where the contact
 // slides throughout, and show the sticking regime (governed by tangential compliance) as is.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -34,9 +35,10 @@ struct ImpactResult {
 };
 
 std::string contact_table(const Material& m, double e, double mu) {
-  return fmt::format("[material]\ndensity = {}\n[contact]\nyoungs_modulus = {}\npoisson_ratio = {}\nrestitution = {}\n"
-                     "friction = {}\nfriction_law = \"spring\"\n",
-                     m.rho, m.E, m.nu, e, mu);
+  return fmt::format(
+      "[material]\ndensity = {}\n[contact]\nyoungs_modulus = {}\npoisson_ratio = {}\nrestitution = {}\n"
+      "friction = {}\nfriction_law = \"spring\"\n",
+      m.rho, m.E, m.nu, e, mu);
 }
 
 // Steps a model until the contact measured by 'overlap' (m) has opened and closed again;
@@ -62,10 +64,11 @@ ImpactResult run_impact(Simulation& sim, Overlap overlap, Force force) {
 // Two identical spheres, radius R, approaching at +-v along x (test 1).
 ImpactResult two_spheres(const Material& m, double R, double v, double dt) {
   const std::string text = contact_table(m, 1.0, 0.0) +
-                           fmt::format("[[particle]]\nposition = [0.0, 0.0, 0.0]\nvelocity = [{v}, 0.0, 0.0]\nradius = {R}\n"
-                                       "[[particle]]\nposition = [{x}, 0.0, 0.0]\nvelocity = [-{v}, 0.0, 0.0]\nradius = {R}\n"
-                                       "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
-                                       fmt::arg("v", v), fmt::arg("R", R), fmt::arg("x", 2 * R * 1.0001), fmt::arg("dt", dt));
+                           fmt::format(
+                               "[[particle]]\nposition = [0.0, 0.0, 0.0]\nvelocity = [{v}, 0.0, 0.0]\nradius = {R}\n"
+                               "[[particle]]\nposition = [{x}, 0.0, 0.0]\nvelocity = [-{v}, 0.0, 0.0]\nradius = {R}\n"
+                               "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
+                               fmt::arg("v", v), fmt::arg("R", R), fmt::arg("x", 2 * R * 1.0001), fmt::arg("dt", dt));
   Model model = build_model(parse_case(text, "chung_ooi test 1", {}));
   Simulation sim(model, model.step);
   const auto& p = model.particles;
@@ -81,16 +84,18 @@ ImpactResult sphere_on_plane(const Material& m, double R, double vn, double vt, 
   const double L = 200 * R;
   const std::string text =
       contact_table(m, e, mu) +
-      fmt::format("[[particle]]\nposition = [0.0, 0.0, {z:.17g}]\nvelocity = [{vt:.17g}, 0.0, {vz:.17g}]\nradius = {R}\n"
-                  "angular_velocity = [0.0, {wy:.17g}, 0.0]\n"
-                  "[[mesh]]\nname = \"plane\"\norigin = [{o}, {o}, 0.0]\nedge1 = [{L}, 0.0, 0.0]\nedge2 = [0.0, {L}, 0.0]\n"
-                  "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
-                  fmt::arg("z", R * 1.0001), fmt::arg("vt", vt), fmt::arg("vz", -vn), fmt::arg("R", R),
-                  fmt::arg("o", -L / 2), fmt::arg("L", L), fmt::arg("dt", dt), fmt::arg("wy", spin_y));
+      fmt::format(
+          "[[particle]]\nposition = [0.0, 0.0, {z:.17g}]\nvelocity = [{vt:.17g}, 0.0, {vz:.17g}]\nradius = {R}\n"
+          "angular_velocity = [0.0, {wy:.17g}, 0.0]\n"
+          "[[mesh]]\nname = \"plane\"\norigin = [{o}, {o}, 0.0]\nedge1 = [{L}, 0.0, 0.0]\nedge2 = [0.0, {L}, 0.0]\n"
+          "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
+          fmt::arg("z", R * 1.0001), fmt::arg("vt", vt), fmt::arg("vz", -vn), fmt::arg("R", R), fmt::arg("o", -L / 2),
+          fmt::arg("L", L), fmt::arg("dt", dt), fmt::arg("wy", spin_y));
   Model model = build_model(parse_case(text, "chung_ooi sphere on plane", {}));
   Simulation sim(model, model.step);
   const auto& p = model.particles;
-  ImpactResult r = run_impact(sim, [&] { return R - p.position[0][2]; }, [&] { return p.force[0][2]; });
+  ImpactResult r = run_impact(
+      sim, [&] { return R - p.position[0][2]; }, [&] { return p.force[0][2]; });
   r.v_after = p.velocity[0];
   r.w_after = p.omega[0];
   return r;
@@ -100,13 +105,14 @@ ImpactResult sphere_on_plane(const Material& m, double R, double vn, double vt, 
 // above (tests 7 and 8). Returns sphere 2's state after the impact in v_after / w_after.
 ImpactResult two_spheres_oblique(const Material& m, double R1, double R2, double vn, double vt, double e, double mu,
                                  double dt) {
-  const std::string text =
-      contact_table(m, e, mu) +
-      fmt::format("[[particle]]\nposition = [0.0, 0.0, 0.0]\nradius = {R1}\n"
-                  "[[particle]]\nposition = [0.0, 0.0, {z:.17g}]\nvelocity = [{vt:.17g}, 0.0, {vz:.17g}]\nradius = {R2}\n"
-                  "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
-                  fmt::arg("R1", R1), fmt::arg("R2", R2), fmt::arg("z", (R1 + R2) * 1.0001), fmt::arg("vt", vt),
-                  fmt::arg("vz", -vn), fmt::arg("dt", dt));
+  const std::string text = contact_table(m, e, mu) +
+                           fmt::format(
+                               "[[particle]]\nposition = [0.0, 0.0, 0.0]\nradius = {R1}\n"
+                               "[[particle]]\nposition = [0.0, 0.0, {z:.17g}]\nvelocity = [{vt:.17g}, 0.0, "
+                               "{vz:.17g}]\nradius = {R2}\n"
+                               "[integrator]\nscheme = \"verlet\"\ndt = {dt:.17g}\nend_time = 1\n",
+                               fmt::arg("R1", R1), fmt::arg("R2", R2), fmt::arg("z", (R1 + R2) * 1.0001),
+                               fmt::arg("vt", vt), fmt::arg("vz", -vn), fmt::arg("dt", dt));
   Model model = build_model(parse_case(text, "chung_ooi two spheres oblique", {}));
   Simulation sim(model, model.step);
   const auto& p = model.particles;
@@ -159,8 +165,9 @@ int main(int argc, char** argv) {
   };
 
   // Test 1: two identical spheres, R = 0.01 m, 10 m/s each.
-  md += "## Test 1: elastic normal impact of two identical spheres (R = 0.01 m, 10 m/s each)\n\n"
-        "| material | quantity | swarf | Hertz | deviation % |\n|---|---|---|---|---|\n";
+  md +=
+      "## Test 1: elastic normal impact of two identical spheres (R = 0.01 m, 10 m/s each)\n\n"
+      "| material | quantity | swarf | Hertz | deviation % |\n|---|---|---|---|---|\n";
   for (const Material m : {Material{"glass", 4.8e10, 0.2, 2800}, Material{"limestone", 2.0e10, 0.25, 2500}}) {
     const double R = 0.01, v = 10.0;
     const double mass = m.rho * 4.0 / 3.0 * M_PI * R * R * R;
@@ -169,8 +176,9 @@ int main(int argc, char** argv) {
   }
 
   // Test 2: sphere on a rigid plane, R = 0.1 m, 0.2 m/s.
-  md += "\n## Test 2: elastic normal impact of a sphere on a rigid plane (R = 0.1 m, 0.2 m/s)\n\n"
-        "| material | quantity | swarf | Hertz | deviation % |\n|---|---|---|---|---|\n";
+  md +=
+      "\n## Test 2: elastic normal impact of a sphere on a rigid plane (R = 0.1 m, 0.2 m/s)\n\n"
+      "| material | quantity | swarf | Hertz | deviation % |\n|---|---|---|---|---|\n";
   for (const Material m : {Material{"aluminium oxide", 3.8e11, 0.23, 4000}, Material{"cast iron", 1.0e11, 0.25, 7000}}) {
     const double R = 0.1, v = 0.2;
     const double mass = m.rho * 4.0 / 3.0 * M_PI * R * R * R;
@@ -179,8 +187,9 @@ int main(int argc, char** argv) {
   }
 
   // Test 3: restitution sweep (aluminium oxide sphere, R = 2.55 mm, 3.9 m/s onto the plane).
-  md += "\n## Test 3: normal impacts with different coefficients of restitution (R = 2.55 mm, 3.9 m/s)\n\n"
-        "| restitution set | rebound / impact speed | deviation % |\n|---|---|---|\n";
+  md +=
+      "\n## Test 3: normal impacts with different coefficients of restitution (R = 2.55 mm, 3.9 m/s)\n\n"
+      "| restitution set | rebound / impact speed | deviation % |\n|---|---|---|\n";
   const Material alox{"aluminium oxide", 3.8e11, 0.23, 4000};
   for (double e : {0.1, 0.3, 0.5, 0.7, 0.9, 1.0}) {
     const double R = 2.55e-3, v = 3.9;
@@ -194,9 +203,10 @@ int main(int argc, char** argv) {
   // Rigid-body impulse theory: while the contact slides throughout, the tangential impulse is
   // mu (1 + e) m vn, so vt' = vt - mu (1 + e) vn and w' R = 5/2 mu (1 + e) vn; it slides
   // throughout when vt/vn > 7/2 mu (1 + e).
-  md += "\n## Test 4: oblique impacts of a sphere on a plane (3.9 m/s, mu = 0.092, e = 0.98)\n\n"
-        "| incidence angle (deg) | vt'/vt swarf | theory (sliding) | w' R / vn swarf | theory (sliding) | regime |\n"
-        "|---|---|---|---|---|---|\n";
+  md +=
+      "\n## Test 4: oblique impacts of a sphere on a plane (3.9 m/s, mu = 0.092, e = 0.98)\n\n"
+      "| incidence angle (deg) | vt'/vt swarf | theory (sliding) | w' R / vn swarf | theory (sliding) | regime |\n"
+      "|---|---|---|---|---|---|\n";
   std::ofstream csv(out + "/oblique.csv");
   csv << "angle_deg,vt_ratio,vt_ratio_sliding,spin,spin_sliding,rolling_limit_vt_ratio\n";
   const double mu = 0.092, e = 0.98, v = 3.9, R = 2.55e-3;
@@ -220,9 +230,11 @@ int main(int argc, char** argv) {
   // (1 + e) m* vn, tangential impulse mu times it, solid spheres I = 2/5 m R^2. The contact
   // slides throughout when the contact-point slip exceeds 7/2 mu (1 + e) vn (sphere on a
   // plane, or relative slip between two spheres).
-  md += "\n## Test 5: oblique impacts on a plane at constant normal velocity (aluminium alloy, R = 0.1 m, vn = 0.2 m/s, "
-        "mu = 0.4, e = 0.5)\n\n| vt (m/s) | vt' swarf (m/s) | theory (sliding) | w' swarf (rad/s) | theory (sliding) | regime |\n"
-        "|---|---|---|---|---|---|\n";
+  md +=
+      "\n## Test 5: oblique impacts on a plane at constant normal velocity (aluminium alloy, R = 0.1 m, vn = 0.2 m/s, "
+      "mu = 0.4, e = 0.5)\n\n| vt (m/s) | vt' swarf (m/s) | theory (sliding) | w' swarf (rad/s) | theory (sliding) | "
+      "regime |\n"
+      "|---|---|---|---|---|---|\n";
   const Material alu{"aluminium alloy", 7.0e10, 0.33, 2700};
   {
     const double R5 = 0.1, vn5 = 0.2, mu5 = 0.4, e5 = 0.5;
@@ -233,17 +245,18 @@ int main(int argc, char** argv) {
       const double jt = mu5 * (1 + e5) * vn5;  // tangential impulse per unit mass
       const double vt_s = vt5 - jt, w_s = 2.5 * jt / R5;
       const bool sliding = vt5 > 3.5 * jt;
-      md += fmt::format("| {:.2f} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {} |\n", vt5, r.v_after[0], vt_s, r.w_after[1], w_s,
-                        sliding ? "sliding" : "sticking or transition");
+      md += fmt::format("| {:.2f} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {} |\n", vt5, r.v_after[0], vt_s, r.w_after[1],
+                        w_s, sliding ? "sliding" : "sticking or transition");
       if (sliding) {
         check(pct(r.v_after[0], vt_s));
         check(pct(r.w_after[1], w_s));
       }
     }
   }
-  md += "\n## Test 6: normal impacts on a plane with initial spin (aluminium alloy, R = 0.1 m, vn = 0.2 m/s, mu = 0.4, "
-        "e = 0.5)\n\n| w0 R (m/s) | vt' swarf (m/s) | theory (sliding) | w' R swarf (m/s) | theory (sliding) | regime |\n"
-        "|---|---|---|---|---|---|\n";
+  md +=
+      "\n## Test 6: normal impacts on a plane with initial spin (aluminium alloy, R = 0.1 m, vn = 0.2 m/s, mu = 0.4, "
+      "e = 0.5)\n\n| w0 R (m/s) | vt' swarf (m/s) | theory (sliding) | w' R swarf (m/s) | theory (sliding) | regime |\n"
+      "|---|---|---|---|---|---|\n";
   {
     const double R6 = 0.1, vn6 = 0.2, mu6 = 0.4, e6 = 0.5;
     const double m6 = alu.rho * 4.0 / 3.0 * M_PI * R6 * R6 * R6;
@@ -264,11 +277,12 @@ int main(int argc, char** argv) {
   }
   for (int test : {7, 8}) {
     const double R1 = 0.1, R2 = test == 7 ? 0.1 : 0.05, vn = 0.2, mu7 = 0.4, e7 = 0.5;
-    md += fmt::format("\n## Test {}: two spheres (R = {} m and {} m, aluminium alloy), constant normal and varying "
-                      "tangential velocity (vn = 0.2 m/s, mu = 0.4, e = 0.5)\n\n"
-                      "| vt (m/s) | relative vt' swarf (m/s) | theory (sliding) | w' of the moving sphere swarf (rad/s) | "
-                      "theory (sliding) | regime |\n|---|---|---|---|---|---|\n",
-                      test, R1, R2);
+    md += fmt::format(
+        "\n## Test {}: two spheres (R = {} m and {} m, aluminium alloy), constant normal and varying "
+        "tangential velocity (vn = 0.2 m/s, mu = 0.4, e = 0.5)\n\n"
+        "| vt (m/s) | relative vt' swarf (m/s) | theory (sliding) | w' of the moving sphere swarf (rad/s) | "
+        "theory (sliding) | regime |\n|---|---|---|---|---|---|\n",
+        test, R1, R2);
     const double m1 = alu.rho * 4.0 / 3.0 * M_PI * R1 * R1 * R1, m2 = alu.rho * 4.0 / 3.0 * M_PI * R2 * R2 * R2;
     const double ms = m1 * m2 / (m1 + m2), Rs = R1 * R2 / (R1 + R2);
     const Hertz h = hertz(alu.E / (2 * (1 - alu.nu * alu.nu)), Rs, ms, vn);

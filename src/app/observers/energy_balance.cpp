@@ -1,8 +1,9 @@
 // energy_balance.cpp: the energy balance (see energy_balance.h).
 #include "app/observers/energy_balance.h"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "swarf/simulation.h"
 

@@ -1,9 +1,9 @@
 // observer_set.cpp: the run's observers in turn (see observer_set.h).
 #include "app/observers/observer_set.h"
 
-#include <stdexcept>
-
 #include <fmt/format.h>
+
+#include <stdexcept>
 
 #include "app/observers/prefixed_archive.h"
 #include "swarf/simulation.h"

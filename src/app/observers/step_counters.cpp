@@ -1,8 +1,9 @@
 // step_counters.cpp: the integrator's counters (see step_counters.h).
 #include "app/observers/step_counters.h"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "swarf/simulation.h"
 

@@ -1,9 +1,10 @@
 // uniaxial_probe.cpp: the uniaxial bar against the rod law (see uniaxial_probe.h).
 #include "app/observers/uniaxial_probe.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "app/summary.h"
 #include "setup/model.h"
@@ -27,8 +28,9 @@ nlohmann::json uniaxial_json(const UniaxialInfo& ux, const Derived& d, const Loo
                     {"hardening_tangent_Pa", d.bar_hardening_tangent},
                     {"reverse_elastic_range_Pa", number(2.0 * d.bar_yield_stress)}};
   u["quasi_static"] = {{"max_midplane_mismatch", qs},
-                       {"note", "max over samples of |stress at the grips - stress through the mid-plane| / max |stress|: "
-                                "0 for a static bar; inertia makes it grow with the strain rate"}};
+                       {"note",
+                        "max over samples of |stress at the grips - stress through the mid-plane| / max |stress|: "
+                        "0 for a static bar; inertia makes it grow with the strain rate"}};
   if (lm.ok) {
     u["measured"] = {{"youngs_modulus_Pa", lm.modulus},
                      {"yield_stress_Pa", lm.yield_stress},
@@ -81,8 +83,7 @@ double UniaxialProbe::bar_strain(double t) const {
 
 double UniaxialProbe::bar_stress(const Simulation& sim) const {
   const UniaxialInfo& ux = model_.uniaxial;
-  return 0.5 * (sim.group_reaction(ux.grip_max)[ux.axis] - sim.group_reaction(ux.grip_min)[ux.axis]) /
-         ux.cross_section;
+  return 0.5 * (sim.group_reaction(ux.grip_max)[ux.axis] - sim.group_reaction(ux.grip_min)[ux.axis]) / ux.cross_section;
 }
 
 double UniaxialProbe::midplane_stress() const {
@@ -124,8 +125,8 @@ void UniaxialProbe::visit_state(StateArchive& ar) {
 
 void UniaxialProbe::finish(const RunEnd& end, nlohmann::json& summary) {
   // The loop's samples are the series rows (restored ones too), by column name.
-  const std::vector<double> time = end.series["time"], strain = end.series["strain"],
-                            stress = end.series["stress"], midplane = end.series["stress_midplane"];
+  const std::vector<double> time = end.series["time"], strain = end.series["strain"], stress = end.series["stress"],
+                            midplane = end.series["stress_midplane"];
   std::vector<int> segments;
   double max_stress = 0, max_mismatch = 0;  // Pa
   for (std::size_t r = 0; r < time.size(); ++r) {

@@ -31,9 +31,9 @@ class UniaxialProbe final : public Observer, public StepListener {
   void after_step(Simulation& sim) override;
 
  private:
-  double bar_strain(double t) const;  ///< nominal strain between the grips at time t (s), 1
+  double bar_strain(double t) const;               ///< nominal strain between the grips at time t (s), 1
   double bar_stress(const Simulation& sim) const;  ///< from the grips' reactions, Pa
-  double midplane_stress() const;  ///< through the rods crossing the mid-plane, Pa
+  double midplane_stress() const;                  ///< through the rods crossing the mid-plane, Pa
   /// The path segment (0, 1, ...) at time t (s).
   int segment_at(double t) const;
 

@@ -28,13 +28,14 @@ struct Grid {
   Vec3 lo;
   double cell = 1;
   std::array<std::int64_t, 3> n{1, 1, 1};
-  double period = 0, cell_y = 1;  // periodic y: n[1] cells of cell_y = period / n[1] over [0, period)
-  std::vector<std::int64_t> start;     // counting-sort offsets per cell
+  double period = 0, cell_y = 1;    // periodic y: n[1] cells of cell_y = period / n[1] over [0, period)
+  std::vector<std::int64_t> start;  // counting-sort offsets per cell
   std::vector<std::int32_t> items;
 
   std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
     std::array<std::int64_t, 3> c{};
-    for (int k = 0; k < 3; ++k) c[k] = std::clamp<std::int64_t>(std::int64_t(std::floor((p[k] - lo[k]) / cell)), 0, n[k] - 1);
+    for (int k = 0; k < 3; ++k)
+      c[k] = std::clamp<std::int64_t>(std::int64_t(std::floor((p[k] - lo[k]) / cell)), 0, n[k] - 1);
     if (period > 0) c[1] = y_cell(p[1]);
     return c;
   }
@@ -246,8 +247,7 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
         if (y1 - y0 + 1 >= double(g.n[1]))
           for (std::int64_t y = 0; y < g.n[1]; ++y) ycells.push_back(y);
         else
-          for (double y = y0; y <= y1; y += 1.0)
-            ycells.push_back((std::int64_t(y) % g.n[1] + g.n[1]) % g.n[1]);
+          for (double y = y0; y <= y1; y += 1.0) ycells.push_back((std::int64_t(y) % g.n[1] + g.n[1]) % g.n[1]);
       } else {
         for (std::int64_t y = c0[1]; y <= c1[1]; ++y) ycells.push_back(y);
       }
@@ -279,7 +279,8 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
             const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
             const auto& tri = mb.mesh.triangles[tri_local_[t]];
             const Vec3 q = closest_on_triangle(p.position[i], mb.mesh.vertices[tri[0]] + mb.offset,
-                                               mb.mesh.vertices[tri[1]] + mb.offset, mb.mesh.vertices[tri[2]] + mb.offset);
+                                               mb.mesh.vertices[tri[1]] + mb.offset,
+                                               mb.mesh.vertices[tri[2]] + mb.offset);
             const double r = p.radius[i] + skin;
             if ((q - p.position[i]).squaredNorm() <= r * r) ts.push_back(t);
           }

@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "swarf/core/parallel.h"
 #include "swarf/geometry/overlap_area.h"
 #include "swarf/laws/friction.h"
-#include "swarf/core/parallel.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
 
@@ -116,9 +116,9 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const MeshBody& mb = meshes[tri_mesh[t]];
       const auto& tri = mb.mesh.triangles[tri_local[t]];
       const double R = radius[i];
-      const SphereTriangleHit hit =
-          sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
-                          mb.mesh.vertices[tri[2]] + mb.offset, tri_frame[t]);
+      const SphereTriangleHit hit = sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset,
+                                                    mb.mesh.vertices[tri[1]] + mb.offset,
+                                                    mb.mesh.vertices[tri[2]] + mb.offset, tri_frame[t]);
       if (!hit.touching) {
         if (ttouch[k]) {
           tres[k] = Result{Vec3::Zero(), Vec3::Zero()};
@@ -137,18 +137,21 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const Vec3 vt = vrel - vn * n;
       Vec3 hist = q.history;
       // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
-      const Vec3 ft = friction_force(rule, n, vt, fn, hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4, hist);
+      const Vec3 ft = friction_force(rule, n, vt, fn, hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4,
+                                     hist);
       tres[k] = Result{fn * n + ft, ft.cross(n)};
-      if (final) q.history = hist;
-      else th[k] = hist;
+      if (final)
+        q.history = hist;
+      else
+        th[k] = hist;
       te[k] = hit.weight * 0.4 * q.K * hit.overlap * hit.overlap * root;
     }
   }
 }
 
 ContactSystem::Sums ContactSystem::sums() const {
-  return Sums{pres_.data(), psum_.data(), spanning_.data(), prow_.data(), jrow_.data(), jent_.data(),
-              tres_.data(), trow_.data()};
+  return Sums{pres_.data(), psum_.data(), spanning_.data(), prow_.data(),
+              jrow_.data(), jent_.data(), tres_.data(),     trow_.data()};
 }
 
 void ContactSystem::partition(int nthreads) {
@@ -168,8 +171,10 @@ void ContactSystem::partition(int nthreads) {
     std::size_t lo = 0, hi = n;  // the first i with weight(i) >= target
     while (lo < hi) {
       const std::size_t mid = (lo + hi) / 2;
-      if (weight(mid) < target) lo = mid + 1;
-      else hi = mid;
+      if (weight(mid) < target)
+        lo = mid + 1;
+      else
+        hi = mid;
     }
     row_split_[static_cast<std::size_t>(s)] = lo;
   }

@@ -22,13 +22,13 @@
 #include <string>
 #include <vector>
 
+#include "swarf/core/periodic.h"
+#include "swarf/core/vec3.h"
+#include "swarf/geometry/overlap_area.h"
 #include "swarf/laws/friction.h"
 #include "swarf/laws/hertz.h"
 #include "swarf/state/bodies.h"
 #include "swarf/state/mesh.h"
-#include "swarf/geometry/overlap_area.h"
-#include "swarf/core/periodic.h"
-#include "swarf/core/vec3.h"
 
 namespace swarf {
 
@@ -39,12 +39,12 @@ class StateArchive;
 /// Material and law parameters, derived once from [contact] and the meshes.
 struct ContactParams {
   double youngs_modulus = 0, poisson_ratio = 0;  ///< particles, Pa and 1
-  double alpha = 0;                 ///< damping coefficient from the restitution (hertz.h), 1
-  double friction = 0;              ///< mu, 1
+  double alpha = 0;                              ///< damping coefficient from the restitution (hertz.h), 1
+  double friction = 0;                           ///< mu, 1
   FrictionLaw law = FrictionLaw::None;
   double regularization_speed = 1e-3;  ///< m/s
-  double tangential_damping = 0;    ///< tangential dashpot as a multiple of the normal one, 1
-  double skin = 0;                  ///< Verlet skin, m
+  double tangential_damping = 0;       ///< tangential dashpot as a multiple of the normal one, 1
+  double skin = 0;                     ///< Verlet skin, m
 };
 
 class ContactSystem {
@@ -89,8 +89,8 @@ class ContactSystem {
   /// on the threads.
   struct Sums {
     const Result* pres;
-    const Result* psum;               // per particle: the sum over its pairs, in pair order
-    const std::uint8_t* spanning;     // per particle: psum not made (pairs in two threads)
+    const Result* psum;            // per particle: the sum over its pairs, in pair order
+    const std::uint8_t* spanning;  // per particle: psum not made (pairs in two threads)
     const std::int32_t *prow, *jrow, *jent;
     const Result* tres;
     const std::int32_t* trow;
@@ -164,7 +164,7 @@ class ContactSystem {
   struct PairConstants {
     double K = 0, D = 0, kt0 = 0;  // Hertz K (N/m^1.5), damping alpha sqrt(m* K), 8 G* sqrt(R*) (N/m^1.5)
   };
-  struct TriPair {  // sphere-triangle
+  struct TriPair {        // sphere-triangle
     std::int32_t i, tri;  // tri: global triangle index
     Vec3 history = Vec3::Zero();
     double K = 0, D = 0, kt0 = 0;
@@ -185,8 +185,8 @@ class ContactSystem {
   std::size_t builds_ = 0;
 
   std::vector<Pair> pairs_;
-  std::vector<PairConstants> pconst_;     // per pair; empty when all particles are equal:
-  bool uniform_ = false;                  // then every pair has uniform_constants_
+  std::vector<PairConstants> pconst_;  // per pair; empty when all particles are equal:
+  bool uniform_ = false;               // then every pair has uniform_constants_
   PairConstants uniform_constants_;
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
@@ -200,8 +200,8 @@ class ContactSystem {
   std::vector<std::uint8_t> spanning_;
   std::vector<std::int32_t> jmin_;
   std::uint64_t list_version_ = 0, partition_version_ = ~std::uint64_t{0};
-  std::vector<Vec3> ph_, th_;               // trial histories, m
-  std::vector<double> pe_, te_;             // elastic energy, J
+  std::vector<Vec3> ph_, th_;    // trial histories, m
+  std::vector<double> pe_, te_;  // elastic energy, J
   // 1 if the contact touched in the last evaluation; after a build, 1 for a carried history
   // (an evaluation zeroes the results, and a final one the history, of a contact that stopped
   // touching by this flag).

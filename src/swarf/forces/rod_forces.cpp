@@ -15,9 +15,10 @@ namespace {
 // compile-time switch so the undamped lattice does not gather velocities.
 template <class Law, bool Viscous, bool Wrap>
 void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
-               const double* rest_length, const double* inv_rest_length, const double* shift, const std::uint8_t* intact, const Vec3* x, const Vec3* v,
-               double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power,
-               int& changed, Periodic periodic) {
+               const double* rest_length, const double* inv_rest_length, const double* shift,
+               const std::uint8_t* intact, const Vec3* x, const Vec3* v, double* trial_shift,
+               std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power, int& changed,
+               Periodic periodic) {
   double visc = 0.0;
   int any = 0;
   // In chunks, three passes: the rods' vectors (scalar gathers), their lengths and inverse
@@ -110,8 +111,8 @@ void evaluate_rods(const RodLaw& rod_law, double area, const RodKernelView& view
       rod_block<Law, false, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
                                   stress, coef, block_visc[b], block_changed[b], periodic);
     else
-      rod_block<Law, false, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift,
-                                   trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, false, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
+                                   stress, coef, block_visc[b], block_changed[b], periodic);
   }
 }
 

@@ -9,9 +9,7 @@ namespace {
 inline double cross(const Vec2& u, const Vec2& v) { return u[0] * v[1] - u[1] * v[0]; }
 
 // Signed area of the sector of radius r from direction u to direction v (the shorter way).
-inline double sector(const Vec2& u, const Vec2& v, double r) {
-  return 0.5 * r * r * std::atan2(cross(u, v), u.dot(v));
-}
+inline double sector(const Vec2& u, const Vec2& v, double r) { return 0.5 * r * r * std::atan2(cross(u, v), u.dot(v)); }
 
 }  // namespace
 

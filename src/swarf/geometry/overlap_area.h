@@ -32,9 +32,9 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
 /// The geometry of a sphere against one triangle.
 struct SphereTriangleHit {
   bool touching = false;
-  double distance = 0;     ///< signed distance of the centre from the triangle's plane along its normal, m
-  double overlap = 0;      ///< R - |distance|, m
-  double weight = 0;       ///< (area of the cut circle inside the triangle) / (area of the cut circle), 1
+  double distance = 0;         ///< signed distance of the centre from the triangle's plane along its normal, m
+  double overlap = 0;          ///< R - |distance|, m
+  double weight = 0;           ///< (area of the cut circle inside the triangle) / (area of the cut circle), 1
   Vec3 normal = Vec3::Zero();  ///< unit normal of the plane pointing towards the centre
   Vec3 point = Vec3::Zero();   ///< centre of the cut circle (the centre projected on the plane), m
 };

@@ -26,10 +26,9 @@ using Quat = Eigen::Vector4d;  ///< [q0 (scalar), q1, q2, q3]
 
 /// Quaternion product a (x) b.
 inline Quat qmul(const Quat& a, const Quat& b) {
-  return Quat(a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
-              a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
-              a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
-              a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]);
+  return Quat(
+      a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3], a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+      a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1], a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]);
 }
 inline Quat qconj(const Quat& q) { return Quat(q[0], -q[1], -q[2], -q[3]); }
 inline Quat pure(const Vec3& v) { return Quat(0.0, v[0], v[1], v[2]); }

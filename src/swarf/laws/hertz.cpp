@@ -33,8 +33,10 @@ double restitution_to_alpha(double e) {
   while (alpha_to_restitution(hi) > e && hi < 1e3) hi *= 2.0;
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (lo + hi);
-    if (alpha_to_restitution(mid) > e) lo = mid;
-    else hi = mid;
+    if (alpha_to_restitution(mid) > e)
+      lo = mid;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }

@@ -25,11 +25,11 @@ namespace swarf {
 
 /// Parameters of one rod family. All SI units.
 struct RodLaw {
-  double youngs_modulus = 0.0;   ///< E of the rod, Pa
-  double yield_strain = 0.0;     ///< eps_y = sigma_02 / E, 1 (may be +inf: no plasticity)
-  double hardening = 0.0;        ///< slope k of the plastic branch, Pa, 0 <= k < E
-  double tensile_strength = 0.0; ///< sigma_max, Pa (may be +inf: unbreakable)
-  double viscosity = 0.0;        ///< eta: viscous stress = eta * strain rate, Pa s
+  double youngs_modulus = 0.0;    ///< E of the rod, Pa
+  double yield_strain = 0.0;      ///< eps_y = sigma_02 / E, 1 (may be +inf: no plasticity)
+  double hardening = 0.0;         ///< slope k of the plastic branch, Pa, 0 <= k < E
+  double tensile_strength = 0.0;  ///< sigma_max, Pa (may be +inf: unbreakable)
+  double viscosity = 0.0;         ///< eta: viscous stress = eta * strain rate, Pa s
 
   /// Half-width of the elastic band in stress, (E - k) eps_y, Pa.
   double band_half_width() const { return (youngs_modulus - hardening) * yield_strain; }
@@ -37,10 +37,10 @@ struct RodLaw {
 
 /// Result of one evaluation of the law. The shift and break flag are TRIAL values.
 struct RodResponse {
-  double stress = 0.0;       ///< elastic-plastic stress sigma, Pa (positive in tension)
-  double viscous_stress = 0.0; ///< eta * strain rate, Pa
-  double shift = 0.0;        ///< trial shift eps0 after this evaluation, 1
-  bool broken = false;       ///< sigma > sigma_max in tension: the rod fails
+  double stress = 0.0;          ///< elastic-plastic stress sigma, Pa (positive in tension)
+  double viscous_stress = 0.0;  ///< eta * strain rate, Pa
+  double shift = 0.0;           ///< trial shift eps0 after this evaluation, 1
+  bool broken = false;          ///< sigma > sigma_max in tension: the rod fails
 };
 
 /// The law itself. 'shift' is the committed eps0 of the rod.

@@ -9,8 +9,8 @@
 
 namespace swarf {
 
-std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<Vec3>& points,
-                                                             double min_distance, double max_distance) {
+std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<Vec3>& points, double min_distance,
+                                                             double max_distance) {
   std::vector<std::array<std::int32_t, 2>> pairs;
   if (points.size() < 2) return pairs;
   if (!(max_distance > 0.0)) throw InputError("pair search: the distance must be positive");

@@ -13,7 +13,7 @@
 
 namespace swarf {
 
-std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<Vec3>& points,
-                                                             double min_distance, double max_distance);
+std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<Vec3>& points, double min_distance,
+                                                             double max_distance);
 
 }  // namespace swarf

@@ -13,9 +13,9 @@ namespace swarf {
 /// A rigid triangle mesh with its current placement (rigid translation of the reference).
 struct MeshBody {
   std::string name;
-  TriangleMesh mesh;          ///< reference vertices, m
-  double youngs_modulus = 0;  ///< Pa (inf = rigid)
-  double poisson_ratio = 0;   ///< 1
+  TriangleMesh mesh;             ///< reference vertices, m
+  double youngs_modulus = 0;     ///< Pa (inf = rigid)
+  double poisson_ratio = 0;      ///< 1
   Vec3 offset = Vec3::Zero();    ///< current translation from the reference, m
   Vec3 velocity = Vec3::Zero();  ///< current velocity, m/s
 };

@@ -1,8 +1,9 @@
 // mesh.cpp: the checks of a triangle mesh (see mesh.h).
 #include "swarf/state/mesh.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "swarf/core/errors.h"
 

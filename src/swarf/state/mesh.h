@@ -14,9 +14,9 @@
 namespace swarf {
 
 struct TriangleMesh {
-  std::string name;                              ///< for messages and outputs
-  std::vector<Vec3> vertices;                    ///< m
-  std::vector<std::array<int, 3>> triangles;     ///< vertex indices, counterclockwise seen from outside
+  std::string name;                           ///< for messages and outputs
+  std::vector<Vec3> vertices;                 ///< m
+  std::vector<std::array<int, 3>> triangles;  ///< vertex indices, counterclockwise seen from outside
 
   /// Throws InputError (naming 'source') if the mesh is empty, non-finite or degenerate.
   void validate(const std::string& source) const;

@@ -12,32 +12,32 @@
 #include <cstdint>
 #include <vector>
 
-#include "swarf/integrate/rotation.h"
 #include "swarf/core/vec3.h"
+#include "swarf/integrate/rotation.h"
 
 namespace swarf {
 
 struct Particles {
-  std::vector<Vec3> position;          ///< m
-  std::vector<Vec3> velocity;          ///< m/s
-  std::vector<Vec3> acceleration;      ///< m/s^2 (of the last force evaluation)
-  std::vector<Vec3> force;             ///< N, total force of the last evaluation
-  std::vector<Vec3> initial_position;  ///< m, reference for displacement output
-  std::vector<double> mass;            ///< kg
-  std::vector<double> inv_mass;        ///< 1/kg
-  std::vector<double> radius;          ///< m
+  std::vector<Vec3> position;            ///< m
+  std::vector<Vec3> velocity;            ///< m/s
+  std::vector<Vec3> acceleration;        ///< m/s^2 (of the last force evaluation)
+  std::vector<Vec3> force;               ///< N, total force of the last evaluation
+  std::vector<Vec3> initial_position;    ///< m, reference for displacement output
+  std::vector<double> mass;              ///< kg
+  std::vector<double> inv_mass;          ///< 1/kg
+  std::vector<double> radius;            ///< m
   std::vector<std::uint8_t> prescribed;  ///< bitmask of prescribed components (1=x, 2=y, 4=z)
-  std::vector<std::int32_t> group;     ///< index of the particle's group, -1 if none
+  std::vector<std::int32_t> group;       ///< index of the particle's group, -1 if none
   // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
   // so torques come from contacts; the machinery is here for them).
-  std::vector<Quat> orientation;       ///< unit quaternion, body to world
-  std::vector<Vec3> omega;             ///< world-frame angular velocity, rad/s
-  std::vector<Vec3> omega_dot;         ///< world-frame angular acceleration, rad/s^2
-  std::vector<Vec3> inertia;           ///< principal moments of inertia, kg m^2 (2/5 m R^2 for a sphere)
-  std::vector<double> inv_inertia;     ///< 1/I for isotropic inertia (spheres), 1/(kg m^2); 0 otherwise
-  std::vector<Vec3> torque;            ///< world-frame torque of the last evaluation, N m
-  std::vector<std::int64_t> id;        ///< stable identity (0, 1, ... in creation order; never reused)
-  std::int64_t next_id = 0;            ///< the id the next new particle gets
+  std::vector<Quat> orientation;    ///< unit quaternion, body to world
+  std::vector<Vec3> omega;          ///< world-frame angular velocity, rad/s
+  std::vector<Vec3> omega_dot;      ///< world-frame angular acceleration, rad/s^2
+  std::vector<Vec3> inertia;        ///< principal moments of inertia, kg m^2 (2/5 m R^2 for a sphere)
+  std::vector<double> inv_inertia;  ///< 1/I for isotropic inertia (spheres), 1/(kg m^2); 0 otherwise
+  std::vector<Vec3> torque;         ///< world-frame torque of the last evaluation, N m
+  std::vector<std::int64_t> id;     ///< stable identity (0, 1, ... in creation order; never reused)
+  std::int64_t next_id = 0;         ///< the id the next new particle gets
 
   std::size_t size() const { return position.size(); }
 

@@ -12,14 +12,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "swarf/laws/rod_law.h"
 #include "swarf/core/vec3.h"
+#include "swarf/laws/rod_law.h"
 
 namespace swarf {
 
 struct Rods {
-  RodLaw law;                  ///< one rod family: the law's parameters
-  double area = 0.0;           ///< cross-section A of every rod, m^2
+  RodLaw law;         ///< one rod family: the law's parameters
+  double area = 0.0;  ///< cross-section A of every rod, m^2
 
   std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
   std::vector<double> rest_length;                ///< L0, m
@@ -28,10 +28,10 @@ struct Rods {
   std::vector<std::uint8_t> intact;               ///< committed: 1 intact, 0 broken for good
 
   // Results of the last evaluation (trial state, not committed).
-  std::vector<double> trial_shift;      ///< 1
+  std::vector<double> trial_shift;         ///< 1
   std::vector<std::uint8_t> trial_broken;  ///< 1 if this evaluation broke the rod
-  std::vector<double> stress;           ///< elastic-plastic stress, Pa
-  std::vector<double> force_coef;       ///< (sigma + sigma_visc) A / L: force on i = coef (x_j - x_i), N/m
+  std::vector<double> stress;              ///< elastic-plastic stress, Pa
+  std::vector<double> force_coef;          ///< (sigma + sigma_visc) A / L: force on i = coef (x_j - x_i), N/m
 
   /// One entry of a particle's rod list: the rod and the particle at its other end.
   struct Entry {
