@@ -1,0 +1,253 @@
+// commands.cpp: the subcommands of 'swarf', each its options and its action (see commands.h).
+#include "app/commands.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "app/bench.h"
+#include "app/post.h"
+#include "app/rod_driver.h"
+#include "app/run.h"
+#include "io/mesh_file.h"
+#include "io/vtk_output.h"
+#include "lattice_gen/fcc_lattice.h"
+#include "lattice_gen/lattice_file.h"
+#include "setup/case_config.h"
+#include "setup/case_keys_doc.h"
+#include "study/report.h"
+#include "study/sweep.h"
+#include "swarf/core/errors.h"
+#include "swarf/state/mesh.h"
+#include "tool_paths/tool_geometry.h"
+
+namespace swarf {
+namespace {
+
+std::vector<double> parse_list(const std::string& text, const char* option) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      out.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError(fmt::format("{} '{}': '{}' is not a number", option, text, item));
+    }
+  }
+  return out;
+}
+
+// swarf lattice
+struct LatticeCommand final : Command {
+  std::string size_s, cells_s, out;
+  double radius = 0, tol = 1e-6;
+  explicit LatticeCommand(CLI::App& app) {
+    sub = app.add_subcommand("lattice", "Generate an FCC lattice with nearest-neighbour bonds (HDF5)");
+    auto* o_size = sub->add_option("--size", size_s, "Box size LX,LY,LZ in m (every site in the closed box)");
+    auto* o_cells = sub->add_option("--cells", cells_s, "Conventional cells NX,NY,NZ (4 NX NY NZ particles)");
+    o_size->excludes(o_cells);
+    sub->add_option("--radius", radius, "Particle radius R in m (bond length 2R)")->required();
+    sub->add_option("--out", out, "Output HDF5 file")->required();
+    sub->add_option("--bond-tolerance", tol, "Relative tolerance on the bond length 2R (default 1e-6)");
+  }
+  int run() override {
+    FccSpec spec;
+    spec.radius = radius;
+    spec.bond_tolerance = tol;
+    if (!size_s.empty()) {
+      auto v = parse_list(size_s, "--size");
+      if (v.size() != 3) throw InputError("--size: needs three lengths LX,LY,LZ in m, got '" + size_s + "'");
+      spec.size = {v[0], v[1], v[2]};
+    } else if (!cells_s.empty()) {
+      auto v = parse_list(cells_s, "--cells");
+      if (v.size() != 3) throw InputError("--cells: needs three integers NX,NY,NZ, got '" + cells_s + "'");
+      for (int c = 0; c < 3; ++c) {
+        if (v[c] != std::floor(v[c]) || v[c] < 1 || v[c] > 1e5)
+          throw InputError("--cells: '" + cells_s + "' must be three positive integers");
+        spec.cells[c] = static_cast<int>(v[c]);
+      }
+    } else {
+      throw InputError("lattice: give --size LX,LY,LZ (m) or --cells NX,NY,NZ");
+    }
+    const auto lattice = generate_fcc(spec);
+    write_lattice(out, lattice);
+    fmt::print("wrote {}: {} particles, {} bonds\n", out, lattice.position.size(), lattice.bonds.size());
+    return 0;
+  }
+};
+
+// swarf rod
+struct RodCommand final : Command {
+  RodLaw law;
+  std::string path_s;
+  int steps = 100;
+  explicit RodCommand(CLI::App& app) {
+    sub = app.add_subcommand("rod", "Drive one rod along a strain path; CSV on stdout");
+    law.yield_strain = kInf;
+    law.tensile_strength = kInf;
+    sub->add_option("--E", law.youngs_modulus, "Young's modulus of the rod, Pa")->required();
+    sub->add_option("--yield-strain", law.yield_strain, "Yield strain eps_y, 1 (default inf: elastic)");
+    sub->add_option("--hardening", law.hardening, "Hardening slope k, Pa (default 0)");
+    sub->add_option("--tensile-strength", law.tensile_strength, "Tensile strength sigma_max, Pa (default inf)");
+    sub->add_option("--path", path_s, "Strain turning points from 0, e.g. 0,0.004,-0.004,0.008")->required();
+    sub->add_option("--steps", steps, "Increments per segment (default 100)");
+  }
+  int run() override {
+    write_rod_csv(std::cout, drive_rod(law, parse_list(path_s, "--path"), steps));
+    return 0;
+  }
+};
+
+// swarf run
+struct RunCommand final : Command {
+  RunOptions ro;
+  explicit RunCommand(CLI::App& app) {
+    sub = app.add_subcommand("run", "Run a case (no case file: the built-in default case)");
+    sub->add_option("case", ro.case_path, "Case file (TOML); see docs/case-reference.md");
+    sub->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
+    sub->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")
+        ->allow_extra_args(false);
+    sub->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
+    sub->add_option("--restart", ro.restart,
+                    "Continue from a checkpoint (DIR/checkpoint.h5, written every "
+                    "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");
+  }
+  int run() override {
+    run_case(ro);
+    return 0;
+  }
+};
+
+// swarf post
+struct PostCommand final : Command {
+  std::string dir;
+  explicit PostCommand(CLI::App& app) {
+    sub = app.add_subcommand("post", "Redo a cutting run's analysis (chip, forces, surface, plots, picture)");
+    sub->add_option("dir", dir, "Run directory (with summary.json, series.csv, results.h5)")->required();
+  }
+  int run() override {
+    post_run(dir);
+    return 0;
+  }
+};
+
+// swarf tool
+struct ToolCommand final : Command {
+  ToolSpec ts;
+  std::string out, vtp;
+  explicit ToolCommand(CLI::App& app) {
+    sub = app.add_subcommand("tool", "Generate the cutting tool mesh (STL, and VTP for ParaView)");
+    sub->add_option("--rake-angle", ts.rake_angle_deg, "Rake angle alpha, deg (default 0)");
+    sub->add_option("--clearance-angle", ts.clearance_angle_deg, "Clearance angle gamma, deg (default 7)");
+    sub->add_option("--edge-radius", ts.edge_radius, "Cutting-edge radius, m (default 0: sharp)");
+    sub->add_option("--width", ts.width, "Width along the edge, m")->required();
+    sub->add_option("--face-length", ts.face_length, "Length of the rake and flank faces, m")->required();
+    sub->add_option("--out", out, "Output STL file")->required();
+    sub->add_option("--vtp", vtp, "Also write this VTP file");
+  }
+  int run() override {
+    const auto mesh = make_tool(ts);
+    write_stl(out, mesh);
+    if (!vtp.empty()) write_vtp(vtp, mesh);
+    fmt::print("wrote {}{}: {} triangles, {} vertices\n", out, vtp.empty() ? "" : " and " + vtp, mesh.triangles.size(),
+               mesh.vertices.size());
+    return 0;
+  }
+};
+
+// swarf bench
+struct BenchCommand final : Command {
+  BenchOptions bo;
+  std::string threads_s = "1,2";
+  explicit BenchCommand(CLI::App& app) {
+    sub = app.add_subcommand("bench", "Time named scenes (case files) for several thread counts");
+    sub->add_option("cases", bo.cases, "Scene case files, e.g. validation/bench/w1.toml")->required();
+    sub->add_option("--threads", threads_s, "Thread counts, comma separated (default 1,2)");
+    sub->add_option("--steps", bo.steps, "Steps (default: run to the case's end_time)");
+    sub->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
+    sub->add_flag("--stages", bo.stages, "Also print the time of each step stage (ns per particle-step)");
+    sub->add_option("--set", bo.overrides, "Override a case key (repeatable)")->allow_extra_args(false);
+  }
+  int run() override {
+    bo.threads.clear();
+    for (double t : parse_list(threads_s, "--threads")) {
+      if (t < 1 || t != std::floor(t)) throw InputError("--threads: '" + threads_s + "' must be positive integers");
+      bo.threads.push_back(static_cast<int>(t));
+    }
+    run_bench(bo);
+    return 0;
+  }
+};
+
+// swarf sweep
+struct SweepCommand final : Command {
+  SweepOptions so;
+  explicit SweepCommand(CLI::App& app) {
+    sub = app.add_subcommand("sweep", "Run a parameter study; under mpirun the ranks share the cases");
+    sub->add_option("study", so.study_path, "Study file (TOML); see docs/studies.md")->required();
+    sub->add_option("--out", so.out_dir, "Study directory: cases/, study.csv, plots/ (re-run to resume)")->required();
+    sub->add_option("--jobs", so.jobs, "Cases run at once (per MPI rank; default 1)");
+    sub->add_option("--threads", so.threads, "Threads per case (default max(1, cores / (jobs x ranks on the machine)))");
+    sub->add_flag("--list", so.list_only,
+                  "Check the study and list its cases (id, state, --set overrides); run nothing");
+  }
+  int run() override { return run_sweep(so); }
+};
+
+// swarf report
+struct ReportCommand final : Command {
+  std::string dir;
+  explicit ReportCommand(CLI::App& app) {
+    sub = app.add_subcommand("report", "Write DIR/report.md for a study directory of 'swarf sweep'");
+    sub->add_option("dir", dir, "Study directory")->required();
+  }
+  int run() override {
+    fmt::print("wrote {}\n", write_report(dir));
+    return 0;
+  }
+};
+
+// swarf case keys
+struct CaseKeysCommand final : Command {
+  bool markdown = false;
+  std::string update;
+  explicit CaseKeysCommand(CLI::App& app) {
+    auto* case_cmd = app.add_subcommand("case", "Describe the case file format");
+    case_cmd->require_subcommand(1);
+    sub = case_cmd->add_subcommand("keys", "List every case key: table.key, type, unit, default");
+    sub->add_flag("--markdown", markdown, "Print the key tables of docs/case-reference.md, with their marker lines");
+    sub->add_option("--update", update, "Rewrite the key tables between the marker lines of this markdown file");
+  }
+  int run() override {
+    if (!update.empty()) {
+      update_key_tables_file(update);
+      fmt::print("updated the key tables of {}\n", update);
+    } else {
+      fmt::print("{}", markdown ? key_tables_markdown() : key_list_text());
+    }
+    return 0;
+  }
+};
+
+}  // namespace
+
+std::vector<std::unique_ptr<Command>> make_commands(CLI::App& app) {
+  std::vector<std::unique_ptr<Command>> c;
+  c.push_back(std::make_unique<LatticeCommand>(app));
+  c.push_back(std::make_unique<RodCommand>(app));
+  c.push_back(std::make_unique<RunCommand>(app));
+  c.push_back(std::make_unique<PostCommand>(app));
+  c.push_back(std::make_unique<ToolCommand>(app));
+  c.push_back(std::make_unique<BenchCommand>(app));
+  c.push_back(std::make_unique<SweepCommand>(app));
+  c.push_back(std::make_unique<ReportCommand>(app));
+  c.push_back(std::make_unique<CaseKeysCommand>(app));
+  return c;
+}
+
+}  // namespace swarf
