@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -60,6 +61,17 @@ Lattice read_lattice(const std::string& path) {
       throw InputError(fmt::format("'{}': /bonds/pairs row {} = ({}, {}) is not a pair of distinct particles 0..{}",
                                    path, b, i, j, n - 1));
     lat.bonds[b] = {static_cast<std::int32_t>(std::min(i, j)), static_cast<std::int32_t>(std::max(i, j))};
+  }
+  // A pair listed twice would be two rods in parallel: twice the stiffness, silently.
+  {
+    std::vector<std::size_t> order(m);
+    for (std::size_t b = 0; b < m; ++b) order[b] = b;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
+    for (std::size_t k = 1; k < m; ++k)
+      if (lat.bonds[order[k]] == lat.bonds[order[k - 1]])
+        throw InputError(fmt::format("'{}': /bonds/pairs rows {} and {} both bond particles ({}, {}): each pair once",
+                                     path, std::min(order[k - 1], order[k]), std::max(order[k - 1], order[k]),
+                                     lat.bonds[order[k]][0], lat.bonds[order[k]][1]));
   }
   lat.rest_length = f.read_doubles("/bonds/rest_length", rows, cols);
   if (rows != m || cols != 1) throw InputError(fmt::format("'{}': /bonds/rest_length must have {} entries", path, m));

@@ -11,6 +11,7 @@
 #include "app/post.h"
 #include "app/rod_driver.h"
 #include "app/run.h"
+#include "app/threads.h"
 #include "io/mesh_file.h"
 #include "io/vtk_output.h"
 #include "lattice_gen/fcc_lattice.h"
@@ -118,6 +119,7 @@ struct RunCommand final : Command {
                     "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");
   }
   int run() override {
+    if (sub->count("--threads")) check_thread_count(ro.threads, "--threads");
     run_case(ro);
     return 0;
   }
@@ -177,6 +179,7 @@ struct BenchCommand final : Command {
     bo.threads.clear();
     for (double t : parse_list(threads_s, "--threads")) {
       if (t < 1 || t != std::floor(t)) throw InputError("--threads: '" + threads_s + "' must be positive integers");
+      check_thread_count(static_cast<long long>(t), "--threads");
       bo.threads.push_back(static_cast<int>(t));
     }
     run_bench(bo);
@@ -196,7 +199,10 @@ struct SweepCommand final : Command {
     sub->add_flag("--list", so.list_only,
                   "Check the study and list its cases (id, state, --set overrides); run nothing");
   }
-  int run() override { return run_sweep(so); }
+  int run() override {
+    if (so.threads > 0) check_thread_count(so.threads, "--threads");  // (0: the default, cores / jobs)
+    return run_sweep(so);
+  }
 };
 
 // swarf report

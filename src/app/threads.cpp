@@ -1,12 +1,16 @@
 // threads.cpp: the OpenMP thread count and pinning (see threads.h).
 #include "app/threads.h"
 
+#include <fmt/format.h>
 #include <omp.h>
 #include <pthread.h>
 #include <sched.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
+
+#include "swarf/core/errors.h"
 
 namespace swarf {
 namespace {
@@ -42,6 +46,14 @@ int set_threads(int n) {
   const int used = omp_get_max_threads();
   pin_threads(used);
   return used;
+}
+
+int max_thread_count() { return std::max(64, 8 * omp_get_num_procs()); }
+
+void check_thread_count(long long n, const char* option) {
+  if (n < 1 || n > max_thread_count())
+    throw InputError(fmt::format("{} {}: the thread count must lie in [1, {}] (8 per CPU of this machine, at least 64)",
+                                 option, n, max_thread_count()));
 }
 
 }  // namespace swarf

@@ -3,13 +3,16 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "swarf/core/errors.h"
 
@@ -32,6 +35,22 @@ int weld(std::map<std::array<double, 3>, int>& index, TriangleMesh& m, const Vec
   m.vertices.push_back(p);
   index.emplace(key, id);
   return id;
+}
+
+// A whole token as a finite number: "3abc", "nan", "inf" and "1e999" are not numbers.
+std::optional<double> finite_number(std::string_view t) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+// A whole token as an integer that fits in 64 bits: "3.7", "3abc" and 99999999999999999999 are not.
+std::optional<long long> whole_number(std::string_view t) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size()) return std::nullopt;
+  return v;
 }
 
 TriangleMesh read_stl(const std::string& path, double scale) {
@@ -58,7 +77,11 @@ TriangleMesh read_stl(const std::string& path, double scale) {
       for (int k = 0; k < 3; ++k) {
         float xyz[3];
         std::memcpy(xyz, f + 12 + 12 * k, 12);
-        tri[k] = weld(index, m, Vec3(xyz[0], xyz[1], xyz[2]) * scale);
+        const Vec3 p = Vec3(xyz[0], xyz[1], xyz[2]) * scale;
+        // (a NaN would be welded onto whatever vertex the map's ordering finds for it)
+        if (!p.allFinite())
+          throw InputError(fmt::format("mesh file '{}': facet {} vertex {} is not finite", path, t, k));
+        tri[k] = weld(index, m, p);
       }
       m.triangles.push_back(tri);
     }
@@ -70,13 +93,26 @@ TriangleMesh read_stl(const std::string& path, double scale) {
   std::string word;
   std::vector<int> facet;
   int line_facet = 0;
+  bool open_facet = false, ended = false;
   while (ss >> word) {
-    if (word == "vertex") {
-      double x, y, z;
-      if (!(ss >> x >> y >> z))
-        throw InputError(fmt::format("mesh file '{}': facet {}: malformed vertex", path, line_facet));
-      facet.push_back(weld(index, m, Vec3(x, y, z) * scale));
+    if (word == "facet") {
+      open_facet = true;
+    } else if (word == "vertex") {
+      Vec3 p;
+      for (int c = 0; c < 3; ++c) {
+        std::string t;
+        const auto v = (ss >> t) ? finite_number(t) : std::nullopt;
+        if (!v)
+          throw InputError(fmt::format("mesh file '{}': facet {}: vertex coordinate '{}' is not a finite number", path,
+                                       line_facet, t));
+        p[c] = *v;
+      }
+      facet.push_back(weld(index, m, p * scale));
+    } else if (word == "endsolid") {
+      ended = true;
+      break;
     } else if (word == "endfacet") {
+      open_facet = false;
       if (facet.size() != 3)
         throw InputError(fmt::format("mesh file '{}': facet {} has {} vertices, not 3", path, line_facet, facet.size()));
       m.triangles.push_back({facet[0], facet[1], facet[2]});
@@ -84,6 +120,10 @@ TriangleMesh read_stl(const std::string& path, double scale) {
       ++line_facet;
     }
   }
+  // A file cut short (a copy interrupted, a full disk) must not lose its last facets unseen.
+  if (open_facet || !facet.empty() || !ended)
+    throw InputError(fmt::format("mesh file '{}' ends inside facet {} or without 'endsolid': truncated ASCII STL?",
+                                 path, line_facet));
   return m;
 }
 
@@ -100,17 +140,30 @@ TriangleMesh read_obj(const std::string& path, double scale) {
     std::string tag;
     if (!(ls >> tag)) continue;
     if (tag == "v") {
-      double x, y, z;
-      if (!(ls >> x >> y >> z)) throw InputError(fmt::format("{}:{}: malformed vertex '{}'", path, lineno, line));
-      m.vertices.emplace_back(Vec3(x, y, z) * scale);
+      Vec3 p;
+      for (int c = 0; c < 3; ++c) {
+        std::string t;
+        const auto v = (ls >> t) ? finite_number(t) : std::nullopt;
+        if (!v)
+          throw InputError(
+              fmt::format("{}:{}: vertex coordinate '{}' is not a finite number in '{}'", path, lineno, t, line));
+        p[c] = *v;
+      }
+      m.vertices.emplace_back(p * scale);
     } else if (tag == "f") {
       std::vector<int> poly;
       std::string item;
+      const long long nv = static_cast<long long>(m.vertices.size());
       while (ls >> item) {
-        const int idx = std::atoi(item.substr(0, item.find('/')).c_str());
-        if (idx == 0) throw InputError(fmt::format("{}:{}: bad face index '{}'", path, lineno, item));
-        // OBJ indices are 1-based; negative ones count back from the last vertex.
-        poly.push_back(idx > 0 ? idx - 1 : static_cast<int>(m.vertices.size()) + idx);
+        const auto idx = whole_number(std::string_view(item).substr(0, item.find('/')));
+        // OBJ indices are 1-based and refer to vertices listed before; negative ones count
+        // back from the last vertex.
+        if (!idx || *idx == 0 || *idx > nv || *idx < -nv)
+          throw InputError(
+              fmt::format("{}:{}: face index '{}' is not an integer in [1, {}] or [-{}, -1] (the "
+                          "vertices listed so far)",
+                          path, lineno, item, nv, nv));
+        poly.push_back(static_cast<int>(*idx > 0 ? *idx - 1 : nv + *idx));
       }
       if (poly.size() < 3) throw InputError(fmt::format("{}:{}: a face needs 3 vertices", path, lineno));
       for (std::size_t k = 1; k + 1 < poly.size(); ++k) m.triangles.push_back({poly[0], poly[k], poly[k + 1]});

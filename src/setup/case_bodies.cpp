@@ -111,9 +111,14 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
   if (m.file.empty() && !m.tool && !(r.has("edge1") && r.has("edge2")))
     r.fail("file", nullptr,
            "a mesh needs file = \"...stl|obj\", a rectangle (origin, edge1, edge2 in m) or a tool (rake_angle, ...)");
+  if (!m.file.empty() && r.has("origin"))
+    r.fail("origin", r.get("origin"),
+           "places a rectangle or a generated tool; a mesh file is used where its coordinates (times scale) put it");
   if (!m.file.empty()) {
     m.file = resolve(m.file, directory);
     if (!std::filesystem::exists(m.file)) r.fail("file", r.get("file"), "file not found: " + m.file);
+    if (std::filesystem::is_directory(m.file))
+      r.fail("file", r.get("file"), "is a directory, not a mesh file: " + m.file);
   } else if (!m.tool) {  // a tool's angles and sizes are checked by its generator, which names them
     const auto& e1 = m.edge1;
     const auto& e2 = m.edge2;

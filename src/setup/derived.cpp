@@ -86,6 +86,26 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64
   // (0.8 of the stable step for beta = 1/4).
   d.dt_max = g.dt_max > 0 ? g.dt_max : 0.4 / std::sqrt(g.beta) * d.dt_stable;
+  // The steps must be finite positive times whatever produced them (an absurd radius,
+  // density or modulus makes the stable step 0, inf or NaN, and a NaN step is never "below
+  // dt_min": the step control would retry it for ever).
+  auto check_time = [&](const char* what, double v, const char* key, bool key_given) {
+    if (v > 0.0 && std::isfinite(v)) return;
+    if (key_given)
+      throw InputError(fmt::format("{}: key 'integrator.{}' = {} s: the {} must be a finite positive time", cs.source,
+                                   key, v, what));
+    throw InputError(fmt::format(
+        "{}: the {} derived from the case is {} s, not a finite positive time (stable step {:.4g} s from particle "
+        "mass m = {:.4g} kg, rod stiffness kb = {:.4g} N/m, radius R = {:.4g} m{}): check workpiece.radius, "
+        "material.density and the moduli, or set integrator.{}",
+        cs.source, what, v, d.dt_stable, m, kb, R,
+        cs.contact.enabled ? fmt::format(", Rayleigh time {:.4g} s", d.rayleigh_time) : std::string(), key));
+  };
+  check_time("step dt", d.dt, "dt", g.dt > 0);
+  if (d.implicit) {
+    check_time("smallest step dt_min", d.dt_min, "dt_min", g.dt_min > 0);
+    check_time("largest step dt_max", d.dt_max, "dt_max", g.dt_max > 0);
+  }
   if (d.implicit) {
     if (d.dt < d.dt_min || d.dt > d.dt_max)
       throw InputError(

@@ -310,6 +310,27 @@ ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
   return c;
 }
 
+// The run's end and its output intervals: each a finite positive time, and no more rows or
+// frames than a run can write (an interval below the time's rounding would never advance the
+// next output time: 'next += interval' leaves it where it is).
+void check_output_schedule(const CaseSettings& cs) {
+  const double end = cs.integrator.end_time;
+  if (!(end > 0.0 && std::isfinite(end)))
+    throw InputError(fmt::format("{}: key 'integrator.end_time' = {} s must be a finite positive time", cs.source, end));
+  constexpr double kMaxRows = 1e7, kMaxFrames = 1e5;
+  const double si = cs.output.series_interval, fi = cs.output.frame_interval;
+  if (si > 0.0 && !(end / si <= kMaxRows))
+    throw InputError(
+        fmt::format("{}: key 'output.series_interval' = {} s gives {:.3g} rows over end_time = {} s; at "
+                    "most {:.0e}",
+                    cs.source, si, end / si, end, kMaxRows));
+  if (fi > 0.0 && !(end / fi <= kMaxFrames))
+    throw InputError(
+        fmt::format("{}: key 'output.frame_interval' = {} s gives {:.3g} frames over end_time = {} s; at "
+                    "most {:.0e}",
+                    cs.source, fi, end / fi, end, kMaxFrames));
+}
+
 }  // namespace
 
 Model build_model(const CaseSettings& cs) {
@@ -336,6 +357,7 @@ Model build_model(const CaseSettings& cs) {
   model.contacts = cs.contact.enabled;
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
   model.step = step_settings(model.settings, model.derived);
+  check_output_schedule(model.settings);
   return model;
 }
 

@@ -14,6 +14,11 @@ namespace swarf {
 Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), set_(settings) {
   implicit_ = set_.implicit();
   dt_ = set_.dt;
+  if (!(dt_ > 0.0 && std::isfinite(dt_)) || (implicit_ && !(set_.dt_min > 0.0 && set_.dt_min <= set_.dt_max)))
+    throw SimulationError(
+        fmt::format("step settings: dt = {} s, dt_min = {} s, dt_max = {} s: the step must be a "
+                    "finite positive time (and dt_min <= dt_max)",
+                    dt_, set_.dt_min, set_.dt_max));
   block_viscous_.assign(block_count(m_.rods.size()), 0.0);
   block_changed_.assign(block_count(m_.rods.size()), 0);
   const std::size_t ng = m_.groups.size();
@@ -110,7 +115,7 @@ void Simulation::step_scheme(double max_dt) {
     restore_state();
     ++stats_.rejected;
     dt_ = h * g.reject_factor;
-    if (dt_ < g.dt_min)
+    if (!(dt_ >= g.dt_min))  // (a NaN step too: it is never below dt_min)
       throw SimulationError(fmt::format(
           "the Newmark step did not converge at t = {:.6g} s with dt = {:.4g} s, and the next try ({:.4g} s) "
           "would be below dt_min = {:.4g} s (integrator.dt_min); {} sweeps allowed (integrator.max_iterations), "

@@ -3,6 +3,7 @@
 // checkpoint holds, and everything the state hash covers, is listed in one file.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <string>
 
 #include "swarf/contacts/contacts.h"
@@ -117,6 +118,11 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("stats/last_iterations", stats_.last_iterations);
   if (contacts_.enabled()) contacts_.visit_state(ar, p);
   if (load) {
+    if (!(time_ >= 0.0 && std::isfinite(time_)) || !(dt_ > 0.0 && std::isfinite(dt_)) || !std::isfinite(last_dt_))
+      throw InputError(
+          fmt::format("state fields 'time' = {} s, 'dt' = {} s, 'last_dt' = {} s: not finite times "
+                      "(time >= 0, dt > 0)",
+                      time_, dt_, last_dt_));
     if (mesh_force_.size() != nm && !mesh_force_.empty())
       throw InputError(fmt::format("state field 'mesh_force' has {} entries, expected {}", mesh_force_.size(), nm));
     resize_scratch();

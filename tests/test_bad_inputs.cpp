@@ -1,0 +1,163 @@
+// test_bad_inputs.cpp: inputs that used to hang, crash or give silent garbage (issue 18's
+// matrix) stop with exit code 2 and a message that names what is wrong. Each test failed
+// before its fix: the run hung (a NaN step retried for ever, an output interval below the
+// time's rounding), crashed (--threads 100000) or completed with garbage (an OBJ index read
+// as another, a truncated STL short of a facet, a doubled bond, a NaN checkpoint time).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "io/mesh_file.h"
+#include "lattice_gen/fcc_lattice.h"
+#include "lattice_gen/lattice_file.h"
+#include "swarf/core/errors.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+using test::run_command;
+using test::TempDir;
+using test::write_file;
+
+const char* kBar = R"([workpiece]
+cells = [4, 2, 2]
+radius = 0.5e-3
+[rod]
+youngs_modulus = 200e9
+yield_strain = 1e-3
+hardening_modulus = 20e9
+tensile_strength = 2.3e8
+[integrator]
+end_time = 2e-6
+[output]
+vtk = false
+plots = false
+[[group]]
+name = "left"
+side = "x-"
+[[group]]
+name = "right"
+side = "x+"
+motion = "velocity"
+velocity = [1.0, 0.0, 0.0]
+)";
+
+// Runs 'swarf run' on kBar with the overrides, under a time limit (a hang fails the test
+// instead of the suite); returns the result.
+test::CommandResult run_bar(const TempDir& dir, const std::string& args) {
+  write_file(dir / "bar.toml", kBar);
+  return run_command(
+      fmt::format("timeout 120 {} run {} --out {} {}", SWARF_BINARY, dir / "bar.toml", dir / "out", args));
+}
+
+void expect_refused(const test::CommandResult& r, const std::string& word) {
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(word), std::string::npos) << "the message should name '" << word << "':\n" << r.output;
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(BadInput, AbsurdSizesThatMakeTheStepNaNOrZeroAreRefusedNotRetriedForEver) {
+  TempDir dir("bad_step");
+  expect_refused(run_bar(dir, "--set workpiece.radius=1e300"), "not a finite positive time");
+  expect_refused(run_bar(dir, "--set workpiece.radius=1e-300"), "not a finite positive time");
+  expect_refused(run_bar(dir, "--set material.density=1e-300"), "not a finite positive time");
+}
+
+TEST(BadInput, OutputIntervalsThatCouldNeverAdvanceAreRefused) {
+  TempDir dir("bad_interval");
+  expect_refused(run_bar(dir, "--set output.series_interval=1e-30"), "output.series_interval");
+  expect_refused(run_bar(dir, "--set output.frame_interval=1e-30 --set output.vtk=true"), "output.frame_interval");
+  expect_refused(run_bar(dir, "--set integrator.end_time=0"), "integrator.end_time");
+}
+
+TEST(BadInput, ThreadCountsOutOfRangeAreRefused) {
+  TempDir dir("bad_threads");
+  for (const char* t : {"0", "-1", "100000"}) expect_refused(run_bar(dir, std::string("--threads ") + t), "--threads");
+}
+
+TEST(BadInput, ObjNumbersWithFractionsJunkOrOverflowAreRefused) {
+  TempDir dir("bad_obj");
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (const std::string face :
+       {"f 1 2 4294967299", "f 1 2 3.7", "f 1 2 3abc", "f 1 2 99999999999999999999", "f 1 2 4"}) {
+    write_file(dir / "m.obj", v + face + "\n");
+    EXPECT_NE(message_of([&] { read_mesh(dir / "m.obj"); }).find("face index"), std::string::npos) << face;
+  }
+  write_file(dir / "m.obj", "v 0 0 0\nv 1 0 0abc\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NE(message_of([&] { read_mesh(dir / "m.obj"); }).find("not a finite number"), std::string::npos);
+  write_file(dir / "m.obj", "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NE(message_of([&] { read_mesh(dir / "m.obj"); }).find("not a finite number"), std::string::npos);
+  write_file(dir / "m.obj", v + "f 1 2 3\nf -1 -2 -3\n");  // negative indices count back: still fine
+  EXPECT_EQ(read_mesh(dir / "m.obj").triangles.size(), 2u);
+}
+
+TEST(BadInput, ATruncatedAsciiStlAndANaNVertexInABinaryStlAreRefused) {
+  TempDir dir("bad_stl");
+  const std::string
+      facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+  write_file(dir / "whole.stl", "solid t\n" + facet + facet + "endsolid t\n");
+  EXPECT_EQ(read_mesh(dir / "whole.stl").triangles.size(), 2u);
+  const std::string cut = "solid t\n" + facet + facet.substr(0, facet.find("endloop"));
+  write_file(dir / "cut.stl", cut);
+  EXPECT_NE(message_of([&] { read_mesh(dir / "cut.stl"); }).find("truncated"), std::string::npos);
+  write_file(dir / "cut2.stl", "solid t\n" + facet);  // every facet complete, but no endsolid
+  EXPECT_NE(message_of([&] { read_mesh(dir / "cut2.stl"); }).find("truncated"), std::string::npos);
+  // Binary: 80-byte header, count, 50 bytes per facet with a NaN in the second vertex.
+  std::string bin(84 + 50, '\0');
+  const std::uint32_t n = 1;
+  std::memcpy(&bin[80], &n, 4);
+  const float xyz[9] = {0, 0, 0, 1, NAN, 0, 0, 1, 0};
+  std::memcpy(&bin[84 + 12], xyz, sizeof xyz);
+  std::ofstream(dir / "nan.stl", std::ios::binary) << bin;
+  EXPECT_NE(message_of([&] { read_mesh(dir / "nan.stl"); }).find("not finite"), std::string::npos);
+}
+
+TEST(BadInput, ALatticeFileListingABondTwiceIsRefused) {
+  TempDir dir("bad_lattice");
+  FccSpec spec;
+  spec.radius = 0.5e-3;
+  spec.cells = {2, 2, 2};
+  Lattice lat = generate_fcc(spec);
+  write_lattice(dir / "ok.h5", lat);
+  EXPECT_EQ(read_lattice(dir / "ok.h5").bonds.size(), lat.bonds.size());
+  lat.bonds.push_back({lat.bonds[3][1], lat.bonds[3][0]});  // the same pair, ends swapped
+  lat.rest_length.push_back(lat.rest_length[3]);
+  write_lattice(dir / "twice.h5", lat);
+  EXPECT_NE(message_of([&] { read_lattice(dir / "twice.h5"); }).find("each pair once"), std::string::npos);
+}
+
+TEST(BadInput, AMeshFileWithAnOriginIsRefusedAsTheDocsSay) {
+  TempDir dir("bad_origin");
+  write_file(dir / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write_file(dir / "c.toml",
+             std::string(kBar) + "[[mesh]]\nname = \"wall\"\nfile = \"m.obj\"\norigin = [0.0, 0.0, 1.0]\n");
+  const auto r = run_command(fmt::format("timeout 120 {} run {} --out {}", SWARF_BINARY, dir / "c.toml", dir / "out"));
+  expect_refused(r, "mesh.origin");
+}
+
+TEST(BadInput, ACheckpointWithANaNTimeIsRefused) {
+  if (std::system("/usr/bin/python3 -c 'import h5py' 2>/dev/null") != 0) GTEST_SKIP() << "python3-h5py is not installed";
+  TempDir dir("bad_ckpt");
+  const auto a = run_bar(dir, "--set output.checkpoint_every=20");
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  const auto py = run_command(fmt::format(
+      "/usr/bin/python3 -c \"import h5py; f = h5py.File('{}', 'r+'); f['/sim/time'][...] = float('nan'); f.close()\"",
+      dir / "out/checkpoint.h5"));
+  ASSERT_EQ(py.exit_code, 0) << py.output;
+  const auto r = run_command(fmt::format("timeout 120 {} run --restart {}", SWARF_BINARY, dir / "out/checkpoint.h5"));
+  expect_refused(r, "'time' = nan");
+}
+
+}  // namespace
+}  // namespace swarf
