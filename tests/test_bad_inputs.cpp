@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -147,7 +148,8 @@ TEST(BadInput, AMeshFileWithAnOriginIsRefusedAsTheDocsSay) {
 }
 
 TEST(BadInput, ACheckpointWithANaNTimeIsRefused) {
-  if (std::system("/usr/bin/python3 -c 'import h5py' 2>/dev/null") != 0) GTEST_SKIP() << "python3-h5py is not installed";
+  if (std::system("/usr/bin/python3 -c 'import h5py' 2>/dev/null") != 0)
+    GTEST_SKIP() << "python3-h5py is not installed";
   TempDir dir("bad_ckpt");
   const auto a = run_bar(dir, "--set output.checkpoint_every=20");
   ASSERT_EQ(a.exit_code, 0) << a.output;
@@ -157,6 +159,40 @@ TEST(BadInput, ACheckpointWithANaNTimeIsRefused) {
   ASSERT_EQ(py.exit_code, 0) << py.output;
   const auto r = run_command(fmt::format("timeout 120 {} run --restart {}", SWARF_BINARY, dir / "out/checkpoint.h5"));
   expect_refused(r, "'time' = nan");
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// SIGTERM in the middle of the default cut: the run finishes its step, writes a checkpoint
+// (checkpoints are on), says so and exits 143, leaving no summary.json; the restart then
+// completes it with the very series the uninterrupted run writes (the golden reference).
+TEST(Signals, SigtermEndsARunBetweenStepsWithACheckpointAndTheRestartCompletesIt) {
+#if !defined(__FMA__)
+  GTEST_SKIP() << "the reference was written by a native build with fused multiply-adds";
+#endif
+  test::TempDir dir("sigterm");
+  const std::string out = dir / "cut";
+  const std::string script = fmt::format(
+      "{} run --out {} --threads 1 --set integrator.end_time=3e-5 --set output.plots=false --set output.vtk=false "
+      "--set output.checkpoint_every=200 > {} 2>&1 & pid=$!; "
+      "n=0; while [ $(cat {}/series.csv.part 2>/dev/null | wc -l) -lt 12 ] && [ $n -lt 2400 ]; do sleep 0.05; "
+      "n=$((n+1)); done; kill -TERM $pid; wait $pid; echo \"exit=$?\"",
+      SWARF_BINARY, out, dir / "log", out);
+  const auto r = test::run_command("bash -c '" + script + "'");
+  const std::string log = test::read_file(dir / "log");
+  ASSERT_NE(r.output.find("exit=143"), std::string::npos) << r.output << log;
+  EXPECT_NE(log.find("interrupted by SIGTERM"), std::string::npos) << log;
+  EXPECT_NE(log.find("checkpoint written"), std::string::npos) << log;
+  EXPECT_FALSE(std::filesystem::exists(out + "/summary.json"));
+  EXPECT_FALSE(std::filesystem::exists(out + "/series.csv"));  // (still .part: incomplete)
+  const auto b = test::run_command(fmt::format("{} run --restart {}/checkpoint.h5 --threads 1", SWARF_BINARY, out));
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  EXPECT_EQ(test::read_file(out + "/series.csv"),
+            test::read_file(std::string(SWARF_SOURCE_DIR) + "/tests/data/golden/default_cut_3e-5s_series.csv"));
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 // main.cpp: the 'swarf' program: the command line (app/commands.h) and the exit codes
-// (0 done, 1 an unexpected error, 2 bad input, 3 the simulation stopped).
+// (0 done, 1 an unexpected error, 2 bad input, 3 the simulation stopped, 130 / 143
+// interrupted by SIGINT / SIGTERM).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "swarf/core/errors.h"
 #include "swarf/version.h"
 
@@ -24,6 +26,9 @@ int main(int argc, char** argv) {
   } catch (const swarf::InputError& e) {
     fmt::print(stderr, "swarf: error: {}\n", e.what());
     return 2;
+  } catch (const swarf::Interrupted& e) {
+    fmt::print(stderr, "\nswarf: {}\n", e.what());
+    return e.exit_code();
   } catch (const swarf::SimulationError& e) {
     fmt::print(stderr, "swarf: simulation stopped: {}\n", e.what());
     return 3;

@@ -7,9 +7,11 @@
 
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 
+#include "app/interrupt.h"
 #include "app/observers/case_observers.h"
 #include "app/observers/observer_set.h"
 #include "app/plots.h"
@@ -85,6 +87,20 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
              outputs.checkpoints() ? ", checkpoint.h5" : "", pictures.empty() ? "" : "\n  pictures: " + pictures);
 }
 
+// A signal arrived: the step it interrupted is finished; a checkpoint keeps the place when
+// checkpoints are on. No summary.json: the run did not complete (series.csv stays .part).
+[[noreturn]] void stop_interrupted(int signal, const std::string& dir, const Simulation& sim, RunOutputs& outputs) {
+  const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+  std::string where = fmt::format("at t = {:.6g} s after step {}", sim.time(), sim.steps());
+  if (outputs.checkpoints()) {
+    outputs.write_checkpoint_now();
+    where += fmt::format("; checkpoint written: continue with 'swarf run --restart {}/checkpoint.h5'", dir);
+  } else {
+    where += "; no checkpoint (output.checkpoint_every = 0): the run is lost";
+  }
+  throw Interrupted(signal, fmt::format("interrupted by {} {}", name, where));
+}
+
 }  // namespace
 
 void run_case(const RunOptions& opt) {
@@ -106,10 +122,12 @@ void run_case(const RunOptions& opt) {
   const double end_time = model.settings.integrator.end_time;  // s
   Progress progress(model.settings.output.progress, end_time);
   const double t_end = end_time * (1.0 - 1e-12);  // (a last step that lands within round-off of the end is the last)
+  install_interrupt_handlers();
   while (sim.time() < t_end) {
     sim.step(end_time - sim.time());
     outputs.after_step(sim.time() >= t_end);
     progress.update(sim.time(), sim.steps());
+    if (const int s = interrupt_signal(); s != 0) stop_interrupted(s, dir, sim, outputs);
   }
   progress.done(sim.time(), sim.steps());
   finish_run(dir, model, sim, outputs, observers, threads, opt.restart);

@@ -51,10 +51,11 @@ class RunOutputs {
   /// The ParaView series, or null without output.vtk.
   VtkSeries* vtk() { return vtk_.get(); }
   bool checkpoints() const { return checkpoint_every_ > 0; }
+  /// Writes DIR/checkpoint.h5 of the current state now (an interrupted run keeps its place).
+  void write_checkpoint_now();
 
  private:
   void write_row();
-  void write_checkpoint_now();
   double seconds_since(std::chrono::steady_clock::time_point t) const;
 
   std::string dir_;
