@@ -197,3 +197,48 @@ TEST(Signals, SigtermEndsARunBetweenStepsWithACheckpointAndTheRestartCompletesIt
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A tool at 1e6 m/s jumped past the block in one step and reported a finished cut with no
+// force. A mesh may now move no further in a step than a particle may: the explicit step
+// stops, the Newmark step shrinks until dt_min and then stops, both naming the mesh.
+TEST(BadInput, AMeshThatWouldJumpPastTheParticlesInOneStepStopsTheRun) {
+  test::TempDir dir("fast_tool");
+  for (const char* scheme : {"verlet", "newmark"}) {
+    const auto r = run_command(fmt::format(
+        "timeout 120 {} run --out {} --threads 1 --set mesh.0.velocity=[1e6,0,0] --set integrator.end_time=3e-6 "
+        "--set integrator.scheme='\"{}\"' --set output.plots=false --set output.vtk=false",
+        SWARF_BINARY, dir / "cut", scheme));
+    EXPECT_EQ(r.exit_code, 3) << scheme << "\n" << r.output;
+    EXPECT_NE(r.output.find("mesh 'tool' moves"), std::string::npos) << scheme << "\n" << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Two runs into one --out left one's summary beside the other's series: the second is now
+// refused while the first runs, and a directory whose run has ended (even by a kill) is free.
+TEST(BadInput, ASecondRunIntoADirectoryThatARunIsWritingIsRefused) {
+  test::TempDir dir("lock");
+  const std::string out = dir / "cut";
+  const std::string script = fmt::format(
+      "{0} run --out {1} --threads 1 --set integrator.end_time=3e-4 --set output.plots=false --set output.vtk=false "
+      "> /dev/null 2>&1 & pid=$!; n=0; while [ ! -e {1}/series.csv.part ] && [ $n -lt 2400 ]; do sleep 0.05; "
+      "n=$((n+1)); done; {0} run --out {1} --set integrator.end_time=1e-6; echo \"second=$?\"; kill -KILL $pid; "
+      "wait $pid; {0} run --out {1} --set integrator.end_time=1e-7 --set output.plots=false > /dev/null 2>&1; "
+      "echo \"third=$?\"",
+      SWARF_BINARY, out);
+  const auto r = test::run_command("bash -c '" + script + "'");
+  EXPECT_NE(r.output.find("second=2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("another swarf run"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("third=0"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace swarf

@@ -1,13 +1,45 @@
 // run_directory.cpp: the run directory (see run_directory.h).
 #include "app/run_directory.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/file.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "app/run.h"
+#include "swarf/core/errors.h"
 
 namespace swarf {
+namespace {
+
+// Holds DIR/.swarf-run.lock for the rest of the process: two runs writing into one directory
+// would leave one's summary beside the other's series. The lock ends with the process (also
+// when it is killed), so a stale lock file never blocks a later run.
+void lock_run_directory(const std::string& dir) {
+  const std::string path = dir + "/.swarf-run.lock";
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(fmt::format("--out {}: cannot create '{}': {}", dir, path, std::strerror(errno)));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    char pid[32] = {0};
+    const ssize_t got = ::pread(fd, pid, sizeof pid - 1, 0);
+    ::close(fd);
+    throw InputError(
+        fmt::format("--out {}: another swarf run{} is writing into this directory (it holds '{}'); "
+                    "give another --out or wait for it to end",
+                    dir, got > 0 ? fmt::format(" (process {})", std::string(pid, got)) : "", path));
+  }
+  const std::string me = std::to_string(::getpid());
+  if (::ftruncate(fd, 0) == 0) {
+    [[maybe_unused]] const ssize_t w = ::pwrite(fd, me.data(), me.size(), 0);  // (only for the refusal's message)
+  }
+  // fd stays open on purpose: the lock is the process's.
+}
+
+}  // namespace
 
 std::string prepare_run_directory(const RunOptions& opt) {
   namespace fs = std::filesystem;
@@ -18,6 +50,7 @@ std::string prepare_run_directory(const RunOptions& opt) {
     dir = restarting ? (parent.empty() ? "." : parent.string()) : "swarf-out";
   }
   fs::create_directories(dir);
+  lock_run_directory(dir);
   // Outputs of an earlier run in the same directory would mix with this one's (and a previous
   // summary would make an interrupted run look complete). A restart keeps the frames.
   for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",

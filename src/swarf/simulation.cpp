@@ -115,6 +115,7 @@ void Simulation::step_scheme(double max_dt) {
     restore_state();
     ++stats_.rejected;
     dt_ = h * g.reject_factor;
+    if (!(dt_ >= g.dt_min) && mesh_rejected_) throw_mesh_too_far(h);
     if (!(dt_ >= g.dt_min))  // (a NaN step too: it is never below dt_min)
       throw SimulationError(fmt::format(
           "the Newmark step did not converge at t = {:.6g} s with dt = {:.4g} s, and the next try ({:.4g} s) "
@@ -127,7 +128,7 @@ void Simulation::step_scheme(double max_dt) {
 void Simulation::step_explicit() {
   const double h = dt_;
   clock_.start();
-  prescribe(h);
+  if (!prescribe(h)) throw_mesh_too_far(h);
   clock_.lap(Stage::Prescribe);
   if (!kick_drift(h)) throw_too_far(h);
   clock_.lap(Stage::Integrate);
@@ -147,7 +148,8 @@ void Simulation::step_explicit() {
 
 bool Simulation::try_newmark(double h) {
   const StepSettings& g = set_;
-  prescribe(h);
+  mesh_rejected_ = !prescribe(h);
+  if (mesh_rejected_) return false;  // (a mesh would move too far: a shorter step)
   clock_.lap(Stage::Prescribe);
   int it = 0, growing = 0;
   bool converged = false;
@@ -205,13 +207,21 @@ void Simulation::contact_forces(double h, bool final) {
   clock_.lap(Stage::Contacts);
 }
 
-void Simulation::prescribe(double h) {
+bool Simulation::prescribe(double h) {
   auto& p = m_.particles;
   const double t_new = time_ + h;
+  // A mesh may move in a step no further than a particle may (max_step_displacement radii of
+  // the smallest particle): a tool that jumps past the block would cut nothing.
+  double rmin = HUGE_VAL;
+  if (!m_.meshes.empty())
+    for (double r : p.radius) rmin = std::min(rmin, r);
+  const double limit = set_.max_step_displacement * rmin;
+  bool within = true;
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
     const Vec3 u_old = m_.mesh_motion[k].displacement_at(time_), u_new = m_.mesh_motion[k].displacement_at(t_new);
     m_.meshes[k].offset = u_new;
     m_.meshes[k].velocity = (u_new - u_old) / h;
+    if (!((u_new - u_old).norm() <= limit) && p.size() > 0) within = false;
   }
   for (std::size_t g = 0; g < m_.groups.size(); ++g) {
     group_u_old_[g] = m_.groups[g].motion.displacement_at(time_);
@@ -227,6 +237,21 @@ void Simulation::prescribe(double h) {
           p.velocity[i][c] = v[c];
         }
   }
+  return within;
+}
+
+void Simulation::throw_mesh_too_far(double h) const {
+  double rmin = HUGE_VAL;
+  for (double r : m_.particles.radius) rmin = std::min(rmin, r);
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    const Vec3 du = m_.mesh_motion[k].displacement_at(time_ + h) - m_.mesh_motion[k].displacement_at(time_);
+    if (du.norm() <= set_.max_step_displacement * rmin) continue;
+    throw SimulationError(fmt::format(
+        "mesh '{}' moves {:.4g} m in step {} at t = {:.6g} s (dt = {:.4g} s, speed {:.4g} m/s), more than "
+        "integrator.max_step_displacement = {} radii of the smallest particle: lower the step or the mesh's speed",
+        m_.meshes[k].name, du.norm(), stats_.accepted + 1, time_, h, du.norm() / h, set_.max_step_displacement));
+  }
+  throw SimulationError("a mesh moves too far in one step");
 }
 
 bool Simulation::kick_drift(double h) {

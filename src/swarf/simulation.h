@@ -133,7 +133,7 @@ class Simulation {
   bool try_newmark(double h);  // true if converged (state advanced, not yet committed)
 
   // Stages.
-  void prescribe(double h);
+  bool prescribe(double h);   // false if a mesh would move too far in the step
   bool kick_drift(double h);  // explicit predictor; false if a particle moved too far
   bool place(double h);       // Newmark positions, velocities and rotations from the latest a; false if too far
   void rotate_one(std::size_t i, double h, double beta, double gamma);
@@ -155,11 +155,13 @@ class Simulation {
   void save_state();
   void restore_state();
   [[noreturn]] void throw_too_far(double h) const;
+  [[noreturn]] void throw_mesh_too_far(double h) const;
   void compute_reactions(std::vector<Vec3>& out) const;
 
   World& m_;
   StepSettings set_;
   std::vector<StepListener*> listeners_;
+  bool mesh_rejected_ = false;  // the last Newmark try was rejected because a mesh moved too far
   bool implicit_ = false;
   bool rotations_ = false;
   double time_ = 0;
