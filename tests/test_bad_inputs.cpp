@@ -242,3 +242,30 @@ TEST(BadInput, ASecondRunIntoADirectoryThatARunIsWritingIsRefused) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Messages that blamed the wrong thing: a misspelt key in [[group]] or [[mesh]] was blamed on
+// a missing key, a directory read as an empty case, a huge lattice ended in a bare
+// std::bad_alloc, an unknown command was "a subcommand is required".
+TEST(BadInput, MessagesNameWhatIsActuallyWrong) {
+  TempDir dir("messages");
+  write_file(dir / "g.toml", std::string(kBar) + "[[group]]\nname = \"x\"\nsides = \"z-\"\n");
+  write_file(dir / "m.toml", std::string(kBar) +
+                                 "[[mesh]]\nname = \"t\"\nrake = 10.0\nwidth = 1e-3\nface_length = 1e-3\n"
+                                 "[contact]\n");
+  std::filesystem::create_directories(dir / "d.toml");
+  auto run = [&](const std::string& args) {
+    return run_command(fmt::format("timeout 120 {} {} --out {}", SWARF_BINARY, args, dir / "out"));
+  };
+  expect_refused(run("run " + dir / "g.toml"), "unknown key 'group.sides'");
+  expect_refused(run("run " + dir / "m.toml"), "unknown key 'mesh.rake'");
+  expect_refused(run("run " + dir / "d.toml"), "is a directory");
+  expect_refused(run("run --set workpiece.cells=[1000,1000,400]"), "workpiece.cells");
+  const auto r = run_command(fmt::format("{} frob", SWARF_BINARY));
+  expect_refused(r, "unknown command 'frob'");
+}
+
+}  // namespace
+}  // namespace swarf

@@ -114,6 +114,7 @@ struct RunCommand final : Command {
     sub->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")
         ->allow_extra_args(false);
     sub->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
+    sub->add_flag("--force", ro.force, "Run even if the case's memory estimate exceeds the machine's memory");
     sub->add_option("--restart", ro.restart,
                     "Continue from a checkpoint (DIR/checkpoint.h5, written every "
                     "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");

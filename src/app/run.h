@@ -14,6 +14,7 @@ struct RunOptions {
   std::string restart;                 ///< checkpoint to continue from (--restart)
   std::vector<std::string> overrides;  ///< --set key=value
   int threads = 0;                     ///< 0 = OpenMP default
+  bool force = false;                  ///< --force: run a case whose memory estimate exceeds the machine's
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

@@ -145,6 +145,7 @@ void read_groups(const CaseInput& in, CaseSettings& cs) {
     GroupSettings gs;
     r.read(group_keys(), gs);
     r.read(motion_keys(), gs.motion);
+    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
     if (!r.has("name")) gs.name = fmt::format("group{}", g);
     if (!names.insert(gs.name).second) r.fail("name", r.get("name"), "two groups have this name");
     check_motion(r, in.directory, gs.motion);
@@ -158,7 +159,6 @@ void read_groups(const CaseInput& in, CaseSettings& cs) {
     for (int c = 0; c < 3; ++c)
       if (gs.box_min[c] > gs.box_max[c]) r.fail("box_min", r.get("box_min"), "must not exceed box_max");
     check_name(r, gs.name);
-    r.finish();
     cs.groups.push_back(gs);
   }
 }
@@ -172,11 +172,11 @@ void read_meshes(const CaseInput& in, CaseSettings& cs) {
     MeshSettings m;
     r.read(mesh_keys(), m);
     r.read(motion_keys(), m.motion);
+    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
     if (!r.has("name")) m.name = fmt::format("mesh{}", k);
     check_name(r, m.name);
     if (!names.insert(m.name).second) r.fail("name", r.get("name"), "two meshes have this name");
     check_mesh(r, in.directory, m);
-    r.finish();
     cs.meshes.push_back(m);
   }
 }
@@ -187,9 +187,9 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
       TableReader r = in.reader((*arr)[k].as_table(), "particle");
       ParticleSettings p;
       r.read(particle_keys(), p);
+      r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
       if (!r.has("radius")) r.fail("radius", nullptr, "every particle needs a radius in m");
       if (!r.has("position")) r.fail("position", nullptr, "every particle needs a position [x, y, z] in m");
-      r.finish();
       cs.particles.push_back(p);
     }
   }
@@ -197,11 +197,11 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
     TableReader r = in.reader(t, "particles");
     auto& f = cs.particles_file;
     r.read(particles_file_keys(), f);
+    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
     f.file = resolve(f.file, in.directory);
     if (!r.has("file")) r.fail("file", nullptr, "[particles] needs file = \"...\" (columns id x y z vx vy vz)");
     if (!r.has("radius")) r.fail("radius", nullptr, "[particles] needs radius in m");
     if (!std::filesystem::exists(f.file)) r.fail("file", r.get("file"), "file not found: " + f.file);
-    r.finish();
   }
 }
 

@@ -25,6 +25,7 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
   auto& w = cs.workpiece;
   w.enabled = true;
   r.read(workpiece_keys(), w);
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   const bool has_cells = r.has("cells"), has_size = r.has("size");
   if (w.periodic_width && !has_cells)
     r.fail("periodic_width", r.get("periodic_width"),
@@ -48,13 +49,13 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
     if (!std::filesystem::exists(w.lattice_file))
       r.fail("lattice_file", r.get("lattice_file"), "file not found: " + w.lattice_file);
   }
-  r.finish();
 }
 
 void read_material(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("material"), "material");
   auto& mt = cs.material;
   r.read(material_keys(), mt);
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   mt.macroscopic = r.has("youngs_modulus");
   if (!mt.macroscopic)
     for (const char* key : {"yield_stress", "hardening_modulus", "tensile_strength", "poisson_ratio"})
@@ -62,13 +63,13 @@ void read_material(const CaseInput& in, CaseSettings& cs) {
   if (mt.macroscopic && !(mt.hardening_modulus < mt.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below material.youngs_modulus = {} Pa", mt.youngs_modulus));
-  r.finish();
 }
 
 void read_rod(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("rod"), "rod");
   auto& d = cs.rod;
   r.know(rod_keys());
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   if (cs.material.macroscopic)
     for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength"})
       if (r.has(key))
@@ -77,20 +78,19 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!(d.hardening_modulus < d.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
-  r.finish();
 }
 
 void read_integrator(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("integrator"), "integrator");
   auto& g = cs.integrator;
   r.read(integrator_keys(), g);
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   if (g.dt_min > 0 && g.dt_max > 0 && g.dt_min > g.dt_max)
     r.fail("dt_min", r.get("dt_min"), fmt::format("must not exceed dt_max = {} s", g.dt_max));
   if (g.iterations_grow >= g.iterations_shrink)
     r.fail("iterations_grow", r.get("iterations_grow"), "must be below iterations_shrink");
   if (g.iterations_shrink > g.max_iterations)
     r.fail("iterations_shrink", r.get("iterations_shrink"), "must not exceed max_iterations");
-  r.finish();
 }
 
 void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
@@ -100,6 +100,7 @@ void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
   auto& u = cs.uniaxial;
   u.enabled = true;
   r.read(uniaxial_keys(), u);
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   if (u.strain_path.size() < 2 || u.strain_path[0] != 0.0)
     r.fail("strain_path", r.get("strain_path"), "needs at least two turning points, the first 0");
   for (double s : u.strain_path)
@@ -107,7 +108,6 @@ void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
   for (std::size_t k = 1; k < u.strain_path.size(); ++k)
     if (u.strain_path[k] == u.strain_path[k - 1])
       r.fail("strain_path", r.get("strain_path"), "consecutive turning points must differ");
-  r.finish();
   for (const auto& g : cs.groups)
     if (g.name == "grip_min" || g.name == "grip_max")
       throw InputError(fmt::format("{}: group name '{}' is reserved for the [uniaxial] grips", in.source, g.name));
@@ -119,19 +119,19 @@ void read_contact_and_environment(const CaseInput& in, CaseSettings& cs) {
     TableReader r = in.reader(t, "contact");
     cs.contact.enabled = true;
     r.read(contact_keys(), cs.contact);
-    r.finish();
+    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   }
   if (const toml::table* t = in.table("environment")) {
     TableReader r = in.reader(t, "environment");
     r.read(environment_keys(), cs);
-    r.finish();
+    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   }
 }
 
 void read_output(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("output"), "output");
   r.read(output_keys(), cs.output);
-  r.finish();
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
 }
 
 // Top level: only known tables, and tables where a table is expected.
@@ -210,6 +210,8 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
 }
 
 CaseSettings load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  if (std::filesystem::is_directory(path))
+    throw InputError(fmt::format("case file '{}' is a directory, not a case file (TOML)", path));
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("case file '{}' cannot be read (missing or no permission)", path));
   std::stringstream ss;
