@@ -28,6 +28,7 @@ void write_lattice(const std::string& path, const Lattice& lat) {
     f.write("/bonds/rest_length", lat.rest_length.data(), lat.rest_length.size());
     f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION + " fcc");
     f.write_attribute("cell_edge", lat.cell_edge);
+    f.close();  // (a failed close throws before the rename)
   }
   std::filesystem::rename(tmp, path);
 }

@@ -4,12 +4,14 @@
 // time's rounding), crashed (--threads 100000) or completed with garbage (an OBJ index read
 // as another, a truncated STL short of a facet, a doubled bond, a NaN checkpoint time).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "io/h5file.h"
 #include "io/mesh_file.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
@@ -265,6 +267,74 @@ TEST(BadInput, MessagesNameWhatIsActuallyWrong) {
   expect_refused(run("run --set workpiece.cells=[1000,1000,400]"), "workpiece.cells");
   const auto r = run_command(fmt::format("{} frob", SWARF_BINARY));
   expect_refused(r, "unknown command 'frob'");
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A small tmpfs that fills up during the run (root only: mount; skipped otherwise).
+class FullDisk {
+ public:
+  FullDisk(const std::string& dir, const char* size) : dir_(dir) {
+    std::filesystem::create_directories(dir);
+    ok_ = ::geteuid() == 0 &&
+          std::system(fmt::format("mount -t tmpfs -o size={} tmpfs {} 2>/dev/null", size, dir).c_str()) == 0;
+  }
+  ~FullDisk() {
+    if (ok_) [[maybe_unused]]
+      const int rc = std::system(fmt::format("umount {}", dir_).c_str());
+  }
+  bool ok() const { return ok_; }
+
+ private:
+  std::string dir_;
+  bool ok_ = false;
+};
+
+// On a full disk a failed write used to be renamed into place (a good checkpoint replaced by
+// one that does not open) or to crash at HDF5's close. Now the run stops with exit code 1
+// naming the file, and the last good checkpoint stays (it opens and holds its step).
+TEST(DiskFull, AFailedCheckpointNeverReplacesTheLastGoodOne) {
+  test::TempDir dir("diskfull");
+  FullDisk disk(dir / "tiny", "5m");
+  if (!disk.ok()) GTEST_SKIP() << "needs root to mount a small tmpfs";
+  const auto r = run_command(fmt::format(
+      "timeout 300 {} run --out {} --threads 1 --set integrator.end_time=3e-5 --set output.checkpoint_every=300 "
+      "--set output.vtk=false --set output.plots=false",
+      SWARF_BINARY, dir / "tiny/cut"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("disk full"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "tiny/cut/summary.json"));
+  ASSERT_TRUE(std::filesystem::exists(dir / "tiny/cut/checkpoint.h5")) << r.output;
+  H5File ck(dir / "tiny/cut/checkpoint.h5", H5File::Mode::Read);  // (throws if it does not open)
+  std::size_t rows = 0, cols = 0;
+  const auto steps = ck.read_ints("/sim/stats/accepted", rows, cols);
+  ASSERT_EQ(steps.size(), 1u);
+  EXPECT_EQ(steps[0] % 300, 0);
+  EXPECT_GT(steps[0], 0);
+}
+
+// The same with frames: a frame that cannot be written stops the run and keeps its .part name.
+TEST(DiskFull, AFrameThatCannotBeWrittenStopsTheRunAndIsNotRenamed) {
+  test::TempDir dir("diskfull_frames");
+  FullDisk disk(dir / "tiny", "3m");
+  if (!disk.ok()) GTEST_SKIP() << "needs root to mount a small tmpfs";
+  const auto r = run_command(fmt::format(
+      "timeout 300 {} run --out {} --threads 1 --set integrator.end_time=3e-5 --set output.frame_interval=2e-6 "
+      "--set output.plots=false",
+      SWARF_BINARY, dir / "tiny/cut"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("cannot write VTK file"), std::string::npos) << r.output;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "tiny/cut/frames")) {
+    const std::string name = e.path().filename().string();
+    if (name.find(".part") != std::string::npos) continue;
+    // Every file under its final name is complete: VTK's appended XML ends with its closing tag.
+    const std::string text = test::read_file(e.path().string());
+    EXPECT_NE(text.rfind("</VTKFile>"), std::string::npos) << name;
+  }
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // main.cpp: the 'swarf' program: the command line (app/commands.h) and the exit codes
-// (0 done, 1 an unexpected error, 2 bad input, 3 the simulation stopped, 130 / 143
-// interrupted by SIGINT / SIGTERM).
+// (0 done, 1 an output that could not be written or an unexpected error, 2 bad input, 3 the simulation stopped, 130 /
+// 143 interrupted by SIGINT / SIGTERM).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -42,6 +42,9 @@ int main(int argc, char** argv) {
   } catch (const swarf::Interrupted& e) {
     fmt::print(stderr, "\nswarf: {}\n", e.what());
     return e.exit_code();
+  } catch (const swarf::OutputError& e) {
+    fmt::print(stderr, "swarf: error: {}\n", e.what());
+    return 1;
   } catch (const swarf::SimulationError& e) {
     fmt::print(stderr, "swarf: simulation stopped: {}\n", e.what());
     return 3;

@@ -138,6 +138,7 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION);
     f.write_attribute("format", kResultsFormat);
     if (extra) extra(f);
+    f.close();  // (a failed close throws: the .part file is never renamed into place)
   }
   std::filesystem::rename(tmp, path);
 }

@@ -17,8 +17,8 @@ inline void write_text_atomic(const std::string& path, const std::string& text) 
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError("cannot write '" + tmp + "'");
     out << text;
-    out.flush();
-    if (!out) throw InputError("write to '" + tmp + "' failed (disk full?)");
+    out.close();  // (the last buffer is written here: a full disk shows now)
+    if (!out) throw OutputError("write to '" + tmp + "' failed (disk full?)");
   }
   std::filesystem::rename(tmp, path);
 }

@@ -182,7 +182,8 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const RunR
     H5StateWriter run_part(f, "/run/");
     visit_record(run_part, const_cast<RunRecord&>(rec));  // (likewise)
     if (run_state) run_state(run_part);
-  }  // closed (flushed) before the rename
+    f.close();  // (flushed, or an error: a failed checkpoint never replaces the last good one)
+  }
   std::filesystem::rename(tmp, path);
 }
 

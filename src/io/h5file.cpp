@@ -28,7 +28,7 @@ H5File::H5File(const std::string& path, Mode mode) : path_(path) {
   quiet_hdf5();
   if (mode == Mode::Create) {
     id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (id_ < 0) throw InputError("cannot create HDF5 file '" + path + "'");
+    if (id_ < 0) throw OutputError("cannot create HDF5 file '" + path + "'");
   } else {
     id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (id_ < 0) throw InputError("cannot open HDF5 file '" + path + "' (missing or not HDF5)");
@@ -37,6 +37,13 @@ H5File::H5File(const std::string& path, Mode mode) : path_(path) {
 
 H5File::~H5File() {
   if (id_ >= 0) H5Fclose(static_cast<hid_t>(id_));
+}
+
+void H5File::close() {
+  if (id_ < 0) return;
+  const herr_t st = H5Fclose(static_cast<hid_t>(id_));
+  id_ = -1;
+  if (st < 0) throw OutputError("writing HDF5 file '" + path_ + "' failed when closing it (disk full?)");
 }
 
 static void write_any(hid_t file, const std::string& path, const std::string& name, hid_t type, const void* data,
@@ -49,7 +56,7 @@ static void write_any(hid_t file, const std::string& path, const std::string& na
   if (set >= 0) H5Dclose(set);
   H5Pclose(lcpl);
   H5Sclose(space);
-  if (st < 0) throw InputError("cannot write dataset '" + name + "' to HDF5 file '" + path + "'");
+  if (st < 0) throw OutputError("cannot write dataset '" + name + "' to HDF5 file '" + path + "' (disk full?)");
 }
 
 void H5File::write(const std::string& name, const double* data, std::size_t rows, std::size_t cols) {
@@ -71,7 +78,7 @@ void H5File::write_attribute(const std::string& name, const std::string& value) 
   if (attr >= 0) H5Aclose(attr);
   H5Sclose(space);
   H5Tclose(type);
-  if (st < 0) throw InputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+  if (st < 0) throw OutputError("cannot write attribute '" + name + "' to '" + path_ + "'");
 }
 
 void H5File::write_attribute(const std::string& name, double value) {
@@ -80,7 +87,7 @@ void H5File::write_attribute(const std::string& name, double value) {
   herr_t st = attr >= 0 ? H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) : -1;
   if (attr >= 0) H5Aclose(attr);
   H5Sclose(space);
-  if (st < 0) throw InputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+  if (st < 0) throw OutputError("cannot write attribute '" + name + "' to '" + path_ + "'");
 }
 
 bool H5File::has(const std::string& name) const {

@@ -20,6 +20,10 @@ class H5File {
   H5File& operator=(const H5File&) = delete;
 
   const std::string& path() const { return path_; }
+  /// Closes the file, flushing it; throws InputError naming the file when that fails (a full
+  /// disk shows here). A writer calls it before renaming its .part file into place; the
+  /// destructor closes without throwing.
+  void close();
 
   /// Writes a rows x cols dataset (cols = 1 writes a 1-D dataset). Intermediate groups are created.
   void write(const std::string& name, const double* data, std::size_t rows, std::size_t cols = 1);

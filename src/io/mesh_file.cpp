@@ -207,7 +207,8 @@ void write_stl(const std::string& path, const TriangleMesh& m) {
       const std::uint16_t attr = 0;
       out.write(reinterpret_cast<const char*>(&attr), 2);
     }
-    if (!out) throw InputError("write to '" + tmp + "' failed");
+    out.close();  // (the last buffer is written here: a full disk shows now)
+    if (!out) throw OutputError("write to '" + tmp + "' failed (disk full?)");
   }
   std::filesystem::rename(tmp, path);
 }

@@ -35,9 +35,10 @@ void SeriesWriter::row(const std::vector<double>& values) {
 
 void SeriesWriter::finish() {
   if (!f_) return;
-  if (std::fclose(f_) != 0) {
+  const bool failed = std::ferror(f_) != 0;  // (a row that could not be written, even if the close succeeds)
+  if (std::fclose(f_) != 0 || failed) {
     f_ = nullptr;
-    throw InputError("closing '" + path_ + ".part' failed (disk full?)");
+    throw OutputError("writing '" + path_ + ".part' failed (disk full?)");
   }
   f_ = nullptr;
   std::filesystem::rename(path_ + ".part", path_);

@@ -72,7 +72,7 @@ void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   w->EncodeAppendedDataOff();
   w->SetHeaderTypeToUInt64();
   w->SetCompressorTypeToNone();
-  if (w->Write() != 1) throw InputError("cannot write VTK file '" + path + "'");
+  if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
   std::filesystem::rename(tmp, path);
 }
 
@@ -94,7 +94,7 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh) {
   const std::string tmp = path + ".part.vtp";
   w->SetFileName(tmp.c_str());
   w->SetInputData(poly);
-  if (w->Write() != 1) throw InputError("cannot write VTK file '" + path + "'");
+  if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
   std::filesystem::rename(tmp, path);
 }
 

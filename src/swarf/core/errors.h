@@ -11,6 +11,12 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An output could not be written (a full disk, no permission). Exit code 1; the file it
+/// was writing keeps its .part name, and no earlier complete file is replaced.
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /// The simulation became invalid (NaN, runaway motion, unstable step). Exit code 3.
 struct SimulationError : std::runtime_error {
   using std::runtime_error::runtime_error;
