@@ -339,3 +339,28 @@ TEST(DiskFull, AFrameThatCannotBeWrittenStopsTheRunAndIsNotRenamed) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A study used to wait for ever on a case that hung; case_time_limit stops a case that runs
+// longer (SIGTERM: it ends after its step) and records why, and the study goes on.
+TEST(BadInput, AStudyCaseLongerThanItsTimeLimitIsStoppedAndRecorded) {
+  TempDir dir("case_limit");
+  write_file(dir / "s.toml", fmt::format("base = \"{}/validation/cutting/default_cut.toml\"\ncase_time_limit = 1.0\n"
+                                         "[set]\n\"output.plots\" = false\n\"output.vtk\" = false\n"
+                                         "[grid]\n\"integrator.end_time\" = [3e-4]\n",
+                                         SWARF_SOURCE_DIR));
+  const auto r = run_command(
+      fmt::format("timeout 120 {} sweep {} --out {} --threads 1", SWARF_BINARY, dir / "s.toml", dir / "st"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  const std::string status = test::read_file(dir / "st/cases/0000/sweep_status.json");
+  EXPECT_NE(status.find("case_time_limit"), std::string::npos) << status << r.output;
+  EXPECT_NE(status.find("143"), std::string::npos) << status;
+  write_file(dir / "bad.toml", "base = \"x.toml\"\ncase_time_limit = -1\n[grid]\n\"a.b\" = [1]\n");
+  expect_refused(run_command(fmt::format("{} sweep {} --out {}", SWARF_BINARY, dir / "bad.toml", dir / "st2")),
+                 "case_time_limit");
+}
+
+}  // namespace
+}  // namespace swarf

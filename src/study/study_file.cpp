@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -160,14 +161,15 @@ struct StudyKeys {
 // The top-level keys, each checked on its own; the scalars go straight into 's'.
 StudyKeys read_study_keys(const toml::table& root, const std::string& source, Study& s) {
   StudyKeys r;
-  const std::set<std::string> known{"base",         "title",        "repetitions", "seed_key", "seed_start", "plots",
-                                    "plot_metrics", "plot_against", "set",         "grid",     "point",      "units"};
+  const std::set<std::string> known{"base",  "title",        "repetitions",    "seed_key", "seed_start",
+                                    "plots", "plot_metrics", "plot_against",   "set",      "grid",
+                                    "point", "units",        "case_time_limit"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
     if (!known.count(key))
       bad(source, v, key,
           "unknown key (known: base, title, repetitions, seed_key, seed_start, plots, plot_metrics, plot_against, "
-          "[set], [grid], [[point]], [units])");
+          "case_time_limit, [set], [grid], [[point]], [units])");
     if (key == "base") {
       s.base = string_at(source, v, key);
       if (s.base.empty()) bad(source, v, key, "must name the base case file");
@@ -185,6 +187,10 @@ StudyKeys read_study_keys(const toml::table& root, const std::string& source, St
     } else if (key == "seed_key") {
       s.seed_key = string_at(source, v, key);
       if (!valid_key(s.seed_key)) bad(source, v, key, "not a case key");
+    } else if (key == "case_time_limit") {
+      const auto f = v.value<double>();
+      if (!f || !(*f >= 0.0) || !std::isfinite(*f)) bad(source, v, key, "must be a time >= 0 in s (0: no limit)");
+      s.case_time_limit = *f;
     } else if (key == "plots") {
       auto b = v.as_boolean();
       if (!b) bad(source, v, key, "must be true or false");

@@ -16,6 +16,7 @@
 #include <cerrno>
 #include <charconv>
 #include <chrono>
+#include <csignal>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -43,7 +44,7 @@ using namespace study_text;
 
 // ---- running ---------------------------------------------------------------------------
 
-int run_logged(const std::vector<std::string>& argv, const std::string& log_path) {
+int run_logged(const std::vector<std::string>& argv, const std::string& log_path, double time_limit, bool* timed_out) {
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
@@ -57,8 +58,30 @@ int run_logged(const std::vector<std::string>& argv, const std::string& log_path
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) throw std::runtime_error(fmt::format("cannot start '{}': {}", argv[0], std::strerror(rc)));
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for '{}': {}", argv[0], std::strerror(errno)));
+  if (timed_out) *timed_out = false;
+  if (time_limit > 0) {
+    // Polled every 50 ms: a case runs for seconds at least, and no signal handler is needed.
+    const auto start = std::chrono::steady_clock::now();
+    bool termed = false;
+    while (true) {
+      const pid_t w = waitpid(pid, &status, WNOHANG);
+      if (w == pid) break;
+      if (w < 0 && errno != EINTR)
+        throw std::runtime_error(fmt::format("waiting for '{}': {}", argv[0], std::strerror(errno)));
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (!termed && t > time_limit) {
+        ::kill(pid, SIGTERM);
+        termed = true;
+        if (timed_out) *timed_out = true;
+      } else if (termed && t > time_limit + 10.0) {
+        ::kill(pid, SIGKILL);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  } else {
+    while (waitpid(pid, &status, 0) < 0)
+      if (errno != EINTR) throw std::runtime_error(fmt::format("waiting for '{}': {}", argv[0], std::strerror(errno)));
+  }
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return -1;
@@ -118,7 +141,10 @@ bool run_one(const Study& s, const StudyCase& c, const SweepOptions& o, int thre
                                   dir};
     for (const auto& ov : case_overrides(s, c)) argv.insert(argv.end(), {"--set", ov});
     argv.insert(argv.end(), {"--threads", std::to_string(threads)});
-    code = run_logged(argv, (fs::path(dir) / "log.txt").string());
+    bool timed_out = false;
+    code = run_logged(argv, (fs::path(dir) / "log.txt").string(), s.case_time_limit, &timed_out);
+    if (timed_out)
+      detail = fmt::format("stopped: the case ran longer than case_time_limit = {} s of wall time\n", s.case_time_limit);
   } catch (const std::exception& e) {
     detail = std::string(e.what()) + "\n";
   }

@@ -30,6 +30,7 @@ struct Study {
   std::string seed_key;  ///< case key set to seed_start + repetition (empty: none)
   long long seed_start = 1;
   bool plots = true;
+  double case_time_limit = 0;  ///< s of wall time per case; 0 = none. A case past it is stopped (SIGTERM, then SIGKILL)
   std::vector<std::string> plot_metrics;  ///< empty = the default subset (see study_table.h)
   std::vector<std::string> plot_against;  ///< empty = the numeric varied keys
   std::vector<StudyCase> cases;           ///< in id order
@@ -68,7 +69,10 @@ CaseStatus case_status(const Study& study, const StudyCase& c, const std::string
 
 /// Runs argv[0] with the arguments, stdin from /dev/null, stdout and stderr to log_path.
 /// Returns the exit code, or 128 + signal number when the process was killed.
-int run_logged(const std::vector<std::string>& argv, const std::string& log_path);
+/// With time_limit > 0 (s of wall time), a process still running then gets SIGTERM (a swarf
+/// run writes its checkpoint and ends with 143), and SIGKILL 10 s later; 'timed_out' says so.
+int run_logged(const std::vector<std::string>& argv, const std::string& log_path, double time_limit = 0,
+               bool* timed_out = nullptr);
 
 struct SweepOptions {
   std::string study_path;
