@@ -364,3 +364,18 @@ TEST(BadInput, AStudyCaseLongerThanItsTimeLimitIsStoppedAndRecorded) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// An error message that could not be written to stderr aborted the program (fmt throws; the
+// handler threw again). It must still end with the error's exit code.
+TEST(BadInput, AClosedOrFullStderrDoesNotAbortTheProgram) {
+  for (const char* redirect : {"2>&-", "2>/dev/full"}) {
+    const auto r = run_command(fmt::format("{} run --set foo.bar=1 {}; echo \"exit=$?\"", SWARF_BINARY, redirect));
+    EXPECT_NE(r.output.find("exit=2"), std::string::npos) << redirect << ": " << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace swarf

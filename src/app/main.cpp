@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/interrupt.h"
+#include "io/console.h"
 #include "swarf/core/errors.h"
 #include "swarf/version.h"
 
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
       known += (known.empty() ? "" : ", ") + sub->get_name();
     }
     if (!found) {
-      fmt::print(stderr, "swarf: error: unknown command '{}' (the commands: {}; swarf --help)\n", argv[1], known);
+      swarf::eprint("swarf: error: unknown command '{}' (the commands: {}; swarf --help)\n", argv[1], known);
       return 2;
     }
   }
@@ -37,19 +38,19 @@ int main(int argc, char** argv) {
     for (const auto& c : commands)
       if (*c->sub) return c->run();
   } catch (const swarf::InputError& e) {
-    fmt::print(stderr, "swarf: error: {}\n", e.what());
+    swarf::eprint("swarf: error: {}\n", e.what());
     return 2;
   } catch (const swarf::Interrupted& e) {
-    fmt::print(stderr, "\nswarf: {}\n", e.what());
+    swarf::eprint("\nswarf: {}\n", e.what());
     return e.exit_code();
   } catch (const swarf::OutputError& e) {
-    fmt::print(stderr, "swarf: error: {}\n", e.what());
+    swarf::eprint("swarf: error: {}\n", e.what());
     return 1;
   } catch (const swarf::SimulationError& e) {
-    fmt::print(stderr, "swarf: simulation stopped: {}\n", e.what());
+    swarf::eprint("swarf: simulation stopped: {}\n", e.what());
     return 3;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "swarf: error: {}\n", e.what());
+    swarf::eprint("swarf: error: {}\n", e.what());
     return 1;
   }
   return 0;

@@ -10,6 +10,7 @@
 
 #include "app/plots.h"
 #include "io/atomic_file.h"
+#include "io/console.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
@@ -103,7 +104,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
     surf = ChipSurface{};
     surf.particles = centres.size();
     surf.note = std::string("no surface: ") + e.what();
-    fmt::print(stderr, "swarf: warning: chip surface not built: {}\n", e.what());
+    eprint("swarf: warning: chip surface not built: {}\n", e.what());
   }
   nlohmann::json& chip = sum["chip"];
   chip["surface_particles"] = surf.particles;
@@ -125,7 +126,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
       sum["pictures"] = {"chip.png"};
     } else {
       sum["picture_error"] = message;
-      fmt::print(stderr, "swarf: warning: picture not rendered: {}\n", message);
+      eprint("swarf: warning: picture not rendered: {}\n", message);
     }
   }
   fmt::print("{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction));

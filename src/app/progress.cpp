@@ -6,6 +6,8 @@
 
 #include <cstdio>
 
+#include "io/console.h"
+
 namespace swarf {
 
 Progress::Progress(bool enabled, double end_time)
@@ -32,9 +34,9 @@ void Progress::print(double time, long long steps, bool final) {
   const std::string line = fmt::format("[{:5.1f}%] t = {:.4e} s of {:.4e} s, step {}, elapsed {}, ETA {}", 100.0 * frac,
                                        time, end_time_, steps, hms(el), final ? hms(0) : hms(eta));
   if (tty_)
-    fmt::print(stderr, "\r{}{}", line, final ? "\n" : "");
+    eprint("\r{}{}", line, final ? "\n" : "");
   else
-    fmt::print(stderr, "{}\n", line);
+    eprint("{}\n", line);
   std::fflush(stderr);
 }
 

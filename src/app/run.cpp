@@ -24,6 +24,7 @@
 #include "app/summary.h"
 #include "io/atomic_file.h"
 #include "io/checkpoint.h"
+#include "io/console.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
@@ -61,7 +62,7 @@ void add_plots(const std::string& dir, nlohmann::json& sum) {
   sum["plots"] = pr.files;
   if (!pr.ok) {
     sum["plot_error"] = pr.message;
-    fmt::print(stderr, "swarf: warning: plots not written: {}\n", pr.message);
+    eprint("swarf: warning: plots not written: {}\n", pr.message);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "app/run.h"
+#include "io/console.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -85,10 +86,10 @@ void carry_frames(const std::filesystem::path& from_dir, const std::string& to_d
   for (std::size_t k = 0; k < frames; ++k)
     if (!fs::exists(to / fmt::format("particles_{:05d}.vtu", k))) ++missing;
   if (missing > 0)
-    fmt::print(stderr,
-               "swarf: warning: {} of the {} frames written before the checkpoint are neither in {} nor in {}: "
-               "particles.pvd lists them\n",
-               missing, frames, to.string(), from.string());
+    eprint(
+        "swarf: warning: {} of the {} frames written before the checkpoint are neither in {} nor in {}: "
+        "particles.pvd lists them\n",
+        missing, frames, to.string(), from.string());
 }
 
 }  // namespace swarf

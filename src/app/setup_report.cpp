@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/console.h"
 #include "setup/model.h"
 #include "swarf/version.h"
 
@@ -36,10 +37,10 @@ void print_setup(const Model& m, int threads) {
   }
   const double nu = m.settings.material.poisson_ratio;
   if (nu > -1 && std::abs(nu - 1.0 / 3.0) > 1e-3)
-    fmt::print(stderr,
-               "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
-               "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n",
-               nu);
+    eprint(
+        "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
+        "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n",
+        nu);
   if (!m.rods.ends.empty())
     fmt::print(
         "  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "

@@ -28,6 +28,7 @@
 #include <thread>
 
 #include "io/atomic_file.h"
+#include "io/console.h"
 #include "setup/case_config.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
@@ -112,10 +113,10 @@ class SweepProgress {
     if (!ok) ++failed_;
     const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
     const std::size_t left = to_run_ - done_;
-    fmt::print(stderr, "sweep{}: case {} {} in {}; {}/{} done, {} failed, {} running, ETA {}\n", prefix_, id,
-               ok ? "completed" : "FAILED", duration_text(seconds), done_, to_run_, failed_, running_,
-               left == 0 ? "0 s" : duration_text(el * double(left) / double(done_)));
-    if (!ok && !detail.empty()) fmt::print(stderr, "{}", detail);
+    eprint("sweep{}: case {} {} in {}; {}/{} done, {} failed, {} running, ETA {}\n", prefix_, id,
+           ok ? "completed" : "FAILED", duration_text(seconds), done_, to_run_, failed_, running_,
+           left == 0 ? "0 s" : duration_text(el * double(left) / double(done_)));
+    if (!ok && !detail.empty()) eprint("{}", detail);
     std::fflush(stderr);
   }
   std::size_t failed() const { return failed_; }
@@ -192,7 +193,7 @@ int run_sweep(const SweepOptions& o) {
       try {
         std::rethrow_exception(setup_error);
       } catch (const std::exception& e) {
-        fmt::print(stderr, "swarf: error (MPI rank {}): {}\n", rank, e.what());
+        eprint("swarf: error (MPI rank {}): {}\n", rank, e.what());
       }
     }
     return 2;
@@ -210,7 +211,7 @@ int run_sweep(const SweepOptions& o) {
     write_study_json(study, o.out_dir);
     for (const auto& p : study.parameters)
       if (!study.units.count(p))
-        fmt::print(stderr, "sweep: note: no unit for '{}' in [units]: its study.csv unit cell stays empty\n", p);
+        eprint("sweep: note: no unit for '{}' in [units]: its study.csv unit cell stays empty\n", p);
   }
   mpi.barrier();
 
@@ -221,9 +222,9 @@ int run_sweep(const SweepOptions& o) {
   const int threads = o.threads > 0 ? o.threads : std::max(1, cores / (o.jobs * mpi.local_size()));
   const std::string prefix = size > 1 ? fmt::format(" [rank {} of {}]", rank, size) : "";
   if (rank == 0)
-    fmt::print(stderr, "sweep: {}: {} cases, {} finished earlier, {} to run{}; {} at once x {} thread(s) per case\n",
-               study.file, study.cases.size(), study.cases.size() - pending.size(), pending.size(),
-               size > 1 ? fmt::format(" on {} ranks", size) : "", o.jobs, threads);
+    eprint("sweep: {}: {} cases, {} finished earlier, {} to run{}; {} at once x {} thread(s) per case\n", study.file,
+           study.cases.size(), study.cases.size() - pending.size(), pending.size(),
+           size > 1 ? fmt::format(" on {} ranks", size) : "", o.jobs, threads);
   SweepProgress progress(prefix, mine.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&]() {
