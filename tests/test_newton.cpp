@@ -188,5 +188,221 @@ TEST(Newton, ConvergesAtFiveAndTenTimesTheStableStepWhereSweepsDiverge) {
   }
 }
 
+// A small bar pulled along x into yield (bar yield strain 3e-3) to 6e-3, between grips that
+// hold the axial component of their end layers.
+Model yield_bar(const std::string& integrator) {
+  return build_model(parse_case(R"([workpiece]
+cells = [4, 2, 2]
+radius = 0.5e-3
+[material]
+density = 7800.0
+mass_basis = "cell"
+[rod]
+youngs_modulus = 200e9
+yield_strain = 1.0e-3
+hardening_modulus = 20e9
+tensile_strength = 1.0e10
+damping_ratio = 0.1
+[uniaxial]
+axis = "x"
+grip_layers = 1
+grip_dofs = "axis"
+strain_path = [0.0, 0.006]
+strain_rate = 200.0
+[integrator]
+)" + integrator,
+                                "bar", {}));
+}
+
+struct BarEnd {
+  double reaction;      // N: axial force of the far grip at the end of the path
+  double plastic_work;  // J
+  std::vector<double> shift;
+  StepStats stats;
+  NewtonStats newton;
+};
+
+BarEnd pull(const std::string& integrator) {
+  Model m = yield_bar(integrator);
+  Simulation sim(m, m.step);
+  const double T = 0.006 / 200.0;  // s
+  while (sim.time() < T * (1 - 1e-12)) sim.step(T - sim.time());
+  double fx = 0.0;
+  for (std::size_t g = 0; g < m.groups.size(); ++g) fx = std::max(fx, std::abs(sim.group_reaction(g)[0]));
+  return {fx, sim.ledger().plastic_work, m.rods.shift, sim.stats(), sim.newton_stats()};
+}
+
+TEST(Newton, BarPulledIntoYieldAgreesWithSmallFixedPointSteps) {
+  const double ds = yield_bar("").derived.dt_stable;
+  // Reference: fixed-point sweeps at 0.2 of the stable step, tolerance 1e-9; and at 0.4, to
+  // see how far the time discretisation alone moves the result.
+  auto fixed = [&](double f) {
+    return pull(
+        fmt::format("scheme = \"newmark\"\ndt = {0:.17g}\ndt_max = {0:.17g}\ntolerance = 1e-9\n"
+                    "max_iterations = 200\niterations_shrink = 150\n",
+                    f * ds));
+  };
+  const BarEnd ref = fixed(0.2), ref2 = fixed(0.4);
+  const BarEnd nt = pull(
+      fmt::format("scheme = \"newmark\"\nsolver = \"newton\"\ndt = {0:.17g}\ndt_max = {1:.17g}\ntolerance = 1e-8\n",
+                  0.5 * ds, 8 * ds));
+  ASSERT_GT(ref.plastic_work, 0.0);  // the bar yielded
+  EXPECT_GT(nt.stats.accepted, 0);
+  EXPECT_LT(nt.stats.accepted, ref.stats.accepted / 10);  // far longer steps
+  const double spread = std::abs(ref2.reaction - ref.reaction) / ref.reaction;
+  const double dev = std::abs(nt.reaction - ref.reaction) / ref.reaction;
+  const double dev_w = std::abs(nt.plastic_work - ref.plastic_work) / ref.plastic_work;
+  double dshift = 0.0, smax = 0.0;
+  for (std::size_t k = 0; k < ref.shift.size(); ++k) {
+    dshift = std::max(dshift, std::abs(nt.shift[k] - ref.shift[k]));
+    smax = std::max(smax, std::abs(ref.shift[k]));
+  }
+  // The path is quasi-static (the load takes 30 us, the wave crosses the bar in about 1 us),
+  // so the end force is set by the rods' states, not by the step; what separates the runs is
+  // the ringing sampled at different steps and Newmark's O(h^2) error on it. Seen at 8 x the
+  // stable step (40 x the reference's): end force 9e-5, shifts 1.6e-3 of the largest, plastic
+  // work 5.6e-3 (the ledger's sigma d(eps0) takes the end-of-step stress, first order in the
+  // step: hardening between a step's start and end shows up there, not in the state). The
+  // bounds: 1e-3 on the force (the issue's 1 % of the peak stress, with room), 1e-2 on the
+  // shifts and on the plastic work.
+  RecordProperty("reaction_spread_0.2_0.4", fmt::format("{:.3g}", spread));
+  RecordProperty("reaction_dev_newton", fmt::format("{:.3g}", dev));
+  EXPECT_LT(dev, 1e-3) << "fixed-point spread " << spread;
+  EXPECT_LT(dshift, 1e-2 * smax);
+  EXPECT_LT(dev_w, 1e-2);
+}
+
+TEST(Newton, RodYieldingInsideAStepCommitsTheSameStateAsTheSweeps) {
+  // One rod between two particles, set stretching at a speed whose elastic amplitude would
+  // be twice the yield strain: it yields at omega t = 0.52, inside the second step of
+  // 0.3/omega (below the fixed-point limit, so both solvers take the same steps), goes on
+  // hardening and unloads elastically: Newton meets both branch switches inside its
+  // iterations. Both solve the same discrete equations, to 1e-11 (sweeps) and
+  // 1e-11 (Newton), so the committed shifts agree to about that relative to the strain.
+  test::TempDir dir("nt_yield");
+  auto run = [&](const std::string& solver) {
+    const std::string rod = "yield_strain = 1e-3\nhardening_modulus = 20e9\n";
+    Model probe = chain_model(dir, 2, rod, "");
+    const double w = std::sqrt(2 * probe.derived.rod_stiffness / probe.particles.mass[0]), h = 0.3 / w;
+    Model m = chain_model(dir, 2, rod,
+                          fmt::format("scheme = \"newmark\"\nsolver = \"{}\"\ndt = {:.17g}\ndt_min = {:.17g}\n"
+                                      "dt_max = {:.17g}\ntolerance = 1e-11\nkrylov_tolerance = 1e-12\n"
+                                      "max_iterations = 200\n",
+                                      solver, h, h, h));
+    const double v_rel = 2e-3 * kL0 * w;  // elastic amplitude: twice the yield strain
+    m.particles.velocity[0] = Vec3(-0.5 * v_rel, 0, 0);
+    m.particles.velocity[1] = Vec3(0.5 * v_rel, 0, 0);
+    Simulation sim(m, m.step);
+    std::vector<double> shifts;
+    int yielded_at = -1;
+    for (int s = 0; s < 20; ++s) {
+      sim.step();
+      shifts.push_back(m.rods.shift[0]);
+      if (yielded_at < 0 && m.rods.shift[0] != 0.0) yielded_at = s;
+    }
+    return std::make_tuple(shifts, yielded_at, sim.stats().max_iterations, sim.ledger().plastic_work);
+  };
+  const auto [s_fp, y_fp, it_fp, w_fp] = run("fixed_point");
+  const auto [s_nt, y_nt, it_nt, w_nt] = run("newton");
+  ASSERT_GT(y_fp, 0);     // elastic at first, then yielding inside a step
+  EXPECT_EQ(y_nt, y_fp);  // the same step
+  // (Newton's first iterate is placed with a_n, the same predictor as the sweeps'; when
+  // that already lies on the plastic branch, the tangent is the hardening slope from the
+  // start and the step, linear on the branch, converges in one iteration.)
+  for (std::size_t k = 0; k < s_fp.size(); ++k) EXPECT_NEAR(s_nt[k], s_fp[k], 1e-9 * std::abs(s_fp.back())) << k;
+  EXPECT_NEAR(w_nt, w_fp, 1e-8 * w_fp);
+  (void)it_fp;
+  (void)it_nt;
+}
+
+// The whole state as named fields' bytes (the state visit), to compare two states field by field.
+class RecordArchive final : public StateArchive {
+ public:
+  bool loading() const override { return false; }
+  void array(std::string_view n, std::vector<double>& v, std::size_t) override { put(n, v); }
+  void array(std::string_view n, std::vector<Vec3>& v, std::size_t) override { put(n, v); }
+  void array(std::string_view n, std::vector<Quat>& v, std::size_t) override { put(n, v); }
+  void array(std::string_view n, std::vector<std::uint8_t>& v, std::size_t) override { put(n, v); }
+  void array(std::string_view n, std::vector<std::int32_t>& v, std::size_t) override { put(n, v); }
+  void array(std::string_view n, std::vector<std::int64_t>& v, std::size_t) override { put(n, v); }
+  void scalar(std::string_view n, double& v) override { put_bytes(n, &v, sizeof v); }
+  void scalar(std::string_view n, std::int64_t& v) override { put_bytes(n, &v, sizeof v); }
+  std::map<std::string, std::string> fields;
+
+ private:
+  template <class T>
+  void put(std::string_view n, const std::vector<T>& v) {
+    put_bytes(n, v.data(), v.size() * sizeof(T));
+  }
+  void put_bytes(std::string_view n, const void* p, std::size_t bytes) {
+    fields[std::string(n)] = std::string(static_cast<const char*>(p), bytes);
+  }
+};
+
+TEST(Newton, RejectedStepLeavesNoTrace) {
+  // A block with random velocities at 5 x the stable step, asked for a residual below the
+  // rounding (1e-15) within 3 Newton iterations: the try is rejected after its solves have
+  // moved the particles and the rods' trial state, and the retry (at half the step) would be
+  // below dt_min, so the step stops there. Everything but the rejection's own counters and
+  // the next step size must be as before the try, bit for bit.
+  const Model probe = random_block("");
+  const double ds = probe.derived.dt_stable;
+  Model m = random_block(
+      fmt::format("scheme = \"newmark\"\nsolver = \"newton\"\ndt = {0:.17g}\ndt_max = {0:.17g}\n"
+                  "dt_min = {1:.17g}\ntolerance = 1e-15\nmax_iterations = 3\n"
+                  "iterations_grow = 1\niterations_shrink = 2\n",
+                  5 * ds, 4 * ds));
+  Simulation sim(m, m.step);
+  RecordArchive before, after;
+  const std::uint64_t hash_before = sim.state_hash();
+  sim.visit_state(before);
+  EXPECT_THROW(sim.step(), SimulationError);
+  sim.visit_state(after);
+  EXPECT_EQ(sim.stats().rejected, 1);
+  EXPECT_EQ(sim.newton_stats().solves, 3);  // the try did solve (and move things) before it was rejected
+  ASSERT_EQ(before.fields.size(), after.fields.size());
+  for (const auto& [name, bytes] : before.fields) {
+    if (name == "dt" || name == "stats/rejected" || name == "stats/force_evaluations") continue;
+    EXPECT_TRUE(after.fields.at(name) == bytes) << name;
+  }
+  EXPECT_NE(sim.state_hash(), hash_before);  // (only through the counters listed above)
+}
+
+TEST(Newton, SameBitsForOneAndTwoThreads) {
+  // 8^3 cells: 2,457 particles and 14,000 rods, more than one fixed block (2048) of each, so
+  // that the block sums and the static partition differ between 1 and 2 threads.
+  const Model probe = random_block("", 8);
+  const double ds = probe.derived.dt_stable;
+  auto run = [&](int threads) {
+    omp_set_num_threads(threads);
+    Model m = random_block(newton_block(2 * ds, 6 * ds), 8);
+    Simulation sim(m, m.step);
+    for (int s = 0; s < 6; ++s) sim.step();
+    return std::make_pair(sim.state_hash(), sim.newton_stats().krylov_iterations);
+  };
+  const int saved = omp_get_max_threads();
+  const auto one = run(1), two = run(2);
+  omp_set_num_threads(saved);
+  EXPECT_GT(one.second, 0);
+  EXPECT_EQ(one.first, two.first);
+  EXPECT_EQ(one.second, two.second);
+}
+
+TEST(Newton, RefusesContactsAndTheExplicitScheme) {
+  test::TempDir dir("nt_refuse");
+  std::string gas = test::granular_gas_case(dir);
+  const std::string verlet = "scheme = \"verlet\"";
+  ASSERT_NE(gas.find(verlet), std::string::npos);
+  const std::string with_newton = gas.replace(gas.find(verlet), verlet.size(),
+                                              "scheme = \"newmark\"\nsolver = \"newton\"");
+  try {
+    build_model(parse_case(with_newton, "gas", {}));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("contacts"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(random_block("scheme = \"verlet\"\nsolver = \"newton\"\n"), InputError);
+}
+
 }  // namespace
 }  // namespace swarf
