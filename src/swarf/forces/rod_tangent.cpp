@@ -33,14 +33,4 @@ void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, con
   }
 }
 
-void rod_tangent_apply(std::size_t rods, const std::array<std::int32_t, 2>* ends, const Vec3* axis, const double* axial,
-                       const double* lateral, const Vec3* d, Vec3* y) {
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < rods; ++k) {
-    const Vec3 u = d[ends[k][1]] - d[ends[k][0]];
-    const Vec3 n = axis[k];
-    y[k] = lateral[k] * u + (axial[k] * n.dot(u)) * n;
-  }
-}
-
 }  // namespace swarf

@@ -14,9 +14,12 @@
 // quadratically, and exactly on the axial motion the tests check).
 //
 // The per-rod block S_k = beta h^2 K_k + gamma h C_k = lateral I + axial n n^T is set up once
-// per Newton iteration (rod_tangent_setup) and applied in every Krylov iteration
-// (rod_tangent_apply: y_k = S_k (d_j - d_i)); the caller gathers y_k per particle in the rows'
-// fixed order: (J d)_i = m_i d_i - sum over rods with i first of y_k + sum with i second.
+// per Newton iteration (rod_tangent_setup) and applied in every Krylov iteration particle by
+// particle, in the rows' fixed order (rod_block_times):
+//   (J d)_i = m_i d_i - sum over i's rods of S_k (d_other - d_i).
+// Each rod is thus applied from both ends; the two results are exact negatives of each other
+// (every operation is odd in u), so Newton's third law holds bit for bit, and the product
+// needs no per-rod store and no second pass.
 #pragma once
 
 #include <array>
@@ -50,8 +53,9 @@ struct RodTangentView {
 void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, const RodTangentView& view,
                        Periodic periodic);
 
-/// y_k = S_k (d_j - d_i) for every rod, in N (d in m/s^2); broken rods give zero.
-void rod_tangent_apply(std::size_t rods, const std::array<std::int32_t, 2>* ends, const Vec3* axis, const double* axial,
-                       const double* lateral, const Vec3* d, Vec3* y);
+/// S_k u = lateral u + axial (n . u) n, in N (u in m/s^2, the coefficients in kg).
+inline Vec3 rod_block_times(const Vec3& n, double axial, double lateral, const Vec3& u) {
+  return lateral * u + (axial * n.dot(u)) * n;
+}
 
 }  // namespace swarf

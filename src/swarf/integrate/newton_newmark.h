@@ -35,7 +35,7 @@ struct NewtonWork {
   std::vector<Eigen::Matrix3d> block_inverse;  ///< inverse of particle i's diagonal block of J, 1/kg
   std::vector<Vec3> axis;                      ///< per rod: unit axis
   std::vector<double> axial, lateral;          ///< per rod: coefficients of S_k, kg
-  std::vector<Vec3> y;                         ///< per rod: S_k (d_j - d_i), N
+  double level2 = 0.0;                         ///< squared force level of the latest residual, N^2
   // The rods' trial state at the start of the step (restored with the particles when a
   // step is rejected, so that a rejected try leaves the state hash as it was).
   std::vector<double> trial_shift, stress, coef;
