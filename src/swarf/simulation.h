@@ -20,6 +20,9 @@
 //   the final a+, commit, account. A step that does not converge (or diverges, or moves a particle too far) is
 //   rejected: everything is restored from the saved state, bit for bit, and retried with a smaller step. The number of
 //   sweeps drives the next step size (paper section 3.4).
+// Or, with StepSettings::solver = Solver::Newton (rods only), by Newton-Krylov on the same step's residual
+// (try_newton, integrate/newton_newmark.cpp): the same prescribe, place and rod_forces stages, a CG solve with the
+// rods' tangent between evaluations, the same commit; converges beyond the explicit stable step.
 #pragma once
 
 #include <cstdint>
