@@ -91,6 +91,8 @@ void read_integrator(const CaseInput& in, CaseSettings& cs) {
     r.fail("iterations_grow", r.get("iterations_grow"), "must be below iterations_shrink");
   if (g.iterations_shrink > g.max_iterations)
     r.fail("iterations_shrink", r.get("iterations_shrink"), "must not exceed max_iterations");
+  if (g.solver == "newton" && g.scheme == "verlet")
+    r.fail("solver", r.get("solver"), "solves the implicit Newmark step: not with scheme = \"verlet\"");
 }
 
 void read_uniaxial(const CaseInput& in, CaseSettings& cs) {

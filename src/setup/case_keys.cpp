@@ -257,6 +257,32 @@ const std::vector<Key<IntegratorSettings>>& integrator_keys() {
               "with (1 - w) a_guess + w a_swept instead of the swept accelerations alone. 0.75 cuts the default "
               "cut's force evaluations by a third; see **Relaxation** below.",
        .section = "newmark"},
+      {.name = "solver",
+       .field = &S::solver,
+       .choices = {"fixed_point", "newton"},
+       .rule = "newton: not with `scheme = \"verlet\"`, nor with `[contact]`",
+       .doc = "How the Newmark step is solved. `\"fixed_point\"`: sweeps of force evaluations, convergent only "
+              "below the explicit stable step. `\"newton\"`: Newton-Krylov with the rods' tangent stiffness "
+              "(conjugate gradients, block-Jacobi preconditioner, matrix-free), which converges beyond it: "
+              "`tolerance` then bounds the residual relative to the force level, `max_iterations`, "
+              "`iterations_grow` and `iterations_shrink` count Newton iterations, and `dt_max` defaults to 10 x "
+              "the stable step (at most 20 x). With `scheme = \"auto\"`, `\"newton\"` selects Newmark. Rods "
+              "only for now: a case with `[contact]` is refused.",
+       .section = "newmark"},
+      {.name = "krylov_tolerance",
+       .field = &S::krylov_tolerance,
+       .unit = "1",
+       .range = in(0, 1, "()"),
+       .doc = "newton: each linear solve stops when its residual's 2-norm is at most this fraction of the Newton "
+              "residual's (an inexact Newton step; the Newton loop measures the real residual again).",
+       .section = "newmark"},
+      {.name = "krylov_max_iterations",
+       .field = &S::krylov_max_iterations,
+       .unit = "1",
+       .range = in(1, 100000, "[]"),
+       .doc = "newton: conjugate-gradient iterations allowed per Newton iteration. A solve that stops here is "
+              "used as it is, and the next step is shortened (`shrink_factor`).",
+       .section = "newmark"},
   };
   return keys;
 }

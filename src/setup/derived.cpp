@@ -80,12 +80,26 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.law.viscosity = d.rod_viscosity;
 
   const auto& g = cs.integrator;
-  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && std::isfinite(rod.tensile_strength));
+  const bool newton = g.solver == "newton";
+  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && (std::isfinite(rod.tensile_strength) || newton));
   d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
   d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
   // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64
   // (0.8 of the stable step for beta = 1/4).
-  d.dt_max = g.dt_max > 0 ? g.dt_max : 0.4 / std::sqrt(g.beta) * d.dt_stable;
+  // Newton converges beyond the explicit limit; its default and its cap (the Krylov
+  // iterations grow with dt / dt_stable, and accuracy, not stability, bounds the step).
+  constexpr double kNewtonDtMax = 10.0, kNewtonDtCap = 20.0;  // x dt_stable
+  d.dt_max = g.dt_max > 0 ? g.dt_max : (newton ? kNewtonDtMax : 0.4 / std::sqrt(g.beta)) * d.dt_stable;
+  if (newton && d.dt_max > kNewtonDtCap * d.dt_stable)
+    throw InputError(
+        fmt::format("{}: integrator.dt_max = {:.6g} s exceeds {} x the stable step ({:.6g} s), the most "
+                    "the Newton solver allows",
+                    cs.source, d.dt_max, kNewtonDtCap, kNewtonDtCap * d.dt_stable));
+  if (newton && cs.contact.enabled)
+    throw InputError(
+        fmt::format("{}: integrator.solver = \"newton\" does not handle contacts yet (it has only the "
+                    "rods' tangent); use solver = \"fixed_point\" with [contact]",
+                    cs.source));
   // The steps must be finite positive times whatever produced them (an absurd radius,
   // density or modulus makes the stable step 0, inf or NaN, and a NaN step is never "below
   // dt_min": the step control would retry it for ever).

@@ -378,6 +378,9 @@ StepSettings step_settings(const CaseSettings& cs, const Derived& d) {
   s.shrink_factor = g.shrink_factor;
   s.reject_factor = g.reject_factor;
   s.relaxation = g.relaxation;
+  s.solver = g.solver == "newton" ? Solver::Newton : Solver::FixedPoint;
+  s.krylov_tolerance = g.krylov_tolerance;
+  s.krylov_max_iterations = g.krylov_max_iterations;
   s.max_step_displacement = g.max_step_displacement;
   s.sphere_orientations = cs.output.orientations;
   s.length_scale = d.nn_distance;

@@ -19,6 +19,15 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
         fmt::format("step settings: dt = {} s, dt_min = {} s, dt_max = {} s: the step must be a "
                     "finite positive time (and dt_min <= dt_max)",
                     dt_, set_.dt_min, set_.dt_max));
+  if (set_.solver == Solver::Newton) {
+    // Refused rather than approximated: the Newton solver has no contact tangent yet, and
+    // without it the Jacobian would be wrong wherever a contact acts.
+    if (!implicit_) throw InputError("the Newton solver solves the implicit Newmark step: it needs scheme Newmark");
+    if (world.contacts)
+      throw InputError(
+          "the Newton solver does not handle contacts yet (it has only the rods' tangent); use the fixed-point "
+          "solver with contacts");
+  }
   block_viscous_.assign(block_count(m_.rods.size()), 0.0);
   block_changed_.assign(block_count(m_.rods.size()), 0);
   const std::size_t ng = m_.groups.size();
@@ -99,16 +108,20 @@ void Simulation::step_scheme(double max_dt) {
   save_state();
   while (true) {
     const double h = std::min(dt_, max_dt);
-    if (try_newmark(h)) {
+    const bool newton = g.solver == Solver::Newton;
+    if (newton ? try_newton(h) : try_newmark(h)) {
       commit();
       clock_.lap(Stage::Commit);
       account(h);
       clock_.lap(Stage::Account);
-      // Step size control from the number of sweeps (paper section 3.4).
+      // Step size control from the number of sweeps (paper section 3.4), or of Newton
+      // iterations; a Newton step whose linear solve hit krylov_max_iterations does not grow
+      // (its CG iterations grow with h / dt_stable) and shrinks the next one.
       const int it = stats_.last_iterations;
-      if (it <= g.iterations_grow)
+      const bool capped = newton && newton_stats_.last_capped;
+      if (it <= g.iterations_grow && !capped)
         dt_ = std::min(dt_ * g.grow_factor, g.dt_max);
-      else if (it >= g.iterations_shrink)
+      else if (it >= g.iterations_shrink || capped)
         dt_ = std::max(dt_ * g.shrink_factor, g.dt_min);
       return;
     }
@@ -410,6 +423,15 @@ void Simulation::save_state() {
     f_n_[i] = p.force[i];
     if (rot) rot_n_[i] = RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
   }
+  if (set_.solver == Solver::Newton) {
+    // The rods' trial fields too: a rejected Newton try then leaves the state hash as it was
+    // (the fixed-point solver leaves the failed try's trial values, which no step reads).
+    const auto& r = m_.rods;
+    nk_.trial_shift = r.trial_shift;
+    nk_.trial_broken = r.trial_broken;
+    nk_.stress = r.stress;
+    nk_.coef = r.force_coef;
+  }
 }
 
 void Simulation::restore_state() {
@@ -418,6 +440,13 @@ void Simulation::restore_state() {
   p.velocity = v_n_;
   p.acceleration = a_n_;
   p.force = f_n_;
+  if (set_.solver == Solver::Newton) {
+    auto& r = m_.rods;
+    r.trial_shift = nk_.trial_shift;
+    r.trial_broken = nk_.trial_broken;
+    r.stress = nk_.stress;
+    r.force_coef = nk_.coef;
+  }
   if (rotations_)
     for (std::size_t i = 0; i < p.size(); ++i) {
       p.orientation[i] = rot_n_[i].q;

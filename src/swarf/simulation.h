@@ -20,6 +20,9 @@
 //   the final a+, commit, account. A step that does not converge (or diverges, or moves a particle too far) is
 //   rejected: everything is restored from the saved state, bit for bit, and retried with a smaller step. The number of
 //   sweeps drives the next step size (paper section 3.4).
+// Or, with StepSettings::solver = Solver::Newton (rods only), by Newton-Krylov on the same step's residual
+// (try_newton, integrate/newton_newmark.cpp): the same prescribe, place and rod_forces stages, a CG solve with the
+// rods' tangent between evaluations, the same commit; converges beyond the explicit stable step.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +30,7 @@
 #include <vector>
 
 #include "swarf/core/stage_clock.h"
+#include "swarf/integrate/newton_newmark.h"
 #include "swarf/state/reindex.h"
 #include "swarf/state_archive.h"
 #include "swarf/step_listener.h"
@@ -89,6 +93,8 @@ class Simulation {
   double last_dt() const { return last_dt_; }
   bool implicit() const { return implicit_; }
   const StepStats& stats() const { return stats_; }
+  /// Counters of the Newton solver (zero with the fixed-point one).
+  const NewtonStats& newton_stats() const { return newton_stats_; }
   const EnergyLedger& ledger() const { return ledger_; }
   std::size_t broken_rods() const { return broken_; }
 
@@ -131,6 +137,14 @@ class Simulation {
   void step_scheme(double max_dt);
   void step_explicit();
   bool try_newmark(double h);  // true if converged (state advanced, not yet committed)
+  // The Newton-Krylov solve of the same step (integrate/newton_newmark.cpp).
+  bool try_newton(double h);
+  double newton_residual(double h);  // forces at the placed state, R = M a - F; returns |R| / force level
+  void newton_tangent(double h);     // per-rod blocks of J and the particles' block-Jacobi inverses
+  int newton_krylov();               // CG on J d = -R; iterations, or -1 if J is not positive definite
+  template <bool Wrap>
+  double newton_residual_impl();
+  void newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& out, double& dot);  // out = J x, dot = x.Jx
 
   // Stages.
   bool prescribe(double h);   // false if a mesh would move too far in the step
@@ -188,6 +202,8 @@ class Simulation {
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<Vec3> a_guess_;  // accelerations a sweep placed with (integrator.relaxation < 1)
   std::vector<RotState> rot_n_;
+  NewtonWork nk_;
+  NewtonStats newton_stats_;
   ContactSystem contacts_;
   StageClock clock_;
   std::vector<std::uint8_t> free_to_rotate_;  // 1 for particles without intact rods

@@ -12,6 +12,12 @@ enum class Scheme {
   Newmark,  ///< implicit Newmark, fixed-point sweeps, step size control, commit after convergence
 };
 
+/// How the Newmark step's equations are solved (ignored by Verlet).
+enum class Solver {
+  FixedPoint,  ///< sweeps {place, forces, gather}: converge only below the explicit stable step
+  Newton,      ///< Newton-Krylov on the residual in the accelerations (integrate/newton_newmark.cpp); rods only
+};
+
 struct StepSettings {
   Scheme scheme = Scheme::Verlet;
   double dt = 0;  ///< s: Verlet's fixed step; Newmark's first step
@@ -28,6 +34,11 @@ struct StepSettings {
   double shrink_factor = 0.7;  ///< 1
   double reject_factor = 0.5;  ///< 1: a rejected step is retried this much smaller
   double relaxation = 1.0;     ///< 1: w of the relaxed sweeps, (1 - w) a_guess + w a_swept
+  Solver solver = Solver::FixedPoint;
+  // Newton (Solver::Newton): 'tolerance' bounds the residual relative to the force level,
+  // 'max_iterations' the Newton iterations; iterations_grow/shrink count Newton iterations.
+  double krylov_tolerance = 1e-4;   ///< 1: CG stops when |r| <= this x |R| (2-norms over the free components)
+  int krylov_max_iterations = 500;  ///< CG iterations per Newton iteration; a step that hits it does not grow
   // Both schemes.
   double max_step_displacement = 0.25;  ///< radii: a particle moving further in a step stops (Verlet) or rejects
                                         ///< (Newmark) it

@@ -37,12 +37,30 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
                     {"wall_time_s", end.wall_s},
                     {"step_wall_time_s", end.step_wall_s},
                     {"ns_per_particle_step", ns_per_particle_step}};
+  const bool newton = sim.implicit() && sim.settings().solver == Solver::Newton;
+  if (newton) {
+    // (only for the Newton solver: the default run's summary keeps its keys)
+    const NewtonStats& ns = sim.newton_stats();
+    summary["run"]["solver"] = "newton";
+    summary["run"]["newton_solves"] = ns.solves;
+    summary["run"]["tangent_products"] = ns.tangent_products;
+    summary["run"]["krylov_iterations"] = ns.krylov_iterations;
+    summary["run"]["krylov_capped"] = ns.krylov_capped;
+    summary["run"]["steps_rejected_indefinite"] = ns.indefinite;
+  }
   fmt::print("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n",
              sim.steps(), sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s, ns_per_particle_step,
              end.threads);
   if (sim.implicit())
     fmt::print("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",
                st.rejected, sweeps_mean, st.max_iterations, evaluations_per_us);
+  if (newton)
+    fmt::print(
+        "  newton: {} linear solves, {} tangent products ({:.1f} per step), {} solves stopped at "
+        "krylov_max_iterations, {} steps rejected on an indefinite tangent\n",
+        sim.newton_stats().solves, sim.newton_stats().tangent_products,
+        double(sim.newton_stats().tangent_products) / double(std::max<std::int64_t>(1, sim.steps())),
+        sim.newton_stats().krylov_capped, sim.newton_stats().indefinite);
 }
 
 }  // namespace swarf

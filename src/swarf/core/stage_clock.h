@@ -10,10 +10,11 @@
 
 namespace swarf {
 
-enum class Stage : int { Prescribe, Integrate, Rods, Lists, Contacts, Gather, Commit, Account, Count };
+enum class Stage : int { Prescribe, Integrate, Rods, Lists, Contacts, Gather, Commit, Account, Krylov, Count };
 
 inline constexpr std::array<const char*, static_cast<std::size_t>(Stage::Count)> kStageNames{
-    "prescribe", "integrate", "rod_forces", "contact_lists", "contact_forces", "gather", "commit", "account"};
+    "prescribe", "integrate", "rod_forces", "contact_lists", "contact_forces",
+    "gather",    "commit",    "account",    "krylov"};  // (krylov: the Newton solver's tangent set-up and CG iterations)
 
 class StageClock {
  public:

@@ -1,0 +1,334 @@
+// newton_newmark.cpp: the Newton-Krylov solve of the implicit Newmark step (see
+// newton_newmark.h and simulation.h).
+//
+// Choices, and why:
+// - Unknowns: the new accelerations a, as the fixed-point sweeps use (the step's
+//   prescribe/place/rod_forces stages are shared; only the update of a differs).
+// - The residual always uses the real rod law (rod_forces), the tangent the branch of the
+//   latest evaluation (its trial state: elastic, plastic or broken), frozen for one linear
+//   solve. A converged step is therefore an equilibrium of the real law, and no re-solve is
+//   needed when a rod switches branch: the next Newton iteration sees the switch in both its
+//   residual and its tangent. A rod that keeps flipping between branches (a piecewise-linear
+//   law can make Newton cycle) exhausts max_iterations and rejects the step, which is retried
+//   shorter, where the flip is resolved. Plasticity and breakage are committed afterwards,
+//   from the converged evaluation, exactly as for the fixed-point solver (Simulation::commit).
+// - Matrix-free products (forces/rod_tangent.h): one pass over the particles' rows per CG
+//   iteration, each rod applied from both ends (twice the flops of a pass over the rods, but
+//   no per-rod store, no second pass and no barrier between them), and no sparse matrix to
+//   assemble and store (12 neighbours per particle: 117 doubles per particle assembled,
+//   against 5 per rod, 30 per particle, here).
+// - CG with a 3x3 block-Jacobi preconditioner per particle: J is symmetric and, for tensile
+//   or moderately compressed rods, positive definite (M dominates the compressed rods'
+//   negative geometric part c (I - n n^T) unless beta h^2 |c| approaches the mass). If CG
+//   meets d^T J d <= 0, the step is rejected and retried shorter (reject_factor): J tends to
+//   M as h shrinks, so a shorter step restores definiteness, and an indefinite J means the
+//   step spans a buckling-like loss of stiffness that a long step would not resolve anyway.
+// - Inexact Newton: CG stops at |r| <= krylov_tolerance |R|; the Newton loop then measures the
+//   real residual again. A solve stopped at krylov_max_iterations is used as it is (the
+//   residual check decides), and the step control does not grow the next step.
+// - Every sum is over fixed blocks (deterministic_sum) or in the rows' fixed order, and the
+//   maxima are exact, so the result has the same bits for any number of threads.
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+
+#include "swarf/core/parallel.h"
+#include "swarf/forces/rod_tangent.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+namespace {
+
+// The force level never counts below that of a rod strained by this (as in the gather: a
+// body at rest has forces that are rounding noise).
+constexpr double kForceFloorStrain = 1e-8;
+
+// Sums of two quantities over i in [0, n), bit-identical for any thread count (as
+// deterministic_sum, one pass for both).
+template <class F>
+std::array<double, 2> deterministic_sums2(std::size_t n, F&& f) {
+  const std::size_t nb = block_count(n);
+  std::vector<std::array<double, 2>> part(nb, {0.0, 0.0});
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::array<double, 2> s{0.0, 0.0};
+    const std::size_t end = std::min(n, (b + 1) * kBlock);
+    for (std::size_t i = b * kBlock; i < end; ++i) {
+      const std::array<double, 2> v = f(i);
+      s[0] += v[0];
+      s[1] += v[1];
+    }
+    part[b] = s;
+  }
+  std::array<double, 2> total{0.0, 0.0};
+  for (const auto& s : part) {
+    total[0] += s[0];
+    total[1] += s[1];
+  }
+  return total;
+}
+
+// Zeroes the prescribed components (bit c of mask) of v.
+inline void mask_prescribed(Vec3& v, std::uint8_t mask) {
+  if (mask)
+    for (int c = 0; c < 3; ++c)
+      if (mask & (1u << c)) v[c] = 0.0;
+}
+
+}  // namespace
+
+bool Simulation::try_newton(double h) {
+  const StepSettings& g = set_;
+  if (!prescribe(h)) return false;  // (a mesh would move too far in the step: a shorter one)
+  clock_.lap(Stage::Prescribe);
+  auto& acc = m_.particles.acceleration;
+  const std::size_t n = acc.size();
+  const double kx = g.beta * h * h;
+  int solves = 0, growing = 0, cg_total = 0;
+  bool capped = false;
+  double previous = HUGE_VAL, correction = HUGE_VAL;
+  while (true) {
+    if (!place(h)) return false;  // also rejects a particle moving further than max_step_displacement
+    clock_.lap(Stage::Integrate);
+    rod_forces();
+    clock_.lap(Stage::Rods);
+    const double res = newton_residual(h);
+    clock_.lap(Stage::Gather);
+    if (!std::isfinite(res)) return false;
+    // Converged: the residual is small against the force level, or the last correction
+    // moved the particles by little against the step's displacement (fast motion through
+    // unstressed states, where the force level vanishes; the same two measures as the gather).
+    if (res <= g.tolerance || correction <= g.tolerance) break;
+    if (solves >= g.max_iterations) return false;
+    // Newton near the solution shrinks the residual every iteration; two growing in a row
+    // mean it is not converging (a step too long for the nonlinearity): give up early.
+    growing = res > previous && res > 10.0 * g.tolerance ? growing + 1 : 0;
+    if (growing >= 2) return false;
+    previous = res;
+    newton_tangent(h);
+    const int cg = newton_krylov();
+    clock_.lap(Stage::Krylov);
+    ++solves;
+    ++newton_stats_.solves;
+    if (cg < 0) {
+      ++newton_stats_.indefinite;
+      return false;
+    }
+    cg_total += cg;
+    if (cg >= g.krylov_max_iterations) {
+      capped = true;
+      ++newton_stats_.krylov_capped;
+    }
+    double dmax2 = 0.0;
+    const Vec3* d = nk_.d.data();
+    Vec3* a = acc.data();
+#pragma omp parallel for schedule(static) reduction(max : dmax2)
+    for (std::size_t i = 0; i < n; ++i) {
+      a[i] += d[i];  // (d is zero in the prescribed components)
+      dmax2 = std::max(dmax2, d[i].squaredNorm());
+    }
+    correction = step_disp2_ > 0.0 ? kx * std::sqrt(dmax2 / step_disp2_) : HUGE_VAL;
+  }
+  stats_.last_iterations = solves;
+  stats_.iterations += solves;
+  stats_.max_iterations = std::max(stats_.max_iterations, solves);
+  newton_stats_.last_krylov = cg_total;
+  newton_stats_.last_capped = capped;
+  return true;
+}
+
+template <bool Wrap>
+double Simulation::newton_residual_impl() {
+  auto& p = m_.particles;
+  const auto& r = m_.rods;
+  const std::size_t n = p.size();
+  nk_.residual.resize(n);
+  const double d = set_.length_scale;
+  const Vec3 gravity = m_.gravity;
+  const Periodic periodic = m_.periodic;
+  const Vec3* x = p.position.data();
+  Vec3* force = p.force.data();
+  Vec3* acc = p.acceleration.data();
+  Vec3* res = nk_.residual.data();
+  const double* mass = p.mass.data();
+  const double* inv_mass = p.inv_mass.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
+  const std::int32_t* row_start = r.row_start.data();
+  const Rods::Entry* entries = r.entries.data();
+  const double* force_coef = r.force_coef.data();
+  // The residual's largest component against the force level: the largest of the net
+  // forces, the inertial forces m a and the sums of rod force magnitudes on a particle.
+  double rmax = 0.0, fmax = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : rmax, fmax)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 f = Vec3::Zero();
+    double level = 0.0;
+    const Vec3 xi = x[i];
+    for (std::int32_t e = row_start[i]; e < row_start[i + 1]; ++e) {
+      const Rods::Entry en = entries[e];
+      const double c = force_coef[en.rod];
+      Vec3 dx = x[en.other] - xi;
+      if constexpr (Wrap) periodic.wrap(dx);
+      f += c * dx;
+      level += std::abs(c);
+    }
+    f += mass[i] * gravity;
+    force[i] = f;
+    const std::uint8_t mask = prescribed[i];
+    Vec3 ma = mass[i] * acc[i];
+    Vec3 ff = f;
+    if (mask)
+      for (int c = 0; c < 3; ++c)
+        if (mask & (1u << c)) {
+          acc[i][c] = inv_mass[i] * f[c];  // (as the gather: the prescribed components are not placed from it)
+          ma[c] = ff[c] = 0.0;
+        }
+    const Vec3 ri = ma - ff;
+    res[i] = ri;
+    const double r2 = ri.squaredNorm();
+    rmax = std::max(rmax, std::isnan(r2) ? HUGE_VAL : r2);
+    fmax = std::max({fmax, ff.squaredNorm(), ma.squaredNorm(), level * level * d * d});
+  }
+  const double floor = kForceFloorStrain * set_.stiffness_scale * d;
+  fmax = std::max(fmax, floor * floor);
+  nk_.level2 = fmax;
+  return std::sqrt(rmax / fmax);
+}
+
+double Simulation::newton_residual(double h) {
+  sweep_dt_ = h;
+  return m_.periodic.on() ? newton_residual_impl<true>() : newton_residual_impl<false>();
+}
+
+void Simulation::newton_tangent(double h) {
+  const auto& p = m_.particles;
+  const auto& r = m_.rods;
+  const std::size_t n = p.size(), m = r.size();
+  nk_.axis.resize(m);
+  nk_.axial.resize(m);
+  nk_.lateral.resize(m);
+  nk_.block_inverse.resize(n);
+  RodTangentView v;
+  v.rods = m;
+  v.ends = r.ends.data();
+  v.inv_rest_length = r.inv_rest_length.data();
+  v.shift = r.shift.data();
+  v.trial_shift = r.trial_shift.data();
+  v.intact = r.intact.data();
+  v.trial_broken = r.trial_broken.data();
+  v.coef = r.force_coef.data();
+  v.x = p.position.data();
+  v.axis = nk_.axis.data();
+  v.axial = nk_.axial.data();
+  v.lateral = nk_.lateral.data();
+  if (m > 0) rod_tangent_setup(r.law, r.area, set_.beta * h * h, set_.gamma * h, v, m_.periodic);
+  // Block-Jacobi: particle i's 3x3 diagonal block m_i I + sum of its rods' S_k, with the
+  // prescribed components' rows and columns replaced by the identity (their d stays 0).
+  const double* mass = p.mass.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
+  const std::int32_t* row_start = r.row_start.data();
+  const Rods::Entry* entries = r.entries.data();
+  const Vec3* axis = nk_.axis.data();
+  const double* axial = nk_.axial.data();
+  const double* lateral = nk_.lateral.data();
+  Eigen::Matrix3d* inv = nk_.block_inverse.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Matrix3d b = mass[i] * Eigen::Matrix3d::Identity();
+    for (std::int32_t e = row_start[i]; e < row_start[i + 1]; ++e) {
+      const std::int32_t k = entries[e].rod;
+      b.diagonal().array() += lateral[k];
+      b.noalias() += axial[k] * (axis[k] * axis[k].transpose());
+    }
+    const std::uint8_t mask = prescribed[i];
+    if (mask)
+      for (int c = 0; c < 3; ++c)
+        if (mask & (1u << c)) {
+          b.row(c).setZero();
+          b.col(c).setZero();
+          b(c, c) = 1.0;
+        }
+    inv[i] = b.inverse();
+  }
+}
+
+void Simulation::newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& out, double& dot) {
+  const auto& p = m_.particles;
+  const auto& r = m_.rods;
+  const std::size_t n = p.size();
+  const double* mass = p.mass.data();
+  const std::uint8_t* prescribed = p.prescribed.data();
+  const std::int32_t* row_start = r.row_start.data();
+  const Rods::Entry* entries = r.entries.data();
+  const Vec3* axis = nk_.axis.data();
+  const double* axial = nk_.axial.data();
+  const double* lateral = nk_.lateral.data();
+  const Vec3* xs = x.data();
+  Vec3* o = out.data();
+  ++newton_stats_.tangent_products;
+  // (J x)_i = m_i x_i - sum over i's rods of S_k (x_other - x_i), in the rows' order.
+  dot = deterministic_sum(n, [&](std::size_t i) {
+    Vec3 s = mass[i] * xs[i];
+    const Vec3 xi = xs[i];
+    for (std::int32_t e = row_start[i]; e < row_start[i + 1]; ++e) {
+      const Rods::Entry en = entries[e];
+      const std::int32_t k = en.rod;
+      s -= rod_block_times(axis[k], axial[k], lateral[k], xs[en.other] - xi);
+    }
+    mask_prescribed(s, prescribed[i]);
+    o[i] = s;
+    return xs[i].dot(s);
+  });
+}
+
+int Simulation::newton_krylov() {
+  const std::size_t n = m_.particles.size();
+  NewtonWork& w = nk_;
+  w.d.assign(n, Vec3::Zero());
+  w.r.resize(n);
+  w.z.resize(n);
+  w.p.resize(n);
+  w.q.resize(n);
+  Vec3 *d = w.d.data(), *r = w.r.data(), *z = w.z.data(), *pp = w.p.data();
+  const Vec3* q = w.q.data();
+  const Vec3* res = w.residual.data();
+  const Eigen::Matrix3d* inv = w.block_inverse.data();
+  auto [rz, rr] = deterministic_sums2(n, [&](std::size_t i) {
+    r[i] = -res[i];
+    z[i] = inv[i] * r[i];
+    pp[i] = z[i];
+    return std::array<double, 2>{r[i].dot(z[i]), r[i].squaredNorm()};
+  });
+  if (rr == 0.0) return 0;
+  // Stop at krylov_tolerance of the Newton residual, or as soon as the linear residual is
+  // below half the Newton tolerance of the force level (2-norm, so every particle's too):
+  // solving further would buy nothing the Newton test can see, and a step that starts near
+  // its solution (slow loading, a good predictor) then needs one short solve.
+  const double eta = set_.krylov_tolerance, half_tol = 0.5 * set_.tolerance;
+  const double target = std::max(eta * eta * rr, half_tol * half_tol * nk_.level2);
+  const int kmax = set_.krylov_max_iterations;
+  int k = 0;
+  while (k < kmax) {
+    ++k;
+    ++newton_stats_.krylov_iterations;
+    double pq = 0.0;
+    newton_product(w.p, w.q, pq);
+    if (!(pq > 0.0)) return -1;  // J is not positive definite on this direction (or NaN)
+    const double alpha = rz / pq;
+    const auto [rz_new, rr_new] = deterministic_sums2(n, [&](std::size_t i) {
+      d[i] += alpha * pp[i];
+      r[i] -= alpha * q[i];
+      z[i] = inv[i] * r[i];
+      return std::array<double, 2>{r[i].dot(z[i]), r[i].squaredNorm()};
+    });
+    if (rr_new <= target) break;
+    const double b = rz_new / rz;
+    rz = rz_new;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) pp[i] = z[i] + b * pp[i];
+  }
+  return k;
+}
+
+}  // namespace swarf
