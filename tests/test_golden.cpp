@@ -6,8 +6,8 @@
 // moved it without changing a single bit of any result. The reference was written by the
 // Release build with -march=native (SWARF_NATIVE=ON, the default) on this project's machine
 // kind (x86-64 with FMA); a portable build (SWARF_NATIVE=OFF) rounds fused multiply-adds
-// differently and is skipped, as is a sanitizer build (SWARF_SANITIZE). A change that alters results on purpose writes the reference
-// anew (tests/data/golden/README.md says how) and says so in its commit.
+// differently and is skipped, as is a sanitizer build (SWARF_SANITIZE). A change that alters results on purpose writes
+// the reference anew (tests/data/golden/README.md says how) and says so in its commit.
 #include <gtest/gtest.h>
 
 #include <sstream>
