@@ -14,6 +14,7 @@ namespace swarf {
 Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), set_(settings) {
   implicit_ = set_.implicit();
   dt_ = set_.dt;
+  update_mesh_step_limit();
   if (!(dt_ > 0.0 && std::isfinite(dt_)) || (implicit_ && !(set_.dt_min > 0.0 && set_.dt_min <= set_.dt_max)))
     throw SimulationError(
         fmt::format("step settings: dt = {} s, dt_min = {} s, dt_max = {} s: the step must be a "
@@ -220,21 +221,24 @@ void Simulation::contact_forces(double h, bool final) {
   clock_.lap(Stage::Contacts);
 }
 
+void Simulation::update_mesh_step_limit() {
+  double rmin = HUGE_VAL;
+  for (double r : m_.particles.radius) rmin = std::min(rmin, r);
+  mesh_step_limit_ = set_.max_step_displacement * rmin;
+}
+
 bool Simulation::prescribe(double h) {
   auto& p = m_.particles;
   const double t_new = time_ + h;
-  // A mesh may move in a step no further than a particle may (max_step_displacement radii of
-  // the smallest particle): a tool that jumps past the block would cut nothing.
-  double rmin = HUGE_VAL;
-  if (!m_.meshes.empty())
-    for (double r : p.radius) rmin = std::min(rmin, r);
-  const double limit = set_.max_step_displacement * rmin;
+  // A mesh may move in a step no further than a particle may (mesh_step_limit_): a tool that
+  // jumps past the block would cut nothing.
+  const double limit = mesh_step_limit_;
   bool within = true;
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
     const Vec3 u_old = m_.mesh_motion[k].displacement_at(time_), u_new = m_.mesh_motion[k].displacement_at(t_new);
     m_.meshes[k].offset = u_new;
     m_.meshes[k].velocity = (u_new - u_old) / h;
-    if (!((u_new - u_old).norm() <= limit) && p.size() > 0) within = false;
+    if (!((u_new - u_old).norm() <= limit)) within = false;  // (no particles: the limit is inf)
   }
   for (std::size_t g = 0; g < m_.groups.size(); ++g) {
     group_u_old_[g] = m_.groups[g].motion.displacement_at(time_);
@@ -254,11 +258,9 @@ bool Simulation::prescribe(double h) {
 }
 
 void Simulation::throw_mesh_too_far(double h) const {
-  double rmin = HUGE_VAL;
-  for (double r : m_.particles.radius) rmin = std::min(rmin, r);
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
     const Vec3 du = m_.mesh_motion[k].displacement_at(time_ + h) - m_.mesh_motion[k].displacement_at(time_);
-    if (du.norm() <= set_.max_step_displacement * rmin) continue;
+    if (du.norm() <= mesh_step_limit_) continue;
     throw SimulationError(fmt::format(
         "mesh '{}' moves {:.4g} m in step {} at t = {:.6g} s (dt = {:.4g} s, speed {:.4g} m/s), more than "
         "integrator.max_step_displacement = {} radii of the smallest particle: lower the step or the mesh's speed",

@@ -175,7 +175,9 @@ class Simulation {
   World& m_;
   StepSettings set_;
   std::vector<StepListener*> listeners_;
-  bool mesh_rejected_ = false;  // the last Newmark try was rejected because a mesh moved too far
+  double mesh_step_limit_ = HUGE_VAL;  // m: how far a mesh may move in a step (max_step_displacement x smallest radius)
+  void update_mesh_step_limit();       // after the particles change (construction, the door, a load)
+  bool mesh_rejected_ = false;         // the last Newmark try was rejected because a mesh moved too far
   bool implicit_ = false;
   bool rotations_ = false;
   double time_ = 0;

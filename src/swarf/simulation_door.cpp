@@ -19,6 +19,7 @@ void Simulation::resize_scratch() {
   if (rotations_) update_free_to_rotate();
   broken_ = m_.rods.broken_count();
   moved2_ = -1.0;
+  update_mesh_step_limit();
 }
 
 void Simulation::reindex_all(const Reindex& r) {
