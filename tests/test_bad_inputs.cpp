@@ -15,6 +15,7 @@
 #include "io/mesh_file.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
+#include "scenes/pulled_bar.h"
 #include "swarf/core/errors.h"
 #include "test_helpers.h"
 
@@ -25,28 +26,10 @@ using test::run_command;
 using test::TempDir;
 using test::write_file;
 
-const char* kBar = R"([workpiece]
-cells = [4, 2, 2]
-radius = 0.5e-3
-[rod]
-youngs_modulus = 200e9
-yield_strain = 1e-3
-hardening_modulus = 20e9
-tensile_strength = 2.3e8
-[integrator]
-end_time = 2e-6
-[output]
-vtk = false
-plots = false
-[[group]]
-name = "left"
-side = "x-"
-[[group]]
-name = "right"
-side = "x+"
-motion = "velocity"
-velocity = [1.0, 0.0, 0.0]
-)";
+const std::string kBar = test::pulled_bar_case({.cells = {4, 2, 2},
+                                                .velocity = 1.0,
+                                                .integrator = "end_time = 2e-6",
+                                                .extra = "[output]\nvtk = false\nplots = false\n"});
 
 // Runs 'swarf run' on kBar with the overrides, under a time limit (a hang fails the test
 // instead of the suite); returns the result.

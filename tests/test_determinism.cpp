@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
@@ -16,27 +17,7 @@ namespace swarf {
 namespace {
 
 // A plastic bar with viscous rods, pulled until rods break: every code path of the step.
-const char* kCase = R"(
-[workpiece]
-cells = [12, 3, 3]
-radius = 0.5e-3
-[rod]
-youngs_modulus = 200e9
-yield_strain = 1e-3
-hardening_modulus = 20e9
-tensile_strength = 2.3e8
-damping_ratio = 0.2
-[integrator]
-end_time = 1
-[[group]]
-name = "left"
-side = "x-"
-[[group]]
-name = "right"
-side = "x+"
-motion = "velocity"
-velocity = [20.0, 0.0, 0.0]
-)";
+const std::string kCase = test::pulled_bar_case({.cells = {12, 3, 3}, .velocity = 20.0, .damping_ratio = 0.2});
 
 struct Snapshot {
   std::vector<Vec3> x, v;

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -20,27 +21,7 @@ namespace swarf {
 namespace {
 
 // A plastic, viscous bar pulled until rods break (Newmark, every path of the bonded step).
-const char* kBar = R"(
-[workpiece]
-cells = [10, 3, 3]
-radius = 0.5e-3
-[rod]
-youngs_modulus = 200e9
-yield_strain = 1e-3
-hardening_modulus = 20e9
-tensile_strength = 2.3e8
-damping_ratio = 0.2
-[integrator]
-end_time = 1
-[[group]]
-name = "left"
-side = "x-"
-[[group]]
-name = "right"
-side = "x+"
-motion = "velocity"
-velocity = [20.0, 0.0, 0.0]
-)";
+const std::string kBar = test::pulled_bar_case({.cells = {10, 3, 3}, .velocity = 20.0, .damping_ratio = 0.2});
 
 std::vector<std::int32_t> shuffled(std::size_t n, unsigned seed) {
   std::vector<std::int32_t> order(n);

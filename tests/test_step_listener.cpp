@@ -1,6 +1,7 @@
 // test_step_listener.cpp: the engine's hook around each step (swarf/step_listener.h).
 #include <gtest/gtest.h>
 
+#include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
@@ -10,27 +11,8 @@ namespace swarf {
 namespace {
 
 // A bonded bar pulled at one end (Newmark: rejected tries happen inside a step, not between).
-const char* kBar = R"(
-[workpiece]
-cells = [8, 2, 2]
-radius = 0.5e-3
-[rod]
-youngs_modulus = 200e9
-yield_strain = 1e-3
-hardening_modulus = 20e9
-tensile_strength = 2.3e8
-[integrator]
-scheme = "newmark"
-end_time = 1
-[[group]]
-name = "left"
-side = "x-"
-[[group]]
-name = "right"
-side = "x+"
-motion = "velocity"
-velocity = [5.0, 0.0, 0.0]
-)";
+const std::string kBar = test::pulled_bar_case(
+    {.cells = {8, 2, 2}, .velocity = 5.0, .integrator = "scheme = \"newmark\"\nend_time = 1"});
 
 struct Recorder final : StepListener {
   std::vector<double> before, after;
