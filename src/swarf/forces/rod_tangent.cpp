@@ -8,7 +8,7 @@ namespace swarf {
 void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, const RodTangentView& view,
                        Periodic periodic) {
   const std::size_t m = view.rods;
-  const double A = area, E = law.youngs_modulus, k_hard = law.hardening, eta = law.viscosity;
+  const double A = area, E = law.youngs_modulus, eta = law.viscosity;
   const auto* ends = view.ends;
   const Vec3* x = view.x;
   const RodTangentView v = view;  // (a local copy: the compiler need not reload the pointers after each store)
@@ -24,7 +24,7 @@ void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, con
     const double len = dx.norm();
     const Vec3 n = dx / len;
     // The branch of the trial: the law moved the shift only on the plastic branch.
-    const double slope = v.trial_shift[k] != v.shift[k] ? k_hard : E;
+    const double slope = v.trial_shift[k] != v.shift[k] ? plastic_tangent(law, v.trial_shift[k]) : E;
     const double c = v.coef[k];
     const double inv_l0 = v.inv_rest_length[k];
     v.axis[k] = n;

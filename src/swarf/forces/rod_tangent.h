@@ -7,7 +7,8 @@
 //   K_k = (E_t A / L0 - c) n n^T + c I     (axial tangent and the geometric part c (I - n n^T))
 //   C_k = (eta A / L0) n n^T               (the viscous stress eta n.(v_j - v_i) / L0)
 // E_t is the slope of the rod law's branch in the latest evaluation (its trial state): E
-// when the trial kept the committed shift, the hardening slope k when the trial moved it
+// when the trial kept the committed shift, the plastic branch's slope (plastic_tangent: k, or
+// the hardening curve's E H / (E + H)) when the trial moved it
 // (plastic flow); a rod broken in the trial carries nothing. The viscous stress also depends
 // on the positions through n; that term is left out (it is not symmetric and is of the order
 // of the strain rate times h; Newton then converges linearly on damped 3-D motion instead of

@@ -17,19 +17,31 @@
 // the trial (evaluate), the commit rule (the converged evaluation's shift and break flag are
 // written back; plastic_work_density is what that commit dissipates) and the energy
 // (elastic_energy_density). The rod kernel (forces/rod_forces.cpp) is a template on the law.
+//
+// Two options a ductile metal needs (the trusted-cut issue; docs/case-reference.md):
+// - a piecewise-linear hardening curve (flow_curve.h) in place of the single slope k. Its
+//   back stress is a function of the plastic strain, and the rod's state is then the plastic
+//   strain itself (k = 0 makes eps0 = eps_p): the same kinematic construction, the same commit.
+// - failure by the rod's strain in tension (failure_strain), besides the paper's stress
+//   criterion: a saturating flow curve may never reach sigma_max, and a metal fails by strain.
 #pragma once
 
 #include <cmath>
+
+#include "swarf/laws/flow_curve.h"
 
 namespace swarf {
 
 /// Parameters of one rod family. All SI units.
 struct RodLaw {
-  double youngs_modulus = 0.0;    ///< E of the rod, Pa
-  double yield_strain = 0.0;      ///< eps_y = sigma_02 / E, 1 (may be +inf: no plasticity)
-  double hardening = 0.0;         ///< slope k of the plastic branch, Pa, 0 <= k < E
-  double tensile_strength = 0.0;  ///< sigma_max, Pa (may be +inf: unbreakable)
-  double viscosity = 0.0;         ///< eta: viscous stress = eta * strain rate, Pa s
+  double youngs_modulus = 0.0;       ///< E of the rod, Pa
+  double yield_strain = 0.0;         ///< eps_y = sigma_02 / E, 1 (may be +inf: no plasticity)
+  double hardening = 0.0;            ///< slope k of the plastic branch, Pa, 0 <= k < E
+  double tensile_strength = 0.0;     ///< sigma_max, Pa (may be +inf: unbreakable)
+  double viscosity = 0.0;            ///< eta: viscous stress = eta * strain rate, Pa s
+  double failure_strain = HUGE_VAL;  ///< rod strain in tension at which it fails, 1 (inf: never)
+  FlowCurve flow;                    ///< piecewise-linear hardening; when it has points, hardening = 0 and the
+                                     ///< shift is the plastic strain
 
   /// Half-width of the elastic band in stress, (E - k) eps_y, Pa.
   double band_half_width() const { return (youngs_modulus - hardening) * yield_strain; }
@@ -43,9 +55,26 @@ struct RodResponse {
   bool broken = false;          ///< sigma > sigma_max in tension: the rod fails
 };
 
+/// The law with a hardening curve: the state is the plastic strain p, the stress E (eps - p),
+/// the band alpha(p) +- s_y (flow_curve.h).
+inline RodResponse evaluate_flow_curve(const RodLaw& law, double strain, double strain_rate, double p) {
+  const double E = law.youngs_modulus;
+  const FlowCurve& f = law.flow;
+  RodResponse r;
+  r.shift = p;
+  const double trial = E * (strain - p);
+  const double centre = f.back_stress(p), half = f.stress[0];
+  if (trial > centre + half || trial < centre - half) r.shift = f.return_map(E, strain, p, trial > centre);
+  r.stress = E * (strain - r.shift);
+  r.viscous_stress = law.viscosity * strain_rate;
+  r.broken = strain > 0.0 && (r.stress > law.tensile_strength || strain > law.failure_strain);
+  return r;
+}
+
 /// The law itself. 'shift' is the committed eps0 of the rod.
 inline RodResponse evaluate(const RodLaw& law, double strain, double strain_rate, double shift) {
   const double E = law.youngs_modulus;
+  if (law.flow.points > 0) return evaluate_flow_curve(law, strain, strain_rate, shift);
   const double k = law.hardening;
   RodResponse r;
   r.shift = shift;
@@ -63,8 +92,13 @@ inline RodResponse evaluate(const RodLaw& law, double strain, double strain_rate
   }
   r.viscous_stress = law.viscosity * strain_rate;
   // Failure only in tension (eq. 31 and the paper's remark below it).
-  r.broken = strain > 0.0 && r.stress > law.tensile_strength;
+  r.broken = strain > 0.0 && (r.stress > law.tensile_strength || strain > law.failure_strain);
   return r;
+}
+
+/// The slope d sigma / d eps of the plastic branch the trial state 'trial_shift' lies on, Pa.
+inline double plastic_tangent(const RodLaw& law, double trial_shift) {
+  return law.flow.points > 0 ? law.flow.plastic_tangent(law.youngs_modulus, trial_shift) : law.hardening;
 }
 
 /// Plastic work density of committing a change 'dshift' of the shift at stress sigma, J/m^3:
