@@ -165,7 +165,7 @@ void expect_every_member_keyed(const char* table, const std::vector<Key<S>>& key
 
 TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("workpiece", workpiece_keys(), &WorkpieceSettings::enabled);
-  expect_every_member_keyed("material", material_keys(), &MaterialSettings::macroscopic);
+  expect_every_member_keyed("material", material_keys(), &MaterialSettings::macroscopic, &MaterialSettings::flow_curve);
   expect_every_member_keyed("rod", rod_keys());
   expect_every_member_keyed("integrator", integrator_keys());
   expect_every_member_keyed("group", group_keys(), &GroupSettings::motion);

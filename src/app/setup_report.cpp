@@ -24,7 +24,17 @@ void print_setup(const Model& m, int threads) {
     fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
                m.periodic.period);
   if (!m.rods.ends.empty()) {
-    if (d.converted)
+    const auto& mt = m.settings.material;
+    if (d.converted && mt.flow_curve) {
+      std::string pts;
+      for (std::size_t i = 0; i < mt.flow_plastic_strain.size(); ++i)
+        pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", mt.flow_plastic_strain[i], mt.flow_stress[i] * 1e-6);
+      fmt::print("  material{}: E = {:.4g} Pa, flow curve (equivalent plastic strain, true stress): {}\n",
+                 mt.preset.empty() ? std::string() : " " + mt.preset, mt.youngs_modulus, pts);
+      fmt::print("  rod law calibrated in {} ({}), failure at equivalent strain {:.4g}:\n",
+                 mt.calibration == "shear" ? "simple shear on a cube plane" : "uniaxial tension along [100]",
+                 "calibration.h", mt.failure_strain);
+    } else if (d.converted)
       fmt::print(
           "  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
           "strength {:.4g} Pa):\n",
@@ -32,6 +42,15 @@ void print_setup(const Model& m, int threads) {
           m.settings.material.tensile_strength);
     fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
                d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
+    if (std::isfinite(d.law.failure_strain))
+      fmt::print("  rod: fails at strain {:.4g} in tension\n", d.law.failure_strain);
+    if (d.law.flow.points > 0) {
+      std::string pts;
+      for (int i = 0; i < d.law.flow.points; ++i)
+        pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", d.law.flow.plastic_strain[i],
+                           d.law.flow.stress[i] * 1e-6);
+      fmt::print("  rod hardening curve (plastic strain, flow stress): {}\n", pts);
+    }
     fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
                d.rod_stiffness, d.rod_damping);
   }

@@ -23,6 +23,13 @@ nlohmann::json number(double v) {
   return v > 0 ? "inf" : "-inf";
 }
 
+/// The rod law's hardening curve points (plastic strains or stresses); empty for the linear law.
+static nlohmann::json flow_points(const FlowCurve& f, bool strains) {
+  nlohmann::json j = nlohmann::json::array();
+  for (int i = 0; i < f.points; ++i) j.push_back(strains ? f.plastic_strain[i] : f.stress[i]);
+  return j;
+}
+
 static nlohmann::json node_to_json(const toml::node& n) {
   if (auto t = n.as_table()) {
     nlohmann::json j = nlohmann::json::object();
@@ -59,6 +66,9 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"rod_yield_strain", number(d.law.yield_strain)},
       {"rod_hardening_modulus_Pa", d.law.hardening},
       {"rod_tensile_strength_Pa", number(d.law.tensile_strength)},
+      {"rod_failure_strain", number(d.law.failure_strain)},
+      {"rod_flow_plastic_strain", flow_points(d.law.flow, true)},
+      {"rod_flow_stress_Pa", flow_points(d.law.flow, false)},
       {"rod_damping_N_s_per_m", d.rod_damping},
       {"rod_viscosity_Pa_s", d.rod_viscosity},
       {"omega_max_rad_per_s", d.omega_max},

@@ -11,9 +11,12 @@
 #include <set>
 #include <sstream>
 
+#include "setup/calibration.h"
 #include "setup/case_override.h"
 #include "setup/case_tables.h"
+#include "setup/material_presets.h"
 #include "swarf/core/errors.h"
+#include "swarf/laws/flow_curve.h"
 
 namespace swarf {
 namespace {
@@ -51,15 +54,74 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
   }
 }
 
+// A hardening curve's points: 2 to FlowCurve::kMaxPoints (1 point would be perfectly plastic:
+// the yield stress alone says that), increasing strains from 0, stresses that never fall.
+void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
+                      const std::vector<double>& sig) {
+  if (eps.empty() || sig.empty())
+    r.fail(eps.empty() ? strain_key : stress_key, r.get(eps.empty() ? stress_key : strain_key),
+           fmt::format("a hardening curve needs both {} (1) and {} (Pa)", strain_key, stress_key));
+  if (eps.size() != sig.size())
+    r.fail(stress_key, r.get(stress_key),
+           fmt::format("has {} values where {} has {}: one stress per point", sig.size(), strain_key, eps.size()));
+  if (eps.size() < 2 || eps.size() > static_cast<std::size_t>(FlowCurve::kMaxPoints))
+    r.fail(strain_key, r.get(strain_key),
+           fmt::format("needs 2 to {} points, has {}", FlowCurve::kMaxPoints, eps.size()));
+  if (eps[0] != 0.0) r.fail(strain_key, r.get(strain_key), "the first point must be at plastic strain 0 (the yield)");
+  for (std::size_t i = 1; i < eps.size(); ++i) {
+    if (!(eps[i] > eps[i - 1]))
+      r.fail(strain_key, r.get(strain_key), fmt::format("must increase: value {} is not above {}", eps[i], eps[i - 1]));
+    if (!(sig[i] >= sig[i - 1]))
+      r.fail(
+          stress_key, r.get(stress_key),
+          fmt::format("must not decrease (softening is not modelled): value {} Pa is below {} Pa", sig[i], sig[i - 1]));
+  }
+}
+
 void read_material(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("material"), "material");
   auto& mt = cs.material;
   r.read(material_keys(), mt);
   r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-  mt.macroscopic = r.has("youngs_modulus");
+  const MaterialPreset* preset = mt.preset.empty() ? nullptr : find_material_preset(mt.preset);
+  mt.macroscopic = r.has("youngs_modulus") || preset;
   if (!mt.macroscopic)
-    for (const char* key : {"yield_stress", "hardening_modulus", "tensile_strength", "poisson_ratio"})
-      if (r.has(key)) r.fail(key, r.get(key), "macroscopic properties need material.youngs_modulus (Pa) too");
+    for (const char* key :
+         {"yield_stress", "hardening_modulus", "tensile_strength", "poisson_ratio", "flow_plastic_strain",
+          "flow_stress", "johnson_cook_a", "johnson_cook_b", "johnson_cook_n", "failure_strain", "calibration"})
+      if (r.has(key))
+        r.fail(key, r.get(key), "macroscopic properties need material.youngs_modulus (Pa) or material.preset too");
+  const bool table = r.has("flow_plastic_strain") || r.has("flow_stress");
+  const bool jc = r.has("johnson_cook_a") || r.has("johnson_cook_b") || r.has("johnson_cook_n");
+  if (table && jc)
+    r.fail("johnson_cook_a", r.get("johnson_cook_a"), "give the flow curve as a table or as Johnson-Cook, not both");
+  for (const char* key : {"yield_stress", "hardening_modulus"})
+    if (r.has(key) && (table || jc))
+      r.fail(key, r.get(key), "the flow curve (a table or Johnson-Cook) gives the yield and the hardening");
+  if (jc)
+    for (const char* key : {"johnson_cook_a", "johnson_cook_b", "johnson_cook_n"})
+      if (!r.has(key)) r.fail(key, nullptr, "a Johnson-Cook flow curve needs johnson_cook_a (Pa), _b (Pa) and _n (1)");
+  if (table) check_flow_curve(r, "flow_plastic_strain", "flow_stress", mt.flow_plastic_strain, mt.flow_stress);
+  if (preset) {
+    // The preset fills what the table does not give.
+    if (!r.has("density")) mt.density = preset->density;
+    if (!r.has("youngs_modulus")) mt.youngs_modulus = preset->youngs_modulus;
+    if (!r.has("failure_strain")) mt.failure_strain = preset->failure_strain;
+    if (!table && !jc && !r.has("yield_stress")) {
+      mt.johnson_cook_a = preset->jc_a;
+      mt.johnson_cook_b = preset->jc_b;
+      mt.johnson_cook_n = preset->jc_n;
+    }
+  }
+  if (mt.johnson_cook_a > 0) {
+    mt.flow_plastic_strain = johnson_cook_points();
+    mt.flow_stress = johnson_cook_stress(mt.johnson_cook_a, mt.johnson_cook_b, mt.johnson_cook_n,
+                                         mt.flow_plastic_strain);
+  }
+  mt.flow_curve = !mt.flow_plastic_strain.empty();
+  for (const char* key : {"failure_strain", "calibration"})
+    if (r.has(key) && !mt.flow_curve)
+      r.fail(key, r.get(key), "needs a flow curve: material.flow_plastic_strain/flow_stress, johnson_cook_* or preset");
   if (mt.macroscopic && !(mt.hardening_modulus < mt.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below material.youngs_modulus = {} Pa", mt.youngs_modulus));
@@ -71,13 +133,19 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   r.know(rod_keys());
   r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   if (cs.material.macroscopic)
-    for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength"})
+    for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength", "failure_strain",
+                            "flow_plastic_strain", "flow_stress"})
       if (r.has(key))
         r.fail(key, r.get(key), "the rod law comes from the [material] properties here; give one or the other");
   r.read(rod_keys(), d);
   if (!(d.hardening_modulus < d.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
+  if (r.has("flow_plastic_strain") || r.has("flow_stress")) {
+    for (const char* key : {"yield_strain", "hardening_modulus"})
+      if (r.has(key)) r.fail(key, r.get(key), "the hardening curve (flow_plastic_strain, flow_stress) replaces it");
+    check_flow_curve(r, "flow_plastic_strain", "flow_stress", d.flow_plastic_strain, d.flow_stress);
+  }
 }
 
 void read_integrator(const CaseInput& in, CaseSettings& cs) {

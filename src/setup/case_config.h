@@ -41,15 +41,28 @@ struct MaterialSettings {
   double hardening_modulus = 0.0;  ///< tangent after yield, Pa
   double tensile_strength = kInf;  ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
   double poisson_ratio = -1.0;     ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
+  // A metal's flow curve and failure (calibration.h turns them into the rod law).
+  std::string preset;                       ///< a named material (material_presets.h); "" = none
+  std::vector<double> flow_plastic_strain;  ///< equivalent plastic strain of the flow curve's points, 1
+  std::vector<double> flow_stress;          ///< true flow stress at those points, Pa
+  double johnson_cook_a = 0.0;              ///< Johnson-Cook A, Pa (0 = not given)
+  double johnson_cook_b = 0.0;              ///< Johnson-Cook B, Pa
+  double johnson_cook_n = 0.0;              ///< Johnson-Cook n, 1
+  double failure_strain = kInf;             ///< equivalent strain at failure in simple shear, 1; inf = never
+  std::string calibration = "shear";        ///< the mode the flow curve is matched in: "shear" or "tension"
+  bool flow_curve = false;                  ///< true when a table, Johnson-Cook or a preset gives the flow curve
 };
 
 /// [rod]: the rod law (paper eqs. 23-31) between bonded neighbours.
 struct RodSettings {
-  double youngs_modulus = 200e9;   ///< E of the rod, Pa
-  double area = 0.0;               ///< cross-section A, m^2; 0 = pi R^2
-  double yield_strain = kInf;      ///< eps_y = sigma_02/E, 1; inf = elastic
-  double hardening_modulus = 0.0;  ///< slope k of the plastic branch, Pa, 0 <= k < E
-  double tensile_strength = kInf;  ///< sigma_max, Pa; inf = unbreakable
+  double youngs_modulus = 200e9;            ///< E of the rod, Pa
+  double area = 0.0;                        ///< cross-section A, m^2; 0 = pi R^2
+  double yield_strain = kInf;               ///< eps_y = sigma_02/E, 1; inf = elastic
+  double hardening_modulus = 0.0;           ///< slope k of the plastic branch, Pa, 0 <= k < E
+  double tensile_strength = kInf;           ///< sigma_max, Pa; inf = unbreakable
+  double failure_strain = kInf;             ///< rod strain in tension at which a rod breaks, 1; inf = never
+  std::vector<double> flow_plastic_strain;  ///< hardening curve: plastic strains of its points, 1 (first 0)
+  std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
 };
 

@@ -95,6 +95,68 @@ const std::vector<Key<MaterialSettings>>& material_keys() {
        .doc = "Only checked: a lattice of central rods has 1/3 along [100] (1/4 as an isotropic average) and "
               "cannot represent another value; any other value prints a warning and the run continues with the "
               "lattice's."},
+      {.name = "preset",
+       .field = &S::preset,
+       .default_note = "none",
+       .choices = {"C45", "Al2024-T351", "Ti6Al4V"},
+       .doc = "A named material of the library ([materials.md](materials.md)): its density, Young's modulus, "
+              "Johnson-Cook flow curve and failure strain, each replaced by the key of this table when given."},
+      {.name = "flow_plastic_strain",
+       .field = &S::flow_plastic_strain,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "none",
+       .range = kNonNegative,
+       .rule = "2 to 8 increasing values, the first 0; with `flow_stress`; needs `youngs_modulus` or `preset`; not "
+               "with `yield_stress`, `hardening_modulus` or `johnson_cook_*`",
+       .doc = "The material's flow curve as a table: equivalent plastic strains of its points. Matched by the rods "
+              "in the mode `calibration` names (see [materials.md](materials.md#calibration))."},
+      {.name = "flow_stress",
+       .field = &S::flow_stress,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "none",
+       .range = kPositive,
+       .rule = "as many as `flow_plastic_strain`, not decreasing",
+       .doc = "True (equivalent) flow stress at the points of `flow_plastic_strain`; the first is the yield stress."},
+      {.name = "johnson_cook_a",
+       .field = &S::johnson_cook_a,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "none",
+       .range = kPositive,
+       .rule = "with `johnson_cook_b` and `johnson_cook_n`; not with a table or `yield_stress`",
+       .doc = "Johnson-Cook's A: the flow curve A + B eps_p^n at the reference rate and room temperature, "
+              "tabulated at eps_p = 0, 0.01, 0.03, 0.08, 0.2, 0.5, 1, 2 (no rate or heat terms: swarf has "
+              "neither)."},
+      {.name = "johnson_cook_b",
+       .field = &S::johnson_cook_b,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "none",
+       .range = kNonNegative,
+       .doc = "Johnson-Cook's B."},
+      {.name = "johnson_cook_n",
+       .field = &S::johnson_cook_n,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "none",
+       .range = in(0, 1, "(]"),
+       .doc = "Johnson-Cook's n."},
+      {.name = "failure_strain",
+       .field = &S::failure_strain,
+       .unit = "1",
+       .range = kPositiveOrInf,
+       .rule = "needs a flow curve (a table, `johnson_cook_*` or `preset`)",
+       .doc = "Equivalent (von Mises) strain at which the lattice fails in simple shear on a cube plane: the rods "
+              "break at the strain the stretched rod of that shear reaches (the `calibration` = \"tension\" "
+              "mode takes it along [100] instead). inf = never."},
+      {.name = "calibration",
+       .field = &S::calibration,
+       .choices = {"shear", "tension"},
+       .rule = "with a flow curve",
+       .doc = "The mode in which the rods reproduce the flow curve: `\"shear\"`, simple shear on a cube plane "
+              "(von Mises equivalent; the mode that forms a chip), or `\"tension\"`, uniaxial along [100]."},
   };
   return keys;
 }
@@ -131,6 +193,34 @@ const std::vector<Key<RodSettings>>& rod_keys() {
        .range = kPositiveOrInf,
        .rule = "not with `material.youngs_modulus`",
        .doc = "sigma_max. `inf` means unbreakable."},
+      {.name = "failure_strain",
+       .field = &S::failure_strain,
+       .unit = "1",
+       .range = kPositiveOrInf,
+       .rule = "not with `material.youngs_modulus`",
+       .doc = "The rod breaks when its strain (L - L0)/L0 exceeds this in tension, whatever its stress: failure by "
+              "strain, for a ductile metal whose flow curve may never reach `tensile_strength`. `inf` means "
+              "never."},
+      {.name = "flow_plastic_strain",
+       .field = &S::flow_plastic_strain,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "none: the linear law",
+       .range = kNonNegative,
+       .rule = "2 to 8 increasing values, the first 0; with `flow_stress`; not with `yield_strain`, "
+               "`hardening_modulus` or `material.youngs_modulus`",
+       .doc = "A piecewise-linear hardening curve in place of the single slope k: the plastic strains of its "
+              "points. The rod yields at `flow_stress[0]`; beyond the last point the last slope continues. The "
+              "curve is the tension branch of a kinematic law: reversed, the rod yields at the back stress minus "
+              "`flow_stress[0]` (the Bauschinger effect, as the linear law), and compression mirrors tension."},
+      {.name = "flow_stress",
+       .field = &S::flow_stress,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "none",
+       .range = kPositive,
+       .rule = "as many as `flow_plastic_strain`, not decreasing",
+       .doc = "The flow stress of the rod in tension at the points of `flow_plastic_strain`."},
       {.name = "damping_ratio",
        .field = &S::damping_ratio,
        .unit = "1",

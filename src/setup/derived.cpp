@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "lattice_gen/fcc_lattice.h"
+#include "setup/calibration.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -38,6 +39,26 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
     rod.hardening_modulus = mt.hardening_modulus * rod.youngs_modulus / mt.youngs_modulus;
     rod.tensile_strength = mt.tensile_strength * rod.youngs_modulus / (3.0 * mt.youngs_modulus);
     d.converted = true;
+    if (mt.flow_curve) {
+      MacroscopicMaterial macro;
+      macro.youngs_modulus = mt.youngs_modulus;
+      macro.flow_plastic_strain = mt.flow_plastic_strain;
+      macro.flow_stress = mt.flow_stress;
+      macro.failure_strain = mt.failure_strain;
+      macro.calibration = mt.calibration;
+      const RodCalibration c = calibrate_rods(macro, a_cell, d.rod_area, l0);
+      rod.youngs_modulus = c.youngs_modulus;
+      rod.flow_plastic_strain = c.flow_plastic_strain;
+      rod.flow_stress = c.flow_stress;
+      rod.failure_strain = c.failure_strain;
+      rod.tensile_strength = mt.tensile_strength * rod.youngs_modulus / (3.0 * mt.youngs_modulus);
+    }
+  }
+  if (!rod.flow_plastic_strain.empty()) {
+    // The hardening curve carries the hardening (the shift is then the plastic strain); its
+    // first stress is the yield stress, its first slope the bar's first hardening tangent.
+    rod.yield_strain = rod.flow_stress[0] / rod.youngs_modulus;
+    rod.hardening_modulus = 0.0;
   }
   const double E = rod.youngs_modulus;
   d.rod_stiffness = E * d.rod_area / l0;
@@ -71,6 +92,10 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.bar_yield_strain = 3.0 * rod.yield_strain;
   d.bar_yield_stress = d.youngs_modulus_100 * d.bar_yield_strain;
   d.bar_hardening_tangent = d.youngs_modulus_100 * rod.hardening_modulus / E;
+  if (!rod.flow_plastic_strain.empty()) {
+    const double H = (rod.flow_stress[1] - rod.flow_stress[0]) / rod.flow_plastic_strain[1];
+    d.bar_hardening_tangent = d.youngs_modulus_100 * (H / (E + H));
+  }
   d.bar_failure_stress = d.bar_stress_factor * rod.tensile_strength;
 
   d.law.youngs_modulus = E;
@@ -78,10 +103,21 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.law.hardening = rod.hardening_modulus;
   d.law.tensile_strength = rod.tensile_strength;
   d.law.viscosity = d.rod_viscosity;
+  d.law.failure_strain = rod.failure_strain;
+  if (!rod.flow_plastic_strain.empty()) {
+    // The hardening curve carries the hardening; its first stress is the yield stress.
+    FlowCurve& f = d.law.flow;
+    f.points = static_cast<int>(rod.flow_plastic_strain.size());
+    for (int i = 0; i < f.points; ++i) {
+      f.plastic_strain[i] = rod.flow_plastic_strain[i];
+      f.stress[i] = rod.flow_stress[i];
+    }
+  }
 
   const auto& g = cs.integrator;
   const bool newton = g.solver == "newton";
-  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && (std::isfinite(rod.tensile_strength) || newton));
+  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && (std::isfinite(rod.tensile_strength) ||
+                                                                std::isfinite(rod.failure_strain) || newton));
   d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
   d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
   // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64

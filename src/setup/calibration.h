@@ -1,0 +1,49 @@
+// calibration.h: the rod law from a material's macroscopic description ([material] keys or a
+// preset): Young's modulus, a flow curve (yield and hardening, a table, or Johnson-Cook's
+// A + B eps_p^n) and a strain at failure.
+//
+// The elastic part follows the FCC lattice relations along [100] (physics notes section 5).
+// The plastic part is matched in the mode that forms a chip, simple shear, taken as von Mises
+// equivalent (tau = sigma_eq / sqrt 3, gamma_p = sqrt 3 eps_p): on the cube plane only the two
+// (1,0,+-1) rods carry, each at strain +-gamma/2, and tau = (3/2) (E100/E_rod) s with s their
+// stress. So the rod's flow curve is s(p) = sigma(2 p / sqrt 3) E_rod / ((3 sqrt 3 / 2) E100).
+// calibration = "tension" matches uniaxial tension along [100] instead (every rod at eps/3:
+// s(p) = sigma(3 p) E_rod / (3 E100)). The failure strain is an equivalent strain in that
+// same simple shear; the rod breaks at the strain its stretched rod reaches there, exactly
+// (simple shear prescribes the deformation: sqrt(((1 + gamma)^2 + 1) / 2) - 1).
+// The lattice's own response to both modes, at finite strain and in other orientations, is
+// what `swarf material` measures (docs/material-lab.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace swarf {
+
+struct MacroscopicMaterial {
+  double youngs_modulus = 0;                ///< along [100], Pa
+  std::vector<double> flow_plastic_strain;  ///< equivalent plastic strain of the points, 1, first 0
+  std::vector<double> flow_stress;          ///< true equivalent flow stress there, Pa
+  double failure_strain = 0;                ///< equivalent strain at failure (inf: never), 1
+  std::string calibration = "shear";        ///< "shear" or "tension"
+};
+
+struct RodCalibration {
+  double youngs_modulus = 0;                ///< E_rod, Pa
+  std::vector<double> flow_plastic_strain;  ///< rod plastic strain, 1
+  std::vector<double> flow_stress;          ///< rod flow stress, Pa
+  double failure_strain = 0;                ///< rod strain in tension at failure, 1
+};
+
+/// The plastic strains at which a Johnson-Cook curve is tabulated (8 points, denser where it
+/// bends: n < 1 makes it steep at 0).
+std::vector<double> johnson_cook_points();
+
+/// sigma = A + B eps_p^n at those points, Pa.
+std::vector<double> johnson_cook_stress(double a, double b, double n, const std::vector<double>& eps_p);
+
+/// The rod law that gives the lattice (cell edge a, rod area A, rest length l0) the material's
+/// response in the calibration mode (see above).
+RodCalibration calibrate_rods(const MacroscopicMaterial& m, double cell_edge, double rod_area, double rest_length);
+
+}  // namespace swarf
