@@ -8,12 +8,17 @@
 
 #include "io/h5file.h"
 #include "io/results_format.h"
+#include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
 namespace {
 
 constexpr std::size_t kMinThicknessRows = 5;
+constexpr double kDeg = M_PI / 180.0;
+
+// summary.json has no NaN: an unavailable number (an interval of too short a series) is null.
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace
 
@@ -31,34 +36,52 @@ ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Ve
 
 CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   CutResult out;
-  // Mean and sample standard deviation of the forces per width over the steady part.
-  auto stats = [&](const std::vector<double>& v) {
-    double n = 0, sum = 0;
-    for (std::size_t k = 0; k < v.size(); ++k)
-      if (d.time[k] >= s.steady_from) {
-        n += 1;
-        sum += v[k];
-      }
-    const double mean = n > 0 ? sum / n : 0.0;
-    double var = 0;
-    for (std::size_t k = 0; k < v.size(); ++k)
-      if (d.time[k] >= s.steady_from) var += (v[k] - mean) * (v[k] - mean);
-    var = n > 1 ? var / (n - 1) : 0.0;
-    return std::make_pair(mean, std::sqrt(var));
-  };
-  std::size_t samples = 0;
-  for (double t : d.time) samples += t >= s.steady_from ? 1 : 0;
-  const auto [fc, fc_sd] = stats(d.fc);
-  const auto [ft, ft_sd] = stats(d.ft);
-  out.cutting = {{"tool_mesh", s.tool_mesh},
-                 {"width_m", s.width},
-                 {"steady_from_s", s.steady_from},
-                 {"steady_samples", samples},
-                 {"cutting_force_per_width_mean_N_per_m", fc},
-                 {"cutting_force_per_width_std_N_per_m", fc_sd},
-                 {"thrust_force_per_width_mean_N_per_m", ft},
-                 {"thrust_force_per_width_std_N_per_m", ft_sd},
-                 {"broken_fraction", d.broken_rod_fraction}};
+  // The steady part's rows.
+  std::vector<double> time, fc_rows, ft_rows;
+  for (std::size_t k = 0; k < d.time.size(); ++k)
+    if (d.time[k] >= s.steady_from) {
+      time.push_back(d.time[k]);
+      fc_rows.push_back(k < d.fc.size() ? d.fc[k] : NAN);
+      ft_rows.push_back(k < d.ft.size() ? d.ft[k] : NAN);
+    }
+  const std::size_t samples = time.size();
+  // Mean, sample deviation and the batch-means interval of the forces per width (steady_stats.h).
+  const SteadyStats fcs = steady_stats(fc_rows), fts = steady_stats(ft_rows);
+  const double fc = samples > 0 ? fcs.mean : 0.0, ft = samples > 0 ? fts.mean : 0.0;
+  const double row_interval = samples >= 2 ? (time.back() - time.front()) / double(samples - 1) : NAN;  // s
+  // Ft/Fc from the means; its interval by the delta method over the batch means of both forces
+  // (the same rows): dR = (dFt - R dFc) / Fc.
+  const std::vector<double> bfc = batch_means(fc_rows), bft = batch_means(ft_rows);
+  const double ratio = fc != 0 ? ft / fc : NAN;
+  out.cutting = {
+      {"tool_mesh", s.tool_mesh},
+      {"width_m", s.width},
+      {"steady_from_s", s.steady_from},
+      {"steady_samples", samples},
+      {"cutting_force_per_width_mean_N_per_m", fc},
+      {"cutting_force_per_width_std_N_per_m", samples > 1 ? fcs.std : 0.0},
+      {"cutting_force_per_width_ci95_N_per_m", finite_or_null(fcs.ci95)},
+      {"cutting_force_per_width_autocorrelation_time_s", finite_or_null(fcs.autocorrelation_time * row_interval)},
+      {"cutting_force_per_width_effective_samples", finite_or_null(fcs.effective_samples)},
+      {"thrust_force_per_width_mean_N_per_m", ft},
+      {"thrust_force_per_width_std_N_per_m", samples > 1 ? fts.std : 0.0},
+      {"thrust_force_per_width_ci95_N_per_m", finite_or_null(fts.ci95)},
+      {"thrust_force_per_width_autocorrelation_time_s", finite_or_null(fts.autocorrelation_time * row_interval)},
+      {"thrust_force_per_width_effective_samples", finite_or_null(fts.effective_samples)},
+      {"thrust_to_cutting_force_ratio", finite_or_null(ratio)},
+      {"thrust_to_cutting_force_ratio_ci95", finite_or_null(batch_ci95_linear(bfc, bft, -ratio / fc, 1 / fc))},
+      {"steady_batches", fcs.batches},
+      {"steady_batch_samples", fcs.batches > 0 ? fcs.batch_size : 0},
+      {"broken_fraction", d.broken_rod_fraction}};
+  if (fcs.batches_short() || fts.batches_short()) {
+    const char* which = fcs.batches_short() && fts.batches_short()
+                            ? "cutting_force_per_width and thrust_force_per_width"
+                        : fcs.batches_short() ? "cutting_force_per_width"
+                                              : "thrust_force_per_width";
+    out.cutting["ci95_note"] = fmt::format(
+        "batches of {} rows are shorter than {} autocorrelation times of {}: the 95 % intervals may be too narrow",
+        fcs.batch_size, kSteadyBatchesPerTau, which);
+  }
 
   const ChipInput ci = chip_input(s, d.position, s.tool_tip);
   out.metrics = measure_chip(ci);
@@ -68,6 +91,9 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   for (std::size_t k = 0; k < d.chip_thickness.size() && k < d.time.size(); ++k)
     if (d.time[k] >= s.steady_from && d.chip_thickness[k] > 0) steady_hc.push_back(d.chip_thickness[k]);
   const double beta = friction_angle_deg(fc, ft, s.rake_angle_deg);
+  // beta - alpha = atan2(Ft, Fc) of the means; linearised: d(beta) = (Fc dFt - Ft dFc) / (Fc^2 + Ft^2) rad.
+  const double f2 = fc * fc + ft * ft;
+  const double beta_ci = f2 > 0 ? batch_ci95_linear(bfc, bft, -ft / f2, fc / f2) / kDeg : NAN;
   double chip_broken = 0.0;
   for (auto i : cm.members) chip_broken += i < d.broken_fraction.size() ? d.broken_fraction[i] : 0.0;
   std::size_t damaged = 0;
@@ -77,25 +103,48 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
               {"chip_particles", cm.chip_particles},
               {"measured_particles", cm.measured_particles},
               {"friction_angle_deg", beta},
+              {"friction_angle_ci95_deg", finite_or_null(beta_ci)},
               {"merchant_shear_angle_deg", merchant_shear_angle_deg(s.rake_angle_deg, beta)},
+              {"merchant_shear_angle_ci95_deg", finite_or_null(0.5 * beta_ci)},
               {"chip_broken_fraction_mean", cm.members.empty() ? 0.0 : chip_broken / double(cm.members.size())},
               {"damaged_particle_fraction",
                d.broken_fraction.empty() ? 0.0 : double(damaged) / double(d.broken_fraction.size())}};
   if (cm.thickness > 0) out.chip["thickness_final_m"] = cm.thickness;
-  double hc = 0.0;
+  double hc = 0.0, hc_ci = NAN;
   if (steady_hc.size() >= kMinThicknessRows) {
     hc = quantile(steady_hc, 0.5);
     out.chip["thickness_p10_m"] = quantile(steady_hc, 0.1);
     out.chip["thickness_p90_m"] = quantile(steady_hc, 0.9);
     out.chip["thickness_rows"] = steady_hc.size();
+    // The median's interval from batch medians: the sample median is asymptotically a mean (of
+    // sign(x - median) / (2 f(median)), Bahadur's representation), so the medians of long batches
+    // behave as batch means do. From kSteadyMinSamples measured rows on.
+    if (steady_hc.size() >= kSteadyMinSamples) {
+      hc_ci = batch_ci95(batch_medians(steady_hc));
+      const double tau = integrated_autocorrelation_time(steady_hc);
+      out.chip["thickness_effective_rows"] = finite_or_null(double(steady_hc.size()) / tau);
+      if (std::isfinite(tau) && double(steady_hc.size() / kSteadyBatches) < kSteadyBatchesPerTau * tau)
+        out.chip["ci95_note"] = fmt::format(
+            "batches of {} rows are shorter than {} autocorrelation times ({:.3g} rows) of the chip thickness: its "
+            "95 % interval (and those of the ratio and shear angle) may be too narrow",
+            steady_hc.size() / kSteadyBatches, kSteadyBatchesPerTau, tau);
+    }
+    out.chip["thickness_ci95_m"] = finite_or_null(hc_ci);
   } else if (d.chip_thickness.empty() && cm.thickness > 0) {
     hc = cm.thickness;  // a run of an earlier version: no per-row thickness, the last state's
     out.chip["thickness_note"] = "series.csv has no chip_thickness column: h_c is the last state's";
+    out.chip["thickness_ci95_m"] = nullptr;  // one state: no interval
   }
   if (hc > 0) {
     out.chip["thickness_m"] = hc;
-    out.chip["compression_ratio"] = ci.depth_of_cut / hc;
-    out.chip["shear_angle_deg"] = shear_angle_deg(ci.depth_of_cut / hc, s.rake_angle_deg);
+    const double r = ci.depth_of_cut / hc, a = s.rake_angle_deg * kDeg;
+    out.chip["compression_ratio"] = r;
+    out.chip["shear_angle_deg"] = shear_angle_deg(r, s.rake_angle_deg);
+    // Propagated from h_c's interval: dr = -h / h_c^2 dh_c, and from tan(phi) = r cos(a) / (1 - r sin(a)),
+    // dphi/dr = cos(a) / (1 - 2 r sin(a) + r^2).
+    const double r_ci = ci.depth_of_cut / (hc * hc) * hc_ci;
+    out.chip["compression_ratio_ci95"] = finite_or_null(r_ci);
+    out.chip["shear_angle_ci95_deg"] = finite_or_null(std::cos(a) / (1 - 2 * r * std::sin(a) + r * r) * r_ci / kDeg);
   } else {
     out.chip["note"] = fmt::format(
         "chip thickness not measured: {} steady rows measured it (at least {} needed; "
@@ -106,33 +155,76 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
 }
 
 std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip, double broken) {
-  auto num = [](const nlohmann::json& j, const char* k) { return j.contains(k) ? j[k].get<double>() : NAN; };
+  auto num = [](const nlohmann::json& j, const char* k) {
+    return j.contains(k) && j[k].is_number() ? j[k].get<double>() : NAN;
+  };
+  const std::size_t rows = cutting.value("steady_samples", std::size_t(0));
+  // The 95 % interval after a value: its half-width, or why there is none (null in summary.json).
+  auto ci = [&](const nlohmann::json& j, const char* key, double scale, const char* unit, const char* of,
+                std::size_t samples) -> std::string {
+    if (!j.contains(key)) return "";
+    if (!j[key].is_number())
+      return samples < kSteadyMinSamples
+                 ? fmt::format(" (95 % CI{}: unavailable, {} steady rows, {} needed)", of, samples, kSteadyMinSamples)
+                 : fmt::format(" (95 % CI{}: unavailable)", of);
+    return fmt::format(" (95 % CI{} +- {:.3g}{})", of, j[key].get<double>() * scale, unit);
+  };
   std::string t;
   t += "\n  result (steady part of the cut)          value\n";
-  t += fmt::format("  cutting force per width Fc/w    {:>10.4g} +- {:.3g} kN/m\n",
+  t += fmt::format("  cutting force per width Fc/w    {:>10.4g} +- {:.3g} kN/m{}\n",
                    num(cutting, "cutting_force_per_width_mean_N_per_m") / 1e3,
-                   num(cutting, "cutting_force_per_width_std_N_per_m") / 1e3);
-  t += fmt::format("  thrust force per width Ft/w     {:>10.4g} +- {:.3g} kN/m\n",
+                   num(cutting, "cutting_force_per_width_std_N_per_m") / 1e3,
+                   ci(cutting, "cutting_force_per_width_ci95_N_per_m", 1e-3, " kN/m", " of the mean", rows));
+  t += fmt::format("  thrust force per width Ft/w     {:>10.4g} +- {:.3g} kN/m{}\n",
                    num(cutting, "thrust_force_per_width_mean_N_per_m") / 1e3,
-                   num(cutting, "thrust_force_per_width_std_N_per_m") / 1e3);
+                   num(cutting, "thrust_force_per_width_std_N_per_m") / 1e3,
+                   ci(cutting, "thrust_force_per_width_ci95_N_per_m", 1e-3, " kN/m", " of the mean", rows));
+  if (cutting.contains("thrust_to_cutting_force_ratio"))
+    t += fmt::format("  force ratio Ft/Fc               {:>10.3g}{}\n", num(cutting, "thrust_to_cutting_force_ratio"),
+                     ci(cutting, "thrust_to_cutting_force_ratio_ci95", 1.0, "", "", rows));
   t += fmt::format("  depth of cut h                  {:>10.4g} mm\n", num(chip, "depth_of_cut_m") * 1e3);
   if (chip.contains("thickness_m")) {
+    const std::size_t hc_rows = chip.value("thickness_rows", std::size_t(0));
     t += fmt::format("  chip thickness h_c              {:>10.4g} mm", num(chip, "thickness_m") * 1e3);
     if (chip.contains("thickness_p10_m"))
-      t += fmt::format(" (median of {} rows; 10-90 %: {:.3g} to {:.3g})", chip.value("thickness_rows", 0),
-                       num(chip, "thickness_p10_m") * 1e3, num(chip, "thickness_p90_m") * 1e3);
-    t += "\n";
-    t += fmt::format("  compression ratio r = h/h_c     {:>10.3f}\n", num(chip, "compression_ratio"));
-    t += fmt::format("  shear angle phi (from r)        {:>10.1f} deg\n", num(chip, "shear_angle_deg"));
+      t += fmt::format(" (median of {} rows; 10-90 %: {:.3g} to {:.3g})", hc_rows, num(chip, "thickness_p10_m") * 1e3,
+                       num(chip, "thickness_p90_m") * 1e3);
+    t += ci(chip, "thickness_ci95_m", 1e3, " mm", " of the median", hc_rows) + "\n";
+    t += fmt::format("  compression ratio r = h/h_c     {:>10.3f}{}\n", num(chip, "compression_ratio"),
+                     ci(chip, "compression_ratio_ci95", 1.0, "", "", hc_rows));
+    t += fmt::format("  shear angle phi (from r)        {:>10.1f} deg{}\n", num(chip, "shear_angle_deg"),
+                     ci(chip, "shear_angle_ci95_deg", 1.0, " deg", "", hc_rows));
   } else {
     t += fmt::format("  chip thickness                  not measured ({} chip particles)\n",
                      chip.value("chip_particles", 0));
   }
-  t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg\n", num(chip, "friction_angle_deg"));
-  t += fmt::format("  Merchant 45 + alpha/2 - beta/2  {:>10.1f} deg\n", num(chip, "merchant_shear_angle_deg"));
+  t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg{}\n", num(chip, "friction_angle_deg"),
+                   ci(chip, "friction_angle_ci95_deg", 1.0, " deg", "", rows));
+  t += fmt::format("  Merchant 45 + alpha/2 - beta/2  {:>10.1f} deg{}\n", num(chip, "merchant_shear_angle_deg"),
+                   ci(chip, "merchant_shear_angle_ci95_deg", 1.0, " deg", "", rows));
   t += fmt::format("  broken-rod fraction             {:>10.2f} %\n", 100.0 * broken);
   if (chip.contains("packing_volume_m3"))
     t += fmt::format("  chip volume (particles x a^3/4) {:>10.4g} mm^3\n", num(chip, "packing_volume_m3") * 1e9);
+  // What the two spreads mean, and the cross-check of the batches' length.
+  if (cutting.contains("cutting_force_per_width_ci95_N_per_m")) {
+    t += "  (+- after a force: its standard deviation over the steady part; 95 % CI: the confidence interval of the\n"
+         "  mean";
+    if (cutting.value("steady_batches", 0) > 0) {
+      t += fmt::format(
+          " from {} batch means of {} rows (Student t, {} dof); effective rows n/tau of {}: Fc {:.3g}, "
+          "Ft {:.3g}",
+          cutting.value("steady_batches", 0), cutting.value("steady_batch_samples", 0),
+          cutting.value("steady_batches", 0) - 1, rows, num(cutting, "cutting_force_per_width_effective_samples"),
+          num(cutting, "thrust_force_per_width_effective_samples"));
+      if (chip.contains("thickness_effective_rows"))
+        t += fmt::format(", h_c {:.3g} of {}", num(chip, "thickness_effective_rows"), chip.value("thickness_rows", 0));
+    } else {
+      t += fmt::format(" from batch means, which need {} steady rows", kSteadyMinSamples);
+    }
+    t += ")\n";
+    for (const auto* j : {&cutting, &chip})
+      if (j->contains("ci95_note")) t += "  note: " + (*j)["ci95_note"].get<std::string>() + "\n";
+  }
   return t;
 }
 

@@ -3,6 +3,12 @@
 // width, the chip metrics (chip.h), the broken-rod fraction overall and in the chip, and the
 // short result table printed for the user.
 //
+// Every steady mean carries the half-width of its 95 % confidence interval (steady_stats.h:
+// batch means, the autocorrelation time as a cross-check): the forces' directly, Ft/Fc and the
+// friction and Merchant angles by the delta method over the same batches, h_c (a median) from
+// batch medians and the compression ratio and shear angle from it. Unavailable intervals (fewer
+// than 20 rows) are null in summary.json and "unavailable" in the table.
+//
 // The chip thickness is measured at every series row (column chip_thickness); the summary's
 // h_c is the median over the steady part's rows, with its 10th and 90th percentiles: a
 // segmented chip that curls and breaks changes its thickness from row to row, and one state

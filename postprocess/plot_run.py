@@ -41,6 +41,11 @@ def plot_cut(run, summary, s):
             for key, c in (("cutting_force_per_width_mean_N_per_m", "C0"), ("thrust_force_per_width_mean_N_per_m", "C3")):
                 if key in cut:
                     ax.hlines(cut[key] / 1e3, x0, travel[-1], colors=c, linestyles="--", lw=1.5)
+                    # the mean's 95 % confidence interval (batch means; null when the part is too short)
+                    ci = cut.get(key.replace("_mean_", "_ci95_"))
+                    if ci is not None:
+                        ax.fill_between([x0, travel[-1]], (cut[key] - ci) / 1e3, (cut[key] + ci) / 1e3, color=c,
+                                        alpha=0.25, lw=0, label="steady mean (dashed), its 95 % CI" if c == "C0" else None)
     ax.set_ylabel("force per width [kN/m]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")

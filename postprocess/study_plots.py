@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Plots of a parameter study (PNG): each metric against each varied key, as computed by
-'swarf sweep' into DIR/plots/plots.json (the script only draws). Usage:
+'swarf sweep' into DIR/plots/plots.json (the script only draws); a steady mean with its 95 %
+confidence interval (plots.json "y_err") gets error bars. Usage:
 study_plots.py DIR/plots/plots.json. Prints 'wrote FILE' for every file written."""
 import json
 import os
@@ -18,7 +19,18 @@ def main():
     for p in spec["plots"]:
         x, y = p["x"], p["y"]
         fig, ax = plt.subplots(figsize=(6, 4.2), dpi=110)
-        ax.plot(x, y, "o", ms=5, label="cases")
+        err = p.get("y_err")  # 95 % half-widths of steady means (None: the case has none)
+        if err and any(e is not None for e in err):
+            # Cases without an interval are drawn without a bar (never a zero-length "exact" one).
+            with_bar = [(xi, yi, e) for xi, yi, e in zip(x, y, err) if e is not None]
+            ax.errorbar([v[0] for v in with_bar], [v[1] for v in with_bar], yerr=[v[2] for v in with_bar], fmt="o",
+                        ms=5, capsize=3, color="C0", label="cases, bars: " + p.get("y_err_label", "95 % CI"))
+            bare = [(xi, yi) for xi, yi, e in zip(x, y, err) if e is None]
+            if bare:
+                ax.plot([v[0] for v in bare], [v[1] for v in bare], "o", ms=5, mfc="none", color="C0",
+                        label="cases without an interval (too few steady rows)")
+        else:
+            ax.plot(x, y, "o", ms=5, label="cases")
         # Several cases at one x (repetitions, other keys): a line through the means.
         means = {}
         for xi, yi in zip(x, y):
@@ -31,7 +43,7 @@ def main():
         ax.set_ylabel(p["y_label"])
         ax.set_title(spec.get("title", ""), fontsize=9)
         ax.grid(True, alpha=0.3)
-        if any(len(v) > 1 for v in means.values()):
+        if any(len(v) > 1 for v in means.values()) or err:
             ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(os.path.join(out_dir, p["file"]))

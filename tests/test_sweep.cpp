@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -271,6 +272,67 @@ mesh.0.origin = "m"
   EXPECT_NE(md.find("a = 0.5 (Merchant: 0.5), b = 45 deg (Merchant: 45 deg), R^2 = 1.0000, 4 cases"), std::string::npos)
       << md;
   EXPECT_NE(md.find("mean phi - phi_M = 0 deg"), std::string::npos) << md;
+}
+
+// The interval column of a metric, by summary.json's naming.
+TEST(StudyTable, ConfidenceIntervalColumnNames) {
+  EXPECT_EQ(ci95_key_of("cutting.cutting_force_per_width_mean_N_per_m"),
+            "cutting.cutting_force_per_width_ci95_N_per_m");
+  EXPECT_EQ(ci95_key_of("chip.friction_angle_deg"), "chip.friction_angle_ci95_deg");
+  EXPECT_EQ(ci95_key_of("chip.thickness_m"), "chip.thickness_ci95_m");
+  EXPECT_EQ(ci95_key_of("chip.compression_ratio"), "chip.compression_ratio_ci95");
+  EXPECT_EQ(ci95_key_of("cutting.thrust_to_cutting_force_ratio"), "cutting.thrust_to_cutting_force_ratio_ci95");
+  EXPECT_EQ(ci95_key_of("results.reaction_grip_N.x"), "");
+  EXPECT_EQ(unit_of_key("cutting.cutting_force_per_width_ci95_N_per_m"), "N/m");
+  EXPECT_EQ(unit_of_key("chip.shear_angle_ci95_deg"), "deg");
+}
+
+// Steady means with their 95 % intervals: study.csv has the interval columns (empty where the
+// summary has null), the plot data carry them as error bars (NaN where a case has none; none at
+// all for a metric without an interval column), and the report's table reads "value +- ci".
+TEST(Report, SteadyMeansCarryTheirIntervals) {
+  test::TempDir dir("sweep_ci");
+  const std::string out = dir / "out";
+  const Study s = parse_study(R"(base = "first_cut.toml"
+plots = false
+[grid]
+mesh.0.rake_angle = [0, 10, 20]
+)",
+                              "rake.toml", dir.str());
+  write_study_json(s, out);
+  for (int k = 0; k < 3; ++k) {
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 1e5 - 1e4 * k},
+                    {"cutting_force_per_width_std_N_per_m", 5e4},
+                    {"cutting_force_per_width_ci95_N_per_m", k == 2 ? nlohmann::json(nullptr) : nlohmann::json(2e4)}};
+    j["chip"] = {{"friction_angle_deg", 10.0 + k}, {"friction_angle_ci95_deg", 1.5}};
+    write_summary(out, s, s.cases[k], j);
+  }
+  const StudyTable t = collect_table(s, out);
+  const int col = t.column("cutting.cutting_force_per_width_ci95_N_per_m");
+  ASSERT_GE(col, 0) << table_csv(t);
+  EXPECT_EQ(t.units[col], "N/m");
+  EXPECT_EQ(t.rows[0][col], "20000");
+  EXPECT_EQ(t.rows[2][col], "") << "null: no interval";
+  EXPECT_GE(t.column("cutting.cutting_force_per_width_mean_N_per_m"), 0);  // the existing column stays
+  bool mean_seen = false, std_seen = false;
+  for (const auto& p : plot_series(s, t)) {
+    if (p.y_name == "cutting.cutting_force_per_width_mean_N_per_m") {
+      mean_seen = true;
+      ASSERT_EQ(p.y_err.size(), 3u);
+      EXPECT_EQ(p.y_err[0], 2e4);
+      EXPECT_TRUE(std::isnan(p.y_err[2]));
+    }
+    if (p.y_name == "cutting.cutting_force_per_width_std_N_per_m") {
+      std_seen = true;
+      EXPECT_TRUE(p.y_err.empty());
+    }
+  }
+  EXPECT_TRUE(mean_seen && std_seen);
+  const std::string md = test::read_file(write_report(out));
+  EXPECT_NE(md.find("| 0000 | 0 | completed | 1e+05 +- 2e+04 | 5e+04 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 8e+04 | 5e+04 |"), std::string::npos) << md;  // no interval: the value alone
+  EXPECT_NE(md.find("half-width of its 95 % confidence interval"), std::string::npos) << md;
 }
 
 // The tiny-bar study: a grid of damping ratios, three hardening moduli and a point with an

@@ -57,14 +57,23 @@ std::string markdown_table(const StudyTable& t, const std::vector<std::string>& 
   out += "\n|";
   for (std::size_t k = 0; k < cols.size(); ++k) out += "---|";
   out += "\n";
+  bool any_ci = false;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     out += "|";
     for (int c : cols) {
       auto v = c >= int(t.first_metric) ? t.number(r, t.columns[c]) : std::nullopt;
-      out += fmt::format(" {} |", v ? num(*v) : t.rows[r][c]);
+      // A steady mean with its interval column: "value +- half-width".
+      auto ci = v ? t.number(r, ci95_key_of(t.columns[c])) : std::nullopt;
+      any_ci = any_ci || ci.has_value();
+      out += fmt::format(" {}{} |", v ? num(*v) : t.rows[r][c], ci ? " +- " + num(*ci) : "");
     }
     out += "\n";
   }
+  if (any_ci)
+    out +=
+        "\n`+-` after a value: the half-width of its 95 % confidence interval from batch means (the column "
+        "`..._ci95...` "
+        "of study.csv; docs/outputs.md); the `_std_` columns are the fluctuation over the steady part.\n";
   return out;
 }
 

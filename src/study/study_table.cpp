@@ -5,6 +5,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -128,7 +129,10 @@ std::optional<double> StudyTable::number(std::size_t row, const std::string& nam
   return v;
 }
 
-std::string unit_of_key(const std::string& flat_key) {
+namespace {
+
+// Unit suffixes of summary keys, longer ones before their tails (_N_per_m before _m).
+const std::vector<std::pair<std::string, std::string>>& unit_suffixes() {
   static const std::vector<std::pair<std::string, std::string>> suffixes{{"_N_s_per_m", "N s/m"},
                                                                          {"_N_per_m", "N/m"},
                                                                          {"_kg_per_m3", "kg/m^3"},
@@ -148,6 +152,13 @@ std::string unit_of_key(const std::string& flat_key) {
                                                                          {"_kg", "kg"},
                                                                          {"_m", "m"},
                                                                          {"_s", "s"}};
+  return suffixes;
+}
+
+}  // namespace
+
+std::string unit_of_key(const std::string& flat_key) {
+  const auto& suffixes = unit_suffixes();
   std::vector<std::string> parts;
   std::stringstream ss(flat_key);
   for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
@@ -157,6 +168,21 @@ std::string unit_of_key(const std::string& flat_key) {
       if (parts[k].size() > suffix.size() && parts[k].ends_with(suffix)) return unit;
   }
   return "1";
+}
+
+std::string ci95_key_of(const std::string& flat_key) {
+  const auto dot = flat_key.rfind('.');
+  const std::string last = flat_key.substr(dot == std::string::npos ? 0 : dot + 1);
+  if (last.empty() || is_component(last)) return "";
+  std::string suffix;
+  for (const auto& [s, unit] : unit_suffixes())
+    if (last.size() > s.size() && last.ends_with(s)) {
+      suffix = s;
+      break;
+    }
+  std::string stem = flat_key.substr(0, flat_key.size() - suffix.size());
+  if (stem.ends_with("_mean")) stem.resize(stem.size() - 5);
+  return stem + "_ci95" + suffix;
 }
 
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing) {
@@ -238,6 +264,7 @@ std::vector<std::string> default_plot_metrics(const StudyTable& t) {
                                                "cutting.thrust_force_per_width_mean_N_per_m",
                                                "cutting.cutting_force_per_width_std_N_per_m",
                                                "cutting.thrust_force_per_width_std_N_per_m",
+                                               "cutting.thrust_to_cutting_force_ratio",
                                                "chip.thickness_m",
                                                "chip.compression_ratio",
                                                "chip.shear_angle_deg",
@@ -324,14 +351,20 @@ std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& t) {
     if (!varies(a.x)) continue;
     for (const auto& m : metrics) {
       if (t.column(m) < int(t.first_metric) || m == a.name) continue;
-      PlotSeries p{file_part(m) + "_vs_" + file_part(a.name) + ".png", a.name, a.unit, m, unit_of_key(m), {}, {}};
+      PlotSeries p{file_part(m) + "_vs_" + file_part(a.name) + ".png", a.name, a.unit, m, unit_of_key(m), {}, {}, {}};
+      const std::string ci = ci95_key_of(m);
+      bool any_ci = false;
       for (std::size_t r = 0; r < n; ++r) {
         auto y = t.number(r, m);
         if (a.x[r] && y) {
           p.x.push_back(*a.x[r]);
           p.y.push_back(*y);
+          const auto e = ci.empty() ? std::nullopt : t.number(r, ci);
+          p.y_err.push_back(e ? *e : NAN);
+          any_ci = any_ci || e.has_value();
         }
       }
+      if (!any_ci) p.y_err.clear();
       if (!p.x.empty()) out.push_back(std::move(p));
     }
   }
@@ -347,12 +380,19 @@ std::string draw_plots(const Study& study, const StudyTable& table, const std::s
   json j;
   j["title"] = study.title.empty() ? study.file : study.title;
   j["plots"] = json::array();
-  for (const auto& p : series)
+  for (const auto& p : series) {
     j["plots"].push_back({{"file", p.file},
                           {"x_label", label(p.x_name, p.x_unit)},
                           {"y_label", label(p.y_name, p.y_unit)},
                           {"x", p.x},
                           {"y", p.y}});
+    if (!p.y_err.empty()) {  // the 95 % half-widths, null where a case has none
+      json e = json::array();
+      for (double v : p.y_err) e.push_back(std::isfinite(v) ? json(v) : json(nullptr));
+      j["plots"].back()["y_err"] = e;
+      j["plots"].back()["y_err_label"] = "95 % CI of the steady mean (batch means)";
+    }
+  }
   write_text_atomic((dir / "plots.json").string(), j.dump(1) + "\n");
   if (series.empty()) return "nothing to plot (no numeric varied key with completed cases)";
   std::string script = std::string(SWARF_POSTPROCESS_DIR) + "/study_plots.py";

@@ -27,6 +27,12 @@ struct StudyTable {
 /// suffix anywhere: "1".
 std::string unit_of_key(const std::string& flat_key);
 
+/// The column of a metric's 95 % confidence half-width, by summary.json's naming: "_mean" becomes
+/// "_ci95" (cutting.cutting_force_per_width_mean_N_per_m -> cutting.cutting_force_per_width_ci95_N_per_m),
+/// else "_ci95" goes before the unit suffix (chip.friction_angle_deg -> chip.friction_angle_ci95_deg)
+/// or at the end (chip.compression_ratio -> chip.compression_ratio_ci95). "" for a vector component.
+std::string ci95_key_of(const std::string& flat_key);
+
 /// The study table (timing = false: DIR/study.csv; true: DIR/timing.csv, the wall times and
 /// thread counts, which differ from run to run).
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing = false);
@@ -41,6 +47,7 @@ struct PlotSeries {
   std::string file;  ///< PNG name in DIR/plots
   std::string x_name, x_unit, y_name, y_unit;
   std::vector<double> x, y;
+  std::vector<double> y_err;  ///< 95 % half-widths of y (NaN: none), empty when the metric has no interval column
 };
 std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& table);
 /// Writes DIR/plots/plots.json and runs postprocess/study_plots.py on it. Returns "" or why

@@ -50,6 +50,12 @@ def forces(ax, x, rows, xlabel):
                 label="cutting Fc/w (mean +- std over the steady part)")
     ax.errorbar(x, col(rows, FT) / 1e3, yerr=col(rows, FTS) / 1e3, fmt="s", color="C3", capsize=3,
                 label="thrust Ft/w")
+    # The 95 % confidence interval of each mean (batch means; older study.csv files lack the column): thick bars.
+    for key, c in ((FC, "C0"), (FT, "C3")):
+        ci = col(rows, key.replace("_mean_", "_ci95_")) / 1e3
+        if np.isfinite(ci).any():
+            ax.errorbar(x, col(rows, key) / 1e3, yerr=ci, fmt="none", ecolor=c, elinewidth=4, alpha=0.45,
+                        label="95 % CI of the mean" if c == "C0" else None)
     ax.set_xlabel(xlabel)
     ax.set_ylabel("force per width [kN/m]")
     ax.grid(alpha=0.3)
