@@ -32,6 +32,13 @@ void print_setup(const Model& m, int threads) {
           m.settings.material.tensile_strength);
     fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
                d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
+    if (d.law.flow.points > 0) {
+      std::string pts;
+      for (int i = 0; i < d.law.flow.points; ++i)
+        pts += fmt::format("{}({:.4g}, {:.4g} Pa)", i ? ", " : "", d.law.flow.plastic_strain[i], d.law.flow.stress[i]);
+      fmt::print("  rod hardening curve (plastic strain, flow stress): {}\n", pts);
+    }
+    if (std::isfinite(d.law.failure_strain)) fmt::print("  rod failure strain {:.4g}\n", d.law.failure_strain);
     fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
                d.rod_stiffness, d.rod_damping);
   }

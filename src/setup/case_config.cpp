@@ -71,13 +71,38 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   r.know(rod_keys());
   r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   if (cs.material.macroscopic)
-    for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength"})
+    for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength", "failure_strain",
+                            "flow_plastic_strain", "flow_stress"})
       if (r.has(key))
         r.fail(key, r.get(key), "the rod law comes from the [material] properties here; give one or the other");
   r.read(rod_keys(), d);
   if (!(d.hardening_modulus < d.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
+  const bool has_strain = r.has("flow_plastic_strain"), has_stress = r.has("flow_stress");
+  if (has_strain != has_stress) {
+    const char* given = has_strain ? "flow_plastic_strain" : "flow_stress";
+    r.fail(given, r.get(given), "the hardening curve needs both rod.flow_plastic_strain and rod.flow_stress");
+  }
+  if (has_strain) {
+    const auto &ps = d.flow_plastic_strain, &fs = d.flow_stress;
+    for (const char* key : {"yield_strain", "hardening_modulus"})
+      if (r.has(key))
+        r.fail(key, r.get(key), "the hardening curve (rod.flow_stress) replaces rod.yield_strain and hardening_modulus");
+    if (ps.empty() || ps.size() > 8) r.fail("flow_plastic_strain", r.get("flow_plastic_strain"), "needs 1 to 8 points");
+    if (ps[0] != 0.0) r.fail("flow_plastic_strain", r.get("flow_plastic_strain"), "the first point must be 0");
+    for (std::size_t i = 1; i < ps.size(); ++i)
+      if (!(ps[i] > ps[i - 1]))
+        r.fail("flow_plastic_strain", r.get("flow_plastic_strain"), "must be strictly increasing");
+    if (fs.size() != ps.size())
+      r.fail("flow_stress", r.get("flow_stress"),
+             fmt::format("needs as many entries as rod.flow_plastic_strain ({})", ps.size()));
+    for (std::size_t i = 1; i < fs.size(); ++i)
+      if (!(fs[i] >= fs[i - 1])) r.fail("flow_stress", r.get("flow_stress"), "must not decrease");
+    if (!(fs[0] < d.youngs_modulus))
+      r.fail("flow_stress", r.get("flow_stress"),
+             fmt::format("the yield stress (first entry) must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
+  }
 }
 
 void read_integrator(const CaseInput& in, CaseSettings& cs) {

@@ -50,6 +50,11 @@ struct RodSettings {
   double yield_strain = kInf;      ///< eps_y = sigma_02/E, 1; inf = elastic
   double hardening_modulus = 0.0;  ///< slope k of the plastic branch, Pa, 0 <= k < E
   double tensile_strength = kInf;  ///< sigma_max, Pa; inf = unbreakable
+  double failure_strain = kInf;    ///< rod strain in tension at which it fails, 1; inf = never
+  // A piecewise-linear hardening curve (laws/flow_curve.h) in place of yield_strain and
+  // hardening_modulus: the rod's monotonic tension curve, (plastic strain, flow stress) points.
+  std::vector<double> flow_plastic_strain;  ///< rod plastic strain of the points, 1, first 0, increasing
+  std::vector<double> flow_stress;          ///< rod flow stress at those points, Pa; the first is the yield stress
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
 };
 

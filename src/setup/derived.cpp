@@ -78,10 +78,27 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.law.hardening = rod.hardening_modulus;
   d.law.tensile_strength = rod.tensile_strength;
   d.law.viscosity = d.rod_viscosity;
+  d.law.failure_strain = rod.failure_strain;
+  if (!rod.flow_stress.empty()) {
+    // The hardening curve replaces the single slope: its first point is the yield stress, and
+    // the law's state is the plastic strain (hardening 0; rod_law.h).
+    auto& f = d.law.flow;
+    f.points = static_cast<int>(rod.flow_stress.size());
+    for (int i = 0; i < f.points; ++i) {
+      f.plastic_strain[i] = rod.flow_plastic_strain[i];
+      f.stress[i] = rod.flow_stress[i];
+    }
+    d.law.yield_strain = rod.flow_stress[0] / E;
+    d.law.hardening = 0.0;
+    d.bar_yield_strain = 3.0 * d.law.yield_strain;
+    d.bar_yield_stress = d.youngs_modulus_100 * d.bar_yield_strain;
+    d.bar_hardening_tangent = f.points > 1 ? d.bar_stress_factor * f.plastic_tangent(E, 0.0) / 3.0 : 0.0;
+  }
 
   const auto& g = cs.integrator;
   const bool newton = g.solver == "newton";
-  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && (std::isfinite(rod.tensile_strength) || newton));
+  d.implicit = g.scheme == "newmark" || (g.scheme == "auto" && (std::isfinite(rod.tensile_strength) ||
+                                                                std::isfinite(rod.failure_strain) || newton));
   d.dt = g.dt > 0 ? g.dt : g.dt_safety * d.dt_stable;
   d.dt_min = g.dt_min > 0 ? g.dt_min : 1e-3 * d.dt_stable;
   // A sweep contracts by about 4 beta (dt/dt_stable)^2: the default keeps that at 0.64
