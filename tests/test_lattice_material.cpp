@@ -191,6 +191,10 @@ TEST(LatticeMaterial, ShearOnTheCubePlane) {
   EXPECT_NEAR(shear_yield(pts, kC), 2 * ey, 2e-3 * 2 * ey);
   const double tau_y = 2 * (kE * ey) * kKb / (kE * kA);
   EXPECT_NEAR(pts.back().stress, tau_y, 2e-3 * tau_y);
+  // Against [100] tension, sigma_y = 3 (E100/E) E eps_y = 4 kb E eps_y/(a E): tau_y/sigma_y = 1/2,
+  // Tresca's ratio (von Mises would say 1/sqrt3). Same law, same strain range to yield and beyond.
+  const auto ten = uniaxial_test(linear_law(ey, 0.0), kA, kArea, {1, 0, 0}, {0, 6 * ey}, 1e-6);
+  EXPECT_NEAR(pts.back().stress / ten.back().stress, 0.5, 5e-3);
 }
 
 TEST(LatticeMaterial, ShearOnThe45DegreePlane) {
