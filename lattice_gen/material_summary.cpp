@@ -52,7 +52,7 @@ CurveSummary summarize_curve(const std::vector<MaterialPoint>& c, double rest_le
       s.failure_strain = p.strain;
     }
     if (p.closest_unbonded < rest_length && std::isnan(s.contact_strain)) s.contact_strain = p.strain;
-    if (p.equivalent_stress > s.peak_stress) {
+    if (!s.failed && p.equivalent_stress > s.peak_stress) {
       s.peak_stress = p.equivalent_stress;
       s.peak_strain = p.strain;
     }

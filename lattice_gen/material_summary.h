@@ -28,7 +28,7 @@ struct CurveSummary {
   std::array<double, 3> flow_stress{};       ///< equivalent stress at kFlowPlasticStrains (first crossing), Pa
   std::array<double, 3> flow_test_stress{};  ///< the test's own stress there, Pa
   double failure_strain = 0;                 ///< the test's strain at the first increment that broke a rod, 1
-  double peak_stress = 0;                    ///< the largest equivalent stress, Pa
+  double peak_stress = 0;                    ///< the largest equivalent stress before the first rod break, Pa
   double peak_strain = 0;                    ///< the test's strain there, 1
   double end_strain = 0;                     ///< the test's strain at the last point, 1
   double end_volume_ratio = 1;               ///< det F at the last point, 1

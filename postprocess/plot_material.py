@@ -56,10 +56,17 @@ def plot_test(d, name):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     ax.set_title("%s: stress against strain" % name)
-    ex = c["equivalent_strain_1"]
-    bx.plot(ex, mpa(c["equivalent_stress_Pa"]), color="C0", lw=1.4, label="von Mises equivalent stress")
-    bx.set_xlabel("equivalent strain [1] (" + ("gamma/sqrt3" if shear else "|log strain|") + ")")
-    bx.set_ylabel("equivalent stress [MPa]")
+    cyclic = name.startswith("cyclic")
+    # (a reversal folds the equivalent measures onto themselves: the cyclic test keeps its own strain)
+    ex = x if cyclic else c["equivalent_strain_1"]
+    if not cyclic:
+        bx.plot(ex, mpa(c["equivalent_stress_Pa"]), color="C0", lw=1.4, label="von Mises equivalent stress")
+        bx.set_xlabel("equivalent strain [1] (" + ("gamma/sqrt3" if shear else "|log strain|") + ")")
+        bx.set_ylabel("equivalent stress [MPa]")
+    else:
+        bx.plot(ex, mpa(c["mean_stress_Pa"]), color="C0", lw=1.2, label="mean stress")
+        bx.set_xlabel("log axial strain [1]")
+        bx.set_ylabel("mean stress [MPa]")
     bx.grid(alpha=0.3)
     cx = bx.twinx()
     cx.plot(ex, c["volume_ratio_1"], color="C5", lw=1, label="volume ratio det F")
@@ -69,7 +76,7 @@ def plot_test(d, name):
     h1, l1 = bx.get_legend_handles_labels()
     h2, l2 = cx.get_legend_handles_labels()
     bx.legend(h1 + h2, l1 + l2, fontsize=7, loc="lower right")
-    bx.set_title("%s: von Mises equivalents" % name)
+    bx.set_title("%s: %s" % (name, "volume" if cyclic else "von Mises equivalents"))
     fig.tight_layout()
     out = os.path.join(d, name + ".png")
     fig.savefig(out)

@@ -275,7 +275,7 @@ int run_material(const MaterialOptions& o) {
 
   // The anisotropy: ratios between orientations, and shear against tension at equal equivalent
   // plastic strain (von Mises: tau/sigma = 1/sqrt3 = 0.577; Tresca: 0.5).
-  nlohmann::json an;
+  nlohmann::json an = nlohmann::json::object();
   auto has = [&](const char* n) { return sums.count(n) > 0; };
   std::vector<double> eps{kYieldOffset};
   eps.insert(eps.end(), kFlowPlasticStrains.begin(), kFlowPlasticStrains.end());
