@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/bench.h"
+#include "app/material_lab.h"
 #include "app/post.h"
 #include "app/rod_driver.h"
 #include "app/run.h"
@@ -101,6 +102,30 @@ struct RodCommand final : Command {
   int run() override {
     write_rod_csv(std::cout, drive_rod(law, parse_list(path_s, "--path"), steps));
     return 0;
+  }
+};
+
+// swarf material
+struct MaterialCommand final : Command {
+  MaterialOptions mo;
+  explicit MaterialCommand(CLI::App& app) {
+    sub = app.add_subcommand("material",
+                             "Virtual material tests of a case's bonded FCC lattice (homogeneous, quasi-static): "
+                             "CSV, PNG, material.json; see docs/material-lab.md");
+    sub->add_option("case", mo.case_path, "Case file (TOML) whose rod law is tested (default: the built-in case)");
+    sub->add_option("--test", mo.test,
+                    "tension100, tension110, compression100, shear100, shear45, cyclic100 or all (default all)");
+    sub->add_option("--to", mo.to,
+                    "End strain of the test, a magnitude: log strain (uniaxial; compression goes to -TO), shear "
+                    "gamma, the cyclic amplitude (defaults 3, 3, 0.5, 2, 2, 0.02)");
+    sub->add_option("--increment", mo.increment, "Strain step: log strain, or gamma in shear (default 1e-4)");
+    sub->add_option("--out", mo.out_dir, "Output directory")->required();
+    sub->add_option("--set", mo.overrides, "Override a case key: --set rod.failure_strain=0.5 (repeatable)")
+        ->allow_extra_args(false);
+  }
+  int run() override {
+    mo.to_given = sub->count("--to") > 0;
+    return run_material(mo);
   }
 };
 
@@ -248,6 +273,7 @@ std::vector<std::unique_ptr<Command>> make_commands(CLI::App& app) {
   c.push_back(std::make_unique<LatticeCommand>(app));
   c.push_back(std::make_unique<RodCommand>(app));
   c.push_back(std::make_unique<RunCommand>(app));
+  c.push_back(std::make_unique<MaterialCommand>(app));
   c.push_back(std::make_unique<PostCommand>(app));
   c.push_back(std::make_unique<ToolCommand>(app));
   c.push_back(std::make_unique<BenchCommand>(app));

@@ -67,10 +67,10 @@ void check_flow_curve(TableReader& r, const char* strain_key, const char* stress
   if (eps.size() < 2 || eps.size() > static_cast<std::size_t>(FlowCurve::kMaxPoints))
     r.fail(strain_key, r.get(strain_key),
            fmt::format("needs 2 to {} points, has {}", FlowCurve::kMaxPoints, eps.size()));
-  if (eps[0] != 0.0) r.fail(strain_key, r.get(strain_key), "the first point must be at plastic strain 0 (the yield)");
+  if (eps[0] != 0.0) r.fail(strain_key, r.get(strain_key), "the first point must be 0 (plastic strain 0: the yield)");
   for (std::size_t i = 1; i < eps.size(); ++i) {
     if (!(eps[i] > eps[i - 1]))
-      r.fail(strain_key, r.get(strain_key), fmt::format("must increase: value {} is not above {}", eps[i], eps[i - 1]));
+      r.fail(strain_key, r.get(strain_key), fmt::format("must be strictly increasing: value {} is not above {}", eps[i], eps[i - 1]));
     if (!(sig[i] >= sig[i - 1]))
       r.fail(
           stress_key, r.get(stress_key),
