@@ -34,6 +34,9 @@ void print_setup(const Model& m, int threads) {
       fmt::print("  rod law calibrated in {} ({}), failure at equivalent strain {:.4g}:\n",
                  mt.calibration == "shear" ? "simple shear on a cube plane" : "uniaxial tension along [100]",
                  "calibration.h", mt.failure_strain);
+      if (mt.calibration == "shear")
+        fmt::print("  finite-strain shear correction: {} of {} points reached, largest mismatch left {:.1f} %\n",
+                   d.calibration_points, mt.flow_plastic_strain.size() - 1, 100.0 * d.calibration_mismatch);
     } else if (d.converted)
       fmt::print(
           "  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "

@@ -67,6 +67,8 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"rod_hardening_modulus_Pa", d.law.hardening},
       {"rod_tensile_strength_Pa", number(d.law.tensile_strength)},
       {"rod_failure_strain", number(d.law.failure_strain)},
+      {"calibration_shear_mismatch", d.calibration_mismatch},
+      {"calibration_shear_points_reached", d.calibration_points},
       {"rod_flow_plastic_strain", flow_points(d.law.flow, true)},
       {"rod_flow_stress_Pa", flow_points(d.law.flow, false)},
       {"rod_damping_N_s_per_m", d.rod_damping},

@@ -1,9 +1,66 @@
 // calibration.cpp: the rod law from macroscopic properties (see calibration.h).
 #include "setup/calibration.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "lattice_gen/lattice_material.h"
+
 namespace swarf {
+
+namespace {
+
+RodLaw law_of(const RodCalibration& c) {
+  RodLaw law;
+  law.youngs_modulus = c.youngs_modulus;
+  law.tensile_strength = HUGE_VAL;
+  law.flow.points = static_cast<int>(c.flow_plastic_strain.size());
+  for (int i = 0; i < law.flow.points; ++i) {
+    law.flow.plastic_strain[i] = c.flow_plastic_strain[i];
+    law.flow.stress[i] = c.flow_stress[i];
+  }
+  law.yield_strain = law.flow.stress[0] / law.youngs_modulus;
+  return law;
+}
+
+/// The lattice's von Mises stress at equivalent plastic strain e along a lab curve (linear
+/// between its points), or NaN where the curve does not reach it.
+double stress_at(const std::vector<MaterialPoint>& curve, double e) {
+  for (std::size_t k = 1; k < curve.size(); ++k) {
+    const double e0 = curve[k - 1].plastic_strain, e1 = curve[k].plastic_strain;
+    if (e0 <= e && e <= e1 && e1 > e0)
+      return curve[k - 1].equivalent_stress +
+             (e - e0) / (e1 - e0) * (curve[k].equivalent_stress - curve[k - 1].equivalent_stress);
+  }
+  return NAN;
+}
+
+}  // namespace
+
+void correct_in_shear(RodCalibration& c, const MacroscopicMaterial& m, double cell_edge, double rod_area) {
+  // Fixed point on the rod curve's stresses: each is scaled by target / lattice at its
+  // macroscopic point, in cube-plane simple shear at finite strain (the material lab), and the
+  // curve kept non-decreasing (the rod law does not soften). Where the lattice hardens more
+  // than the target even with flat rods (its rods rotate and new ones stretch), the clamp
+  // holds and the mismatch stays: it is reported, not hidden.
+  const std::size_t n = c.flow_stress.size();
+  const double gamma_max = std::sqrt(3.0) * m.flow_plastic_strain.back() * 1.05 + 0.01;
+  c.shear_points_reached = 0;
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    const auto curve = simple_shear_test(law_of(c), cell_edge, rod_area, {1, 0, 0}, {0, 0, 1}, gamma_max, 2e-3);
+    c.shear_mismatch = 0.0;
+    c.shear_points_reached = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      const double lattice = stress_at(curve, m.flow_plastic_strain[i]);
+      if (!std::isfinite(lattice)) break;
+      ++c.shear_points_reached;
+      const double ratio = m.flow_stress[i] / lattice;
+      c.shear_mismatch = std::max(c.shear_mismatch, std::fabs(1.0 / ratio - 1.0));
+      c.flow_stress[i] *= ratio;
+    }
+    for (std::size_t i = 1; i < n; ++i) c.flow_stress[i] = std::max(c.flow_stress[i], c.flow_stress[i - 1]);
+  }
+}
 
 std::vector<double> johnson_cook_points() { return {0.0, 0.01, 0.03, 0.08, 0.2, 0.5, 1.0, 2.0}; }
 
@@ -37,6 +94,7 @@ RodCalibration calibrate_rods(const MacroscopicMaterial& m, double cell_edge, do
     // strain moves it).
     c.failure_strain = m.failure_strain / 3.0;
   }
+  if (shear && m.finite_strain) correct_in_shear(c, m, cell_edge, rod_area);
   return c;
 }
 

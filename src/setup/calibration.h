@@ -11,6 +11,7 @@
 // s(p) = sigma(3 p) E_rod / (3 E100)). The failure strain is an equivalent strain in that
 // same simple shear; the rod breaks at the strain its stretched rod reaches there, exactly
 // (simple shear prescribes the deformation: sqrt(((1 + gamma)^2 + 1) / 2) - 1).
+// The small-strain relations are then corrected at finite strain (correct_in_shear).
 // The lattice's own response to both modes, at finite strain and in other orientations, is
 // what `swarf material` measures (docs/material-lab.md).
 #pragma once
@@ -26,6 +27,7 @@ struct MacroscopicMaterial {
   std::vector<double> flow_stress;          ///< true equivalent flow stress there, Pa
   double failure_strain = 0;                ///< equivalent strain at failure (inf: never), 1
   std::string calibration = "shear";        ///< "shear" or "tension"
+  bool finite_strain = true;                ///< shear: correct the rods for the lattice's finite-strain response
 };
 
 struct RodCalibration {
@@ -33,7 +35,14 @@ struct RodCalibration {
   std::vector<double> flow_plastic_strain;  ///< rod plastic strain, 1
   std::vector<double> flow_stress;          ///< rod flow stress, Pa
   double failure_strain = 0;                ///< rod strain in tension at failure, 1
+  double shear_mismatch = 0;                ///< largest |lattice / target - 1| left at the points reached, 1
+  int shear_points_reached = 0;             ///< points of the curve (beyond the yield) the shear test reached
 };
+
+/// The finite-strain correction of a shear calibration: the rod stresses rescaled until the
+/// lattice's cube-plane simple shear (lattice_gen/lattice_material.h, exact at finite strain
+/// for the periodic crystal) follows the flow curve where non-decreasing rods can make it.
+void correct_in_shear(RodCalibration& c, const MacroscopicMaterial& m, double cell_edge, double rod_area);
 
 /// The plastic strains at which a Johnson-Cook curve is tabulated (8 points, denser where it
 /// bends: n < 1 makes it steep at 0).

@@ -58,9 +58,12 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
 // the yield stress alone says that), increasing strains from 0, stresses that never fall.
 void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
                       const std::vector<double>& sig) {
-  if (eps.empty() || sig.empty())
-    r.fail(eps.empty() ? strain_key : stress_key, r.get(eps.empty() ? stress_key : strain_key),
-           fmt::format("a hardening curve needs both {} (1) and {} (Pa)", strain_key, stress_key));
+  if (eps.empty() || sig.empty()) {
+    const char* given = eps.empty() ? stress_key : strain_key;
+    r.fail(given, r.get(given),
+           fmt::format("a hardening curve needs both {} (1) and {} (Pa); {} is not given", strain_key, stress_key,
+                       eps.empty() ? strain_key : stress_key));
+  }
   if (eps.size() != sig.size())
     r.fail(stress_key, r.get(stress_key),
            fmt::format("has {} values where {} has {}: one stress per point", sig.size(), strain_key, eps.size()));
@@ -70,7 +73,8 @@ void check_flow_curve(TableReader& r, const char* strain_key, const char* stress
   if (eps[0] != 0.0) r.fail(strain_key, r.get(strain_key), "the first point must be 0 (plastic strain 0: the yield)");
   for (std::size_t i = 1; i < eps.size(); ++i) {
     if (!(eps[i] > eps[i - 1]))
-      r.fail(strain_key, r.get(strain_key), fmt::format("must be strictly increasing: value {} is not above {}", eps[i], eps[i - 1]));
+      r.fail(strain_key, r.get(strain_key),
+             fmt::format("must be strictly increasing: value {} is not above {}", eps[i], eps[i - 1]));
     if (!(sig[i] >= sig[i - 1]))
       r.fail(
           stress_key, r.get(stress_key),

@@ -51,6 +51,8 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
       rod.flow_plastic_strain = c.flow_plastic_strain;
       rod.flow_stress = c.flow_stress;
       rod.failure_strain = c.failure_strain;
+      d.calibration_mismatch = c.shear_mismatch;
+      d.calibration_points = c.shear_points_reached;
       rod.tensile_strength = mt.tensile_strength * rod.youngs_modulus / (3.0 * mt.youngs_modulus);
     }
   }

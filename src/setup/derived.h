@@ -43,8 +43,10 @@ struct Derived {
   double bar_failure_stress = 0;     ///< 3 (E100/E) sigma_max (first rods break), Pa
   double bar_stress_factor = 0;      ///< 3 E100 / E: sigma_bar = factor * sigma_rod(eps_bar/3), 1
 
-  RodLaw law;              ///< the rod law with the viscosity filled in
-  bool converted = false;  ///< the rod law was derived from [material] macroscopic properties
+  RodLaw law;                       ///< the rod law with the viscosity filled in
+  bool converted = false;           ///< the rod law was derived from [material] macroscopic properties
+  double calibration_mismatch = 0;  ///< shear calibration: largest |lattice/flow curve - 1| left, 1
+  int calibration_points = 0;       ///< flow-curve points beyond the yield that the shear test reached
 };
 
 /// Computes everything from the settings and the lattice (radii, rest lengths). Throws
