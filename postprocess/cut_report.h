@@ -31,11 +31,11 @@ class H5File;
 /// The cut's geometry as the analysis needs it (stored in results.h5 under /cutting).
 struct CutSetup {
   std::string tool_mesh;              ///< name of the tool's [[mesh]]
-  double width = 0;                   ///< workpiece width (lattice extent along y + a/2), m
+  double width = 0;                   ///< workpiece width (ordered lattice extent along y + a/2), m
   double steady_from = 0;             ///< force statistics over times >= this, s
   Vec3 tool_tip = Vec3::Zero();       ///< sharp tip of the tool at the end, m
   double rake_angle_deg = 0;          ///< deg
-  double uncut_surface_z = 0;         ///< highest initial workpiece centre, m
+  double uncut_surface_z = 0;         ///< highest workpiece centre of the ordered lattice (before a jitter), m
   double radius = 0;                  ///< particle radius, m
   std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
   double face_length = HUGE_VAL;      ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)

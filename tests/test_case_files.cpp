@@ -2,6 +2,7 @@
 // named; overrides are checked like keys in the file; the CLI exits non-zero.
 #include <gtest/gtest.h>
 
+#include "case_errors.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -26,20 +27,8 @@ name = "left"
 side = "x-"
 )";
 
-// Parses (and builds, which checks the step and the groups); returns the error message.
-std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  try {
-    build_model(parse_case(text, "bad.toml", overrides));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-void expect_mentions(const std::string& msg, std::initializer_list<std::string> parts) {
-  ASSERT_FALSE(msg.empty()) << "no error raised";
-  for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' missing in: " << msg;
-}
+using test::case_error;
+using test::expect_mentions;
 
 std::string replace(std::string s, const std::string& from, const std::string& to) {
   const auto pos = s.find(from);
@@ -47,27 +36,27 @@ std::string replace(std::string s, const std::string& from, const std::string& t
   return s.replace(pos, from.size(), to);
 }
 
-TEST(CaseFiles, GoodCaseParses) { EXPECT_EQ(error_of(kGood), ""); }
+TEST(CaseFiles, GoodCaseParses) { EXPECT_EQ(case_error(kGood), ""); }
 
 TEST(CaseFiles, UnknownKey) {
-  expect_mentions(error_of(replace(kGood, "yield_strain", "yeild_strain")),
+  expect_mentions(case_error(replace(kGood, "yield_strain", "yeild_strain")),
                   {"bad.toml:7", "unknown key", "rod.yeild_strain"});
 }
 
-TEST(CaseFiles, UnknownTable) { expect_mentions(error_of(kGood + "\n[solver]\nx = 1\n"), {"bad.toml", "solver"}); }
+TEST(CaseFiles, UnknownTable) { expect_mentions(case_error(kGood + "\n[solver]\nx = 1\n"), {"bad.toml", "solver"}); }
 
 TEST(CaseFiles, WrongType) {
-  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = \"big\"")),
+  expect_mentions(case_error(replace(kGood, "radius = 0.5e-3", "radius = \"big\"")),
                   {"bad.toml:3", "workpiece.radius", "\"big\"", "number"});
 }
 
 TEST(CaseFiles, NegativeRadius) {
-  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = -0.5e-3")),
+  expect_mentions(case_error(replace(kGood, "radius = 0.5e-3", "radius = -0.5e-3")),
                   {"bad.toml:3", "workpiece.radius", "-0.0005", "positive"});
 }
 
 TEST(CaseFiles, HardeningNotBelowModulus) {
-  expect_mentions(error_of(replace(kGood, "yield_strain = 1e-3", "yield_strain = 1e-3\nhardening_modulus = 3e11")),
+  expect_mentions(case_error(replace(kGood, "yield_strain = 1e-3", "yield_strain = 1e-3\nhardening_modulus = 3e11")),
                   {"rod.hardening_modulus", "300000000000", "below"});
 }
 
@@ -99,62 +88,62 @@ TEST(CaseFiles, HardeningCurveAndFailureStrainReachTheRodLaw) {
 }
 
 TEST(CaseFiles, MissingLatticeFile) {
-  expect_mentions(error_of(replace(kGood, "cells = [4, 2, 2]\nradius = 0.5e-3", "lattice_file = \"nope.h5\"")),
+  expect_mentions(case_error(replace(kGood, "cells = [4, 2, 2]\nradius = 0.5e-3", "lattice_file = \"nope.h5\"")),
                   {"workpiece.lattice_file", "nope.h5", "not found"});
 }
 
 TEST(CaseFiles, LatticeFileAndCellsTogether) {
-  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "lattice_file = \"x.h5\"")), {"lattice_file", "either"});
+  expect_mentions(case_error(replace(kGood, "radius = 0.5e-3", "lattice_file = \"x.h5\"")), {"lattice_file", "either"});
 }
 
 TEST(CaseFiles, RadiusWithLatticeFile) {
   test::TempDir dir("case_lat");
   test::write_file(dir / "x.h5", "");
   const std::string text = replace(kGood, "cells = [4, 2, 2]", "lattice_file = \"" + (dir / "x.h5") + "\"");
-  expect_mentions(error_of(text), {"bad.toml:3", "workpiece.radius", "lattice_file"});
+  expect_mentions(case_error(text), {"bad.toml:3", "workpiece.radius", "lattice_file"});
 }
 
 TEST(CaseFiles, IgnoredKeyCombinationsRejected) {
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nvelocity = [1.0, 0.0, 0.0]")),
+  expect_mentions(case_error(replace(kGood, "side = \"x-\"", "side = \"x-\"\nvelocity = [1.0, 0.0, 0.0]")),
                   {"group.velocity", "not used with motion = \"fixed\""});
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"x-\"\nbox_max = [1.0, 1.0, 1.0]")),
+  expect_mentions(case_error(replace(kGood, "side = \"x-\"", "side = \"x-\"\nbox_max = [1.0, 1.0, 1.0]")),
                   {"group.box_max", "either"});
 }
 
 TEST(CaseFiles, UnstableStepRefused) {
   // The stable step of this lattice is about 1.2e-7 s.
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-6")),
+  expect_mentions(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-6")),
                   {"integrator.dt", "stable step", "allow_unstable_dt"});
-  EXPECT_EQ(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-6\nallow_unstable_dt = true")), "");
+  EXPECT_EQ(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt = 1e-6\nallow_unstable_dt = true")), "");
 }
 
 TEST(CaseFiles, MissingEndTime) {
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "")), {"integrator.end_time"});
+  expect_mentions(case_error(replace(kGood, "end_time = 1e-5", "")), {"integrator.end_time"});
 }
 
 TEST(CaseFiles, SyntaxErrorNamesLine) {
-  expect_mentions(error_of(replace(kGood, "radius = 0.5e-3", "radius = = 0.5e-3")), {"bad.toml:3", "syntax"});
+  expect_mentions(case_error(replace(kGood, "radius = 0.5e-3", "radius = = 0.5e-3")), {"bad.toml:3", "syntax"});
 }
 
 TEST(CaseFiles, BadEnumValue) {
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "side = \"left\"")), {"group.side", "\"left\"", "x-"});
+  expect_mentions(case_error(replace(kGood, "side = \"x-\"", "side = \"left\"")), {"group.side", "\"left\"", "x-"});
 }
 
 TEST(CaseFiles, NewmarkOptionsChecked) {
-  EXPECT_EQ(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"")), "");
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\nbeta = 0.7")),
+  EXPECT_EQ(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"")), "");
+  expect_mentions(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\nbeta = 0.7")),
                   {"integrator.beta", "0.7", "(0, 0.5]"});
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt_min = 1e-6\ndt_max = 1e-7")),
+  expect_mentions(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\ndt_min = 1e-6\ndt_max = 1e-7")),
                   {"integrator.dt_min", "dt_max"});
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\niterations_grow = 12")),
+  expect_mentions(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\niterations_grow = 12")),
                   {"integrator.iterations_grow", "iterations_shrink"});
   // A first step outside [dt_min, dt_max] of the implicit scheme is named.
-  expect_mentions(error_of(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\ndt = 1e-3")),
+  expect_mentions(case_error(replace(kGood, "end_time = 1e-5", "end_time = 1e-5\nscheme = \"newmark\"\ndt = 1e-3")),
                   {"integrator.dt", "dt_max"});
 }
 
 TEST(CaseFiles, EmptyGroup) {
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"", "box_min = [1.0, 1.0, 1.0]")), {"left", "no particle"});
+  expect_mentions(case_error(replace(kGood, "side = \"x-\"", "box_min = [1.0, 1.0, 1.0]")), {"left", "no particle"});
 }
 
 TEST(CaseFiles, OverridesApplyAndAreChecked) {
@@ -165,20 +154,21 @@ TEST(CaseFiles, OverridesApplyAndAreChecked) {
   EXPECT_EQ(cs.groups[0].motion.kind, "velocity");
   EXPECT_EQ(cs.groups[0].motion.velocity[2], 3.0);
   EXPECT_EQ(cs.rod.damping_ratio, 0.1);
-  expect_mentions(error_of(kGood, {"rod.yield_strain=-1"}), {"--set rod.yield_strain", "-1", "positive"});
-  expect_mentions(error_of(kGood, {"rod.yeild=1"}), {"--set rod.yeild", "unknown key"});
-  expect_mentions(error_of(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
-  expect_mentions(error_of(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});
+  expect_mentions(case_error(kGood, {"rod.yield_strain=-1"}), {"--set rod.yield_strain", "-1", "positive"});
+  expect_mentions(case_error(kGood, {"rod.yeild=1"}), {"--set rod.yeild", "unknown key"});
+  expect_mentions(case_error(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
+  expect_mentions(case_error(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});
   // One entry of an array: its index as the last component; the others stay.
   const CaseSettings one = parse_case(
       kGood, "bad.toml", {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=-4.5"});
   EXPECT_EQ(one.groups[0].motion.velocity[0], 1.0);
   EXPECT_EQ(one.groups[0].motion.velocity[1], 2.0);
   EXPECT_EQ(one.groups[0].motion.velocity[2], -4.5);
-  expect_mentions(error_of(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.3=1"}),
+  expect_mentions(case_error(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.3=1"}),
                   {"--set", "group.0.velocity.3", "'3' is not an index", "3 entries"});
-  expect_mentions(error_of(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=\"a\""}),
-                  {"group.velocity"});
+  expect_mentions(
+      case_error(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=\"a\""}),
+      {"group.velocity"});
 }
 
 TEST(Motions, RampAndVelocityTableIntegrateExactly) {
@@ -215,14 +205,14 @@ table_velocity = [[1.0, 0.0, 0.0], [3.0, 0.0, 0.0]]
   // Inline velocity table on a mesh: 1 -> 3 m/s over 1 ms covers 2 mm.
   EXPECT_NEAR(m.mesh_motion[0].displacement_at(1e-3)[0], 2e-3, 1e-15);
   // Keys of another motion are refused, and a table must start at 0 s.
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"",
-                                   "side = \"x-\"\nmotion = \"velocity\"\n"
-                                   "velocity = [1.0, 0.0, 0.0]\nramp_time = 1e-3")),
+  expect_mentions(case_error(replace(kGood, "side = \"x-\"",
+                                     "side = \"x-\"\nmotion = \"velocity\"\n"
+                                     "velocity = [1.0, 0.0, 0.0]\nramp_time = 1e-3")),
                   {"group.ramp_time", "not used with motion = \"velocity\""});
-  expect_mentions(error_of(replace(kGood, "side = \"x-\"",
-                                   "side = \"x-\"\nmotion = \"velocity_table\"\n"
-                                   "table_time = [1e-3, 2e-3]\n"
-                                   "table_velocity = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]")),
+  expect_mentions(case_error(replace(kGood, "side = \"x-\"",
+                                     "side = \"x-\"\nmotion = \"velocity_table\"\n"
+                                     "table_time = [1e-3, 2e-3]\n"
+                                     "table_velocity = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]")),
                   {"group.table_time", "start at 0 s"});
 }
 

@@ -100,6 +100,25 @@ TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
   EXPECT_NE(test::read_file(dir / "b/particles.pvd").find("particles_00004.vtu"), std::string::npos);
 }
 
+// A disordered workpiece (workpiece.disorder_seed) is rebuilt from the checkpoint's case with
+// the same jitter: the continued run, on 2 threads, ends in the uninterrupted run's state.
+TEST(Restart, ADisorderedWorkpieceContinuesBitIdentically) {
+  test::TempDir dir("restart_disorder");
+  const std::string head = "[workpiece]\n";
+  test::write_file(dir / "c.toml", head + "disorder_seed = 4\nposition_jitter = 0.05\n" +
+                                       (std::string(kTinyCut).substr(head.size()) + "vtk = false\n"));
+  auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 1);
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  ASSERT_NE(a.output.find("disorder: seed 4"), std::string::npos) << a.output;
+  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
+  const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
+  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  EXPECT_EQ(sa["state_hash"], sb["state_hash"]);
+  EXPECT_EQ(sb["derived"]["disorder_seed"], 4);
+}
+
 // A restart into another directory (--out) brings the frames written before the checkpoint
 // along: every file particles.pvd lists is there, the earlier frames are copies and the later
 // ones are computed again, bit for bit as the uninterrupted run wrote them.

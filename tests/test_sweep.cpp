@@ -4,9 +4,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 
 #include "study/report.h"
 #include "study/study_table.h"
@@ -408,6 +411,45 @@ TEST(Sweep, JobsTwoFailureResumeRefusalAndReport) {
   EXPECT_NE(md.find("exceeds the stable step"), std::string::npos) << md;
   EXPECT_NE(md.find("](plots/uniaxial_measured_hardening_tangent_Pa_vs_rod_hardening_modulus.png)"), std::string::npos);
   EXPECT_EQ(md.find("Merchant"), std::string::npos) << "not a cutting study";
+}
+
+// A study that repeats the tiny bar over the workpiece's disorder seed: three cases, seeds 1, 2,
+// 3, each completed, and their results differ (the spread the repetitions measure).
+TEST(Sweep, RepetitionsOverTheDisorderSeedGiveDistinctRuns) {
+  test::TempDir dir("sweep_seeds");
+  test::write_file(dir / "study.toml", fmt::format(R"(base = "{}"
+plots = false
+repetitions = 3
+seed_key = "workpiece.disorder_seed"
+[set]
+workpiece.position_jitter = 0.05
+)",
+                                                   kTinyBase));
+  const std::string out = dir / "out";
+  const auto r = test::run_command(sweep_cmd(dir / "study.toml", out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream csv(test::read_file(out + "/study.csv"));
+  for (std::string line; std::getline(csv, line);) {
+    rows.emplace_back();
+    std::stringstream ls(line);
+    for (std::string cell; std::getline(ls, cell, ',');) rows.back().push_back(cell);
+  }
+  ASSERT_EQ(rows.size(), 5u);  // names, units, three cases
+  const auto& names = rows[0];
+  ASSERT_GE(names.size(), 4u);
+  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 4),
+            (std::vector<std::string>{"case", "workpiece.disorder_seed", "repetition", "status"}));
+  const auto col = std::find(names.begin(), names.end(), "results.elastic_energy_J") - names.begin();
+  ASSERT_LT(col, long(names.size()));
+  std::set<std::string> energies;
+  for (int k = 0; k < 3; ++k) {
+    const auto& row = rows[2 + k];
+    EXPECT_EQ(row[1], std::to_string(k + 1));
+    EXPECT_EQ(row[3], "completed");
+    energies.insert(row[col]);
+  }
+  EXPECT_EQ(energies.size(), 3u) << "each seed gives its own result";
 }
 
 // Run by ctest as sweep_mpi_two_ranks (SWARF_TEST_MPI=1): two MPI ranks share the cases and

@@ -71,7 +71,10 @@ void add_plots(const std::string& dir, nlohmann::json& sum) {
 void finish_run(const std::string& dir, const Model& model, Simulation& sim, RunOutputs& outputs,
                 ObserverSet& observers, int threads, const std::string& restarted_from) {
   const RunOutputs::WallTimes wall = outputs.finish();
-  write_results_h5(dir + "/results.h5", sim, [&](H5File& f) { observers.write_results(f); });
+  write_results_h5(dir + "/results.h5", sim, [&](H5File& f) {
+    write_disorder_attributes(f, model.derived);
+    observers.write_results(f);
+  });
   nlohmann::json sum = summary_head(model, sim, restarted_from);
   const SeriesColumns series = outputs.series();
   const bool plots = model.settings.output.plots;

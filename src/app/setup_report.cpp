@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -20,6 +21,17 @@ void print_setup(const Model& m, int threads) {
   for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
   fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
              d.particle_mass);
+  if (d.position_jitter > 0.0) {
+    const auto [lo, hi] = std::minmax_element(m.rods.rest_length.begin(), m.rods.rest_length.end());
+    fmt::print("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed,
+               d.position_jitter, d.position_jitter * d.radius);
+    if (lo != m.rods.rest_length.end())
+      fmt::print("; rods at rest, {:.6g} to {:.6g} m; stable step for kb_max = {:.4g} N/m", *lo, *hi,
+                 d.rod_stiffness_max);
+    fmt::print("\n");
+  } else if (d.disorder_seed > 0) {
+    fmt::print("  disorder: seed {} with position_jitter = 0: the ordered lattice\n", d.disorder_seed);
+  }
   if (m.periodic.on())
     fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
                m.periodic.period);

@@ -74,6 +74,10 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"rod_damping_N_s_per_m", d.rod_damping},
       {"rod_viscosity_Pa_s", d.rod_viscosity},
       {"omega_max_rad_per_s", d.omega_max},
+      {"disorder_seed", d.disorder_seed},
+      {"position_jitter", d.position_jitter},
+      {"position_jitter_m", d.position_jitter * d.radius},
+      {"rod_stiffness_max_N_per_m", d.rod_stiffness_max},
       {"dt_stable_s", number(d.dt_stable)},
       {"dt_s", d.dt},
       {"scheme", d.implicit ? "newmark" : "verlet"},
@@ -111,6 +115,11 @@ nlohmann::json summary_head(const Model& model, const Simulation& sim, const std
   sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
   for (const auto& g : model.groups) sum["counts"]["group_" + g.name] = g.members.size();
   return sum;
+}
+
+void write_disorder_attributes(H5File& f, const Derived& d) {
+  f.write_attribute("disorder_seed", static_cast<double>(d.disorder_seed));  // (exact: seeds are below 2^31)
+  f.write_attribute("position_jitter", d.position_jitter);
 }
 
 void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra) {

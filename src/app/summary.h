@@ -26,6 +26,10 @@ nlohmann::json number(double v);
 /// names the checkpoint of a restart (empty: none).
 nlohmann::json summary_head(const Model& model, const Simulation& sim, const std::string& restarted_from);
 
+/// The workpiece's disorder as root attributes of results.h5: 'disorder_seed' and
+/// 'position_jitter' (radii; 0 when the disorder is off), both float64.
+void write_disorder_attributes(H5File& f, const Derived& d);
+
 /// Writes the final state (particles with their broken-rod fraction, rods with plastic state)
 /// atomically; 'extra' may add datasets (the cut's setup) before the file is closed.
 void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra = {});

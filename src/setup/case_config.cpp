@@ -39,6 +39,13 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
     const char* key = r.has("radius") ? "radius" : "bond_tolerance";
     r.fail(key, r.get(key), "radii and bonds come from lattice_file; remove this key");
   }
+  if (!w.lattice_file.empty() && w.disorder_seed > 0)
+    r.fail("disorder_seed", r.get("disorder_seed"),
+           "the jitter moves a generated lattice; lattice_file's positions and rest lengths are used as they are");
+  if (w.disorder_seed == 0 && w.position_jitter > 0.0 && r.has("position_jitter"))
+    r.fail("position_jitter", r.get("position_jitter"),
+           "has no effect without workpiece.disorder_seed > 0 (0 = the ordered lattice): give a seed, or set "
+           "position_jitter = 0");
   if (!w.lattice_file.empty() && (has_cells || has_size))
     r.fail("lattice_file", r.get("lattice_file"), "give either lattice_file or cells/size, not both");
   if (has_cells && has_size) r.fail("size", r.get("size"), "give either cells or size, not both");

@@ -27,6 +27,8 @@ struct WorkpieceSettings {
   double radius = 0.5e-3;               ///< particle radius R, m (nearest-neighbour distance 2R)
   double bond_tolerance = 1e-6;         ///< relative tolerance on the bond length 2R, 1
   bool periodic_width = false;          ///< periodic along y (plane strain): period = cells[1] x a
+  int disorder_seed = 0;                ///< seed of the position jitter (lattice_disorder.h); 0 = the ordered lattice
+  double position_jitter = 0.02;        ///< largest jitter displacement, in radii R, 1 (used when disorder_seed > 0)
 };
 
 /// [material]: what the particles are made of.

@@ -49,6 +49,26 @@ const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
               "the block). Forces per width are divided by the period. Meshes do not wrap: a tool must span the "
               "period with a margin, as with free side faces. `side = \"y-\"`/`\"y+\"` groups still select the "
               "outer layers."},
+      {.name = "disorder_seed",
+       .field = &S::disorder_seed,
+       .unit = "1",
+       .default_note = "the ordered lattice",
+       .range = in(0, 2147483647, "[]"),
+       .rule = "> 0 not with `lattice_file`",
+       .doc = "Seed of a random jitter of the generated lattice's positions ([disorder](#disorder)); 0 = none, "
+              "the ordered lattice bit for bit. The same seed gives the same positions on any thread count; step "
+              "it (a study's `seed_key`) to repeat a case with other disorder and measure the run-to-run spread."},
+      {.name = "position_jitter",
+       .field = &S::position_jitter,
+       .unit = "1",
+       .default_note = "used when `disorder_seed` > 0",
+       .range = in(0, 0.2, "[]",
+                   "beyond (sqrt(2) - 1)/2 = 0.207 R a rod could end up longer than an unbonded second neighbour; "
+                   "see docs/case-reference.md#disorder"),
+       .rule = "> 0 needs `disorder_seed` > 0",
+       .doc = "Largest displacement of the jitter, in radii: each site moves by a vector drawn uniformly from the "
+              "ball of radius `position_jitter` x R (m). Rods keep the ordered lattice's 12 neighbours and start "
+              "at rest. At most 0.2, so every rod stays shorter than every unbonded pair."},
   };
   return keys;
 }

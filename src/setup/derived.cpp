@@ -67,11 +67,20 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   const double kb = d.rod_stiffness, m = d.particle_mass, zeta = cs.rod.damping_ratio;
   d.rod_damping = zeta * 2.0 * std::sqrt(kb * m / 2.0);
   d.rod_viscosity = d.rod_damping * l0 / d.rod_area;
-  d.omega_max = std::sqrt(8.0 * kb / m);
+  // The jitter moves each end of a rod by at most jitter x R, so no rod is shorter than
+  // L0 - 2 jitter R: the stable step takes that stiffest rod, whatever the seed (the same step
+  // for every repetition of a case). Ordered, kb_max = kb bit for bit.
+  const auto& w = cs.workpiece;
+  d.disorder_seed = w.enabled ? w.disorder_seed : 0;
+  d.position_jitter = w.enabled && w.disorder_seed > 0 ? w.position_jitter : 0.0;
+  d.rod_stiffness_max = E * d.rod_area / (l0 - 2.0 * d.position_jitter * R);
+  d.omega_max = std::sqrt(8.0 * d.rod_stiffness_max / m);
   // The rod dashpots damp like the stiffness (c/kb times K): the modal damping ratio grows
   // with the frequency, and the zone-boundary mode (omega^2 = 8 kb/m) has twice the ratio of
-  // the two-particle mode (omega^2 = 2 kb/m) that zeta refers to.
-  const double zeta_max = 2.0 * zeta;
+  // the two-particle mode (omega^2 = 2 kb/m) that zeta refers to. Each rod's dashpot is
+  // eta A / L0 for its own L0, so the ratio c/k is the same for every rod, and the stiffest
+  // rods' mode has sqrt(kb_max/kb) times the ratio.
+  const double zeta_max = 2.0 * zeta * std::sqrt(d.rod_stiffness_max / kb);
   d.dt_stable = lat.bonds.empty() ? HUGE_VAL : 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
   if (cs.contact.enabled) {
     // Contacts: a fifth of the Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the

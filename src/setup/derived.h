@@ -21,7 +21,7 @@ struct Derived {
   double rod_stiffness = 0;  ///< kb = E A / L0 (shortest rod), N/m
   double rod_damping = 0;    ///< c = zeta 2 sqrt(kb m/2), N s/m
   double rod_viscosity = 0;  ///< eta = c L0 / A, Pa s
-  double omega_max = 0;      ///< sqrt(8 kb/m), rad/s
+  double omega_max = 0;      ///< sqrt(8 kb_max/m) (kb_max below), rad/s
   double dt_stable = 0;      ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
   double dt = 0;             ///< step used (newmark: the first step), s
   bool implicit = false;     ///< the Newmark scheme (scheme "newmark", or "auto" with breakable rods)
@@ -47,9 +47,16 @@ struct Derived {
   bool converted = false;           ///< the rod law was derived from [material] macroscopic properties
   double calibration_mismatch = 0;  ///< shear calibration: largest |lattice/flow curve - 1| left, 1
   int calibration_points = 0;       ///< flow-curve points beyond the yield that the shear test reached
+
+  // The disorder (workpiece.disorder_seed, position_jitter; lattice_disorder.h): on when both are > 0.
+  int disorder_seed = 0;         ///< as given; 0 = the ordered lattice
+  double position_jitter = 0;    ///< largest displacement in radii R, 1; 0 when the disorder is off
+  double rod_stiffness_max = 0;  ///< kb_max = E A / (L0 - 2 jitter R), the stiffest rod the jitter can make, N/m
 };
 
-/// Computes everything from the settings and the lattice (radii, rest lengths). Throws
+/// Computes everything from the settings and the ordered lattice (radii, rest lengths, before
+/// the disorder's jitter: the rod law and the lattice relations are those of the ordered block,
+/// whatever the seed; only the stable step allows for the jitter's shortest rod). Throws
 /// InputError if dt exceeds the stable step and allow_unstable_dt is false.
 Derived compute_derived(const CaseSettings& cs, const Lattice& lattice);
 

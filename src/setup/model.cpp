@@ -8,6 +8,7 @@
 
 #include "io/mesh_file.h"
 #include "io/particle_file.h"
+#include "lattice_gen/lattice_disorder.h"
 #include "lattice_gen/lattice_file.h"
 #include "swarf/core/errors.h"
 #include "tool_paths/tool_geometry.h"
@@ -190,18 +191,17 @@ void add_group(Model& model, const std::string& source, const std::string& name,
   model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
 }
 
-// The [[group]] tables: by a side of the box or by a region.
-void build_groups(const CaseSettings& cs, const Lattice& lat, double h, Model& model) {
-  const std::size_t n = lat.position.size();
+// The [[group]] tables: by a side of the box or by a region, on the ordered sites.
+void build_groups(const CaseSettings& cs, const std::vector<Vec3>& sites, double h, Model& model) {
+  const std::size_t n = sites.size();
   for (const auto& gs : cs.groups) {
     std::vector<std::int32_t> members;
     if (!gs.side.empty()) {
-      members = select_side(lat.position, gs.side, gs.layers, h);
+      members = select_side(sites, gs.side, gs.layers, h);
     } else {
       for (std::size_t i = 0; i < n; ++i) {
         bool in = true;
-        for (int c = 0; c < 3; ++c)
-          in = in && lat.position[i][c] >= gs.box_min[c] && lat.position[i][c] <= gs.box_max[c];
+        for (int c = 0; c < 3; ++c) in = in && sites[i][c] >= gs.box_min[c] && sites[i][c] <= gs.box_max[c];
         if (in) members.push_back(static_cast<std::int32_t>(i));
       }
     }
@@ -210,16 +210,16 @@ void build_groups(const CaseSettings& cs, const Lattice& lat, double h, Model& m
 }
 
 // [uniaxial]: the grips as two groups moving along the strain path, the bar's gauge length
-// and cross-section, and the rods through its mid-plane.
-void build_uniaxial(const CaseSettings& cs, const Lattice& lat, double h, Model& model) {
+// and cross-section, and the rods through its mid-plane (all on the ordered sites).
+void build_uniaxial(const CaseSettings& cs, const std::vector<Vec3>& sites, double h, Model& model) {
   const auto& r = model.rods;
   const auto& u = cs.uniaxial;
   auto& info = model.uniaxial;
   info.enabled = true;
   info.axis = u.axis[0] - 'x';
   const int ax = info.axis;
-  Vec3 lo = lat.position[0], hi = lat.position[0];
-  for (const auto& x : lat.position) {
+  Vec3 lo = sites[0], hi = sites[0];
+  for (const auto& x : sites) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
@@ -247,13 +247,13 @@ void build_uniaxial(const CaseSettings& cs, const Lattice& lat, double h, Model&
   const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
   const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
   info.grip_min = static_cast<int>(model.groups.size());
-  add_group(model, cs.source, "grip_min", select_side(lat.position, smin, u.grip_layers, h), dofs, mmin);
+  add_group(model, cs.source, "grip_min", select_side(sites, smin, u.grip_layers, h), dofs, mmin);
   info.grip_max = static_cast<int>(model.groups.size());
-  add_group(model, cs.source, "grip_max", select_side(lat.position, smax, u.grip_layers, h), dofs, mmax);
+  add_group(model, cs.source, "grip_max", select_side(sites, smax, u.grip_layers, h), dofs, mmax);
   if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
   const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
   for (std::size_t b = 0; b < r.size(); ++b) {
-    const double xi = lat.position[r.ends[b][0]][ax], xj = lat.position[r.ends[b][1]][ax];
+    const double xi = sites[r.ends[b][0]][ax], xj = sites[r.ends[b][1]][ax];
     if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
   }
 }
@@ -340,7 +340,10 @@ Model build_model(const CaseSettings& cs) {
   model.lattice_particles = lat.position.size();
   std::vector<Vec3> free_velocity, free_spin;
   append_free_particles(cs, lat, free_velocity, free_spin);
-  model.derived = compute_derived(cs, lat);
+  model.derived = compute_derived(cs, lat);  // (of the ordered lattice: the same material for every seed)
+  model.sites = lat.position;
+  jitter_lattice(lat, static_cast<std::uint64_t>(cs.workpiece.disorder_seed), model.derived.position_jitter,
+                 model.lattice_particles, model.periodic);
   fill_particles(cs, lat, free_velocity, free_spin, model);
   auto& r = model.rods;
   r.law = model.derived.law;
@@ -350,8 +353,8 @@ Model build_model(const CaseSettings& cs) {
   r.reset_state();
   r.build_rows(model.particles.size());
   const double h = 0.5 * model.derived.cell_edge;  // spacing of lattice layers along a cube axis
-  build_groups(cs, lat, h, model);
-  if (cs.uniaxial.enabled) build_uniaxial(cs, lat, h, model);
+  build_groups(cs, model.sites, h, model);
+  if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);
   if (cs.contact.enabled) model.contact = contact_params(cs, model.particles);
   model.contacts = cs.contact.enabled;

@@ -2,7 +2,10 @@
 // StepSettings, and the case around them).
 //
 // The lattice becomes particles (structure of arrays) and rods (each stored once); the
-// [[group]] tables and the [uniaxial] grips become groups with a prescribed motion.
+// [[group]] tables and the [uniaxial] grips become groups with a prescribed motion. With
+// workpiece.disorder_seed the particles start at the jittered positions and the rods at
+// their jittered lengths (lattice_disorder.h); everything selected by position is selected
+// on the ordered lattice.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +39,11 @@ struct Model : World {
   StepSettings step;      ///< the step's settings, from [integrator] and the derived step
   UniaxialInfo uniaxial;
   std::size_t lattice_particles = 0;  ///< particles 0..this-1 come from the workpiece; free ones follow
+  /// Every particle's position before the workpiece's disorder (the ordered lattice's sites,
+  /// then the free particles), m. Groups, grips and the cut's geometry are selected on these,
+  /// so they are the same for every disorder_seed; without disorder they are the initial
+  /// positions.
+  std::vector<Vec3> sites;
 };
 
 /// The step's settings of a case: [integrator] and [output] orientations, and the derived

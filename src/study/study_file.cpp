@@ -256,8 +256,9 @@ Axes check_varied(const toml::table& root, const std::string& source, const Stud
         fmt::format("{}: key 'seed_key' = \"{}\": that key is also varied by [grid] or [[point]]", source, s.seed_key));
   if (s.repetitions > 1 && s.seed_key.empty())
     bad(source, *root.get("repetitions"), "repetitions",
-        "swarf runs are deterministic (a case has no random seed), so repetitions would repeat identical "
-        "cases; give seed_key = \"<case key>\" to set a key to seed_start + repetition in each repetition");
+        "swarf runs are deterministic, so repetitions would repeat identical cases; give seed_key = "
+        "\"workpiece.disorder_seed\" (the workpiece's disorder) or another case key to set to seed_start + "
+        "repetition in each repetition");
   if (axes.empty() && r.points.empty() && s.repetitions == 1)
     throw InputError(
         fmt::format("{}: nothing varies: give a [grid] table, [[point]] entries, or repetitions > 1 "

@@ -17,9 +17,11 @@ std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
   for (std::size_t k = 0; k < settings.meshes.size() && tool < 0; ++k)
     if (settings.meshes[k].tool) tool = static_cast<int>(k);
   if (tool < 0 || model.lattice_particles == 0) return nullptr;
+  // The width and the uncut surface of the ordered lattice: a jittered block's extreme centres
+  // stand up to jitter x R further out, a bias the same sign for every seed.
   double lo = HUGE_VAL, hi = -HUGE_VAL, top = -HUGE_VAL;  // m
   for (std::size_t i = 0; i < model.lattice_particles; ++i) {
-    const Vec3& x0 = model.particles.initial_position[i];
+    const Vec3& x0 = model.sites[i];
     lo = std::min(lo, x0[1]);
     hi = std::max(hi, x0[1]);
     top = std::max(top, x0[2]);
