@@ -64,7 +64,7 @@ TEST(CaseFiles, HardeningCurveAndFailureStrainReachTheRodLaw) {
   const std::string curve = replace(kGood, "yield_strain = 1e-3",
                                     "flow_plastic_strain = [0.0, 0.01, 0.1]\nflow_stress = [200e6, 300e6, 350e6]\n"
                                     "failure_strain = 0.5");
-  ASSERT_EQ(error_of(curve), "");
+  ASSERT_EQ(case_error(curve), "");
   const Model m = build_model(parse_case(curve, "curve.toml", {}));
   const RodLaw& law = m.derived.law;
   EXPECT_EQ(law.flow.points, 3);
@@ -76,15 +76,15 @@ TEST(CaseFiles, HardeningCurveAndFailureStrainReachTheRodLaw) {
   EXPECT_TRUE(m.derived.implicit);  // rods can break: the auto scheme is Newmark
   EXPECT_EQ(m.rods.law.flow.points, 3);
   // The rules between the keys.
-  expect_mentions(error_of(replace(curve, "flow_stress = [200e6, 300e6, 350e6]\n", "")),
+  expect_mentions(case_error(replace(curve, "flow_stress = [200e6, 300e6, 350e6]\n", "")),
                   {"rod.flow_plastic_strain", "both"});
-  expect_mentions(error_of(replace(curve, "[0.0, 0.01, 0.1]", "[0.001, 0.01, 0.1]")), {"first point must be 0"});
-  expect_mentions(error_of(replace(curve, "[0.0, 0.01, 0.1]", "[0.0, 0.1, 0.01]")), {"strictly increasing"});
-  expect_mentions(error_of(replace(curve, "[200e6, 300e6, 350e6]", "[200e6, 300e6]")), {"rod.flow_stress", "3"});
-  expect_mentions(error_of(replace(curve, "[200e6, 300e6, 350e6]", "[200e6, 300e6, 250e6]")), {"must not decrease"});
-  expect_mentions(error_of(replace(curve, "failure_strain = 0.5", "failure_strain = 0.5\nyield_strain = 1e-3")),
+  expect_mentions(case_error(replace(curve, "[0.0, 0.01, 0.1]", "[0.001, 0.01, 0.1]")), {"first point must be 0"});
+  expect_mentions(case_error(replace(curve, "[0.0, 0.01, 0.1]", "[0.0, 0.1, 0.01]")), {"strictly increasing"});
+  expect_mentions(case_error(replace(curve, "[200e6, 300e6, 350e6]", "[200e6, 300e6]")), {"rod.flow_stress", "3"});
+  expect_mentions(case_error(replace(curve, "[200e6, 300e6, 350e6]", "[200e6, 300e6, 250e6]")), {"must not decrease"});
+  expect_mentions(case_error(replace(curve, "failure_strain = 0.5", "failure_strain = 0.5\nyield_strain = 1e-3")),
                   {"rod.yield_strain", "replaces"});
-  expect_mentions(error_of(replace(curve, "[rod]", "[material]\nyoungs_modulus = 200e9\n[rod]")), {"[material]"});
+  expect_mentions(case_error(replace(curve, "[rod]", "[material]\nyoungs_modulus = 200e9\n[rod]")), {"[material]"});
 }
 
 TEST(CaseFiles, MissingLatticeFile) {
