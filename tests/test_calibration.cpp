@@ -33,20 +33,6 @@ MacroscopicMaterial c45(const std::string& mode) {
   return m;
 }
 
-RodLaw law_of(const RodCalibration& c) {
-  RodLaw law;
-  law.youngs_modulus = c.youngs_modulus;
-  law.tensile_strength = HUGE_VAL;
-  law.failure_strain = c.failure_strain;
-  law.flow.points = static_cast<int>(c.flow_plastic_strain.size());
-  for (int i = 0; i < law.flow.points; ++i) {
-    law.flow.plastic_strain[i] = c.flow_plastic_strain[i];
-    law.flow.stress[i] = c.flow_stress[i];
-  }
-  law.yield_strain = law.flow.stress[0] / law.youngs_modulus;
-  return law;
-}
-
 TEST(Calibration, JohnsonCookTableIsTheCurve) {
   // The sheet's C45 values (cutting-data.md): 965, 1064, 1154, 1260 MPa at 0.2, 0.5, 1, 2.
   const auto s = johnson_cook_stress(553.1e6, 600.8e6, 0.234, johnson_cook_points());
@@ -71,7 +57,7 @@ TEST(Calibration, CubeShearReproducesTheFlowCurveAtSmallStrain) {
   // linear interpolation of the table too.
   const MacroscopicMaterial m = c45("shear");
   const RodCalibration c = calibrate_rods(m, kCell, kA, kL0);
-  const RodLaw law = law_of(c);
+  const RodLaw law = calibrated_law(c);
   const double e100 = m.youngs_modulus, c44 = 3.0 * e100 / 4.0;  // C44 = kb / a = (3/4) E100
   for (std::size_t i = 0; i < m.flow_plastic_strain.size(); ++i) {
     // The shear strain at which the rods' plastic strain is the point's: p = gamma_p / 2.
@@ -90,7 +76,7 @@ TEST(Calibration, TensionReproducesTheFlowCurveAtSmallStrain) {
   // Every rod at eps/3 along [100]: sigma = 3 (E100/E_rod) s(eps/3), eps_p = eps - sigma/E100.
   const MacroscopicMaterial m = c45("tension");
   const RodCalibration c = calibrate_rods(m, kCell, kA, kL0);
-  const RodLaw law = law_of(c);
+  const RodLaw law = calibrated_law(c);
   for (std::size_t i = 0; i < m.flow_plastic_strain.size(); ++i) {
     const double eps = 3.0 * (c.flow_plastic_strain[i] + c.flow_stress[i] / law.youngs_modulus);
     const double sigma = 3.0 * (m.youngs_modulus / law.youngs_modulus) * evaluate(law, eps / 3.0, 0.0, 0.0).stress;
@@ -106,7 +92,7 @@ TEST(Calibration, FailureStrainIsTheStretchedRodsInShear) {
   const double gamma = std::sqrt(3.0) * 2.0;
   const double rx = 1.0 + gamma, rz = 1.0;  // F (1,0,1) with F = I + gamma e_x (x) e_z
   EXPECT_NEAR(c.failure_strain, std::sqrt(rx * rx + rz * rz) / std::sqrt(2.0) - 1.0, 1e-14);
-  const RodLaw law = law_of(c);
+  const RodLaw law = calibrated_law(c);
   EXPECT_FALSE(evaluate(law, c.failure_strain * (1 - 1e-9), 0.0, 0.0).broken);
   EXPECT_TRUE(evaluate(law, c.failure_strain * (1 + 1e-9), 0.0, 0.0).broken);
 }
@@ -122,7 +108,7 @@ TEST(Calibration, FiniteStrainCorrectionFollowsTheCurveWhereRodsCan) {
   m.failure_strain = HUGE_VAL;
   const RodCalibration c = calibrate_rods(m, kCell, kA, kL0);
   ASSERT_GE(c.shear_points_reached, 4);
-  const auto curve = simple_shear_test(law_of(c), kCell, kA, {1, 0, 0}, {0, 0, 1}, 3.6, 2e-3);
+  const auto curve = simple_shear_test(calibrated_law(c), kCell, kA, {1, 0, 0}, {0, 0, 1}, 3.6, 2e-3);
   double worst = 0.0;
   for (int i = 1; i <= c.shear_points_reached; ++i) {
     double lattice = NAN;

@@ -10,19 +10,6 @@ namespace swarf {
 
 namespace {
 
-RodLaw law_of(const RodCalibration& c) {
-  RodLaw law;
-  law.youngs_modulus = c.youngs_modulus;
-  law.tensile_strength = HUGE_VAL;
-  law.flow.points = static_cast<int>(c.flow_plastic_strain.size());
-  for (int i = 0; i < law.flow.points; ++i) {
-    law.flow.plastic_strain[i] = c.flow_plastic_strain[i];
-    law.flow.stress[i] = c.flow_stress[i];
-  }
-  law.yield_strain = law.flow.stress[0] / law.youngs_modulus;
-  return law;
-}
-
 /// The lattice's von Mises stress at equivalent plastic strain e along a lab curve (linear
 /// between its points), or NaN where the curve does not reach it.
 double stress_at(const std::vector<MaterialPoint>& curve, double e) {
@@ -37,6 +24,26 @@ double stress_at(const std::vector<MaterialPoint>& curve, double e) {
 
 }  // namespace
 
+FlowCurve make_flow_curve(const std::vector<double>& plastic_strain, const std::vector<double>& stress) {
+  FlowCurve f;
+  f.points = static_cast<int>(plastic_strain.size());
+  for (int i = 0; i < f.points; ++i) {
+    f.plastic_strain[i] = plastic_strain[i];
+    f.stress[i] = stress[i];
+  }
+  return f;
+}
+
+RodLaw calibrated_law(const RodCalibration& c) {
+  RodLaw law;
+  law.youngs_modulus = c.youngs_modulus;
+  law.tensile_strength = HUGE_VAL;
+  law.failure_strain = c.failure_strain;
+  law.flow = make_flow_curve(c.flow_plastic_strain, c.flow_stress);
+  law.yield_strain = law.flow.stress[0] / law.youngs_modulus;
+  return law;
+}
+
 void correct_in_shear(RodCalibration& c, const MacroscopicMaterial& m, double cell_edge, double rod_area) {
   // Fixed point on the rod curve's stresses: each is scaled by target / lattice at its
   // macroscopic point, in cube-plane simple shear at finite strain (the material lab), and the
@@ -47,7 +54,9 @@ void correct_in_shear(RodCalibration& c, const MacroscopicMaterial& m, double ce
   const double gamma_max = std::sqrt(3.0) * m.flow_plastic_strain.back() * 1.05 + 0.01;
   c.shear_points_reached = 0;
   for (int iteration = 0; iteration < 12; ++iteration) {
-    const auto curve = simple_shear_test(law_of(c), cell_edge, rod_area, {1, 0, 0}, {0, 0, 1}, gamma_max, 2e-3);
+    RodLaw law = calibrated_law(c);
+    law.failure_strain = HUGE_VAL;  // (the flow curve, not the failure, is matched)
+    const auto curve = simple_shear_test(law, cell_edge, rod_area, {1, 0, 0}, {0, 0, 1}, gamma_max, 2e-3);
     c.shear_mismatch = 0.0;
     c.shear_points_reached = 0;
     for (std::size_t i = 1; i < n; ++i) {

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "swarf/laws/rod_law.h"
+
 namespace swarf {
 
 struct MacroscopicMaterial {
@@ -38,6 +40,13 @@ struct RodCalibration {
   double shear_mismatch = 0;                ///< largest |lattice / target - 1| left at the points reached, 1
   int shear_points_reached = 0;             ///< points of the curve (beyond the yield) the shear test reached
 };
+
+/// A rod hardening curve from its points (at most FlowCurve::kMaxPoints; the readers check).
+FlowCurve make_flow_curve(const std::vector<double>& plastic_strain, const std::vector<double>& stress);
+
+/// The calibrated rod law alone: elastic-plastic with its curve and failure strain, no viscosity,
+/// no stress criterion.
+RodLaw calibrated_law(const RodCalibration& c);
 
 /// The finite-strain correction of a shear calibration: the rod stresses rescaled until the
 /// lattice's cube-plane simple shear (lattice_gen/lattice_material.h, exact at finite strain

@@ -117,12 +117,7 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.law.failure_strain = rod.failure_strain;
   if (!rod.flow_plastic_strain.empty()) {
     // The hardening curve carries the hardening; its first stress is the yield stress.
-    FlowCurve& f = d.law.flow;
-    f.points = static_cast<int>(rod.flow_plastic_strain.size());
-    for (int i = 0; i < f.points; ++i) {
-      f.plastic_strain[i] = rod.flow_plastic_strain[i];
-      f.stress[i] = rod.flow_stress[i];
-    }
+    d.law.flow = make_flow_curve(rod.flow_plastic_strain, rod.flow_stress);
   }
 
   const auto& g = cs.integrator;
