@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarf/core/errors.h"
@@ -37,10 +38,32 @@ Lattice generate_fcc(const FccSpec& spec) {
   lat.cell_edge = a;
   if (by_cells) lat.cells = spec.cells;
   lat.position.reserve(static_cast<std::size_t>(n_sites) + 1);
-  for (long k = 0; k < count[2]; ++k)
-    for (long j = 0; j < count[1]; ++j)
-      for (long i = 0; i < count[0]; ++i)
-        if ((i + j + k) % 2 == 0) lat.position.emplace_back(double(i) * h, double(j) * h, double(k) * h);
+  if (spec.rotation_y == 0.0) {
+    for (long k = 0; k < count[2]; ++k)
+      for (long j = 0; j < count[1]; ++j)
+        for (long i = 0; i < count[0]; ++i)
+          if ((i + j + k) % 2 == 0) lat.position.emplace_back(double(i) * h, double(j) * h, double(k) * h);
+  } else {
+    if (!std::isfinite(spec.rotation_y))
+      throw InputError(fmt::format("lattice: the rotation must be a finite angle, got {} rad", spec.rotation_y));
+    // The turned lattice's sites inside the same box as the unturned one, [0, (count - 1) h]
+    // in x and z (a small tolerance keeps sites on the faces); y is unchanged. Sorted by
+    // (z, y, x) layers as the unturned generator gives them.
+    const double c = std::cos(spec.rotation_y), s = std::sin(spec.rotation_y);
+    const double lx = double(count[0] - 1) * h, lz = double(count[2] - 1) * h, eps = 1e-9 * h;
+    const long reach = static_cast<long>(std::ceil((lx + lz) / h)) + 2;
+    std::vector<std::array<double, 3>> sites;
+    for (long k = -reach; k <= reach; ++k)
+      for (long i = -reach; i <= reach; ++i) {
+        // Site (i, ., k) h turned about y: x' = c x + s z, z' = -s x + c z.
+        const double x = c * double(i) * h + s * double(k) * h, z = -s * double(i) * h + c * double(k) * h;
+        if (x < -eps || x > lx + eps || z < -eps || z > lz + eps) continue;
+        for (long j = 0; j < count[1]; ++j)
+          if (((i + j + k) % 2 + 2) % 2 == 0) sites.push_back({z, double(j) * h, x});
+      }
+    std::sort(sites.begin(), sites.end());
+    for (const auto& q : sites) lat.position.emplace_back(q[2], q[1], q[0]);
+  }
   if (lat.position.empty()) throw InputError("lattice: the box holds no lattice site");
   lat.radius.assign(lat.position.size(), spec.radius);
   bond_nearest_neighbours(lat, d, spec.bond_tolerance);

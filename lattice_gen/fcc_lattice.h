@@ -6,6 +6,9 @@
 //    each conventional cell (the peers' W1 convention);
 //  - by size (LX, LY, LZ) in metres: every site inside the closed box [0, L_c].
 // Every pair at distance 2R within the relative tolerance is bonded once (i < j).
+// Optionally the lattice is turned about y by an angle theta before it is cut to the box
+// (rotation_y): its cube axes then lie at theta to x and z in the x-z plane, so that no
+// close-packed plane need lie along a cut; y stays a cube axis (the periodic width still fits).
 #pragma once
 
 #include <array>
@@ -31,6 +34,7 @@ struct FccSpec {
   std::array<int, 3> cells{0, 0, 0};    ///< by cells, if all > 0
   std::array<double, 3> size{0, 0, 0};  ///< by size, m, if cells are not given
   double bond_tolerance = 1e-6;         ///< relative tolerance on the bond length 2R
+  double rotation_y = 0.0;              ///< turn of the lattice about y before it is cut to the box, rad
 };
 
 /// Generates the lattice; throws InputError on a bad spec (naming the value).

@@ -59,6 +59,9 @@ void print_setup(const Model& m, int threads) {
                d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
     if (std::isfinite(d.law.failure_strain))
       fmt::print("  rod: fails at strain {:.4g} in tension\n", d.law.failure_strain);
+    if (m.rods.formation.enabled())
+      fmt::print("  rod: unbonded lattice particles pressed beyond a relative overlap of {:.4g} form a rod\n",
+                 m.rods.formation.overlap);
     if (d.law.flow.points > 0) {
       std::string pts;
       for (int i = 0; i < d.law.flow.points; ++i)

@@ -50,7 +50,8 @@ class VtkSeries {
 /// Writes a triangle mesh as a VTK XML polydata file (.vtp), atomically.
 void write_vtp(const std::string& path, const TriangleMesh& mesh);
 
-/// Fraction of each particle's rods that are broken (0 for a particle without rods).
+/// Fraction of each particle's rods that are broken (0 for a particle without rods); with rods
+/// formed during the run, the share of its original rods' count it lacks (1 - intact / original).
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r);
 
 }  // namespace swarf

@@ -27,6 +27,7 @@ struct WorkpieceSettings {
   double radius = 0.5e-3;               ///< particle radius R, m (nearest-neighbour distance 2R)
   double bond_tolerance = 1e-6;         ///< relative tolerance on the bond length 2R, 1
   bool periodic_width = false;          ///< periodic along y (plane strain): period = cells[1] x a
+  double lattice_rotation = 0.0;        ///< turn of the lattice about y, deg (fcc_lattice.h)
   int disorder_seed = 0;                ///< seed of the position jitter (lattice_disorder.h); 0 = the ordered lattice
   double position_jitter = 0.02;        ///< largest jitter displacement, in radii R, 1 (used when disorder_seed > 0)
 };
@@ -66,6 +67,7 @@ struct RodSettings {
   std::vector<double> flow_plastic_strain;  ///< hardening curve: plastic strains of its points, 1 (first 0)
   std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
+  double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
 };
 
 /// [integrator]
@@ -174,6 +176,7 @@ struct MeshSettings {
   MotionSettings motion;         ///< as for groups
   double youngs_modulus = kInf;  ///< Pa; inf = rigid
   double poisson_ratio = 0.3;    ///< 1
+  double parting_lead = kInf;    ///< parting line at the lowest point: reach ahead of it, m; inf = none
 };
 
 /// [[particle]]: a single free particle (contact tests, packings written by hand).

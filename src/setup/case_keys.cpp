@@ -49,6 +49,17 @@ const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
               "the block). Forces per width are divided by the period. Meshes do not wrap: a tool must span the "
               "period with a margin, as with free side faces. `side = \"y-\"`/`\"y+\"` groups still select the "
               "outer layers."},
+      {.name = "lattice_rotation",
+       .field = &S::lattice_rotation,
+       .unit = "deg",
+       .range = in(-90, 90, "[]"),
+       .rule = "not with `lattice_file`",
+       .doc = "Turns the generated lattice about y by this angle before it is cut to the box (the same box as "
+              "unturned: `cells` x a, or `size`): the cube axes then lie at this angle to x and z. In a cut along "
+              "x, the unturned lattice has close-packed and cube planes along the cutting plane, and rods that "
+              "fail by strain open cracks along them ahead of the tool (validation/cutting/README.md); a turn "
+              "moves them off it. y stays a cube axis, so `periodic_width` still fits. The faces are then rough "
+              "at the scale of a particle. 0 = cube axes along x, y, z."},
       {.name = "disorder_seed",
        .field = &S::disorder_seed,
        .unit = "1",
@@ -246,6 +257,16 @@ const std::vector<Key<RodSettings>>& rod_keys() {
        .unit = "1",
        .range = in(0, 10, "[]"),
        .doc = "Viscous part, as a fraction zeta of critical damping of one rod between two particles."},
+      {.name = "bond_overlap",
+       .field = &S::bond_overlap,
+       .unit = "1",
+       .range = Range{0.0, kInf, false, false, "in [0, 1), or inf"},
+       .rule = "below 1; needs `[contact]`",
+       .doc = "Bond formation: two particles of the lattice that are not bonded (their rod broke, or they were "
+              "never neighbours) and are pressed together until their relative overlap (r_i + r_j - d)/(r_i + "
+              "r_j) exceeds this form a rod, stress-free at their distance, when a step has converged. This is "
+              "how the lattice flows: a metal's atoms change neighbours where fixed rods would stretch and "
+              "harden without bound (docs/materials.md). `inf` means never, the paper's lattice."},
   };
   return keys;
 }
@@ -669,6 +690,17 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .unit = "1",
        .range = in(-1, 0.5, "()"),
        .doc = "nu_w of the mesh. No effect when `youngs_modulus` is `inf`."},
+      {.name = "parting_lead",
+       .field = &S::parting_lead,
+       .unit = "m",
+       .range = kPositiveOrInf,
+       .doc = "A parting line at the mesh's lowest point (a tool's cutting edge): rods that cross the horizontal "
+              "plane through that point break when it comes within this distance of their midpoint along x, the "
+              "cutting direction (and up to the same distance after it has passed them). The geometric "
+              "separation criterion of early finite-element cutting models: the chip separates at the edge and "
+              "must form by plastic flow, instead of the lattice cleaving along the cutting plane ahead of the "
+              "tool (docs/materials.md). A fraction of the particle spacing to a few of them; `inf` means none, "
+              "and separation is left to the rods' failure."},
   };
   return keys;
 }

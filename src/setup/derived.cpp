@@ -74,13 +74,17 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   d.disorder_seed = w.enabled ? w.disorder_seed : 0;
   d.position_jitter = w.enabled && w.disorder_seed > 0 ? w.position_jitter : 0.0;
   d.rod_stiffness_max = E * d.rod_area / (l0 - 2.0 * d.position_jitter * R);
-  d.omega_max = std::sqrt(8.0 * d.rod_stiffness_max / m);
+  // Bond formation (rod.bond_overlap) lets a flowing particle's 12 rods crowd towards one axis
+  // (the FCC lattice spreads them isotropically: sum n n^T = 4 I); the bound of 12 along one
+  // axis makes the highest mode omega^2 = 24 kb/m instead of 8 kb/m, the step sqrt(3) shorter.
+  const double modal = cs.rod.bond_overlap < 1.0 ? 24.0 : 8.0;
+  d.omega_max = std::sqrt(modal * d.rod_stiffness_max / m);
   // The rod dashpots damp like the stiffness (c/kb times K): the modal damping ratio grows
   // with the frequency, and the zone-boundary mode (omega^2 = 8 kb/m) has twice the ratio of
   // the two-particle mode (omega^2 = 2 kb/m) that zeta refers to. Each rod's dashpot is
   // eta A / L0 for its own L0, so the ratio c/k is the same for every rod, and the stiffest
   // rods' mode has sqrt(kb_max/kb) times the ratio.
-  const double zeta_max = 2.0 * zeta * std::sqrt(d.rod_stiffness_max / kb);
+  const double zeta_max = std::sqrt(modal / 2.0) * zeta * std::sqrt(d.rod_stiffness_max / kb);
   d.dt_stable = lat.bonds.empty() ? HUGE_VAL : 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
   if (cs.contact.enabled) {
     // Contacts: a fifth of the Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
@@ -173,10 +177,10 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   if (d.dt > d.dt_stable && !g.allow_unstable_dt)
     throw InputError(
         fmt::format("{}: key 'integrator.dt' = {:.6g} s exceeds the stable step {:.6g} s of the explicit scheme "
-                    "((2/omega_max)(sqrt(1+(2 zeta)^2) - 2 zeta), omega_max^2 = 8 kb/m, m = {:.4g} kg, kb = {:.4g} "
+                    "((2/omega_max)(sqrt(1+(2 zeta)^2) - 2 zeta), omega_max^2 = {} kb/m, m = {:.4g} kg, kb = {:.4g} "
                     "N/m, zeta = {}); lower dt or set "
                     "integrator.allow_unstable_dt = true to run anyway",
-                    cs.source, d.dt, d.dt_stable, m, kb, zeta));
+                    cs.source, d.dt, d.dt_stable, modal, m, kb, zeta));
   return d;
 }
 

@@ -21,7 +21,7 @@ struct Derived {
   double rod_stiffness = 0;  ///< kb = E A / L0 (shortest rod), N/m
   double rod_damping = 0;    ///< c = zeta 2 sqrt(kb m/2), N s/m
   double rod_viscosity = 0;  ///< eta = c L0 / A, Pa s
-  double omega_max = 0;      ///< sqrt(8 kb_max/m) (kb_max below), rad/s
+  double omega_max = 0;      ///< sqrt(8 kb_max/m) (kb_max below; 24 with bond formation), rad/s
   double dt_stable = 0;      ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
   double dt = 0;             ///< step used (newmark: the first step), s
   bool implicit = false;     ///< the Newmark scheme (scheme "newmark", or "auto" with breakable rods)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "io/mesh_file.h"
 #include "io/particle_file.h"
@@ -122,6 +123,7 @@ Lattice workpiece_lattice(const CaseSettings& cs, Periodic& periodic) {
   spec.cells = cs.workpiece.cells;
   spec.size = cs.workpiece.size;
   spec.bond_tolerance = cs.workpiece.bond_tolerance;
+  spec.rotation_y = cs.workpiece.lattice_rotation * std::numbers::pi / 180.0;
   lat = generate_fcc(spec);
   if (cs.workpiece.periodic_width) bond_across_periodic_width(cs, spec, lat, periodic);
   return lat;
@@ -287,6 +289,8 @@ void build_meshes(const CaseSettings& cs, Model& model) {
     }
     mb.youngs_modulus = ms.youngs_modulus;
     mb.poisson_ratio = ms.poisson_ratio;
+    mb.parting.lead = ms.parting_lead;
+    mb.parting.behind = std::isfinite(ms.parting_lead) ? ms.parting_lead : 0.0;
     model.meshes.push_back(std::move(mb));
     model.mesh_motion.push_back(motion_from(ms.motion));
   }
@@ -348,6 +352,7 @@ Model build_model(const CaseSettings& cs) {
   auto& r = model.rods;
   r.law = model.derived.law;
   r.area = model.derived.rod_area;
+  r.formation.overlap = cs.rod.bond_overlap;
   r.ends = lat.bonds;
   r.rest_length = lat.rest_length;
   r.reset_state();

@@ -29,6 +29,21 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
           "the Newton solver does not handle contacts yet (it has only the rods' tangent); use the fixed-point "
           "solver with contacts");
   }
+  if (m_.rods.formed.size() != m_.rods.size()) m_.rods.formed.assign(m_.rods.size(), 0);
+  // Parting lines: each mesh's lowest reference vertex (the largest x among equals).
+  for (const MeshBody& mb : m_.meshes) {
+    if (!mb.parting.enabled()) continue;
+    mesh_edge_.assign(m_.meshes.size(), Vec3::Zero());
+    break;
+  }
+  for (std::size_t k = 0; k < mesh_edge_.size(); ++k) {
+    const auto& v = m_.meshes[k].mesh.vertices;
+    if (v.empty()) continue;
+    Vec3 low = v[0];
+    for (const Vec3& p : v)
+      if (p[2] < low[2] || (p[2] == low[2] && p[0] > low[0])) low = p;
+    mesh_edge_[k] = low;
+  }
   block_viscous_.assign(block_count(m_.rods.size()), 0.0);
   block_changed_.assign(block_count(m_.rods.size()), 0);
   const std::size_t ng = m_.groups.size();

@@ -97,6 +97,8 @@ class Simulation {
   const NewtonStats& newton_stats() const { return newton_stats_; }
   const EnergyLedger& ledger() const { return ledger_; }
   std::size_t broken_rods() const { return broken_; }
+  /// Rods formed (or formed again) during the run by bond formation (laws/bond_formation.h).
+  std::size_t formed_rods() const { return formed_; }
 
   /// Rotations are integrated only when on (set by a torque source, or by hand in tests).
   bool rotations() const { return rotations_; }
@@ -159,6 +161,10 @@ class Simulation {
   template <GatherMode Mode, bool Wrap>
   double gather_impl(double h);
   void commit();
+  /// Commit: rods on the meshes' parting lines (laws/parting_rule.h) break; returns their pairs.
+  void part_rods(std::vector<std::array<std::int32_t, 2>>& pairs);
+  /// Commit, last part: rods between pressed unbonded lattice particles (bond_formation.h).
+  void form_rods();
   void account(double h);
 
   void update_free_to_rotate();
@@ -184,6 +190,9 @@ class Simulation {
   double dt_ = 0;
   double last_dt_ = 0;
   std::size_t broken_ = 0;
+  std::size_t formed_ = 0;                // rods formed by bond formation (state: 'formed_rods')
+  std::vector<Vec3> mesh_edge_;           // per mesh: its lowest reference vertex (parting lines), m
+  std::vector<std::uint8_t> lattice_;     // per particle: 1 if built with a rod (bond formation's candidates)
   EnergyLedger ledger_;
   StepStats stats_;
   std::vector<double> block_viscous_;            // per rod block, W

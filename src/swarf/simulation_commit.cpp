@@ -2,6 +2,7 @@
 // evaluation written back, broken rods' pairs handed to the contact lists) and the account
 // stage (energy ledger, reactions, time and counters); see simulation.h.
 #include <cmath>
+#include <unordered_map>
 
 #include "swarf/core/parallel.h"
 #include "swarf/simulation.h"
@@ -46,6 +47,12 @@ void Simulation::commit() {
     broken_ += broke[b];
     any_broke = any_broke || broke[b] > 0;
   }
+  if (!mesh_edge_.empty()) {
+    std::vector<std::array<std::int32_t, 2>> parted;
+    part_rods(parted);
+    any_broke = any_broke || !parted.empty();
+    if (contacts) broken_pairs.push_back(std::move(parted));
+  }
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   if (contacts && any_broke) {
     // Added to the lists as they are: a full rebuild for each break is far dearer
@@ -55,6 +62,87 @@ void Simulation::commit() {
     contacts_.add_pairs(m_.particles, std::move(fresh));
   }
   if (any_broke && rotations_) update_free_to_rotate();
+  if (contacts && r.formation.enabled()) form_rods();
+}
+
+void Simulation::part_rods(std::vector<std::array<std::int32_t, 2>>& pairs) {
+  auto& r = m_.rods;
+  const auto& x = m_.particles.position;
+  const double A = r.area;
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    const PartingRule& rule = m_.meshes[k].parting;
+    if (!rule.enabled()) continue;
+    const Vec3 edge = mesh_edge_[k] + m_.meshes[k].offset;
+    for (std::size_t q = 0; q < r.size(); ++q) {
+      if (!r.intact[q]) continue;
+      // (x and z only: a rod across the periodic width along y needs no image)
+      if (!parts(rule, x[r.ends[q][0]], x[r.ends[q][1]], edge)) continue;
+      r.intact[q] = 0;
+      ledger_.fracture_energy += elastic_energy_density(r.law, r.stress[q]) * A * r.rest_length[q];
+      r.stress[q] = 0.0;
+      ++broken_;
+      pairs.push_back(r.ends[q]);
+    }
+  }
+}
+
+void Simulation::form_rods() {
+  auto& r = m_.rods;
+  const auto& p = m_.particles;
+  if (lattice_.size() != p.size()) {
+    lattice_.assign(p.size(), 0);
+    for (std::size_t k = 0; k < r.size(); ++k)
+      if (!r.formed[k]) lattice_[r.ends[k][0]] = lattice_[r.ends[k][1]] = 1;
+  }
+  // Candidates are unbonded by construction: bonded pairs are not in the contact lists.
+  const auto pressed = contacts_.pressed_pairs(p, r.formation.overlap,
+                                               [&](std::int32_t i, std::int32_t j) { return lattice_[i] && lattice_[j]; });
+  if (pressed.empty()) return;
+  // Intact rods per particle, so that none gets more than the lattice's coordination.
+  auto intact_rods = [&](std::int32_t i) {
+    int c = 0;
+    for (std::int32_t q = r.row_start[i]; q < r.row_start[i + 1]; ++q) c += r.intact[r.entries[q].rod];
+    return c;
+  };
+  std::unordered_map<std::int32_t, int> count;
+  std::vector<std::array<std::int32_t, 2>> formed;
+  for (const auto& e : pressed) {
+    for (auto i : e)
+      if (!count.count(i)) count[i] = intact_rods(i);
+    if (!may_form(r.formation, count[e[0]]) || !may_form(r.formation, count[e[1]])) continue;
+    ++count[e[0]];
+    ++count[e[1]];
+    formed.push_back(e);
+  }
+  if (formed.empty()) return;
+  std::size_t revived = 0;
+  for (const auto& e : formed) {
+    Vec3 d = p.position[e[1]] - p.position[e[0]];
+    m_.periodic.wrap(d);
+    const double length = d.norm();
+    // The pair's broken rod, if it had one, forms again: one rod per pair.
+    std::int32_t rod = -1;
+    for (std::int32_t q = r.row_start[e[0]]; q < r.row_start[e[0] + 1]; ++q)
+      if (r.entries[q].other == e[1]) rod = r.entries[q].rod;
+    if (rod < 0) {
+      r.append_formed(e[0], e[1], length);
+      continue;
+    }
+    r.rest_length[rod] = length;
+    r.inv_rest_length[rod] = 1.0 / length;
+    r.shift[rod] = r.trial_shift[rod] = 0.0;
+    r.stress[rod] = r.force_coef[rod] = 0.0;
+    r.trial_broken[rod] = 0;
+    r.intact[rod] = 1;  // (still one of the lattice's rods: 'formed' marks only new pairs)
+    ++revived;
+  }
+  formed_ += formed.size();
+  broken_ -= revived;
+  r.build_rows(p.size());
+  block_viscous_.resize(block_count(r.size()), 0.0);
+  block_changed_.resize(block_count(r.size()), 0);
+  contacts_.remove_pairs(p, formed);
+  if (rotations_) update_free_to_rotate();
 }
 
 void Simulation::compute_reactions(std::vector<Vec3>& out) const {

@@ -18,6 +18,7 @@ void Simulation::resize_scratch() {
   if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
   if (rotations_) update_free_to_rotate();
   broken_ = m_.rods.broken_count();
+  lattice_.clear();  // (made again from the rods when bond formation next needs it)
   moved2_ = -1.0;
   update_mesh_step_limit();
 }

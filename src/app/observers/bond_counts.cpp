@@ -23,6 +23,7 @@ void BondCounts::row(const Simulation& sim, std::vector<double>& values) {
 void BondCounts::finish(const RunEnd& end, nlohmann::json& summary) {
   summary["results"]["broken_rods"] = end.sim.broken_rods();
   summary["results"]["broken_fraction"] = broken_fraction(end.sim);
+  if (end.sim.world().rods.formation.enabled()) summary["results"]["formed_rods"] = end.sim.formed_rods();
 }
 
 }  // namespace swarf

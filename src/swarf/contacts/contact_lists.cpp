@@ -16,7 +16,7 @@ namespace swarf {
 
 namespace {
 
-// True if particles i and j are joined by an intact rod.
+// True if particles i and j are joined by an intact rod (a pair has one rod at most).
 bool bonded(const Rods& rods, std::int32_t i, std::int32_t j) {
   if (rods.row_start.empty()) return false;
   for (std::int32_t e = rods.row_start[i]; e < rods.row_start[i + 1]; ++e)
@@ -404,6 +404,33 @@ void ContactSystem::add_pairs(const Particles& p, std::vector<std::array<std::in
   pres_.swap(res);
   pe_.swap(pe);
   ptouch_.swap(touch);
+  fill_constants(p);
+  pair_rows(p.size());
+}
+
+void ContactSystem::remove_pairs(const Particles& p, const std::vector<std::array<std::int32_t, 2>>& gone) {
+  if (!enabled_ || gone.empty() || x_build_.size() != p.size()) return;
+  std::size_t out = 0, g = 0;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const Pair q = pairs_[k];
+    auto before = [&](const std::array<std::int32_t, 2>& e) { return e[0] < q.i || (e[0] == q.i && e[1] < q.j); };
+    while (g < gone.size() && before(gone[g])) ++g;
+    if (g < gone.size() && gone[g][0] == q.i && gone[g][1] == q.j) continue;
+    pairs_[out] = q;
+    phist_[out] = phist_[k];
+    ph_[out] = ph_[k];
+    pres_[out] = pres_[k];
+    pe_[out] = pe_[k];
+    ptouch_[out] = ptouch_[k];
+    ++out;
+  }
+  if (out == pairs_.size()) return;
+  pairs_.resize(out);
+  phist_.resize(out);
+  ph_.resize(out);
+  pres_.resize(out);
+  pe_.resize(out);
+  ptouch_.resize(out);
   fill_constants(p);
   pair_rows(p.size());
 }

@@ -29,10 +29,10 @@
 #include "swarf/laws/hertz.h"
 #include "swarf/state/bodies.h"
 #include "swarf/state/mesh.h"
+#include "swarf/state/particles.h"
 
 namespace swarf {
 
-struct Particles;
 struct Rods;
 class StateArchive;
 
@@ -66,6 +66,15 @@ class ContactSystem {
   /// Adds the pairs of rods that just broke to the lists (a full build is not needed: only
   /// those pairs change from bonded to candidates). Keeps the last evaluation's results.
   void add_pairs(const Particles& p, std::vector<std::array<std::int32_t, 2>> pairs);
+
+  /// The candidate pairs (i < j, in list order) whose centres are closer than
+  /// (r_i + r_j)(1 - overlap): the pairs that bond under bond_formation.h. 'keep' filters them
+  /// by their indices (the caller's own rule, e.g. lattice particles only).
+  template <class Keep>
+  std::vector<std::array<std::int32_t, 2>> pressed_pairs(const Particles& p, double overlap, Keep&& keep) const;
+  /// Removes these pairs (i < j, sorted) from the lists with their histories: they were
+  /// bonded. Pairs not in the lists are ignored. Keeps the others' last results.
+  void remove_pairs(const Particles& p, const std::vector<std::array<std::int32_t, 2>>& pairs);
 
   /// Evaluates every contact at the current state over a step of size h (s) from the
   /// committed histories; fills per-contact forces and torques and trial histories.
@@ -215,5 +224,20 @@ class ContactSystem {
   std::vector<Vec3> x_build_;
   std::vector<Vec3> mesh_build_;
 };
+
+template <class Keep>
+std::vector<std::array<std::int32_t, 2>> ContactSystem::pressed_pairs(const Particles& p, double overlap,
+                                                                      Keep&& keep) const {
+  std::vector<std::array<std::int32_t, 2>> out;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    if (!ptouch_[k]) continue;  // (only a touching pair can be pressed)
+    const Pair q = pairs_[k];
+    Vec3 d = p.position[q.j] - p.position[q.i];
+    periodic_.wrap(d);
+    const double reach = (p.radius[q.i] + p.radius[q.j]) * (1.0 - overlap);
+    if (d.squaredNorm() < reach * reach && keep(q.i, q.j)) out.push_back({q.i, q.j});
+  }
+  return out;
+}
 
 }  // namespace swarf

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "swarf/core/vec3.h"
+#include "swarf/laws/parting_rule.h"
 #include "swarf/state/mesh.h"
 
 namespace swarf {
@@ -18,6 +19,7 @@ struct MeshBody {
   double poisson_ratio = 0;      ///< 1
   Vec3 offset = Vec3::Zero();    ///< current translation from the reference, m
   Vec3 velocity = Vec3::Zero();  ///< current velocity, m/s
+  PartingRule parting;           ///< a parting line at the mesh's lowest point (off by default)
 };
 
 }  // namespace swarf

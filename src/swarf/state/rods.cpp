@@ -9,6 +9,7 @@ void Rods::reset_state() {
   const std::size_t m = size();
   shift.assign(m, 0.0);
   intact.assign(m, 1);
+  formed.assign(m, 0);
   trial_shift.assign(m, 0.0);
   trial_broken.assign(m, 0);
   stress.assign(m, 0.0);
@@ -31,6 +32,20 @@ void Rods::build_rows(std::size_t n_particles) {
     entries[fill[ends[r][0]]++] = Entry{static_cast<std::int32_t>(r), ends[r][1]};
     entries[fill[ends[r][1]]++] = Entry{static_cast<std::int32_t>(r), ends[r][0]};
   }
+}
+
+void Rods::append_formed(std::int32_t i, std::int32_t j, double length) {
+  if (i > j) std::swap(i, j);
+  ends.push_back({i, j});
+  rest_length.push_back(length);
+  inv_rest_length.push_back(1.0 / length);
+  shift.push_back(0.0);
+  intact.push_back(1);
+  formed.push_back(1);
+  trial_shift.push_back(0.0);
+  trial_broken.push_back(0);
+  stress.push_back(0.0);
+  force_coef.push_back(0.0);
 }
 
 std::size_t Rods::broken_count() const {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "swarf/core/vec3.h"
+#include "swarf/laws/bond_formation.h"
 #include "swarf/laws/rod_law.h"
 
 namespace swarf {
@@ -20,12 +21,14 @@ namespace swarf {
 struct Rods {
   RodLaw law;         ///< one rod family: the law's parameters
   double area = 0.0;  ///< cross-section A of every rod, m^2
+  BondFormation formation;  ///< when unbonded lattice particles pressed together form a rod (off by default)
 
   std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
   std::vector<double> rest_length;                ///< L0, m
   std::vector<double> inv_rest_length;            ///< 1/L0, 1/m (cached: saves a division per rod and step)
   std::vector<double> shift;                      ///< committed plastic shift eps0, 1
-  std::vector<std::uint8_t> intact;               ///< committed: 1 intact, 0 broken for good
+  std::vector<std::uint8_t> intact;               ///< committed: 1 intact, 0 broken (for good unless 'formation')
+  std::vector<std::uint8_t> formed;               ///< 1 for a rod between a new pair, formed during the run (bond_formation.h)
 
   // Results of the last evaluation (trial state, not committed).
   std::vector<double> trial_shift;         ///< 1
@@ -52,6 +55,7 @@ struct Rods {
     f("inv_rest_length", inv_rest_length);
     f("shift", shift);
     f("intact", intact);
+    f("formed", formed);
     f("trial_shift", trial_shift);
     f("trial_broken", trial_broken);
     f("stress", stress);
@@ -62,8 +66,11 @@ struct Rods {
   void reset_state();
   /// Builds the per-particle rod lists for n particles.
   void build_rows(std::size_t n_particles);
-  /// Number of rods broken for good.
+  /// Number of rods broken.
   std::size_t broken_count() const;
+  /// Appends an intact, stress-free rod of rest length 'length' (m) between i and j, marked
+  /// 'formed'; the rows are stale until build_rows.
+  void append_formed(std::int32_t i, std::int32_t j, double length);
 };
 
 }  // namespace swarf

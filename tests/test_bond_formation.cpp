@@ -1,0 +1,301 @@
+// test_bond_formation.cpp: rods formed between unbonded lattice particles pressed together
+// (laws/bond_formation.h, Simulation::form_rods), and the turned lattice (fcc_lattice.h).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "lattice_gen/fcc_lattice.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+namespace {
+
+constexpr double kR = 1e-3;        // particle radius, m
+constexpr double kE = 2e11;        // rod Young's modulus, Pa
+constexpr double kOverlap = 0.02;  // bond formation threshold, relative overlap
+
+// Two bonded pairs side by side along x, (0, 1) and (2, 3), at rest: particles 1 and 2 are
+// not bonded and overlap by 'gap' (relative: 1 - d / 2R). Particle 4, when 'free', is an
+// unbonded sphere (not of the lattice) overlapping particle 3 by the same amount. Elastic,
+// unbreakable rods; frictionless Hertz contacts; Verlet with a small fixed step.
+struct Scene : World {
+  StepSettings step;
+};
+
+Scene scene(double gap, bool free_sphere) {
+  Scene w;
+  const std::size_t n = free_sphere ? 5 : 4;
+  auto& p = w.particles;
+  p.resize(n);
+  const double d = 2.0 * kR, pressed = d * (1.0 - gap);
+  const double x[5] = {0.0, d, d + pressed, 2.0 * d + pressed, 2.0 * d + 2.0 * pressed};
+  for (std::size_t i = 0; i < n; ++i) {
+    p.position[i] = p.initial_position[i] = Vec3(x[i], 0.0, 0.0);
+    p.radius[i] = kR;
+    p.mass[i] = 1e-5;
+    p.inv_mass[i] = 1e5;
+    p.inertia[i] = Vec3::Constant(0.4 * 1e-5 * kR * kR);
+    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+  }
+  auto& r = w.rods;
+  r.law.youngs_modulus = kE;
+  r.law.yield_strain = HUGE_VAL;
+  r.law.tensile_strength = HUGE_VAL;
+  r.area = std::numbers::pi * kR * kR;
+  r.formation.overlap = kOverlap;
+  r.ends = {{0, 1}, {2, 3}};
+  r.rest_length = {d, d};
+  r.reset_state();
+  r.build_rows(n);
+  w.contacts = true;
+  w.contact.youngs_modulus = 1e9;
+  w.contact.poisson_ratio = 0.3;
+  w.contact.skin = 0.1 * kR;
+  w.step.scheme = Scheme::Verlet;
+  w.step.dt = 1e-8;
+  w.step.length_scale = d;
+  w.step.stiffness_scale = kE * r.area / d;
+  return w;
+}
+
+// The pair's rod (or -1).
+int rod_between(const Rods& r, int i, int j) {
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if ((r.ends[k][0] == i && r.ends[k][1] == j) || (r.ends[k][0] == j && r.ends[k][1] == i)) return int(k);
+  return -1;
+}
+
+TEST(BondFormation, APressedLatticePairFormsAStressFreeRodAtItsDistanceAndLeavesTheContacts) {
+  Scene w = scene(1.5 * kOverlap, false);
+  Simulation sim(w, w.step);
+  ASSERT_EQ(sim.contacts().touching_pairs(), 1u);  // (1, 2) pushes as a contact before the step
+  sim.step();
+  ASSERT_EQ(sim.formed_rods(), 1u);
+  const int k = rod_between(w.rods, 1, 2);
+  ASSERT_EQ(k, 2);  // appended after the lattice's rods
+  EXPECT_EQ(w.rods.formed[k], 1);
+  EXPECT_EQ(w.rods.intact[k], 1);
+  // Rest length: the pair's distance at the commit, exactly.
+  EXPECT_EQ(w.rods.rest_length[k], (w.particles.position[2] - w.particles.position[1]).norm());
+  EXPECT_EQ(w.rods.shift[k], 0.0);
+  // The next evaluation: the pair is bonded, so not a contact, and the rod carries the closed
+  // form E (d - L0) / L0 of its stretch since the commit (elastic rod, no viscosity).
+  const double L0 = w.rods.rest_length[k];
+  sim.step();
+  EXPECT_EQ(sim.contacts().touching_pairs(), 0u);
+  const double strain = ((w.particles.position[2] - w.particles.position[1]).norm() - L0) / L0;
+  EXPECT_NEAR(w.rods.stress[k], kE * strain, 1e-9 * kE * std::abs(strain) + 1e-6);
+  EXPECT_EQ(sim.formed_rods(), 1u);  // once: a bonded pair is no candidate
+}
+
+TEST(BondFormation, APairBelowTheThresholdOrWithAFreeSphereFormsNone) {
+  {
+    Scene w = scene(0.5 * kOverlap, false);  // touching, but pressed less than the threshold
+    Simulation sim(w, w.step);
+    sim.step();
+    EXPECT_EQ(sim.contacts().touching_pairs(), 1u);
+    EXPECT_EQ(sim.formed_rods(), 0u);
+    EXPECT_EQ(w.rods.size(), 2u);
+  }
+  {
+    // Particle 4 is a free sphere: its pair with 3 is pressed as much as (1, 2) but never bonds.
+    Scene w = scene(1.5 * kOverlap, true);
+    Simulation sim(w, w.step);
+    sim.step();
+    EXPECT_EQ(sim.formed_rods(), 1u);
+    EXPECT_EQ(rod_between(w.rods, 3, 4), -1);
+    EXPECT_EQ(rod_between(w.rods, 1, 2), 2);
+  }
+}
+
+TEST(BondFormation, ABrokenRodFormsAgainInsteadOfASecondRodOfThePair) {
+  Scene w = scene(1.5 * kOverlap, false);
+  // Pair (2, 3) is bonded and pressed: mark its rod broken, as if it had failed earlier.
+  w.rods.intact[1] = 0;
+  w.particles.position[3] = w.particles.position[2] + Vec3(2.0 * kR * (1.0 - 1.5 * kOverlap), 0.0, 0.0);
+  Simulation sim(w, w.step);
+  EXPECT_EQ(sim.broken_rods(), 1u);
+  sim.step();
+  EXPECT_EQ(sim.formed_rods(), 2u);  // (1, 2) new, (2, 3) again
+  EXPECT_EQ(w.rods.size(), 3u);      // one new rod only
+  EXPECT_EQ(w.rods.intact[1], 1);
+  EXPECT_EQ(w.rods.formed[1], 0);  // still one of the lattice's rods
+  EXPECT_EQ(sim.broken_rods(), 0u);
+  EXPECT_EQ(w.rods.rest_length[1], (w.particles.position[3] - w.particles.position[2]).norm());
+}
+
+TEST(BondFormation, NoParticleGetsMoreIntactRodsThanTheCoordination) {
+  Scene w = scene(1.5 * kOverlap, false);
+  w.rods.formation.coordination = 1;  // particles 1 and 2 have one rod each already
+  Simulation sim(w, w.step);
+  sim.step();
+  EXPECT_EQ(sim.formed_rods(), 0u);
+  EXPECT_EQ(w.rods.size(), 2u);
+}
+
+// A short plane-strain cut whose rods break and form again: bit-identical on 1 and 2 threads,
+// and the energy balance closes (a formed rod is stress-free, so it adds no energy).
+std::string small_cut() {
+  return R"([workpiece]
+cells = [10, 2, 5]
+radius = 2.0e-5
+periodic_width = true
+[material]
+density = 7870.0
+[rod]
+youngs_modulus = 276.85e9
+flow_plastic_strain = [0.0, 1.0]
+flow_stress = [550.0e6, 550.0e6]
+failure_strain = 0.2
+damping_ratio = 0.1
+bond_overlap = 0.005
+[contact]
+youngs_modulus = 205e9
+poisson_ratio = 0.3
+restitution = 0.5
+friction = 0.5
+[[group]]
+name = "base"
+side = "z-"
+layers = 2
+[[mesh]]
+name = "tool"
+rake_angle = 10.0
+clearance_angle = 7.0
+edge_radius = 2.0e-5
+width = 0.2e-3
+face_length = 0.5e-3
+origin = [-0.05e-3, 0.05e-3, 0.17e-3]
+motion = "velocity"
+velocity = [20.0, 0.0, 0.0]
+[integrator]
+end_time = 1.5e-5
+scheme = "verlet"
+dt_safety = 0.9
+[output]
+vtk = false
+plots = false
+)";
+}
+
+struct CutEnd {
+  std::uint64_t hash;
+  std::size_t formed, broken;
+  double external, error;
+};
+
+CutEnd run_cut(int threads) {
+  omp_set_num_threads(threads);
+  Model m = build_model(parse_case(small_cut(), "cut", {}));
+  Simulation sim(m, m.step);
+  while (sim.time() < m.settings.integrator.end_time) sim.step();
+  const EnergyLedger& l = sim.ledger();
+  const double stored = sim.kinetic_energy() + sim.elastic_energy();  // (kinetic: rotation included)
+  const double error = l.external_work - stored - l.plastic_work - l.viscous_work - l.fracture_energy - l.contact_work;
+  return {sim.state_hash(), sim.formed_rods(), sim.broken_rods(), l.external_work, error};
+}
+
+TEST(BondFormation, ACutThatFormsRodsIsBitIdenticalOnOneAndTwoThreadsAndBalancesEnergy) {
+  const int saved = omp_get_max_threads();
+  const CutEnd a = run_cut(1), b = run_cut(2);
+  omp_set_num_threads(saved);
+  ASSERT_GT(a.formed, 0u);  // the test means nothing unless rods formed
+  ASSERT_GT(a.broken, 0u);
+  EXPECT_EQ(a.hash, b.hash);
+  EXPECT_EQ(a.formed, b.formed);
+  // The explicit scheme's own error (trapezoidal work sums) stays near 0.1 % of the work in
+  // the cuts of validation/cutting; 1 % bounds it with room and fails for any real source.
+  EXPECT_LT(std::abs(a.error), 0.01 * a.external) << a.error << " J of " << a.external << " J";
+}
+
+// A column of three particles along z, bonded 0-1 and 1-2; a small triangle (far from the
+// particles: no contact) whose lowest vertex lies between particles 0 and 1 moves along +x at
+// v towards them from x = -X. Rod 0-1 crosses the plane through that vertex and parts on the
+// first step that ends with the vertex within 'lead' of its midpoint; rod 1-2 never.
+TEST(PartingLine, ARodCrossingTheEdgesPlanePartsWhenTheEdgeIsWithinTheLeadAndNoOtherDoes) {
+  Scene w = scene(0.0, false);
+  auto& p = w.particles;
+  p.resize(3);
+  const double d = 2.0 * kR;
+  for (int i = 0; i < 3; ++i) p.position[i] = p.initial_position[i] = Vec3(0.0, 0.0, d * i);
+  w.rods.ends = {{0, 1}, {1, 2}};
+  w.rods.rest_length = {d, d};
+  w.rods.formation = BondFormation{};  // (off)
+  w.rods.reset_state();
+  w.rods.build_rows(3);
+  const double X = 10.0 * kR, v = 10.0, lead = 0.5 * kR;
+  MeshBody tool;
+  tool.name = "edge";
+  const Vec3 low(-X, 0.0, 0.5 * d);  // between particles 0 and 1
+  tool.mesh.vertices = {low, low + Vec3(-3 * kR, 0.0, 3 * kR), low + Vec3(-3 * kR, 3 * kR, 3 * kR)};
+  tool.mesh.triangles = {{0, 1, 2}};
+  tool.youngs_modulus = HUGE_VAL;
+  tool.poisson_ratio = 0.3;
+  tool.parting.lead = lead;
+  tool.parting.behind = lead;
+  w.meshes = {tool};
+  Motion m;
+  m.kind = Motion::Kind::Velocity;
+  m.velocity = Vec3(v, 0.0, 0.0);
+  w.mesh_motion = {m};
+  Simulation sim(w, w.step);
+  // The step at which the edge, at -X + v t, first comes within 'lead' of x = 0.
+  const double t_part = (X - lead) / v;
+  while (w.rods.intact[0] && sim.time() < 2.0 * t_part) {
+    const double before = sim.time();
+    sim.step();
+    if (!w.rods.intact[0]) {
+      EXPECT_GE(sim.time(), t_part * (1.0 - 1e-12));
+      EXPECT_LT(before, t_part);
+    }
+  }
+  EXPECT_EQ(w.rods.intact[0], 0);  // parted
+  EXPECT_EQ(w.rods.intact[1], 1);  // does not cross the plane
+  EXPECT_EQ(sim.broken_rods(), 1u);
+}
+
+TEST(TurnedLattice, EverySiteKeepsItsTwelveNeighboursInsideAndTheBoxIsTheUnturnedOne) {
+  FccSpec spec;
+  spec.radius = 1e-3;
+  spec.cells = {6, 3, 6};
+  const Lattice plain = generate_fcc(spec);
+  spec.rotation_y = 30.0 * std::numbers::pi / 180.0;
+  const Lattice turned = generate_fcc(spec);
+  // The FCC density, one site per 2 h^3 (h = a/2), over the box [0, 11 h]^2 x 6 y layers:
+  // 11 x 11 x 3 = 363 sites, within the boundary's share (a site's cell cut by a face: 5 %).
+  const double a = plain.cell_edge, lx = (2 * 6 - 1) * 0.5 * a, lz = lx;
+  EXPECT_NEAR(double(turned.position.size()), 363.0, 0.05 * 363.0);
+  std::vector<int> degree(turned.position.size(), 0);
+  for (const auto& b : turned.bonds) {
+    ++degree[b[0]];
+    ++degree[b[1]];
+  }
+  for (std::size_t i = 0; i < turned.position.size(); ++i) {
+    const Vec3& x = turned.position[i];
+    ASSERT_GE(x[0], -1e-9 * a);
+    ASSERT_LE(x[0], lx + 1e-9 * a);
+    ASSERT_GE(x[2], -1e-9 * a);
+    ASSERT_LE(x[2], lz + 1e-9 * a);
+    // A site one neighbour distance (and a y layer) inside every face has all 12.
+    const double d = 2.0 * spec.radius;
+    if (x[0] > d && x[0] < lx - d && x[2] > d && x[2] < lz - d && x[1] > d && x[1] < (2 * 3 - 1) * 0.5 * a - d)
+      EXPECT_EQ(degree[i], 12) << i;
+  }
+  // The cube axes are turned: bonds come in the turned directions, e.g. (cos 30 - sin 30)/sqrt 2
+  // along x for the former [1 0 -1]/sqrt 2, and no bond lies along x itself.
+  int along_x = 0;
+  for (std::size_t k = 0; k < turned.bonds.size(); ++k) {
+    const Vec3 u = (turned.position[turned.bonds[k][1]] - turned.position[turned.bonds[k][0]]).normalized();
+    if (std::abs(std::abs(u[0]) - 1.0) < 1e-9) ++along_x;
+  }
+  EXPECT_EQ(along_x, 0);
+  for (const double L : turned.rest_length) ASSERT_NEAR(L, 2.0 * spec.radius, 1e-12);
+}
+
+}  // namespace
+}  // namespace swarf
