@@ -138,6 +138,90 @@ TEST(BondFormation, NoParticleGetsMoreIntactRodsThanTheCoordination) {
   EXPECT_EQ(w.rods.size(), 2u);
 }
 
+// A centre particle bonded to 12 neighbours on an icosahedron of radius 4R (rods 4R long, the
+// neighbours clear of each other), the first neighbour pulled out to 4.4R (rod strain 0.1, the
+// others 0); a 14th particle, bonded to a partner further out, pressed against the centre along
+// a face's direction beyond the threshold. With neighbour exchange the centre keeps 12 rods:
+// the new one, and the stretched rod to neighbour 0 broken; without it, no rod forms.
+struct Shell {
+  Scene w;
+  int centre = 0, extra = 13;
+};
+
+Shell shell(bool exchange) {
+  Shell s{scene(0.0, false)};
+  World& w = s.w;
+  auto& p = w.particles;
+  const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Vec3> dirs;
+  for (double a : {-1.0, 1.0})
+    for (double b : {-g, g}) {
+      dirs.emplace_back(0.0, a, b);
+      dirs.emplace_back(a, b, 0.0);
+      dirs.emplace_back(b, 0.0, a);
+    }
+  p.resize(15);
+  p.position[0] = Vec3::Zero();
+  w.rods.ends.clear();
+  w.rods.rest_length.clear();
+  for (int k = 0; k < 12; ++k) {
+    const Vec3 u = dirs[k].normalized();
+    p.position[1 + k] = u * (k == 0 ? 4.4 * kR : 4.0 * kR);
+    w.rods.ends.push_back({0, 1 + k});
+    w.rods.rest_length.push_back(4.0 * kR);
+  }
+  // The face (dirs[0], and two of its neighbours on the icosahedron) direction.
+  Vec3 face = Vec3::Zero();
+  for (int k = 1; k < 12 && face.squaredNorm() == 0.0; ++k)
+    for (int l = k + 1; l < 12; ++l) {
+      const Vec3 a = dirs[0].normalized(), b = dirs[k].normalized(), c = dirs[l].normalized();
+      if (a.dot(b) > 0.4 && a.dot(c) > 0.4 && b.dot(c) > 0.4) {
+        face = (a + b + c).normalized();
+        break;
+      }
+    }
+  p.position[13] = face * (2.0 * kR * (1.0 - 1.5 * kOverlap));
+  p.position[14] = face * (2.0 * kR * (1.0 - 1.5 * kOverlap) + 2.0 * kR);
+  w.rods.ends.push_back({13, 14});
+  w.rods.rest_length.push_back(2.0 * kR);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.initial_position[i] = p.position[i];
+    p.radius[i] = kR;
+    p.mass[i] = 1e-5;
+    p.inv_mass[i] = 1e5;
+    p.inertia[i] = Vec3::Constant(0.4 * 1e-5 * kR * kR);
+    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+  }
+  w.rods.formation.exchange = exchange;
+  w.rods.reset_state();
+  w.rods.build_rows(p.size());
+  return s;
+}
+
+TEST(BondFormation, NeighbourExchangeKeepsTheCoordinationAndBreaksTheMostStretchedRod) {
+  for (bool exchange : {false, true}) {
+    Shell s = shell(exchange);
+    Simulation sim(s.w, s.w.step);
+    ASSERT_EQ(sim.contacts().touching_pairs(), 1u);  // only the pressed pair touches
+    sim.step();
+    const Rods& r = s.w.rods;
+    int intact_centre = 0;
+    for (std::size_t k = 0; k < r.size(); ++k)
+      if (r.intact[k] && (r.ends[k][0] == 0 || r.ends[k][1] == 0)) ++intact_centre;
+    EXPECT_EQ(intact_centre, 12) << exchange;
+    if (!exchange) {
+      EXPECT_EQ(sim.formed_rods(), 0u);
+      EXPECT_EQ(sim.broken_rods(), 0u);
+      continue;
+    }
+    EXPECT_EQ(sim.formed_rods(), 1u);
+    EXPECT_EQ(sim.broken_rods(), 1u);
+    EXPECT_EQ(r.intact[0], 0);  // the rod to neighbour 0, strain 0.1: the most stretched
+    for (int k = 1; k < 12; ++k) EXPECT_EQ(r.intact[k], 1) << k;
+    EXPECT_EQ(r.intact[rod_between(r, 0, s.extra)], 1);
+  }
+}
+
 // A short plane-strain cut whose rods break and form again: bit-identical on 1 and 2 threads,
 // and the energy balance closes (a formed rod is stress-free, so it adds no energy).
 std::string small_cut() {
@@ -154,6 +238,7 @@ flow_stress = [550.0e6, 550.0e6]
 failure_strain = 0.2
 damping_ratio = 0.1
 bond_overlap = 0.005
+neighbour_exchange = true
 [contact]
 youngs_modulus = 205e9
 poisson_ratio = 0.3

@@ -154,8 +154,11 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!(d.hardening_modulus < d.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
-  if (!(d.bond_overlap < 1.0 || d.bond_overlap == kInf))
-    r.fail("bond_overlap", r.get("bond_overlap"), "must lie in [0, 1) (a relative overlap), or be inf (never)");
+  if (!((d.bond_overlap > -0.2 && d.bond_overlap < 1.0) || d.bond_overlap == kInf))
+    r.fail("bond_overlap", r.get("bond_overlap"),
+           "must lie in (-0.2, 1) (a relative overlap; below 0 a gap), or be inf (never)");
+  if (d.neighbour_exchange && !(d.bond_overlap < 1.0))
+    r.fail("neighbour_exchange", r.get("neighbour_exchange"), "exchanges neighbours through bond formation: set bond_overlap");
   if (r.has("flow_plastic_strain") || r.has("flow_stress")) {
     for (const char* key : {"yield_strain", "hardening_modulus"})
       if (r.has(key)) r.fail(key, r.get(key), "the hardening curve (flow_plastic_strain, flow_stress) replaces it");

@@ -68,6 +68,7 @@ struct RodSettings {
   std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
   double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
+  bool neighbour_exchange = false;  ///< a particle with 12 rods gives up its most stretched one for a new neighbour
 };
 
 /// [integrator]

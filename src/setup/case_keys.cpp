@@ -260,13 +260,21 @@ const std::vector<Key<RodSettings>>& rod_keys() {
       {.name = "bond_overlap",
        .field = &S::bond_overlap,
        .unit = "1",
-       .range = Range{0.0, kInf, false, false, "in [0, 1), or inf"},
+       .range = Range{-0.2, kInf, true, false, "in (-0.2, 1), or inf"},
        .rule = "below 1; needs `[contact]`",
        .doc = "Bond formation: two particles of the lattice that are not bonded (their rod broke, or they were "
               "never neighbours) and are pressed together until their relative overlap (r_i + r_j - d)/(r_i + "
               "r_j) exceeds this form a rod, stress-free at their distance, when a step has converged. This is "
               "how the lattice flows: a metal's atoms change neighbours where fixed rods would stretch and "
               "harden without bound (docs/materials.md). `inf` means never, the paper's lattice."},
+      {.name = "neighbour_exchange",
+       .field = &S::neighbour_exchange,
+       .rule = "needs `bond_overlap`",
+       .doc = "With bond formation: a particle that already has the lattice's 12 intact rods and is pressed "
+              "against a new neighbour gives up its most stretched rod for the new one (no rod stretched: no new "
+              "rod). Its coordination stays while its neighbours change, which is how a metal flows; the lattice "
+              "then shears at a steady stress instead of hardening without bound or softening into a slip plane "
+              "(validation/cutting/README.md). Without it, a particle with 12 rods forms none."},
   };
   return keys;
 }

@@ -353,6 +353,7 @@ Model build_model(const CaseSettings& cs) {
   r.law = model.derived.law;
   r.area = model.derived.rod_area;
   r.formation.overlap = cs.rod.bond_overlap;
+  r.formation.exchange = cs.rod.neighbour_exchange;
   r.ends = lat.bonds;
   r.rest_length = lat.rest_length;
   r.reset_state();

@@ -419,6 +419,24 @@ void Simulation::rod_forces() {
   view.block_viscous = block_viscous_.data();
   view.block_changed = block_changed_.data();
   evaluate_rods(r.law, r.area, view, m_.periodic);
+  if (!mesh_edge_.empty()) part_rods();
+}
+
+void Simulation::part_rods() {
+  auto& r = m_.rods;
+  const auto& x = m_.particles.position;
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    const PartingRule& rule = m_.meshes[k].parting;
+    if (!rule.enabled()) continue;
+    const Vec3 edge = mesh_edge_[k] + m_.meshes[k].offset;  // (where the prescribe stage put the mesh)
+    for (std::size_t q = 0; q < r.size(); ++q) {
+      // (x and z only: a rod across the periodic width along y needs no image)
+      if (!r.intact[q] || r.trial_broken[q] || !parts(rule, x[r.ends[q][0]], x[r.ends[q][1]], edge)) continue;
+      r.trial_broken[q] = 1;
+      r.force_coef[q] = 0.0;
+      block_changed_[q / kBlock] = 1;
+    }
+  }
 }
 
 void Simulation::save_state() {

@@ -161,8 +161,9 @@ class Simulation {
   template <GatherMode Mode, bool Wrap>
   double gather_impl(double h);
   void commit();
-  /// Commit: rods on the meshes' parting lines (laws/parting_rule.h) break; returns their pairs.
-  void part_rods(std::vector<std::array<std::int32_t, 2>>& pairs);
+  /// After the rod kernel: rods on the meshes' parting lines (laws/parting_rule.h) break in
+  /// this trial (force zero, broken at commit like a rod that failed by its law).
+  void part_rods();
   /// Commit, last part: rods between pressed unbonded lattice particles (bond_formation.h).
   void form_rods();
   void account(double h);

@@ -47,12 +47,7 @@ void Simulation::commit() {
     broken_ += broke[b];
     any_broke = any_broke || broke[b] > 0;
   }
-  if (!mesh_edge_.empty()) {
-    std::vector<std::array<std::int32_t, 2>> parted;
-    part_rods(parted);
-    any_broke = any_broke || !parted.empty();
-    if (contacts) broken_pairs.push_back(std::move(parted));
-  }
+
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   if (contacts && any_broke) {
     // Added to the lists as they are: a full rebuild for each break is far dearer
@@ -63,27 +58,6 @@ void Simulation::commit() {
   }
   if (any_broke && rotations_) update_free_to_rotate();
   if (contacts && r.formation.enabled()) form_rods();
-}
-
-void Simulation::part_rods(std::vector<std::array<std::int32_t, 2>>& pairs) {
-  auto& r = m_.rods;
-  const auto& x = m_.particles.position;
-  const double A = r.area;
-  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-    const PartingRule& rule = m_.meshes[k].parting;
-    if (!rule.enabled()) continue;
-    const Vec3 edge = mesh_edge_[k] + m_.meshes[k].offset;
-    for (std::size_t q = 0; q < r.size(); ++q) {
-      if (!r.intact[q]) continue;
-      // (x and z only: a rod across the periodic width along y needs no image)
-      if (!parts(rule, x[r.ends[q][0]], x[r.ends[q][1]], edge)) continue;
-      r.intact[q] = 0;
-      ledger_.fracture_energy += elastic_energy_density(r.law, r.stress[q]) * A * r.rest_length[q];
-      r.stress[q] = 0.0;
-      ++broken_;
-      pairs.push_back(r.ends[q]);
-    }
-  }
 }
 
 void Simulation::form_rods() {
@@ -105,13 +79,51 @@ void Simulation::form_rods() {
     return c;
   };
   std::unordered_map<std::int32_t, int> count;
-  std::vector<std::array<std::int32_t, 2>> formed;
+  std::vector<std::array<std::int32_t, 2>> formed, exchanged;
+  const double A = r.area;
+  // Neighbour exchange: a particle at the coordination gives up its most stretched rod for
+  // the new one (none stretched: no new rod).
+  auto most_stretched = [&](std::int32_t i) {
+    std::int32_t best = -1;
+    double worst = 0.0;
+    for (std::int32_t q = r.row_start[i]; q < r.row_start[i + 1]; ++q) {
+      const std::int32_t k = r.entries[q].rod;
+      if (!r.intact[k]) continue;
+      Vec3 d = p.position[r.entries[q].other] - p.position[i];
+      m_.periodic.wrap(d);
+      const double strain = d.norm() * r.inv_rest_length[k] - 1.0;
+      if (strain > worst) {
+        worst = strain;
+        best = k;
+      }
+    }
+    return best;
+  };
   for (const auto& e : pressed) {
     for (auto i : e)
       if (!count.count(i)) count[i] = intact_rods(i);
-    if (!may_form(r.formation, count[e[0]]) || !may_form(r.formation, count[e[1]])) continue;
-    ++count[e[0]];
-    ++count[e[1]];
+    std::int32_t give[2] = {-1, -1};
+    bool ok = true;
+    for (int s = 0; s < 2 && ok; ++s) {
+      if (may_form(r.formation, count[e[s]])) continue;
+      give[s] = r.formation.exchange ? most_stretched(e[s]) : -1;
+      ok = give[s] >= 0 && give[s] != give[1 - s];
+    }
+    if (!ok) continue;
+    for (int s = 0; s < 2; ++s) {
+      if (give[s] < 0) {
+        ++count[e[s]];
+        continue;
+      }
+      const std::int32_t k = give[s];
+      r.intact[k] = 0;
+      ledger_.fracture_energy += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
+      r.stress[k] = r.force_coef[k] = 0.0;
+      ++broken_;
+      const std::int32_t other = r.ends[k][0] == e[s] ? r.ends[k][1] : r.ends[k][0];
+      if (count.count(other)) --count[other];
+      exchanged.push_back(r.ends[k]);
+    }
     formed.push_back(e);
   }
   if (formed.empty()) return;
@@ -142,6 +154,7 @@ void Simulation::form_rods() {
   block_viscous_.resize(block_count(r.size()), 0.0);
   block_changed_.resize(block_count(r.size()), 0);
   contacts_.remove_pairs(p, formed);
+  contacts_.add_pairs(p, std::move(exchanged));
   if (rotations_) update_free_to_rotate();
 }
 

@@ -68,7 +68,8 @@ class ContactSystem {
   void add_pairs(const Particles& p, std::vector<std::array<std::int32_t, 2>> pairs);
 
   /// The candidate pairs (i < j, in list order) whose centres are closer than
-  /// (r_i + r_j)(1 - overlap): the pairs that bond under bond_formation.h. 'keep' filters them
+  /// (r_i + r_j)(1 - overlap): the pairs that bond under bond_formation.h (overlap < 0: a gap,
+  /// found only within the lists' skin). 'keep' filters them
   /// by their indices (the caller's own rule, e.g. lattice particles only).
   template <class Keep>
   std::vector<std::array<std::int32_t, 2>> pressed_pairs(const Particles& p, double overlap, Keep&& keep) const;
@@ -230,7 +231,7 @@ std::vector<std::array<std::int32_t, 2>> ContactSystem::pressed_pairs(const Part
                                                                       Keep&& keep) const {
   std::vector<std::array<std::int32_t, 2>> out;
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    if (!ptouch_[k]) continue;  // (only a touching pair can be pressed)
+    if (overlap >= 0.0 && !ptouch_[k]) continue;  // (only a touching pair can be pressed)
     const Pair q = pairs_[k];
     Vec3 d = p.position[q.j] - p.position[q.i];
     periodic_.wrap(d);

@@ -10,6 +10,12 @@
 // when the step that pressed it converged. A rod that broke before between the same two
 // particles is the one that forms again (each pair has at most one rod).
 //
+// Forming alone adds rods: a particle that keeps its 12 and gains more hardens the lattice
+// without bound. Neighbour exchange keeps the coordination: a particle at 12 gives up its most
+// stretched rod for the new one. With it, a DEM simple-shear test flows at a steady stress
+// (validation/cutting/README.md); without rod failure by strain it is what lets the lattice flow.
+// A negative overlap is a gap: pairs of the contact lists closer than (r_i + r_j)(1 + |overlap|).
+//
 // The rule is decided at commit, like breakage, so an implicit step's iterations never see it.
 // It adds no energy: the new rod is stress-free; the Hertz energy the pair's contact held stays
 // in the contacts' ledger (what they took up), as it does when a contact separates.
@@ -21,11 +27,16 @@ namespace swarf {
 
 struct BondFormation {
   /// Relative overlap (r_i + r_j - d) / (r_i + r_j) beyond which an unbonded pair bonds, 1,
-  /// in [0, 1). inf (or NaN): never, the paper's lattice, whose rods only break.
+  /// in (-0.2, 1) (below 0: a gap, within the contact skin). inf (or NaN): never, the paper's
+  /// lattice, whose rods only break.
   double overlap = HUGE_VAL;
   /// Most intact rods a particle may have for it to form one more: the FCC lattice's 12. More
   /// would stiffen the particle beyond what the stable step was computed for (12 rods).
   int coordination = 12;
+  /// Neighbour exchange: a particle at the coordination that is pressed against a new
+  /// neighbour gives up its most stretched rod for the new one, so that its coordination stays
+  /// while its neighbours change. Off: it forms no rod.
+  bool exchange = false;
 
   bool enabled() const { return overlap < 1.0; }
 };
