@@ -10,6 +10,7 @@
 #include "io/results_format.h"
 #include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 
 namespace swarf {
 namespace {
@@ -69,7 +70,9 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
       {"thrust_force_per_width_autocorrelation_time_s", finite_or_null(fts.autocorrelation_time * row_interval)},
       {"thrust_force_per_width_effective_samples", finite_or_null(fts.effective_samples)},
       {"thrust_to_cutting_force_ratio", finite_or_null(ratio)},
-      {"thrust_to_cutting_force_ratio_ci95", finite_or_null(batch_ci95_linear(bfc, bft, -ratio / fc, 1 / fc))},
+      // (no steady rows: Fc = 0 and no ratio; 1 / Fc would divide by zero)
+      {"thrust_to_cutting_force_ratio_ci95",
+       finite_or_null(fc != 0 ? batch_ci95_linear(bfc, bft, -ratio / fc, 1 / fc) : NAN)},
       {"steady_batches", fcs.batches},
       {"steady_batch_samples", fcs.batches > 0 ? fcs.batch_size : 0},
       {"broken_fraction", d.broken_rod_fraction}};
@@ -155,6 +158,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
 }
 
 std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip, double broken) {
+  // (nan when the summary lacks it, printed through nan_safe: a NaN with a precision would trap)
   auto num = [](const nlohmann::json& j, const char* k) {
     return j.contains(k) && j[k].is_number() ? j[k].get<double>() : NAN;
   };
@@ -167,44 +171,47 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
       return samples < kSteadyMinSamples
                  ? fmt::format(" (95 % CI{}: unavailable, {} steady rows, {} needed)", of, samples, kSteadyMinSamples)
                  : fmt::format(" (95 % CI{}: unavailable)", of);
-    return fmt::format(" (95 % CI{} +- {:.3g}{})", of, j[key].get<double>() * scale, unit);
+    return fmt::format(" (95 % CI{} +- {:.3g}{})", of, nan_safe(j[key].get<double>() * scale), unit);
   };
   std::string t;
   t += "\n  result (steady part of the cut)          value\n";
   t += fmt::format("  cutting force per width Fc/w    {:>10.4g} +- {:.3g} kN/m{}\n",
-                   num(cutting, "cutting_force_per_width_mean_N_per_m") / 1e3,
-                   num(cutting, "cutting_force_per_width_std_N_per_m") / 1e3,
+                   nan_safe(num(cutting, "cutting_force_per_width_mean_N_per_m") / 1e3),
+                   nan_safe(num(cutting, "cutting_force_per_width_std_N_per_m") / 1e3),
                    ci(cutting, "cutting_force_per_width_ci95_N_per_m", 1e-3, " kN/m", " of the mean", rows));
   t += fmt::format("  thrust force per width Ft/w     {:>10.4g} +- {:.3g} kN/m{}\n",
-                   num(cutting, "thrust_force_per_width_mean_N_per_m") / 1e3,
-                   num(cutting, "thrust_force_per_width_std_N_per_m") / 1e3,
+                   nan_safe(num(cutting, "thrust_force_per_width_mean_N_per_m") / 1e3),
+                   nan_safe(num(cutting, "thrust_force_per_width_std_N_per_m") / 1e3),
                    ci(cutting, "thrust_force_per_width_ci95_N_per_m", 1e-3, " kN/m", " of the mean", rows));
   if (cutting.contains("thrust_to_cutting_force_ratio"))
-    t += fmt::format("  force ratio Ft/Fc               {:>10.3g}{}\n", num(cutting, "thrust_to_cutting_force_ratio"),
+    t += fmt::format("  force ratio Ft/Fc               {:>10.3g}{}\n",
+                     nan_safe(num(cutting, "thrust_to_cutting_force_ratio")),
                      ci(cutting, "thrust_to_cutting_force_ratio_ci95", 1.0, "", "", rows));
-  t += fmt::format("  depth of cut h                  {:>10.4g} mm\n", num(chip, "depth_of_cut_m") * 1e3);
+  t += fmt::format("  depth of cut h                  {:>10.4g} mm\n", nan_safe(num(chip, "depth_of_cut_m") * 1e3));
   if (chip.contains("thickness_m")) {
     const std::size_t hc_rows = chip.value("thickness_rows", std::size_t(0));
-    t += fmt::format("  chip thickness h_c              {:>10.4g} mm", num(chip, "thickness_m") * 1e3);
+    t += fmt::format("  chip thickness h_c              {:>10.4g} mm", nan_safe(num(chip, "thickness_m") * 1e3));
     if (chip.contains("thickness_p10_m"))
-      t += fmt::format(" (median of {} rows; 10-90 %: {:.3g} to {:.3g})", hc_rows, num(chip, "thickness_p10_m") * 1e3,
-                       num(chip, "thickness_p90_m") * 1e3);
+      t += fmt::format(" (median of {} rows; 10-90 %: {:.3g} to {:.3g})", hc_rows,
+                       nan_safe(num(chip, "thickness_p10_m") * 1e3), nan_safe(num(chip, "thickness_p90_m") * 1e3));
     t += ci(chip, "thickness_ci95_m", 1e3, " mm", " of the median", hc_rows) + "\n";
-    t += fmt::format("  compression ratio r = h/h_c     {:>10.3f}{}\n", num(chip, "compression_ratio"),
+    t += fmt::format("  compression ratio r = h/h_c     {:>10.3f}{}\n", nan_safe(num(chip, "compression_ratio")),
                      ci(chip, "compression_ratio_ci95", 1.0, "", "", hc_rows));
-    t += fmt::format("  shear angle phi (from r)        {:>10.1f} deg{}\n", num(chip, "shear_angle_deg"),
+    t += fmt::format("  shear angle phi (from r)        {:>10.1f} deg{}\n", nan_safe(num(chip, "shear_angle_deg")),
                      ci(chip, "shear_angle_ci95_deg", 1.0, " deg", "", hc_rows));
   } else {
     t += fmt::format("  chip thickness                  not measured ({} chip particles)\n",
                      chip.value("chip_particles", 0));
   }
-  t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg{}\n", num(chip, "friction_angle_deg"),
+  t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg{}\n", nan_safe(num(chip, "friction_angle_deg")),
                    ci(chip, "friction_angle_ci95_deg", 1.0, " deg", "", rows));
-  t += fmt::format("  Merchant 45 + alpha/2 - beta/2  {:>10.1f} deg{}\n", num(chip, "merchant_shear_angle_deg"),
+  t += fmt::format("  Merchant 45 + alpha/2 - beta/2  {:>10.1f} deg{}\n",
+                   nan_safe(num(chip, "merchant_shear_angle_deg")),
                    ci(chip, "merchant_shear_angle_ci95_deg", 1.0, " deg", "", rows));
-  t += fmt::format("  broken-rod fraction             {:>10.2f} %\n", 100.0 * broken);
+  t += fmt::format("  broken-rod fraction             {:>10.2f} %\n", nan_safe(100.0 * broken));
   if (chip.contains("packing_volume_m3"))
-    t += fmt::format("  chip volume (particles x a^3/4) {:>10.4g} mm^3\n", num(chip, "packing_volume_m3") * 1e9);
+    t += fmt::format("  chip volume (particles x a^3/4) {:>10.4g} mm^3\n",
+                     nan_safe(num(chip, "packing_volume_m3") * 1e9));
   // What the two spreads mean, and the cross-check of the batches' length.
   if (cutting.contains("cutting_force_per_width_ci95_N_per_m")) {
     t += "  (+- after a force: its standard deviation over the steady part; 95 % CI: the confidence interval of the\n"
@@ -214,10 +221,12 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
           " from {} batch means of {} rows (Student t, {} dof); effective rows n/tau of {}: Fc {:.3g}, "
           "Ft {:.3g}",
           cutting.value("steady_batches", 0), cutting.value("steady_batch_samples", 0),
-          cutting.value("steady_batches", 0) - 1, rows, num(cutting, "cutting_force_per_width_effective_samples"),
-          num(cutting, "thrust_force_per_width_effective_samples"));
+          cutting.value("steady_batches", 0) - 1, rows,
+          nan_safe(num(cutting, "cutting_force_per_width_effective_samples")),
+          nan_safe(num(cutting, "thrust_force_per_width_effective_samples")));
       if (chip.contains("thickness_effective_rows"))
-        t += fmt::format(", h_c {:.3g} of {}", num(chip, "thickness_effective_rows"), chip.value("thickness_rows", 0));
+        t += fmt::format(", h_c {:.3g} of {}", nan_safe(num(chip, "thickness_effective_rows")),
+                         chip.value("thickness_rows", 0));
     } else {
       t += fmt::format(" from batch means, which need {} steady rows", kSteadyMinSamples);
     }

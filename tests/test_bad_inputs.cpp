@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "app/observers/energy_balance.h"
 #include "io/h5file.h"
 #include "io/mesh_file.h"
 #include "lattice_gen/fcc_lattice.h"
@@ -55,9 +56,15 @@ std::string message_of(const std::function<void()>& f) {
 
 TEST(BadInput, AbsurdSizesThatMakeTheStepNaNOrZeroAreRefusedNotRetriedForEver) {
   TempDir dir("bad_step");
+  // Without floating-point traps: these sizes overflow on the way to the step (the lattice's
+  // pair search squares 1e300 m, compute_derived divides by a mass of 1e-310 kg) and are
+  // refused when the step comes out non-finite. Refusing them before (a range for the radius
+  // and the density in the key table) would let the traps stay on here.
+  ::setenv("SWARF_FP_TRAPS", "0", 1);
   expect_refused(run_bar(dir, "--set workpiece.radius=1e300"), "not a finite positive time");
   expect_refused(run_bar(dir, "--set workpiece.radius=1e-300"), "not a finite positive time");
   expect_refused(run_bar(dir, "--set material.density=1e-300"), "not a finite positive time");
+  ::setenv("SWARF_FP_TRAPS", "1", 1);
 }
 
 TEST(BadInput, OutputIntervalsThatCouldNeverAdvanceAreRefused) {
@@ -358,6 +365,65 @@ TEST(BadInput, AClosedOrFullStderrDoesNotAbortTheProgram) {
     const auto r = run_command(fmt::format("{} run --set foo.bar=1 {}; echo \"exit=$?\"", SWARF_BINARY, redirect));
     EXPECT_NE(r.output.find("exit=2"), std::string::npos) << redirect << ": " << r.output;
   }
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Explicit Verlet forced to 3 times its stable step used to complete the pulled bar with an
+// energy error 1e3 times the work (rods breaking, the lattice gaining energy from nothing).
+// The balance each series row computes now stops it, with exit code 3 and the numbers named;
+// the same bar at its own step completes (the check does not fire on a good run).
+TEST(BadInput, AnExplicitStepForcedBeyondItsStableSizeStopsWhenTheEnergyBalanceIsLost) {
+  TempDir dir("energy_lost");
+  const auto ok = run_bar(dir, "--set integrator.scheme='\"verlet\"'");
+  ASSERT_EQ(ok.exit_code, 0) << ok.output;
+  // The stable step as the set-up prints it: "stable step 1.325e-07 s".
+  const std::size_t at = ok.output.find("stable step ");
+  ASSERT_NE(at, std::string::npos) << ok.output;
+  const double dt_stable = std::stod(ok.output.substr(at + 12));
+  const auto r = run_bar(dir, fmt::format("--set integrator.scheme='\"verlet\"' --set integrator.dt={:.6g} "
+                                          "--set integrator.allow_unstable_dt=true",
+                                          3 * dt_stable));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  for (const char* word : {"energy balance lost at t = ", "energy error", "external work", "allow_unstable_dt"})
+    EXPECT_NE(r.output.find(word), std::string::npos) << "the message should name '" << word << "':\n" << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/summary.json"));
+}
+
+// The bound itself: an error up to the larger of |work| and the energy held passes, beyond it
+// (or NaN) stops; a body at rest (every term 0 J) passes.
+TEST(EnergyCheck, StopsOnlyWhenTheErrorExceedsTheWorkAndTheEnergyHeld) {
+  EnergyBalanceNow b;
+  EXPECT_NO_THROW(check_energy_balance(b, 0.0));
+  b.external_work = 2.0;
+  b.kinetic = 0.5;
+  b.elastic = 0.5;
+  b.error = -kMaxEnergyErrorRatio * 2.0;
+  EXPECT_NO_THROW(check_energy_balance(b, 1.0));
+  b.error = -kMaxEnergyErrorRatio * 2.0 * (1 + 1e-9);
+  EXPECT_THROW(check_energy_balance(b, 1.0), SimulationError);
+  b.external_work = -0.1;  // (negative work: its size counts) and energy held 3 J
+  b.contact = 2.0;
+  b.error = 2.9;
+  EXPECT_NO_THROW(check_energy_balance(b, 1.0));
+  b.error = 3.1;
+  EXPECT_THROW(check_energy_balance(b, 1.0), SimulationError);
+  b.error = std::nan("");
+  EXPECT_THROW(check_energy_balance(b, 1.0), SimulationError);
+  b.error = 3.1;
+  std::string m = "(no error)";
+  try {
+    check_energy_balance(b, 2.5e-6);
+  } catch (const SimulationError& e) {
+    m = e.what();
+  }
+  EXPECT_NE(m.find("t = 2.5e-06 s"), std::string::npos) << m;
+  EXPECT_NE(m.find("energy error 3.1 J"), std::string::npos) << m;
+  EXPECT_NE(m.find("external work -0.1 J"), std::string::npos) << m;
 }
 
 }  // namespace

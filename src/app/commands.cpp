@@ -140,6 +140,9 @@ struct RunCommand final : Command {
         ->allow_extra_args(false);
     sub->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
     sub->add_flag("--force", ro.force, "Run even if the case's memory estimate exceeds the machine's memory");
+    sub->add_flag("--no-energy-check{false}", ro.energy_check,
+                  "Run on when the energy error exceeds the external work and the energy held (a sign of an "
+                  "unstable step; docs/outputs.md)");
     sub->add_option("--restart", ro.restart,
                     "Continue from a checkpoint (DIR/checkpoint.h5, written every "
                     "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");

@@ -139,7 +139,7 @@ void run_case(const RunOptions& opt) {
   const std::string dir = prepare_run_directory(opt);
 
   Simulation sim(model, model.step);
-  ObserverSet observers(sim, observers_for(model));
+  ObserverSet observers(sim, observers_for(model, opt.energy_check));
   RunOutputs outputs(dir, model, sim, observers, stored);
   if (opt.restart.empty())
     outputs.begin();

@@ -15,6 +15,7 @@ struct RunOptions {
   std::vector<std::string> overrides;  ///< --set key=value
   int threads = 0;                     ///< 0 = OpenMP default
   bool force = false;                  ///< --force: run a case whose memory estimate exceeds the machine's
+  bool energy_check = true;            ///< false (--no-energy-check): a lost energy balance does not stop the run
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

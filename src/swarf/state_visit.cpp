@@ -119,7 +119,8 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("stats/last_iterations", stats_.last_iterations);
   if (contacts_.enabled()) contacts_.visit_state(ar, p);
   if (load) {
-    if (!(time_ >= 0.0 && std::isfinite(time_)) || !(dt_ > 0.0 && std::isfinite(dt_)) || !std::isfinite(last_dt_))
+    // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
+    if (!(std::isfinite(time_) && time_ >= 0.0) || !(std::isfinite(dt_) && dt_ > 0.0) || !std::isfinite(last_dt_))
       throw InputError(
           fmt::format("state fields 'time' = {} s, 'dt' = {} s, 'last_dt' = {} s: not finite times "
                       "(time >= 0, dt > 0)",

@@ -12,11 +12,11 @@
 
 namespace swarf {
 
-std::vector<std::unique_ptr<Observer>> observers_for(const Model& model) {
+std::vector<std::unique_ptr<Observer>> observers_for(const Model& model, bool energy_check) {
   std::vector<std::unique_ptr<Observer>> obs;
   if (model.uniaxial.enabled) obs.push_back(std::make_unique<UniaxialProbe>(model));
   obs.push_back(std::make_unique<StepCounters>(model.settings.integrator.end_time, model.particles.size()));
-  obs.push_back(std::make_unique<EnergyBalance>(model.rods.size()));
+  obs.push_back(std::make_unique<EnergyBalance>(model.rods.size(), energy_check));
   obs.push_back(std::make_unique<BondCounts>(model.rods.size()));
   obs.push_back(std::make_unique<GroupReactions>(model.groups));
   obs.push_back(std::make_unique<MeshForces>(model.meshes));

@@ -12,7 +12,8 @@ struct Model;
 
 /// The uniaxial probe (with [uniaxial]), the step counters, the energy balance, the bond
 /// counts, the group reactions, the mesh forces and the cut probe (with a tool mesh and a
-/// workpiece); they hold 'model' by reference.
-std::vector<std::unique_ptr<Observer>> observers_for(const Model& model);
+/// workpiece); they hold 'model' by reference. 'energy_check': a lost energy balance stops
+/// the run (EnergyBalance).
+std::vector<std::unique_ptr<Observer>> observers_for(const Model& model, bool energy_check = true);
 
 }  // namespace swarf

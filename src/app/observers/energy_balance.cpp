@@ -4,7 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
@@ -27,6 +30,26 @@ EnergyBalanceNow EnergyBalance::measure(const Simulation& sim) const {
   return b;
 }
 
+void check_energy_balance(const EnergyBalanceNow& b, double t) {
+  const double held = b.kinetic + b.elastic + b.contact;
+  const double scale = std::max(std::abs(b.external_work), held);
+  // (the round-off floor: a body at rest has every term 0 J, and a balance kept to the last
+  // digits of its largest term is kept whatever the scale)
+  const double roundoff = 1e-12 * (std::abs(b.external_work) + held + std::abs(b.potential) + b.plastic_work +
+                                   b.viscous_work + b.fracture_energy + std::abs(b.contact_work));
+  // (a NaN error is lost too; std::isgreater is the comparison that does not raise FE_INVALID
+  // on a NaN, and the numbers are printed through nan_safe for the same reason)
+  if (!std::isfinite(b.error) || std::isgreater(std::abs(b.error), std::max(kMaxEnergyErrorRatio * scale, roundoff)))
+    throw SimulationError(fmt::format(
+        "energy balance lost at t = {:.6g} s: energy error {:.4g} J against external work {:.4g} J and "
+        "kinetic + elastic + contact energy {:.4g} J (the error may be at most {:g} times the larger); plastic "
+        "{:.4g} J, viscous {:.4g} J, fracture {:.4g} J, contact work {:.4g} J. The step is probably "
+        "beyond its stable size (integrator.dt with allow_unstable_dt) or too large for the loads "
+        "(swarf run --no-energy-check runs on)",
+        nan_safe(t), nan_safe(b.error), nan_safe(b.external_work), nan_safe(held), kMaxEnergyErrorRatio,
+        nan_safe(b.plastic_work), nan_safe(b.viscous_work), nan_safe(b.fracture_energy), nan_safe(b.contact_work)));
+}
+
 void EnergyBalance::columns(std::vector<std::string>& names) const {
   names.insert(names.end(), {"kinetic_energy", "rotational_energy", "elastic_energy", "contact_energy", "contact_work",
                              "potential_energy", "external_work", "plastic_work", "viscous_work", "fracture_energy",
@@ -35,6 +58,7 @@ void EnergyBalance::columns(std::vector<std::string>& names) const {
 
 void EnergyBalance::row(const Simulation& sim, std::vector<double>& values) {
   const EnergyBalanceNow b = measure(sim);
+  if (check_) check_energy_balance(b, sim.time());
   values.insert(values.end(), {b.kinetic, b.rotational, b.elastic, b.contact, b.contact_work, b.potential,
                                b.external_work, b.plastic_work, b.viscous_work, b.fracture_energy, b.error});
 }
