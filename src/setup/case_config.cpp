@@ -36,7 +36,8 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
   if (w.periodic_width && has_cells && w.cells[1] < 2)
     r.fail("cells", r.get("cells"), "a periodic width needs at least 2 cells across y (NY >= 2)");
   if (!w.lattice_file.empty() && r.has("lattice_rotation"))
-    r.fail("lattice_rotation", r.get("lattice_rotation"), "turns a generated lattice; lattice_file's positions are used as they are");
+    r.fail("lattice_rotation", r.get("lattice_rotation"),
+           "turns a generated lattice; lattice_file's positions are used as they are");
   if (!w.lattice_file.empty() && (r.has("radius") || r.has("bond_tolerance"))) {
     const char* key = r.has("radius") ? "radius" : "bond_tolerance";
     r.fail(key, r.get(key), "radii and bonds come from lattice_file; remove this key");
@@ -158,7 +159,8 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
     r.fail("bond_overlap", r.get("bond_overlap"),
            "must lie in (-0.2, 1) (a relative overlap; below 0 a gap), or be inf (never)");
   if (d.neighbour_exchange && !(d.bond_overlap < 1.0))
-    r.fail("neighbour_exchange", r.get("neighbour_exchange"), "exchanges neighbours through bond formation: set bond_overlap");
+    r.fail("neighbour_exchange", r.get("neighbour_exchange"),
+           "exchanges neighbours through bond formation: set bond_overlap");
   if (r.has("flow_plastic_strain") || r.has("flow_stress")) {
     for (const char* key : {"yield_strain", "hardening_modulus"})
       if (r.has(key)) r.fail(key, r.get(key), "the hardening curve (flow_plastic_strain, flow_stress) replaces it");
@@ -288,9 +290,10 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   if (cs.uniaxial.enabled && !cs.workpiece.enabled)
     throw InputError(fmt::format("{}: [uniaxial] needs a [workpiece] (the bar)", source));
   if (cs.rod.bond_overlap < 1.0 && !cs.contact.enabled)
-    throw InputError(fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
-                                 "contacts: add a [contact] table",
-                                 source, cs.rod.bond_overlap));
+    throw InputError(
+        fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
+                    "contacts: add a [contact] table",
+                    source, cs.rod.bond_overlap));
   if (!cs.workpiece.enabled && cs.particles.empty() && cs.particles_file.file.empty())
     throw InputError(
         fmt::format("{}: no particles: give a [workpiece], [[particle]] tables or [particles] file", source));

@@ -191,9 +191,9 @@ class Simulation {
   double dt_ = 0;
   double last_dt_ = 0;
   std::size_t broken_ = 0;
-  std::size_t formed_ = 0;                // rods formed by bond formation (state: 'formed_rods')
-  std::vector<Vec3> mesh_edge_;           // per mesh: its lowest reference vertex (parting lines), m
-  std::vector<std::uint8_t> lattice_;     // per particle: 1 if built with a rod (bond formation's candidates)
+  std::size_t formed_ = 0;             // rods formed by bond formation (state: 'formed_rods')
+  std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m
+  std::vector<std::uint8_t> lattice_;  // per particle: 1 if built with a rod (bond formation's candidates)
   EnergyLedger ledger_;
   StepStats stats_;
   std::vector<double> block_viscous_;            // per rod block, W

@@ -69,8 +69,8 @@ void Simulation::form_rods() {
       if (!r.formed[k]) lattice_[r.ends[k][0]] = lattice_[r.ends[k][1]] = 1;
   }
   // Candidates are unbonded by construction: bonded pairs are not in the contact lists.
-  const auto pressed = contacts_.pressed_pairs(p, r.formation.overlap,
-                                               [&](std::int32_t i, std::int32_t j) { return lattice_[i] && lattice_[j]; });
+  const auto pressed = contacts_.pressed_pairs(
+      p, r.formation.overlap, [&](std::int32_t i, std::int32_t j) { return lattice_[i] && lattice_[j]; });
   if (pressed.empty()) return;
   // Intact rods per particle, so that none gets more than the lattice's coordination.
   auto intact_rods = [&](std::int32_t i) {

@@ -19,8 +19,8 @@
 namespace swarf {
 
 struct Rods {
-  RodLaw law;         ///< one rod family: the law's parameters
-  double area = 0.0;  ///< cross-section A of every rod, m^2
+  RodLaw law;               ///< one rod family: the law's parameters
+  double area = 0.0;        ///< cross-section A of every rod, m^2
   BondFormation formation;  ///< when unbonded lattice particles pressed together form a rod (off by default)
 
   std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
@@ -28,7 +28,7 @@ struct Rods {
   std::vector<double> inv_rest_length;            ///< 1/L0, 1/m (cached: saves a division per rod and step)
   std::vector<double> shift;                      ///< committed plastic shift eps0, 1
   std::vector<std::uint8_t> intact;               ///< committed: 1 intact, 0 broken (for good unless 'formation')
-  std::vector<std::uint8_t> formed;               ///< 1 for a rod between a new pair, formed during the run (bond_formation.h)
+  std::vector<std::uint8_t> formed;  ///< 1 for a rod between a new pair, formed during the run (bond_formation.h)
 
   // Results of the last evaluation (trial state, not committed).
   std::vector<double> trial_shift;         ///< 1
