@@ -30,7 +30,7 @@ const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
       {.name = "radius",
        .field = &S::radius,
        .unit = "m",
-       .range = kPositive,
+       .range = kRadius,
        .rule = "not with `lattice_file`",
        .doc = "Particle radius R. The nearest-neighbour distance and rod length are 2R."},
       {.name = "bond_tolerance",
@@ -87,7 +87,7 @@ const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
 const std::vector<Key<MaterialSettings>>& material_keys() {
   using S = MaterialSettings;
   static const std::vector<Key<S>> keys{
-      {.name = "density", .field = &S::density, .unit = "kg/m^3", .range = kPositive, .doc = "Material density rho."},
+      {.name = "density", .field = &S::density, .unit = "kg/m^3", .range = kDensity, .doc = "Material density rho."},
       {.name = "mass_basis",
        .field = &S::mass_basis,
        .choices = {"cell", "sphere"},
@@ -732,7 +732,7 @@ const std::vector<Key<ParticleSettings>>& particle_keys() {
        .unit = "m",
        .no_default = true,
        .default_note = "required",
-       .range = kPositive,
+       .range = kRadius,
        .doc = "Radius."},
   };
   return keys;
@@ -752,7 +752,7 @@ const std::vector<Key<ParticlesFileSettings>>& particles_file_keys() {
        .unit = "m",
        .no_default = true,
        .default_note = "required",
-       .range = kPositive,
+       .range = kRadius,
        .doc = "Radius of every particle of the file."},
   };
   return keys;
