@@ -119,6 +119,26 @@ TEST(Restart, ADisorderedWorkpieceContinuesBitIdentically) {
   EXPECT_EQ(sb["derived"]["disorder_seed"], 4);
 }
 
+// Rods formed during the run (bond formation with neighbour exchange) are part of the state: a
+// run restarted after formations, on 2 threads, ends in the uninterrupted run's state.
+TEST(Restart, ACutThatFormsAndExchangesRodsContinuesBitIdentically) {
+  test::TempDir dir("restart_formation");
+  const std::string cut = kTinyCut, rod = "[rod]\n";
+  const std::size_t at = cut.find(rod) + rod.size();
+  test::write_file(dir / "c.toml", cut.substr(0, at) + "bond_overlap = 0.0\nneighbour_exchange = true\n" +
+                                       cut.substr(at) + "vtk = false\n");
+  auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 1);
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
+  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  ASSERT_GT(sa["results"]["formed_rods"].get<double>(), 0.0);  // (else the test proves nothing)
+  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
+  EXPECT_EQ(sa["state_hash"], sb["state_hash"]);
+  EXPECT_EQ(sa["results"], sb["results"]);
+}
+
 // A restart into another directory (--out) brings the frames written before the checkpoint
 // along: every file particles.pvd lists is there, the earlier frames are copies and the later
 // ones are computed again, bit for bit as the uninterrupted run wrote them.
