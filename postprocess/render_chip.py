@@ -5,7 +5,7 @@ Usage: render_chip.py RUN_DIR [OUTPUT.png] [--size WxH] [--max-fraction F] [--fr
 
 Reads the last particles frame RUN_DIR/frames/particles_NNNNN.vtu (point data radius and
 broken_fraction), the tool meshes of the same frame RUN_DIR/frames/mesh_<name>_NNNNN.vtp and,
-if present, the chip surface RUN_DIR/chip_surface.vtp (drawn translucent). Particles are
+if present and the frame is the last, the chip surface RUN_DIR/chip_surface.vtp (drawn translucent). Particles are
 spheres of their own radius, coloured by their broken-rod fraction (0 = all rods intact,
 blue, to the colour bar's top, red); meshes are grey. The view looks along +y at the cutting
 plane x-z (x, the cutting direction, to the right; z up), parallel projection; the title gives
@@ -193,10 +193,11 @@ def main():
         ren.AddActor(act)
         mesh_bounds.append(poly.GetBounds())
 
-    # The chip surface (end of the run), translucent over the particles.
+    # The chip surface (end of the run), translucent over the particles: only over the last
+    # frame, since over an earlier one it shows a chip that has not formed yet.
     chip_path = os.path.join(run_dir, "chip_surface.vtp")
     chip_drawn = False
-    if os.path.exists(chip_path):
+    if os.path.exists(chip_path) and frame == frame_files(run_dir, -1)[0]:
         act, poly = polydata_actor(vtk, chip_path, (0.95, 0.75, 0.2))
         if poly.GetNumberOfCells() > 0:
             act.GetProperty().SetOpacity(0.3)
