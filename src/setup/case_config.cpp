@@ -16,6 +16,7 @@
 #include "setup/case_tables.h"
 #include "setup/material_presets.h"
 #include "swarf/core/errors.h"
+#include "swarf/laws/bond_formation.h"
 #include "swarf/laws/flow_curve.h"
 
 namespace swarf {
@@ -158,7 +159,7 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!((d.bond_overlap > -0.2 && d.bond_overlap < 1.0) || d.bond_overlap == kInf))
     r.fail("bond_overlap", r.get("bond_overlap"),
            "must lie in (-0.2, 1) (a relative overlap; below 0 a gap), or be inf (never)");
-  if (d.neighbour_exchange && !(d.bond_overlap < 1.0))
+  if (d.neighbour_exchange && !BondFormation{d.bond_overlap}.enabled())
     r.fail("neighbour_exchange", r.get("neighbour_exchange"),
            "exchanges neighbours through bond formation: set bond_overlap");
   if (r.has("flow_plastic_strain") || r.has("flow_stress")) {
@@ -289,7 +290,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
                     source));
   if (cs.uniaxial.enabled && !cs.workpiece.enabled)
     throw InputError(fmt::format("{}: [uniaxial] needs a [workpiece] (the bar)", source));
-  if (cs.rod.bond_overlap < 1.0 && !cs.contact.enabled)
+  if (BondFormation{cs.rod.bond_overlap}.enabled() && !cs.contact.enabled)
     throw InputError(
         fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
                     "contacts: add a [contact] table",

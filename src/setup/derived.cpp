@@ -9,6 +9,7 @@
 #include "lattice_gen/fcc_lattice.h"
 #include "setup/calibration.h"
 #include "swarf/core/errors.h"
+#include "swarf/laws/bond_formation.h"
 
 namespace swarf {
 
@@ -77,7 +78,7 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   // Bond formation (rod.bond_overlap) lets a flowing particle's 12 rods crowd towards one axis
   // (the FCC lattice spreads them isotropically: sum n n^T = 4 I); the bound of 12 along one
   // axis makes the highest mode omega^2 = 24 kb/m instead of 8 kb/m, the step sqrt(3) shorter.
-  const double modal = cs.rod.bond_overlap < 1.0 ? 24.0 : 8.0;
+  const double modal = BondFormation{cs.rod.bond_overlap}.enabled() ? 24.0 : 8.0;
   d.omega_max = std::sqrt(modal * d.rod_stiffness_max / m);
   // The rod dashpots damp like the stiffness (c/kb times K): the modal damping ratio grows
   // with the frequency, and the zone-boundary mode (omega^2 = 8 kb/m) has twice the ratio of

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarf/core/errors.h"
@@ -30,12 +31,10 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
           "solver with contacts");
   }
   if (m_.rods.formed.size() != m_.rods.size()) m_.rods.formed.assign(m_.rods.size(), 0);
-  // Parting lines: each mesh's lowest reference vertex (the largest x among equals).
-  for (const MeshBody& mb : m_.meshes) {
-    if (!mb.parting.enabled()) continue;
+  // Parting lines: each mesh's lowest reference vertex (the largest x among equals); none
+  // without a parting line, so that the rod stage skips them.
+  if (std::any_of(m_.meshes.begin(), m_.meshes.end(), [](const MeshBody& mb) { return mb.parting.enabled(); }))
     mesh_edge_.assign(m_.meshes.size(), Vec3::Zero());
-    break;
-  }
   for (std::size_t k = 0; k < mesh_edge_.size(); ++k) {
     const auto& v = m_.meshes[k].mesh.vertices;
     if (v.empty()) continue;

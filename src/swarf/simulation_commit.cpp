@@ -47,7 +47,6 @@ void Simulation::commit() {
     broken_ += broke[b];
     any_broke = any_broke || broke[b] > 0;
   }
-
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   if (contacts && any_broke) {
     // Added to the lists as they are: a full rebuild for each break is far dearer
