@@ -167,11 +167,11 @@ TEST(Signals, SigtermEndsARunBetweenStepsWithACheckpointAndTheRestartCompletesIt
   test::TempDir dir("sigterm");
   const std::string out = dir / "cut";
   const std::string script = fmt::format(
-      "{} run --out {} --threads 1 --set integrator.end_time=3e-5 --set output.plots=false --set output.vtk=false "
+      "{} run {} --out {} --threads 1 --set integrator.end_time=3e-5 --set output.plots=false --set output.vtk=false "
       "--set output.checkpoint_every=200 > {} 2>&1 & pid=$!; "
       "n=0; while [ $(cat {}/series.csv.part 2>/dev/null | wc -l) -lt 12 ] && [ $n -lt 2400 ]; do sleep 0.05; "
       "n=$((n+1)); done; kill -TERM $pid; wait $pid; echo \"exit=$?\"",
-      SWARF_BINARY, out, dir / "log", out);
+      SWARF_BINARY, test::linear_cut_case(), out, dir / "log", out);
   const auto r = test::run_command("bash -c '" + script + "'");
   const std::string log = test::read_file(dir / "log");
   ASSERT_NE(r.output.find("exit=143"), std::string::npos) << r.output << log;
@@ -182,7 +182,7 @@ TEST(Signals, SigtermEndsARunBetweenStepsWithACheckpointAndTheRestartCompletesIt
   const auto b = test::run_command(fmt::format("{} run --restart {}/checkpoint.h5 --threads 1", SWARF_BINARY, out));
   ASSERT_EQ(b.exit_code, 0) << b.output;
   EXPECT_EQ(test::read_file(out + "/series.csv"),
-            test::read_file(std::string(SWARF_SOURCE_DIR) + "/tests/data/golden/default_cut_3e-5s_series.csv"));
+            test::read_file(std::string(SWARF_SOURCE_DIR) + "/tests/data/golden/linear_cut_3e-5s_series.csv"));
 }
 
 }  // namespace
@@ -198,9 +198,9 @@ TEST(BadInput, AMeshThatWouldJumpPastTheParticlesInOneStepStopsTheRun) {
   test::TempDir dir("fast_tool");
   for (const char* scheme : {"verlet", "newmark"}) {
     const auto r = run_command(fmt::format(
-        "timeout 120 {} run --out {} --threads 1 --set mesh.0.velocity=[1e6,0,0] --set integrator.end_time=3e-6 "
+        "timeout 120 {} run {} --out {} --threads 1 --set mesh.0.velocity=[1e6,0,0] --set integrator.end_time=3e-6 "
         "--set integrator.scheme='\"{}\"' --set output.plots=false --set output.vtk=false",
-        SWARF_BINARY, dir / "cut", scheme));
+        SWARF_BINARY, test::linear_cut_case(), dir / "cut", scheme));
     EXPECT_EQ(r.exit_code, 3) << scheme << "\n" << r.output;
     EXPECT_NE(r.output.find("mesh 'tool' moves"), std::string::npos) << scheme << "\n" << r.output;
   }
@@ -218,12 +218,13 @@ TEST(BadInput, ASecondRunIntoADirectoryThatARunIsWritingIsRefused) {
   test::TempDir dir("lock");
   const std::string out = dir / "cut";
   const std::string script = fmt::format(
-      "{0} run --out {1} --threads 1 --set integrator.end_time=3e-4 --set output.plots=false --set output.vtk=false "
+      "{0} run {2} --out {1} --threads 1 --set integrator.end_time=3e-4 --set output.plots=false --set "
+      "output.vtk=false "
       "> /dev/null 2>&1 & pid=$!; n=0; while [ ! -e {1}/series.csv.part ] && [ $n -lt 2400 ]; do sleep 0.05; "
       "n=$((n+1)); done; {0} run --out {1} --set integrator.end_time=1e-6; echo \"second=$?\"; kill -KILL $pid; "
       "wait $pid; {0} run --out {1} --set integrator.end_time=1e-7 --set output.plots=false > /dev/null 2>&1; "
       "echo \"third=$?\"",
-      SWARF_BINARY, out);
+      SWARF_BINARY, out, test::linear_cut_case());
   const auto r = test::run_command("bash -c '" + script + "'");
   EXPECT_NE(r.output.find("second=2"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("another swarf run"), std::string::npos) << r.output;
@@ -290,9 +291,9 @@ TEST(DiskFull, AFailedCheckpointNeverReplacesTheLastGoodOne) {
   FullDisk disk(dir / "tiny", "5m");
   if (!disk.ok()) GTEST_SKIP() << "needs root to mount a small tmpfs";
   const auto r = run_command(fmt::format(
-      "timeout 300 {} run --out {} --threads 1 --set integrator.end_time=3e-5 --set output.checkpoint_every=300 "
+      "timeout 300 {} run {} --out {} --threads 1 --set integrator.end_time=3e-5 --set output.checkpoint_every=300 "
       "--set output.vtk=false --set output.plots=false",
-      SWARF_BINARY, dir / "tiny/cut"));
+      SWARF_BINARY, test::linear_cut_case(), dir / "tiny/cut"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("disk full"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "tiny/cut/summary.json"));
@@ -311,9 +312,9 @@ TEST(DiskFull, AFrameThatCannotBeWrittenStopsTheRunAndIsNotRenamed) {
   FullDisk disk(dir / "tiny", "3m");
   if (!disk.ok()) GTEST_SKIP() << "needs root to mount a small tmpfs";
   const auto r = run_command(fmt::format(
-      "timeout 300 {} run --out {} --threads 1 --set integrator.end_time=3e-5 --set output.frame_interval=2e-6 "
+      "timeout 300 {} run {} --out {} --threads 1 --set integrator.end_time=3e-5 --set output.frame_interval=2e-6 "
       "--set output.plots=false",
-      SWARF_BINARY, dir / "tiny/cut"));
+      SWARF_BINARY, test::linear_cut_case(), dir / "tiny/cut"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("cannot write VTK file"), std::string::npos) << r.output;
   for (const auto& e : std::filesystem::directory_iterator(dir / "tiny/cut/frames")) {
@@ -335,7 +336,7 @@ namespace {
 // longer (SIGTERM: it ends after its step) and records why, and the study goes on.
 TEST(BadInput, AStudyCaseLongerThanItsTimeLimitIsStoppedAndRecorded) {
   TempDir dir("case_limit");
-  write_file(dir / "s.toml", fmt::format("base = \"{}/validation/cutting/default_cut.toml\"\ncase_time_limit = 1.0\n"
+  write_file(dir / "s.toml", fmt::format("base = \"{}/validation/cutting/linear_cut.toml\"\ncase_time_limit = 1.0\n"
                                          "[set]\n\"output.plots\" = false\n\"output.vtk\" = false\n"
                                          "[grid]\n\"integrator.end_time\" = [3e-4]\n",
                                          SWARF_SOURCE_DIR));

@@ -59,6 +59,11 @@ inline void write_file(const std::string& path, const std::string& text) {
   out << text;
 }
 
+/// The linear-law steel cut that was the built-in default case until the C45 cut replaced it
+/// (validation/cutting/linear_cut.toml): 4,608 particles, Newmark. The tests that need a
+/// whole cut quickly (signals, full disks, locks, the golden series) run it.
+inline std::string linear_cut_case() { return std::string(SWARF_SOURCE_DIR) + "/validation/cutting/linear_cut.toml"; }
+
 /// A small granular gas: 216 spheres (R = 0.5 mm, a 6^3 array of 1.05 mm spacing) with
 /// pseudo-random velocities (+-0.5 m/s, a fixed sequence) in a 7 mm box of triangle walls,
 /// Hertz with friction 0.5 and restitution 0.5, gravity, explicit steps of 1 us to 3 ms.
