@@ -129,6 +129,28 @@ TEST(BondFormation, ABrokenRodFormsAgainInsteadOfASecondRodOfThePair) {
   EXPECT_EQ(w.rods.rest_length[1], (w.particles.position[3] - w.particles.position[2]).norm());
 }
 
+// A formed rod that broke carries nothing and is dropped at the next formation, so that the
+// kernels do not visit it for the rest of the run; broken_rods counts only the lattice's own.
+TEST(BondFormation, ABrokenFormedRodIsRemovedAtTheNextFormationAndIsNotCountedBroken) {
+  Scene w = scene(1.5 * kOverlap, false);
+  w.rods.append_formed(0, 3, 3.0 * kR);  // a rod formed earlier between 0 and 3 ...
+  w.rods.intact[2] = 0;                  // ... that broke since
+  w.rods.build_rows(w.particles.size());
+  Simulation sim(w, w.step);
+  EXPECT_EQ(sim.broken_rods(), 0u);
+  EXPECT_EQ(w.rods.original_count(), 2u);
+  sim.step();  // (1, 2) forms; the dead rod (0, 3) goes
+  EXPECT_EQ(sim.formed_rods(), 1u);
+  ASSERT_EQ(w.rods.size(), 3u);
+  EXPECT_EQ(rod_between(w.rods, 0, 3), -1);
+  EXPECT_EQ(rod_between(w.rods, 1, 2), 2);
+  EXPECT_EQ(w.rods.formed[2], 1);
+  EXPECT_EQ(sim.broken_rods(), 0u);
+  // The rows are those of the three rods left: particle 0 has its lattice rod only.
+  EXPECT_EQ(w.rods.row_start[1] - w.rods.row_start[0], 1);
+  EXPECT_EQ(w.rods.row_start[w.particles.size()], 6);
+}
+
 TEST(BondFormation, NoParticleGetsMoreIntactRodsThanTheCoordination) {
   Scene w = scene(1.5 * kOverlap, false);
   w.rods.formation.coordination = 1;  // particles 1 and 2 have one rod each already
@@ -368,8 +390,9 @@ TEST(TurnedLattice, EverySiteKeepsItsTwelveNeighboursInsideAndTheBoxIsTheUnturne
     ASSERT_LE(x[2], lz + 1e-9 * a);
     // A site one neighbour distance (and a y layer) inside every face has all 12.
     const double d = 2.0 * spec.radius;
-    if (x[0] > d && x[0] < lx - d && x[2] > d && x[2] < lz - d && x[1] > d && x[1] < (2 * 3 - 1) * 0.5 * a - d)
+    if (x[0] > d && x[0] < lx - d && x[2] > d && x[2] < lz - d && x[1] > d && x[1] < (2 * 3 - 1) * 0.5 * a - d) {
       EXPECT_EQ(degree[i], 12) << i;
+    }
   }
   // The cube axes are turned: bonds come in the turned directions, e.g. (cos 30 - sin 30)/sqrt 2
   // along x for the former [1 0 -1]/sqrt 2, and no bond lies along x itself.

@@ -16,7 +16,7 @@ void Simulation::commit() {
   // Plastic work and fracture energy per rod block, summed in block order.
   const std::size_t nb = block_count(m);
   std::vector<double> plastic(nb, 0.0), fracture(nb, 0.0);
-  std::vector<std::size_t> broke(nb, 0);
+  std::vector<std::size_t> broke(nb, 0), broke_original(nb, 0);
   // The rods that break now, per block: their pairs become contact candidates.
   const bool contacts = contacts_.enabled();
   std::vector<std::vector<std::array<std::int32_t, 2>>> broken_pairs(contacts ? nb : 0);
@@ -36,6 +36,7 @@ void Simulation::commit() {
         fracture[b] += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
         r.stress[k] = 0.0;
         ++broke[b];
+        broke_original[b] += !r.formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
         if (contacts) broken_pairs[b].push_back(r.ends[k]);
       }
     }
@@ -44,7 +45,7 @@ void Simulation::commit() {
   for (std::size_t b = 0; b < nb; ++b) {
     ledger_.plastic_work += plastic[b];
     ledger_.fracture_energy += fracture[b];
-    broken_ += broke[b];
+    broken_ += broke_original[b];
     any_broke = any_broke || broke[b] > 0;
   }
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
@@ -118,7 +119,7 @@ void Simulation::form_rods() {
       r.intact[k] = 0;
       ledger_.fracture_energy += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
       r.stress[k] = r.force_coef[k] = 0.0;
-      ++broken_;
+      broken_ += !r.formed[k];
       const std::int32_t other = r.ends[k][0] == e[s] ? r.ends[k][1] : r.ends[k][0];
       if (count.count(other)) --count[other];
       exchanged.push_back(r.ends[k]);
@@ -145,10 +146,11 @@ void Simulation::form_rods() {
     r.stress[rod] = r.force_coef[rod] = 0.0;
     r.trial_broken[rod] = 0;
     r.intact[rod] = 1;  // (still one of the lattice's rods: 'formed' marks only new pairs)
-    ++revived;
+    revived += !r.formed[rod];
   }
   formed_ += formed.size();
   broken_ -= revived;
+  r.remove_broken_formed();
   r.build_rows(p.size());
   block_viscous_.resize(block_count(r.size()), 0.0);
   block_changed_.resize(block_count(r.size()), 0);

@@ -76,7 +76,8 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
   const auto bf = broken_fraction_per_particle(model_.particles, model_.rods);
   data.position.assign(model_.particles.position.begin(), model_.particles.position.begin() + n);
   data.broken_fraction.assign(bf.begin(), bf.begin() + n);
-  data.broken_rod_fraction = double(end.sim.broken_rods()) / std::max<double>(1.0, double(model_.rods.size()));
+  data.broken_rod_fraction = double(end.sim.broken_rods()) /
+                             std::max<double>(1.0, double(model_.rods.original_count()));
   finish_cut(end.dir, setup_now(), data, summary, end.vtk, end.pictures);
 }
 

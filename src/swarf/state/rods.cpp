@@ -49,7 +49,31 @@ void Rods::append_formed(std::int32_t i, std::int32_t j, double length) {
 }
 
 std::size_t Rods::broken_count() const {
-  return static_cast<std::size_t>(std::count(intact.begin(), intact.end(), std::uint8_t{0}));
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < size(); ++k) n += !intact[k] && !(k < formed.size() && formed[k]);
+  return n;
+}
+
+std::size_t Rods::original_count() const {
+  if (formed.size() != size()) return size();
+  return size() - static_cast<std::size_t>(std::count(formed.begin(), formed.end(), std::uint8_t{1}));
+}
+
+std::size_t Rods::remove_broken_formed() {
+  if (formed.size() != size()) return 0;
+  std::vector<std::uint8_t> keep(size());
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < size(); ++k) kept += keep[k] = intact[k] || !formed[k];
+  if (kept == size()) return 0;
+  auto compact = [&](auto& v) {
+    std::size_t out = 0;
+    for (std::size_t k = 0; k < keep.size(); ++k)
+      if (keep[k]) v[out++] = v[k];
+    v.resize(out);
+  };
+  compact(ends);
+  for_each_field([&](const char*, auto& v) { compact(v); });
+  return keep.size() - kept;
 }
 
 }  // namespace swarf

@@ -66,8 +66,16 @@ struct Rods {
   void reset_state();
   /// Builds the per-particle rod lists for n particles.
   void build_rows(std::size_t n_particles);
-  /// Number of rods broken.
+  /// Number of the lattice's own rods (those not formed during the run) that are broken. A
+  /// formed rod that breaks is removed (remove_broken_formed), so it is not counted.
   std::size_t broken_count() const;
+  /// Number of the lattice's own rods (those not formed during the run).
+  std::size_t original_count() const;
+  /// Removes the formed rods that are broken and returns how many. They carry no force, and a
+  /// pair that forms again gets a new rod, as a virgin as a revived one would be, so nothing is
+  /// lost; without this, every neighbour exchange would leave a dead rod that the kernels visit
+  /// for the rest of the run. The others keep their order; the rows are stale until build_rows.
+  std::size_t remove_broken_formed();
   /// Appends an intact, stress-free rod of rest length 'length' (m) between i and j, marked
   /// 'formed'; the rows are stale until build_rows.
   void append_formed(std::int32_t i, std::int32_t j, double length);
