@@ -3,6 +3,7 @@
 // a cube plane loads only the two (1,0,+-1) rods, at strains +-gamma/2, with
 // tau = (3/2)(E100/E_rod) s; uniaxial tension along [100] loads every rod at eps/3. The
 // finite-strain response is the material lab's (test_lattice_material.cpp).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -180,6 +181,33 @@ TEST(MaterialPreset, BadInputNamed) {
   EXPECT_NE(falling.find("flow_stress"), std::string::npos) << falling;
   const std::string no_curve = with("youngs_modulus = 2e11\nyield_stress = 4e8\nfailure_strain = 1");
   EXPECT_NE(no_curve.find("failure_strain"), std::string::npos) << no_curve;
+}
+
+// rod.failure_elongation is a failure strain of the lattice's rod length, L0 = 2R: the same
+// stretch at every radius. Exact to rounding (one division); the law then breaks a rod stretched
+// just beyond it and not one just short of it.
+TEST(FailureElongation, SetsTheFailureStrainOfTheLatticeRodAtEveryRadius) {
+  constexpr double kElongation = 2.5e-5;  // m
+  for (const double radius : {1e-5, 2e-5}) {
+    const std::string text = fmt::format(
+        "[workpiece]\ncells = [2, 2, 2]\nradius = {}\n[material]\ndensity = 7870.0\n[rod]\nyoungs_modulus = 2e11\n"
+        "flow_plastic_strain = [0.0, 0.1]\nflow_stress = [3e8, 4e8]\nfailure_elongation = {}\n[integrator]\n"
+        "end_time = 1e-8\n",
+        radius, kElongation);
+    const Model m = build_model(parse_case(text, "m.toml", {}));
+    const double want = kElongation / (2.0 * radius);
+    EXPECT_NEAR(m.derived.law.failure_strain, want, 1e-12 * want) << radius;
+    const RodLaw& law = m.derived.law;
+    EXPECT_FALSE(evaluate(law, want * (1 - 1e-9), 0.0, 0.0).broken) << radius;
+    EXPECT_TRUE(evaluate(law, want * (1 + 1e-9), 0.0, 0.0).broken) << radius;
+    // Both keys: refused, naming both.
+    EXPECT_EQ(error_of(text), "");
+    std::string twice = text;
+    twice.replace(twice.find("failure_elongation"), 0, "failure_strain = 1.0\n");
+    const std::string e = error_of(twice);
+    EXPECT_NE(e.find("rod.failure_elongation"), std::string::npos) << e;
+    EXPECT_NE(e.find("rod.failure_strain"), std::string::npos) << e;
+  }
 }
 
 }  // namespace

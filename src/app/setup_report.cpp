@@ -58,7 +58,10 @@ void print_setup(const Model& m, int threads) {
     fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
                d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
     if (std::isfinite(d.law.failure_strain))
-      fmt::print("  rod: fails at strain {:.4g} in tension\n", d.law.failure_strain);
+      fmt::print("  rod: fails at strain {:.4g} in tension{}\n", d.law.failure_strain,
+                 std::isfinite(m.settings.rod.failure_elongation)
+                     ? fmt::format(" (rod.failure_elongation = {:.4g} m over L0)", m.settings.rod.failure_elongation)
+                     : std::string());
     if (m.rods.formation.enabled())
       fmt::print("  rod: unbonded lattice particles pressed beyond a relative overlap of {:.4g} form a rod\n",
                  m.rods.formation.overlap);

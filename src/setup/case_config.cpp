@@ -159,6 +159,10 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!((d.bond_overlap > -0.2 && d.bond_overlap < 1.0) || d.bond_overlap == kInf))
     r.fail("bond_overlap", r.get("bond_overlap"),
            "must lie in (-0.2, 1) (a relative overlap; below 0 a gap), or be inf (never)");
+  if (r.has("failure_elongation") && r.has("failure_strain"))
+    r.fail(
+        "failure_elongation", r.get("failure_elongation"),
+        "sets the failure strain (failure_elongation / L0): give one of rod.failure_strain and rod.failure_elongation");
   if (d.neighbour_exchange && !BondFormation{d.bond_overlap}.enabled())
     r.fail("neighbour_exchange", r.get("neighbour_exchange"),
            "exchanges neighbours through bond formation: set bond_overlap");

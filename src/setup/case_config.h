@@ -64,6 +64,7 @@ struct RodSettings {
   double hardening_modulus = 0.0;           ///< slope k of the plastic branch, Pa, 0 <= k < E
   double tensile_strength = kInf;           ///< sigma_max, Pa; inf = unbreakable
   double failure_strain = kInf;             ///< rod strain in tension at which a rod breaks, 1; inf = never
+  double failure_elongation = kInf;         ///< stretch L - L0 at which a rod breaks, m; inf = never
   std::vector<double> flow_plastic_strain;  ///< hardening curve: plastic strains of its points, 1 (first 0)
   std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1

@@ -232,6 +232,17 @@ const std::vector<Key<RodSettings>>& rod_keys() {
        .doc = "The rod breaks when its strain (L - L0)/L0 exceeds this in tension, whatever its stress: failure by "
               "strain, for a ductile metal whose flow curve may never reach `tensile_strength`. `inf` means "
               "never."},
+      {.name = "failure_elongation",
+       .field = &S::failure_elongation,
+       .unit = "m",
+       .range = kPositiveOrInf,
+       .rule = "not with `failure_strain` (it sets it: failure_elongation / L0); with `[material]` it replaces the "
+               "calibrated failure strain",
+       .doc = "The rod breaks when it is stretched by this length beyond its rest length in tension. A failure "
+              "strain fixed in strain lets every broken rod dissipate its plastic work over a band of broken rods "
+              "one or two particles thick, so the work to part the material grows with the particle size; a fixed "
+              "elongation keeps that work per unit area of a parted surface the same at every resolution (the crack "
+              "band regularisation of FEM, Bazant and Oh 1983). `inf` means never."},
       {.name = "flow_plastic_strain",
        .field = &S::flow_plastic_strain,
        .unit = "1",

@@ -57,6 +57,9 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
       rod.tensile_strength = mt.tensile_strength * rod.youngs_modulus / (3.0 * mt.youngs_modulus);
     }
   }
+  // A failure elongation (m) is a failure strain of the lattice's rod length: the same stretch
+  // at every resolution (case-reference.md, rod.failure_elongation).
+  if (std::isfinite(cs.rod.failure_elongation)) rod.failure_strain = cs.rod.failure_elongation / l0;
   if (!rod.flow_plastic_strain.empty()) {
     // The hardening curve carries the hardening (the shift is then the plastic strain); its
     // first stress is the yield stress, its first slope the bar's first hardening tangent.
