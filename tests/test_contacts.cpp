@@ -8,6 +8,7 @@
 #include <random>
 
 #include "io/mesh_file.h"
+#include "scenes/block_on_floor.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/contacts/contacts.h"
@@ -292,45 +293,18 @@ TEST(Impact, RestitutionIsTheSameAtEverySpeed) {
 
 // ---- friction: a block on a tilted floor ---------------------------------------------------
 
-// A bonded block (2 x 2 x 1 cells, 16 particles) on a floor, gravity tilted by 'angle'.
+// A bonded block (2 x 2 x 1 cells, 16 particles) on a floor, gravity tilted by 'angle'
+// (tests/scenes/block_on_floor.h), stepped explicitly.
 Model block_on_floor(double angle, double mu, const std::string& law) {
-  const double g = 9.81;
-  const std::string text = fmt::format(R"([workpiece]
-cells = [2, 2, 1]
-radius = 1e-3
-[material]
-density = 7800.0
-[rod]
-youngs_modulus = 5e9
-[contact]
-youngs_modulus = 5e9
-poisson_ratio = 0.3
-restitution = 0.2
-friction = {mu}
-friction_law = "{law}"
-regularization_speed = 1e-4
-[environment]
-gravity = [{gx:.17g}, 0.0, {gz:.17g}]
-[[mesh]]
-name = "floor"
-origin = [-0.02, -0.02, -0.0009999]
-edge1 = [0.04, 0.0, 0.0]
-edge2 = [0.0, 0.04, 0.0]
-divisions = [3, 3]
-[integrator]
-scheme = "verlet"
-end_time = 1
-)",
-                                       fmt::arg("mu", mu), fmt::arg("law", law), fmt::arg("gx", g * std::sin(angle)),
-                                       fmt::arg("gz", -g * std::cos(angle)));
-  return build_model(parse_case(text, "block", {}));
+  test::BlockOnFloor b;
+  b.angle = angle;
+  b.mu = mu;
+  b.law = law;
+  b.integrator = "scheme = \"verlet\"\nend_time = 1";
+  return build_model(parse_case(test::block_on_floor_case(b), "block", {}));
 }
 
-double mean_x(const Model& m) {
-  double s = 0;
-  for (const auto& x : m.particles.position) s += x[0];
-  return s / double(m.particles.size());
-}
+double mean_x(const Model& m) { return test::mean_x(m.particles.position); }
 
 TEST(Friction, SpringHoldsBelowTheFrictionAngleAndSlidesAbove) {
   const double mu = 0.4, g = 9.81, T = 0.02;

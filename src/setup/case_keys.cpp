@@ -410,14 +410,14 @@ const std::vector<Key<IntegratorSettings>>& integrator_keys() {
       {.name = "solver",
        .field = &S::solver,
        .choices = {"fixed_point", "newton"},
-       .rule = "newton: not with `scheme = \"verlet\"`, nor with `[contact]`",
+       .rule = "newton: not with `scheme = \"verlet\"`",
        .doc = "How the Newmark step is solved. `\"fixed_point\"`: sweeps of force evaluations, convergent only "
-              "below the explicit stable step. `\"newton\"`: Newton-Krylov with the rods' tangent stiffness "
+              "below the explicit stable step. `\"newton\"`: Newton-Krylov with the rods' and contacts' tangent "
+              "stiffness "
               "(conjugate gradients, block-Jacobi preconditioner, matrix-free), which converges beyond it: "
               "`tolerance` then bounds the residual relative to the force level, `max_iterations`, "
               "`iterations_grow` and `iterations_shrink` count Newton iterations, and `dt_max` defaults to 10 x "
-              "the stable step (at most 20 x). With `scheme = \"auto\"`, `\"newton\"` selects Newmark. Rods "
-              "only for now: a case with `[contact]` is refused.",
+              "the stable step (at most 20 x). With `scheme = \"auto\"`, `\"newton\"` selects Newmark.",
        .section = "newmark"},
       {.name = "krylov_tolerance",
        .field = &S::krylov_tolerance,

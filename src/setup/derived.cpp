@@ -145,11 +145,6 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
         fmt::format("{}: integrator.dt_max = {:.6g} s exceeds {} x the stable step ({:.6g} s), the most "
                     "the Newton solver allows",
                     cs.source, d.dt_max, kNewtonDtCap, kNewtonDtCap * d.dt_stable));
-  if (newton && cs.contact.enabled)
-    throw InputError(
-        fmt::format("{}: integrator.solver = \"newton\" does not handle contacts yet (it has only the "
-                    "rods' tangent); use solver = \"fixed_point\" with [contact]",
-                    cs.source));
   // The steps must be finite positive times whatever produced them (an absurd radius,
   // density or modulus makes the stable step 0, inf or NaN, and a NaN step is never "below
   // dt_min": the step control would retry it for ever).

@@ -22,13 +22,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
                     "finite positive time (and dt_min <= dt_max)",
                     dt_, set_.dt_min, set_.dt_max));
   if (set_.solver == Solver::Newton) {
-    // Refused rather than approximated: the Newton solver has no contact tangent yet, and
-    // without it the Jacobian would be wrong wherever a contact acts.
     if (!implicit_) throw InputError("the Newton solver solves the implicit Newmark step: it needs scheme Newmark");
-    if (world.contacts)
-      throw InputError(
-          "the Newton solver does not handle contacts yet (it has only the rods' tangent); use the fixed-point "
-          "solver with contacts");
   }
   if (m_.rods.formed.size() != m_.rods.size()) m_.rods.formed.assign(m_.rods.size(), 0);
   // Parting lines: each mesh's lowest reference vertex (the largest x among equals); none

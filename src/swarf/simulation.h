@@ -20,9 +20,9 @@
 //   the final a+, commit, account. A step that does not converge (or diverges, or moves a particle too far) is
 //   rejected: everything is restored from the saved state, bit for bit, and retried with a smaller step. The number of
 //   sweeps drives the next step size (paper section 3.4).
-// Or, with StepSettings::solver = Solver::Newton (rods only), by Newton-Krylov on the same step's residual
-// (try_newton, integrate/newton_newmark.cpp): the same prescribe, place and rod_forces stages, a CG solve with the
-// rods' tangent between evaluations, the same commit; converges beyond the explicit stable step.
+// Or, with StepSettings::solver = Solver::Newton, by Newton-Krylov on the same step's residual (try_newton,
+// integrate/newton_newmark.cpp): the same prescribe, place, rod_forces and contact_forces stages, a CG solve with
+// the rods' and contacts' tangent between evaluations, the same commit; converges beyond the explicit stable step.
 #pragma once
 
 #include <cstdint>
@@ -144,7 +144,7 @@ class Simulation {
   double newton_residual(double h);  // forces at the placed state, R = M a - F; returns |R| / force level
   void newton_tangent(double h);     // per-rod blocks of J and the particles' block-Jacobi inverses
   int newton_krylov();               // CG on J d = -R; iterations, or -1 if J is not positive definite
-  template <bool Wrap>
+  template <bool Wrap, bool Contacts>
   double newton_residual_impl();
   void newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& out, double& dot);  // out = J x, dot = x.Jx
 

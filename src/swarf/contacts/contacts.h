@@ -49,6 +49,9 @@ struct ContactParams {
 
 class ContactSystem {
  public:
+  struct Pair {  // a sphere-sphere candidate pair, i < j
+    std::int32_t i, j;
+  };
   void setup(const ContactParams& params, std::size_t n_particles, std::vector<MeshBody>* meshes,
              Periodic periodic = {});
   bool enabled() const { return enabled_; }
@@ -142,6 +145,53 @@ class ContactSystem {
   /// Writes the trial histories back (after a converged step).
   void commit();
 
+  // The contacts' part of the Newmark step's Jacobian, for the Newton solver (contact_tangent.cpp;
+  // the rods' part is forces/rod_tangent.h). Each touching contact gets a block
+  // S = kx K + kv C = lateral I + axial n n^T (kx = beta h^2 in s^2, kv = gamma h in s).
+  /// Sets up every contact's block at the current state (that of the latest evaluate(), with
+  /// the same step h) from the committed histories. Parallel over contacts.
+  void tangent(const Particles& p, double h, double kx, double kv);
+  /// Read access to the blocks, for the hot loops of the Krylov solve (valid until the lists
+  /// change or tangent() runs again).
+  struct TangentRows {
+    const Pair* pairs;
+    const std::int32_t *prow, *jrow, *jent, *trow;
+    const Vec3 *paxis, *taxis;        // unit normals, 1
+    const double *paxial, *plateral;  // sphere-sphere blocks, kg
+    const double *taxial, *tlateral;  // sphere-triangle blocks, kg
+    /// Adds particle i's diagonal block (its contacts' S) to b.
+    template <class Matrix>
+    void add_diagonal(std::size_t i, Matrix& b) const {
+      auto add = [&](const Vec3& n, double axial, double lateral) {
+        b.diagonal().array() += lateral;
+        b.noalias() += axial * (n * n.transpose());
+      };
+      for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e)
+        add(paxis[jent[e]], paxial[jent[e]], plateral[jent[e]]);
+      for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) add(paxis[k], paxial[k], plateral[k]);
+      for (std::int32_t k = trow[i], end = trow[i + 1]; k < end; ++k) add(taxis[k], taxial[k], tlateral[k]);
+    }
+    /// The contacts' part of (J d)_i: minus the sum over i's pairs of S (d_other - d_i), plus
+    /// S d_i for each triangle contact (the mesh's motion is prescribed), in a fixed order.
+    Vec3 times(std::size_t i, const Vec3* d) const {
+      Vec3 s = Vec3::Zero();
+      const Vec3 di = d[i];
+      for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e) {
+        const std::int32_t k = jent[e];
+        const Vec3 u = d[pairs[k].i] - di;
+        s -= plateral[k] * u + (paxial[k] * paxis[k].dot(u)) * paxis[k];
+      }
+      for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) {
+        const Vec3 u = d[pairs[k].j] - di;
+        s -= plateral[k] * u + (paxial[k] * paxis[k].dot(u)) * paxis[k];
+      }
+      for (std::int32_t k = trow[i], end = trow[i + 1]; k < end; ++k)
+        s += tlateral[k] * di + (taxial[k] * taxis[k].dot(di)) * taxis[k];
+      return s;
+    }
+  };
+  TangentRows tangent_rows() const;
+
   /// Force the particles exert on each mesh (sums over its contacts in a fixed order), N; one pass.
   void mesh_forces(std::vector<Vec3>& out) const;
   /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
@@ -168,9 +218,6 @@ class ContactSystem {
   // no division for the material law (K, damping and tangential stiffness factor).
   // Sphere-sphere pairs: the indices alone in one array (8 bytes, all that a near miss
   // reads), their constants and committed histories in others.
-  struct Pair {  // i < j
-    std::int32_t i, j;
-  };
   struct PairConstants {
     double K = 0, D = 0, kt0 = 0;  // Hertz K (N/m^1.5), damping alpha sqrt(m* K), 8 G* sqrt(R*) (N/m^1.5)
   };
@@ -224,6 +271,10 @@ class ContactSystem {
   // Reference state of the last build.
   std::vector<Vec3> x_build_;
   std::vector<Vec3> mesh_build_;
+  // Newton tangent blocks (tangent()): per pair and per triangle contact; zero for a contact
+  // that does not touch.
+  std::vector<Vec3> ptan_axis_, ttan_axis_;
+  std::vector<double> ptan_axial_, ptan_lateral_, ttan_axial_, ttan_lateral_;
 };
 
 template <class Keep>

@@ -26,6 +26,11 @@
 // - Inexact Newton: CG stops at |r| <= krylov_tolerance |R|; the Newton loop then measures the
 //   real residual again. A solve stopped at krylov_max_iterations is used as it is (the
 //   residual check decides), and the step control does not grow the next step.
+// - Contacts (contacts/contact_tangent.cpp): evaluated in every Newton iteration after the
+//   rods, their forces in the residual, their approximate tangent (normal Hertz stiffness and
+//   damping, the sticking friction spring) in J beside the rods'. Friction histories are trial
+//   values until the commit, as for the sweeps. Rotations (particles without rods) follow
+//   the latest torques, a fixed point inside the Newton loop.
 // - Every sum is over fixed blocks (deterministic_sum) or in the rows' fixed order, and the
 //   maxima are exact, so the result has the same bits for any number of threads.
 #include <Eigen/Dense>
@@ -93,6 +98,7 @@ bool Simulation::try_newton(double h) {
     clock_.lap(Stage::Integrate);
     rod_forces();
     clock_.lap(Stage::Rods);
+    contact_forces(h);  // (the trial evaluation from the committed histories, as the sweeps')
     const double res = newton_residual(h);
     clock_.lap(Stage::Gather);
     if (!std::isfinite(res)) return false;
@@ -130,6 +136,10 @@ bool Simulation::try_newton(double h) {
     }
     correction = step_disp2_ > 0.0 ? kx * std::sqrt(dmax2 / step_disp2_) : HUGE_VAL;
   }
+  // The rotations of particles without rods were placed with the torques of the evaluation
+  // before the last; place them (and nothing else: a is unchanged) with the converged ones,
+  // as the sweeps do after their last gather.
+  if (rotations_ && !free_list_.empty() && !place(h)) return false;
   stats_.last_iterations = solves;
   stats_.iterations += solves;
   stats_.max_iterations = std::max(stats_.max_iterations, solves);
@@ -138,7 +148,7 @@ bool Simulation::try_newton(double h) {
   return true;
 }
 
-template <bool Wrap>
+template <bool Wrap, bool Contacts>
 double Simulation::newton_residual_impl() {
   auto& p = m_.particles;
   const auto& r = m_.rods;
@@ -157,6 +167,10 @@ double Simulation::newton_residual_impl() {
   const std::int32_t* row_start = r.row_start.data();
   const Rods::Entry* entries = r.entries.data();
   const double* force_coef = r.force_coef.data();
+  const double* radius = p.radius.data();
+  Vec3* torque = p.torque.data();
+  Vec3* contact_force = contact_force_.data();
+  const ContactSystem::Sums sums = Contacts ? contacts_.sums() : ContactSystem::Sums{};
   // The residual's largest component against the force level: the largest of the net
   // forces, the inertial forces m a and the sums of rod force magnitudes on a particle.
   double rmax = 0.0, fmax = 0.0;
@@ -172,6 +186,15 @@ double Simulation::newton_residual_impl() {
       if constexpr (Wrap) periodic.wrap(dx);
       f += c * dx;
       level += std::abs(c);
+    }
+    if constexpr (Contacts) {
+      // (the gather's sums, in the same order: the torques drive the rotations' placement,
+      // the contact forces the step's contact power)
+      Vec3 fc = Vec3::Zero(), tau = Vec3::Zero();
+      sums.add(i, radius[i], fc, tau);
+      f += fc;
+      contact_force[i] = fc;
+      torque[i] = tau;
     }
     f += mass[i] * gravity;
     force[i] = f;
@@ -198,7 +221,9 @@ double Simulation::newton_residual_impl() {
 
 double Simulation::newton_residual(double h) {
   sweep_dt_ = h;
-  return m_.periodic.on() ? newton_residual_impl<true>() : newton_residual_impl<false>();
+  const bool wrap = m_.periodic.on();
+  if (contacts_.enabled()) return wrap ? newton_residual_impl<true, true>() : newton_residual_impl<false, true>();
+  return wrap ? newton_residual_impl<true, false>() : newton_residual_impl<false, false>();
 }
 
 void Simulation::newton_tangent(double h) {
@@ -223,6 +248,9 @@ void Simulation::newton_tangent(double h) {
   v.axial = nk_.axial.data();
   v.lateral = nk_.lateral.data();
   if (m > 0) rod_tangent_setup(r.law, r.area, set_.beta * h * h, set_.gamma * h, v, m_.periodic);
+  const bool contacts = contacts_.enabled();
+  if (contacts) contacts_.tangent(p, h, set_.beta * h * h, set_.gamma * h);
+  const ContactSystem::TangentRows ct = contacts ? contacts_.tangent_rows() : ContactSystem::TangentRows{};
   // Block-Jacobi: particle i's 3x3 diagonal block m_i I + sum of its rods' S_k, with the
   // prescribed components' rows and columns replaced by the identity (their d stays 0).
   const double* mass = p.mass.data();
@@ -241,6 +269,7 @@ void Simulation::newton_tangent(double h) {
       b.diagonal().array() += lateral[k];
       b.noalias() += axial[k] * (axis[k] * axis[k].transpose());
     }
+    if (contacts) ct.add_diagonal(i, b);
     const std::uint8_t mask = prescribed[i];
     if (mask)
       for (int c = 0; c < 3; ++c)
@@ -267,6 +296,8 @@ void Simulation::newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& o
   const Vec3* xs = x.data();
   Vec3* o = out.data();
   ++newton_stats_.tangent_products;
+  const bool contacts = contacts_.enabled();
+  const ContactSystem::TangentRows ct = contacts ? contacts_.tangent_rows() : ContactSystem::TangentRows{};
   // (J x)_i = m_i x_i - sum over i's rods of S_k (x_other - x_i), in the rows' order.
   dot = deterministic_sum(n, [&](std::size_t i) {
     Vec3 s = mass[i] * xs[i];
@@ -276,6 +307,7 @@ void Simulation::newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& o
       const std::int32_t k = en.rod;
       s -= rod_block_times(axis[k], axial[k], lateral[k], xs[en.other] - xi);
     }
+    if (contacts) s += ct.times(i, xs);
     mask_prescribed(s, prescribed[i]);
     o[i] = s;
     return xs[i].dot(s);

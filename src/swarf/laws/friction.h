@@ -49,4 +49,23 @@ struct FrictionRule {
   return ft;
 }
 
+// The tangent of friction_force for the Newton solver: the scalar t of d(ft on i)/d(v_j - v_i)
+// = t (I - n n^T), in N s/m, at the same state as friction_force. Spring law while the spring
+// sticks: the slip h vt stretches it, t = kt h + eta; once Coulomb's cap binds the force no
+// longer grows with the slip in its own direction, and t = 0 (the turn of its direction and
+// its growth with fn are left out: an approximate tangent, which Newton's residual test
+// corrects). Regularized law: the secant mu fn tanh(s/v0) / s, its limit mu fn / v0 at s = 0.
+[[gnu::always_inline]] inline double friction_tangent(const FrictionRule& r, const Vec3& n, const Vec3& vt, double fn,
+                                                      double kt, double eta, const Vec3& hist) {
+  if (r.law == FrictionLaw::None || r.mu == 0.0 || fn <= 0.0) return 0.0;
+  if (r.law == FrictionLaw::Regularized) {
+    const double s = vt.norm(), u = s / r.v0;
+    return r.mu * fn * (u > 1e-8 ? std::tanh(u) / s : 1.0 / r.v0);
+  }
+  const Vec3 xi = hist - hist.dot(n) * n + r.h * vt;
+  const Vec3 ft = -kt * xi - eta * vt;
+  const double cap = r.mu * fn;
+  return ft.squaredNorm() > cap * cap ? 0.0 : kt * r.h + eta;
+}
+
 }  // namespace swarf
