@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """C45 cutting forces against Kienzle's law (validation/cutting/README.md, "A chip").
 
 usage: plot_c45.py OUT.png RUN_DIR:h_mm:rake_deg [...]
