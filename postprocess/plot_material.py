@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of 'swarf material' (PNG): for each test the true stress against its strain (tau against
 gamma in shear, with the normal stresses) beside the small-strain mapping, and the von Mises
 equivalent stress against the equivalent strain with the volume ratio; with more than one test,

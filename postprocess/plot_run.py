@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of one swarf run (PNG): the stress-strain loop with the rod-law prediction for a
 uniaxial case, and the energy balance. Usage: plot_run.py RUN_DIR [SUMMARY_JSON].
 Prints 'wrote FILE' for every file written. Draws only columns swarf computed."""

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """render_chip.py: a PNG picture of the workpiece, the chip and the tool at the end of a swarf run.
 
 Usage: render_chip.py RUN_DIR [OUTPUT.png] [--size WxH] [--max-fraction F] [--frame N]

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of a parameter study (PNG): each metric against each varied key, as computed by
 'swarf sweep' into DIR/plots/plots.json (the script only draws); a steady mean with its 95 %
 confidence interval (plots.json "y_err") gets error bars. Usage:

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Fails when a source file includes across a forbidden arrow of the layers.
 
     app -> study -> setup -> { postprocess, lattice_gen, tool_paths } -> io -> swarf (engine)

@@ -1,6 +1,6 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Writes data/w2_particles.txt (id x y z vx vy vz, SI units) for scene W2: the same
-initial state as ../shared/peers/common/gen.py produces for every peer (same recipe, same
+initial state as peers/common/gen.py (validation/bench/peers) produces for every peer (same recipe, same
 seed), so swarf starts identically to LAMMPS, LIGGGHTS, Yade and ESyS-Particle."""
 import os, random
 

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# W1 side by side: swarf's bench and the LAMMPS deck of ../shared/peers, in one sitting.
+# W1 side by side: swarf's bench and the LAMMPS deck of validation/bench/peers, in one sitting.
 # Usage: validation/bench/run_w1.sh [SCRATCH_DIR]   (installs Debian's lammps if missing)
+# SWARF_PEERS=DIR takes the peer decks from DIR instead of validation/bench/peers.
 # Prints swarf's table (ns per particle-step for 1 and 2 threads, broken rods and kinetic
 # energy after 2,000 steps) and LAMMPS's loop times and results for 1 and 2 MPI ranks.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-peers=${SWARF_PEERS:-$root/../shared/peers}
+peers=${SWARF_PEERS:-$root/validation/bench/peers}
 scratch=${1:-/tmp/swarf-peers}
 . "$root/validation/bench/peers_setup.sh"
 echo "== swarf"

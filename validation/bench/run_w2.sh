@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# W2 side by side: swarf and the LAMMPS deck of ../shared/peers, alternated in one sitting.
+# W2 side by side: swarf and the LAMMPS deck of validation/bench/peers, alternated in one sitting.
 # Usage: validation/bench/run_w2.sh [ROUNDS] [SCRATCH_DIR]   (installs Debian's lammps if missing)
+# SWARF_PEERS=DIR takes the peer decks from DIR instead of validation/bench/peers.
 # Each round times swarf (2,000 steps, 2 then 1 threads) and LAMMPS (2 then 1 MPI ranks) once;
 # the machine's speed drifts by tens of % within minutes, so the rounds alternate the codes
 # and the table gives the minimum and the median over the rounds, in ns per particle-step.
 # Then the physics: contacts and translational kinetic energy at steps 200 and 2,000.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-peers=${SWARF_PEERS:-$root/../shared/peers}
+peers=${SWARF_PEERS:-$root/validation/bench/peers}
 rounds=${1:-5}
 scratch=${2:-/tmp/swarf-peers}
 swarf="$root/build/bin/swarf"

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots test 4 of the Chung & Ooi suite (oblique.csv written by swarf_chung_ooi) as oblique.png."""
 import csv, os
 import matplotlib

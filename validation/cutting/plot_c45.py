@@ -1,11 +1,11 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """C45 cutting forces against Kienzle's law (validation/cutting/README.md, "A chip").
 
 usage: plot_c45.py OUT.png RUN_DIR:h_mm:rake_deg [...]
 Each RUN_DIR holds a swarf run's summary.json; h in mm, rake in degrees. Writes a PNG of the
 steady cutting and thrust forces per width (kN/m, with their 95 % confidence intervals)
 against the depth of cut, with Kienzle's Fc/w = kc1.1 h^(1 - mc) (kc1.1 = 1500 N/mm^2,
-mc = 0.22, 1 % less per degree of rake above 6 deg; ../../../shared/reference/cutting-data.md).
+mc = 0.22, 1 % less per degree of rake above 6 deg; docs/cutting-data.md).
 """
 import json
 import sys

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Side view (x-z) of a cutting run's final state, particles coloured by their broken-rod
 fraction, with the tool's faces drawn; a stop-gap until the rendered picture of issue 5.
 Usage: plot_first_cut.py RUN_DIR OUT.png (reads RUN_DIR/results.h5 and RUN_DIR/summary.json)"""

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of the cutting validation from the three studies' study.csv files (swarf sweep):
 depth of cut (forces per width with least-squares lines), rake angle (forces; shear angle
 measured from the chip against Merchant's), refinement (forces, compression ratio and shear

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Hysteresis validation of the rod law: runs the [100] bar of bar.toml at several
 cross-sections (N x N cells) and at half the strain rate, collects the measured deviations
 from the FCC lattice relations, and writes results.md and deviation_vs_size.png here.

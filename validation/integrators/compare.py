@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Both integrators side by side: the hysteresis loop (validation/hysteresis/bar.toml) and a
 bar pulled to fracture (fracture.toml), each with velocity Verlet and the implicit Newmark
 step. Writes results.md, loops.png and fracture.png here.

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The Newton solver of the Newmark step against the fixed-point sweeps and velocity Verlet on
 the hysteresis bar (validation/hysteresis/bar.toml): steps, force evaluations, tangent
 products, CG iterations, wall time, and the loop's stress against the small-step run

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The material lab's README tables from material.json files (swarf material).
 Usage: table.py DEFAULT_JSON C45_JSON [C45_NOFAIL_JSON]. Prints markdown."""
 import json, sys
