@@ -34,7 +34,7 @@ TEST(Lattice, CountsByCells) {
 }
 
 TEST(Lattice, W1SceneMatchesPeers) {
-  // ../shared/peers/README.md: 19,652 particles and 111,078 bonds.
+  // validation/bench/peers/README.md: 19,652 particles and 111,078 bonds.
   FccSpec spec;
   spec.radius = 0.5e-3;
   spec.cells = {17, 17, 17};

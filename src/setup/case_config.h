@@ -95,7 +95,7 @@ struct IntegratorSettings {
   double reject_factor = 0.5;  ///< a rejected step is retried with dt times this, 1
   double relaxation = 1.0;     ///< w in (0, 1]: each sweep places with (1 - w) a_guess + w a_swept, 1
   std::string solver = "fixed_point";  ///< "fixed_point" (sweeps) or "newton" (Newton-Krylov, rods only)
-  double krylov_tolerance = 1e-4;      ///< newton: CG stops at |r| <= this x |R|, 1
+  double krylov_tolerance = 1e-2;      ///< newton: CG stops at |r| <= this x |R|, 1
   int krylov_max_iterations = 500;     ///< newton: CG iterations per Newton iteration
 };
 

@@ -37,7 +37,7 @@ struct StepSettings {
   Solver solver = Solver::FixedPoint;
   // Newton (Solver::Newton): 'tolerance' bounds the residual relative to the force level,
   // 'max_iterations' the Newton iterations; iterations_grow/shrink count Newton iterations.
-  double krylov_tolerance = 1e-4;   ///< 1: CG stops when |r| <= this x |R| (2-norms over the free components)
+  double krylov_tolerance = 1e-2;   ///< 1: CG stops when |r| <= this x |R| (2-norms over the free components)
   int krylov_max_iterations = 500;  ///< CG iterations per Newton iteration; a step that hits it does not grow
   // Both schemes.
   double max_step_displacement = 0.25;  ///< radii: a particle moving further in a step stops (Verlet) or rejects

@@ -92,7 +92,7 @@ bool Simulation::try_newton(double h) {
   const double kx = g.beta * h * h;
   int solves = 0, growing = 0, cg_total = 0;
   bool capped = false;
-  double previous = HUGE_VAL, correction = HUGE_VAL;
+  double previous = HUGE_VAL, before_previous = HUGE_VAL, correction = HUGE_VAL;
   while (true) {
     if (!place(h)) return false;  // also rejects a particle moving further than max_step_displacement
     clock_.lap(Stage::Integrate);
@@ -111,6 +111,13 @@ bool Simulation::try_newton(double h) {
     // mean it is not converging (a step too long for the nonlinearity): give up early.
     growing = res > previous && res > 10.0 * g.tolerance ? growing + 1 : 0;
     if (growing >= 2) return false;
+    // Nor does it stall: a rod or a contact that flips its branch at every iteration (a
+    // piecewise-linear law, a contact at the edge of touching) makes a 2-cycle whose
+    // residuals alternate, so they never grow twice in a row. Seen on the cut: 25 iterations
+    // between the same two residuals before the step was rejected anyway. From the fourth
+    // iteration on, the residual must have halved over the last two.
+    if (solves >= 3 && res > 0.5 * before_previous && res > 10.0 * g.tolerance) return false;
+    before_previous = previous;
     previous = res;
     newton_tangent(h);
     const int cg = newton_krylov();
