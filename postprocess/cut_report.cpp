@@ -237,16 +237,52 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
   return t;
 }
 
+// Layout 3: one named dataset per value under /cutting, each with its unit.
 void write_cut_setup(H5File& f, const CutSetup& s) {
-  const std::vector<double> v{s.width,           s.steady_from, s.tool_tip[0],
-                              s.tool_tip[1],     s.tool_tip[2], s.rake_angle_deg,
-                              s.uncut_surface_z, s.radius,      double(s.lattice_particles),
-                              s.face_length};
-  f.write("/cutting/setup", v.data(), v.size());
+  auto put = [&f](const char* name, const double* v, std::size_t n, const char* unit, const char* what) {
+    f.write(std::string("/cutting/") + name, v, n);
+    f.describe(std::string("/cutting/") + name, unit, what);
+  };
+  const double tip[3] = {s.tool_tip[0], s.tool_tip[1], s.tool_tip[2]};
+  put("width", &s.width, 1, "m", "workpiece width: the lattice's extent along y plus half a cell edge");
+  put("steady_from", &s.steady_from, 1, "s", "the force statistics use the series rows from this time on");
+  put("tool_tip", tip, 3, "m", "the tool's sharp tip (x, y, z) at the end of the run");
+  put("rake_angle", &s.rake_angle_deg, 1, "deg", "the tool's rake angle (ISO 3002 gamma)");
+  put("uncut_surface_z", &s.uncut_surface_z, 1, "m", "highest initial centre of the ordered workpiece lattice");
+  put("radius", &s.radius, 1, "m", "particle radius R");
+  const std::int64_t count = static_cast<std::int64_t>(s.lattice_particles);
+  f.write("/cutting/workpiece_particles", &count, 1);
+  f.describe("/cutting/workpiece_particles", "1", "the workpiece is particles 0 to this - 1");
+  put("face_length", &s.face_length, 1, "m", "the tool's rake face length from the tip");
   f.write_attribute("cutting_tool_mesh", s.tool_mesh);
 }
 
 bool read_cut_setup(const H5File& f, CutSetup& s) {
+  if (results_format(f) >= 3) {
+    if (!f.has("/cutting/width")) return false;
+    auto one = [&f](const char* name, std::size_t want) {
+      std::size_t r = 0, c = 0;
+      auto v = f.read_doubles(std::string("/cutting/") + name, r, c);
+      if (v.size() != want)
+        throw InputError(fmt::format("'{}': /cutting/{} has {} values, not {}", f.path(), name, v.size(), want));
+      return v;
+    };
+    s.width = one("width", 1)[0];
+    s.steady_from = one("steady_from", 1)[0];
+    const auto tip = one("tool_tip", 3);
+    s.tool_tip = Vec3(tip[0], tip[1], tip[2]);
+    s.rake_angle_deg = one("rake_angle", 1)[0];
+    s.uncut_surface_z = one("uncut_surface_z", 1)[0];
+    s.radius = one("radius", 1)[0];
+    std::size_t r = 0, c = 0;
+    const auto n = f.read_ints("/cutting/workpiece_particles", r, c);
+    if (n.size() != 1 || n[0] < 0)
+      throw InputError(fmt::format("'{}': /cutting/workpiece_particles must be one count >= 0", f.path()));
+    s.lattice_particles = static_cast<std::size_t>(n[0]);
+    s.face_length = one("face_length", 1)[0];
+    s.tool_mesh = f.has_attribute("cutting_tool_mesh") ? f.read_string_attribute("cutting_tool_mesh") : "";
+    return true;
+  }
   if (!f.has("/cutting/setup")) return false;
   std::size_t r = 0, c = 0;
   const auto v = f.read_doubles("/cutting/setup", r, c);

@@ -235,6 +235,11 @@ TEST(CutReport, TheSetupIsReadByTheFilesLayoutVersion) {
   s.width = 1.5e-3;
   s.tool_tip = Vec3(1e-3, 0.0, 2e-3);
   s.face_length = 2e-3;
+  s.steady_from = 1e-5;
+  s.rake_angle_deg = 10;
+  s.uncut_surface_z = 3e-3;
+  s.radius = 1e-4;
+  s.lattice_particles = 123;
   {
     H5File f(dir / "new.h5", H5File::Mode::Create);
     f.write_attribute("format", kResultsFormat);
@@ -244,6 +249,13 @@ TEST(CutReport, TheSetupIsReadByTheFilesLayoutVersion) {
   ASSERT_TRUE(read_cut_setup(H5File(dir / "new.h5", H5File::Mode::Read), r));
   EXPECT_EQ(r.face_length, 2e-3);
   EXPECT_EQ(r.tool_tip, s.tool_tip);
+  EXPECT_EQ(r.width, s.width);
+  EXPECT_EQ(r.steady_from, s.steady_from);
+  EXPECT_EQ(r.rake_angle_deg, s.rake_angle_deg);
+  EXPECT_EQ(r.uncut_surface_z, s.uncut_surface_z);
+  EXPECT_EQ(r.radius, s.radius);
+  EXPECT_EQ(r.lattice_particles, 123u);
+  EXPECT_EQ(r.tool_mesh, "tool");
   const std::vector<double> nine{1.5e-3, 0, 1e-3, 0, 2e-3, 10, 3e-3, 1e-4, 100};
   {
     H5File f(dir / "old.h5", H5File::Mode::Create);  // layout 1: no attribute
@@ -255,11 +267,21 @@ TEST(CutReport, TheSetupIsReadByTheFilesLayoutVersion) {
   EXPECT_EQ(o.lattice_particles, 100u);
   {
     H5File f(dir / "bad.h5", H5File::Mode::Create);  // claims layout 2 with 9 values
-    f.write_attribute("format", kResultsFormat);
+    f.write_attribute("format", 2.0);
     f.write("/cutting/setup", nine.data(), nine.size());
   }
   CutSetup b;
   EXPECT_THROW(read_cut_setup(H5File(dir / "bad.h5", H5File::Mode::Read), b), InputError);
+  {
+    H5File f(dir / "bad3.h5", H5File::Mode::Create);  // layout 3 with a tool tip of 2 values
+    f.write_attribute("format", kResultsFormat);
+    const double one[1] = {1e-3}, two[2] = {0, 0};
+    f.write("/cutting/width", one, 1);
+    f.write("/cutting/steady_from", one, 1);
+    f.write("/cutting/tool_tip", two, 2);
+  }
+  CutSetup c;
+  EXPECT_THROW(read_cut_setup(H5File(dir / "bad3.h5", H5File::Mode::Read), c), InputError);
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ TEST(Observers, LayTheSeriesOutByNameTimeFirst) {
 struct StepCounting final : Observer, StepListener {
   explicit StepCounting(int& seen) : seen(seen) {}
   std::string_view name() const override { return "counting"; }
-  void columns(std::vector<std::string>& names) const override { names.push_back("seen"); }
+  void columns(std::vector<Column>& out) const override { out.push_back({"seen", "1", "steps seen"}); }
   void row(const Simulation&, std::vector<double>& values) override { values.push_back(seen); }
   StepListener* step_listener() override { return this; }
   void after_step(Simulation&) override { ++seen; }

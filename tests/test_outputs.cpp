@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "io/h5file.h"
+#include "scenes/tiny_cut.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -214,32 +215,7 @@ namespace {
 
 TEST(Outputs, CuttingForceStatisticsMatchTheSeries) {
   test::TempDir dir("cut_stats");
-  test::write_file(dir / "c.toml", R"([workpiece]
-cells = [6, 2, 3]
-radius = 1e-4
-[rod]
-tensile_strength = 3e8
-[contact]
-friction = 0.3
-[[group]]
-name = "base"
-side = "z-"
-[[mesh]]
-name = "tool"
-rake_angle = 10.0
-width = 1.2e-3
-face_length = 1e-3
-origin = [-0.05e-3, 0.14e-3, 0.5e-3]
-motion = "velocity"
-velocity = [5.0, 0.0, 0.0]
-[integrator]
-end_time = 4e-5
-[output]
-vtk = false
-plots = false
-steady_from = 2e-5
-series_interval = 1e-6
-)");
+  test::write_file(dir / "c.toml", test::kTinyCut);
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "c.toml") + " --out " + (dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto sum = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));

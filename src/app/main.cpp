@@ -5,19 +5,19 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/build_info.h"
 #include "app/commands.h"
 #include "app/fp_traps.h"
 #include "app/interrupt.h"
 #include "io/console.h"
 #include "swarf/core/errors.h"
-#include "swarf/version.h"
 
 int main(int argc, char** argv) {
   // Floating-point traps for tests (SWARF_FP_TRAPS=1, app/fp_traps.h); off in production runs.
   swarf::enable_fp_traps_from_env();
   CLI::App app{"swarf: DEM simulation of orthogonal metal cutting (bonded FCC workpiece, Bauschinger rods)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("swarf ") + SWARF_VERSION);
+  app.set_version_flag("--version", swarf::version_text());
   const auto commands = swarf::make_commands(app);
   // An unknown command gets its name said (CLI11 would say only that a subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {

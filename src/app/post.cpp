@@ -129,7 +129,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
       eprint("swarf: warning: picture not rendered: {}\n", message);
     }
   }
-  fmt::print("{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction));
+  say("{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction));
   std::fflush(stdout);
 }
 
@@ -188,7 +188,7 @@ void post_run(const std::string& dir) {
     if (!pr.ok) sum["plot_error"] = pr.message;
   }
   write_text_atomic(summary_path, sum.dump(2) + "\n");
-  fmt::print("  post: rewrote {} (cutting, chip{})\n", summary_path, sum.contains("pictures") ? ", pictures" : "");
+  say("  post: rewrote {} (cutting, chip{})\n", summary_path, sum.contains("pictures") ? ", pictures" : "");
 }
 
 }  // namespace swarf

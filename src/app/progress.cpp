@@ -33,10 +33,14 @@ void Progress::print(double time, long long steps, bool final) {
   const double eta = frac > 0 ? el * (1.0 - frac) / frac : -1.0;
   const std::string line = fmt::format("[{:5.1f}%] t = {:.4e} s of {:.4e} s, step {}, elapsed {}, ETA {}", 100.0 * frac,
                                        time, end_time_, steps, hms(el), final ? hms(0) : hms(eta));
-  if (tty_)
-    eprint("\r{}{}", line, final ? "\n" : "");
-  else
+  if (tty_) {
+    // (rewritten in place on the terminal: only the final line goes into the transcript)
+    const std::string shown = "\r" + line + (final ? "\n" : "");
+    std::fwrite(shown.data(), 1, shown.size(), stderr);
+    if (final) transcript_add(line + "\n");
+  } else {
     eprint("{}\n", line);
+  }
   std::fflush(stderr);
 }
 

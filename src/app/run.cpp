@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/build_info.h"
 #include "app/interrupt.h"
 #include "app/observers/case_observers.h"
 #include "app/observers/observer_set.h"
@@ -69,13 +70,17 @@ void add_plots(const std::string& dir, nlohmann::json& sum) {
 // The end of the run: series.csv closed, results.h5, the observers' report and summary parts,
 // the plots, summary.json and the list of outputs.
 void finish_run(const std::string& dir, const Model& model, Simulation& sim, RunOutputs& outputs,
-                ObserverSet& observers, int threads, const std::string& restarted_from) {
+                ObserverSet& observers, const RunProvenance& prov, const std::string& restarted_from) {
+  const int threads = prov.threads;
   const RunOutputs::WallTimes wall = outputs.finish();
   write_results_h5(dir + "/results.h5", sim, [&](H5File& f) {
     write_disorder_attributes(f, model.derived);
+    write_provenance_attributes(f, prov);
+    write_series_datasets(f, observers.column_specs(), outputs.series());
     observers.write_results(f);
   });
   nlohmann::json sum = summary_head(model, sim, restarted_from);
+  sum["provenance"] = provenance_json(prov);
   const SeriesColumns series = outputs.series();
   const bool plots = model.settings.output.plots;
   observers.finish(RunEnd{sim, series, dir, outputs.vtk(), plots, threads, wall.wall_s, wall.wall_s - wall.output_s},
@@ -86,11 +91,11 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
   for (const char* key : {"pictures", "plots"})
     if (sum.contains(key))
       for (const auto& f : sum[key]) pictures += (pictures.empty() ? "" : ", ") + f.get<std::string>();
-  fmt::print("\n  outputs in {}/: summary.json, series.csv, results.h5{}{}{}\n", dir,
-             outputs.vtk() ? std::string(", particles.pvd (open in ParaView") +
-                                 (observers.has("cut") ? "; chip_surface.vtp)" : ")")
-                           : "",
-             outputs.checkpoints() ? ", checkpoint.h5" : "", pictures.empty() ? "" : "\n  pictures: " + pictures);
+  say("\n  outputs in {}/: summary.json, series.csv, results.h5{}{}{}\n", dir,
+      outputs.vtk()
+          ? std::string(", particles.pvd (open in ParaView") + (observers.has("cut") ? "; chip_surface.vtp)" : ")")
+          : "",
+      outputs.checkpoints() ? ", checkpoint.h5" : "", pictures.empty() ? "" : "\n  pictures: " + pictures);
 }
 
 // A signal arrived: the step it interrupted is finished; a checkpoint keeps the place when
@@ -135,8 +140,12 @@ void run_case(const RunOptions& opt) {
   check_memory(cs, opt.force);
   Model model = build_model(cs);
   const int threads = set_threads(opt.threads);
+  const RunProvenance prov = run_provenance(threads);
   print_setup(model, threads);
   const std::string dir = prepare_run_directory(opt);
+  // DIR/run.log: what this run prints (a restart appends to the log of the run it continues).
+  if (!open_transcript(dir + "/run.log", !opt.restart.empty()))
+    eprint("swarf: warning: cannot write {}/run.log; the run goes on without a log\n", dir);
 
   Simulation sim(model, model.step);
   ObserverSet observers(sim, observers_for(model, opt.energy_check));
@@ -158,7 +167,7 @@ void run_case(const RunOptions& opt) {
     if (const int s = interrupt_signal(); s != 0) stop_interrupted(s, dir, sim, outputs);
   }
   progress.done(sim.time(), sim.steps());
-  finish_run(dir, model, sim, outputs, observers, threads, opt.restart);
+  finish_run(dir, model, sim, outputs, observers, prov, opt.restart);
 }
 
 }  // namespace swarf

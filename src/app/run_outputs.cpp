@@ -8,6 +8,9 @@
 
 #include "app/observers/observer_set.h"
 #include "app/run_directory.h"
+#include "io/atomic_file.h"
+#include "io/console.h"
+#include "io/h5file.h"
 #include "io/vtk_output.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -33,6 +36,27 @@ RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& s
       series_(dir + "/series.csv", columns_) {
   if (vtk_) vtk_->set_periodic(model.periodic);
   rec_.columns = columns_.size();
+  write_column_table(dir + "/series_columns.csv", observers.column_specs());
+}
+
+void write_column_table(const std::string& path, const std::vector<Column>& columns) {
+  // (CSV quoting: a meaning may hold commas; quotes are doubled)
+  auto quoted = [](const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  std::string text = "column,unit,meaning\n";
+  for (const auto& c : columns) text += c.name + "," + quoted(c.unit) + "," + quoted(c.meaning) + "\n";
+  write_text_atomic(path, text);
+}
+
+void write_series_datasets(H5File& f, const std::vector<Column>& columns, const SeriesColumns& series) {
+  for (const auto& c : columns) {
+    const std::vector<double> v = series[c.name];
+    f.write("/series/" + c.name, v.data(), v.size());
+    f.describe("/series/" + c.name, c.unit, c.meaning);
+  }
 }
 
 RunOutputs::~RunOutputs() = default;
@@ -69,8 +93,8 @@ void RunOutputs::restore(const std::string& checkpoint) {
     vtk_->resume(rec_.frame_times);
     carry_frames(std::filesystem::path(checkpoint).parent_path(), dir_, rec_.frame_times.size());
   }
-  fmt::print("  restarted from {} at t = {:.6g} s, step {} ({} series rows, {} frames)\n", checkpoint, sim_.time(),
-             sim_.steps(), rec_.rows.size() / rec_.columns, rec_.frame_times.size());
+  say("  restarted from {} at t = {:.6g} s, step {} ({} series rows, {} frames)\n", checkpoint, sim_.time(),
+      sim_.steps(), rec_.rows.size() / rec_.columns, rec_.frame_times.size());
   wall_before_ = rec_.wall_s;
   output_s_ = rec_.output_s;
   start_ = std::chrono::steady_clock::now();

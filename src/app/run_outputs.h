@@ -12,16 +12,26 @@
 #include <string>
 #include <vector>
 
+#include "app/observers/observer.h"
 #include "app/series_columns.h"
 #include "io/checkpoint.h"
 #include "io/series.h"
 
 namespace swarf {
 
+class H5File;
 class ObserverSet;
 class Simulation;
 class VtkSeries;
 struct Model;
+
+/// DIR/series_columns.csv: one row per series.csv column (column, unit, meaning), so that a
+/// reader needs no second header row; written when the run starts.
+void write_column_table(const std::string& path, const std::vector<Column>& columns);
+
+/// The time history in results.h5: one dataset /series/<column> per column, with its unit and
+/// meaning as attributes.
+void write_series_datasets(H5File& f, const std::vector<Column>& columns, const SeriesColumns& series);
 
 class RunOutputs {
  public:

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/build_info.h"
 #include "io/console.h"
 #include "setup/model.h"
 #include "swarf/version.h"
@@ -15,65 +16,63 @@ namespace swarf {
 
 void print_setup(const Model& m, int threads) {
   const Derived& d = m.derived;
-  fmt::print("swarf {}: case {}\n", SWARF_VERSION, m.settings.source);
-  fmt::print("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(),
-             threads);
-  for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
-  fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
-             d.particle_mass);
+  const BuildInfo& b = build_info();
+  say("swarf {} (commit {}{}): case {}\n", b.version, b.git_commit.substr(0, 12),
+      b.git_dirty == 1 ? ", uncommitted changes" : "", m.settings.source);
+  say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
+  for (const auto& g : m.groups) say("  group '{}': {} particles\n", g.name, g.members.size());
+  say("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
+      d.particle_mass);
   if (d.position_jitter > 0.0) {
     const auto [lo, hi] = std::minmax_element(m.rods.rest_length.begin(), m.rods.rest_length.end());
-    fmt::print("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed,
-               d.position_jitter, d.position_jitter * d.radius);
+    say("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed, d.position_jitter,
+        d.position_jitter * d.radius);
     if (lo != m.rods.rest_length.end())
-      fmt::print("; rods at rest, {:.6g} to {:.6g} m; stable step for kb_max = {:.4g} N/m", *lo, *hi,
-                 d.rod_stiffness_max);
-    fmt::print("\n");
+      say("; rods at rest, {:.6g} to {:.6g} m; stable step for kb_max = {:.4g} N/m", *lo, *hi, d.rod_stiffness_max);
+    say("\n");
   } else if (d.disorder_seed > 0) {
-    fmt::print("  disorder: seed {} with position_jitter = 0: the ordered lattice\n", d.disorder_seed);
+    say("  disorder: seed {} with position_jitter = 0: the ordered lattice\n", d.disorder_seed);
   }
   if (m.periodic.on())
-    fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
-               m.periodic.period);
+    say("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n", m.periodic.period);
   if (!m.rods.ends.empty()) {
     const auto& mt = m.settings.material;
     if (d.converted && mt.flow_curve) {
       std::string pts;
       for (std::size_t i = 0; i < mt.flow_plastic_strain.size(); ++i)
         pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", mt.flow_plastic_strain[i], mt.flow_stress[i] * 1e-6);
-      fmt::print("  material{}: E = {:.4g} Pa, flow curve (equivalent plastic strain, true stress): {}\n",
-                 mt.preset.empty() ? std::string() : " " + mt.preset, mt.youngs_modulus, pts);
-      fmt::print("  rod law calibrated in {} ({}), failure at equivalent strain {:.4g}:\n",
-                 mt.calibration == "shear" ? "simple shear on a cube plane" : "uniaxial tension along [100]",
-                 "calibration.h", mt.failure_strain);
+      say("  material{}: E = {:.4g} Pa, flow curve (equivalent plastic strain, true stress): {}\n",
+          mt.preset.empty() ? std::string() : " " + mt.preset, mt.youngs_modulus, pts);
+      say("  rod law calibrated in {} ({}), failure at equivalent strain {:.4g}:\n",
+          mt.calibration == "shear" ? "simple shear on a cube plane" : "uniaxial tension along [100]", "calibration.h",
+          mt.failure_strain);
       if (mt.calibration == "shear")
-        fmt::print("  finite-strain shear correction: {} of {} points reached, largest mismatch left {:.1f} %\n",
-                   d.calibration_points, mt.flow_plastic_strain.size() - 1, 100.0 * d.calibration_mismatch);
+        say("  finite-strain shear correction: {} of {} points reached, largest mismatch left {:.1f} %\n",
+            d.calibration_points, mt.flow_plastic_strain.size() - 1, 100.0 * d.calibration_mismatch);
     } else if (d.converted)
-      fmt::print(
-          "  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
+      say("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
           "strength {:.4g} Pa):\n",
           m.settings.material.youngs_modulus, m.settings.material.yield_stress, m.settings.material.hardening_modulus,
           m.settings.material.tensile_strength);
-    fmt::print("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
-               d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
+    say("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
+        d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
     if (std::isfinite(d.law.failure_strain))
-      fmt::print("  rod: fails at strain {:.4g} in tension{}\n", d.law.failure_strain,
-                 std::isfinite(m.settings.rod.failure_elongation)
-                     ? fmt::format(" (rod.failure_elongation = {:.4g} m over L0)", m.settings.rod.failure_elongation)
-                     : std::string());
+      say("  rod: fails at strain {:.4g} in tension{}\n", d.law.failure_strain,
+          std::isfinite(m.settings.rod.failure_elongation)
+              ? fmt::format(" (rod.failure_elongation = {:.4g} m over L0)", m.settings.rod.failure_elongation)
+              : std::string());
     if (m.rods.formation.enabled())
-      fmt::print("  rod: unbonded lattice particles pressed beyond a relative overlap of {:.4g} form a rod\n",
-                 m.rods.formation.overlap);
+      say("  rod: unbonded lattice particles pressed beyond a relative overlap of {:.4g} form a rod\n",
+          m.rods.formation.overlap);
     if (d.law.flow.points > 0) {
       std::string pts;
       for (int i = 0; i < d.law.flow.points; ++i)
         pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", d.law.flow.plastic_strain[i],
                            d.law.flow.stress[i] * 1e-6);
-      fmt::print("  rod hardening curve (plastic strain, flow stress): {}\n", pts);
+      say("  rod hardening curve (plastic strain, flow stress): {}\n", pts);
     }
-    fmt::print("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area,
-               d.rod_stiffness, d.rod_damping);
+    say("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area, d.rod_stiffness,
+        d.rod_damping);
   }
   const double nu = m.settings.material.poisson_ratio;
   if (nu > -1 && std::abs(nu - 1.0 / 3.0) > 1e-3)
@@ -82,17 +81,15 @@ void print_setup(const Model& m, int threads) {
         "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n",
         nu);
   if (!m.rods.ends.empty())
-    fmt::print(
-        "  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "
+    say("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "
         "kg/m^3\n",
         d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
-  fmt::print("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
-             d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
-             d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
-             m.settings.integrator.end_time);
+  say("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
+      d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
+      d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
+      m.settings.integrator.end_time);
   if (m.uniaxial.enabled)
-    fmt::print(
-        "  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
+    say("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
         m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
   std::fflush(stdout);
 }

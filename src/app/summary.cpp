@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "app/case_effective.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
@@ -110,6 +111,7 @@ nlohmann::json summary_head(const Model& model, const Simulation& sim, const std
   sum["overrides"] = settings.overrides;
   if (!restarted_from.empty()) sum["restarted_from"] = restarted_from;
   sum["case"] = case_to_json(settings);
+  sum["case_effective"] = case_effective_json(settings);
   sum["case_units"] = case_key_units();  // (every key's unit, from the key table)
   sum["derived"] = derived_to_json(model.derived);
   sum["counts"] = {{"particles", model.particles.size()}, {"rods", model.rods.size()}, {"groups", model.groups.size()}};
@@ -131,15 +133,24 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     const std::size_t n = p.size(), m = r.size();
     std::vector<Vec3> disp(n);
     for (std::size_t i = 0; i < n; ++i) disp[i] = p.position[i] - p.initial_position[i];
-    f.write("/particles/position", n ? p.position[0].data() : nullptr, n, 3);
-    f.write("/particles/velocity", n ? p.velocity[0].data() : nullptr, n, 3);
-    f.write("/particles/displacement", n ? disp[0].data() : nullptr, n, 3);
-    f.write("/particles/radius", p.radius.data(), n);
-    f.write("/particles/mass", p.mass.data(), n);
-    f.write("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n);
+    // Each dataset with its unit and meaning (docs/outputs.md has the full definitions).
+    auto put = [&f](const std::string& name, const auto* data, std::size_t rows, std::size_t cols, const char* unit,
+                    const char* what) {
+      f.write(name, data, rows, cols);
+      f.describe(name, unit, what);
+    };
+    put("/particles/position", n ? p.position[0].data() : nullptr, n, 3, "m", "particle centre at the end");
+    put("/particles/velocity", n ? p.velocity[0].data() : nullptr, n, 3, "m/s", "particle velocity at the end");
+    put("/particles/displacement", n ? disp[0].data() : nullptr, n, 3, "m", "position minus initial position");
+    put("/particles/radius", p.radius.data(), n, 1, "m", "particle radius");
+    put("/particles/mass", p.mass.data(), n, 1, "kg", "particle mass");
+    put("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n, 1, "1",
+        "damage: broken rods over the particle's rods at the start");
     if (sim.settings().sphere_orientations) {
-      f.write("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4);
-      f.write("/particles/angular_velocity", n ? p.omega[0].data() : nullptr, n, 3);
+      put("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4, "1",
+          "unit quaternion [q0 (scalar), q1, q2, q3], body to world");
+      put("/particles/angular_velocity", n ? p.omega[0].data() : nullptr, n, 3, "rad/s",
+          "angular velocity, world frame");
     }
     std::vector<std::int64_t> pairs(2 * m), group(n);
     for (std::size_t b = 0; b < m; ++b) {
@@ -147,13 +158,20 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
       pairs[2 * b + 1] = r.ends[b][1];
     }
     for (std::size_t i = 0; i < n; ++i) group[i] = p.group[i];
-    f.write("/particles/group", group.data(), n);
-    f.write("/particles/id", p.id.data(), n);
-    f.write("/bonds/pairs", pairs.data(), m, 2);
-    f.write("/bonds/rest_length", r.rest_length.data(), m);
-    f.write("/bonds/plastic_shift", r.shift.data(), m);
+    put("/particles/group", group.data(), n, 1, "1",
+        "index into /groups/name of the particle's prescribed group, -1 for none");
+    put("/particles/id", p.id.data(), n, 1, "1", "the particle's stable id (its index when the run started)");
+    std::vector<std::string> group_names;
+    for (const auto& g : sim.world().groups) group_names.push_back(g.name);
+    f.write_strings("/groups/name", group_names);
+    f.describe("/groups/name", "", "group names; /particles/group indexes this list");
+    put("/bonds/pairs", pairs.data(), m, 2, "1", "the rod's two particles, rows of /particles");
+    put("/bonds/rest_length", r.rest_length.data(), m, 1, "m", "the rod's length at rest");
+    put("/bonds/plastic_shift", r.shift.data(), m, 1, "1",
+        "shift eps0 of the rod's elastic range (kinematic hardening); plastic strain (E - k)/E eps0");
     f.write("/bonds/intact", r.intact.data(), m);
-    f.write("/bonds/stress", r.stress.data(), m);
+    f.describe("/bonds/intact", "1", "1 intact, 0 broken");
+    put("/bonds/stress", r.stress.data(), m, 1, "Pa", "axial stress of the rod, positive in tension");
     f.write_attribute("time_s", sim.time());
     f.write_attribute("steps", static_cast<double>(sim.steps()));
     f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION);

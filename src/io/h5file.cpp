@@ -3,6 +3,8 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
+
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -69,16 +71,69 @@ void H5File::write(const std::string& name, const std::uint8_t* data, std::size_
   write_any(id_, path_, name, H5T_NATIVE_UINT8, data, rows, 1);
 }
 
-void H5File::write_attribute(const std::string& name, const std::string& value) {
+// A fixed-length string attribute on the object 'obj'; false when HDF5 refuses it.
+static bool string_attribute(hid_t obj, const std::string& name, const std::string& value) {
   hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, value.size() + 1);
+  H5Tset_cset(type, H5T_CSET_UTF8);
   hid_t space = H5Screate(H5S_SCALAR);
-  hid_t attr = H5Acreate2(id_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t attr = H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
   herr_t st = attr >= 0 ? H5Awrite(attr, type, value.c_str()) : -1;
   if (attr >= 0) H5Aclose(attr);
   H5Sclose(space);
   H5Tclose(type);
-  if (st < 0) throw OutputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+  return st >= 0;
+}
+
+void H5File::write_attribute(const std::string& name, const std::string& value) {
+  if (!string_attribute(id_, name, value))
+    throw OutputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+}
+
+void H5File::write_strings(const std::string& name, const std::vector<std::string>& values) {
+  std::vector<const char*> p;
+  for (const auto& v : values) p.push_back(v.c_str());
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  write_any(id_, path_, name, type, p.data(), p.size(), 1);  // (throws after closing what it opened)
+  H5Tclose(type);
+}
+
+void H5File::describe(const std::string& name, const std::string& unit, const std::string& description) {
+  hid_t set = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+  const bool ok = set >= 0 && string_attribute(set, "unit", unit) && string_attribute(set, "description", description);
+  if (set >= 0) H5Dclose(set);
+  if (!ok) throw OutputError("cannot describe dataset '" + name + "' in '" + path_ + "'");
+}
+
+std::vector<std::string> H5File::datasets() const {
+  std::vector<std::string> out;
+  auto visit = [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+    if (info->type == H5O_TYPE_DATASET)
+      static_cast<std::vector<std::string>*>(data)->push_back(std::string("/") + name);
+    return 0;
+  };
+  H5Ovisit2(id_, H5_INDEX_NAME, H5_ITER_INC, visit, &out, H5O_INFO_BASIC);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string H5File::dataset_attribute(const std::string& name, const std::string& attribute) const {
+  hid_t set = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+  if (set < 0) throw InputError("HDF5 file '" + path_ + "' has no dataset '" + name + "'");
+  std::string out;
+  if (H5Aexists(set, attribute.c_str()) > 0) {
+    hid_t attr = H5Aopen(set, attribute.c_str(), H5P_DEFAULT);
+    hid_t type = H5Aget_type(attr);
+    out.assign(H5Tget_size(type), '\0');
+    H5Aread(attr, type, out.data());
+    H5Tclose(type);
+    H5Aclose(attr);
+    while (!out.empty() && out.back() == '\0') out.pop_back();
+  }
+  H5Dclose(set);
+  return out;
 }
 
 void H5File::write_attribute(const std::string& name, double value) {

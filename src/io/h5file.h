@@ -29,6 +29,15 @@ class H5File {
   void write(const std::string& name, const double* data, std::size_t rows, std::size_t cols = 1);
   void write(const std::string& name, const std::int64_t* data, std::size_t rows, std::size_t cols = 1);
   void write(const std::string& name, const std::uint8_t* data, std::size_t rows);
+  /// Writes a 1-D dataset of variable-length strings (group names, ...).
+  void write_strings(const std::string& name, const std::vector<std::string>& values);
+  /// Gives the dataset 'name' its attributes 'unit' (SI; "1" for numbers without unit) and
+  /// 'description', so that the file explains itself.
+  void describe(const std::string& name, const std::string& unit, const std::string& description);
+  /// The paths of every dataset in the file ("/particles/position", ...), sorted.
+  std::vector<std::string> datasets() const;
+  /// A string attribute of the dataset 'name' ("" when it has none).
+  std::string dataset_attribute(const std::string& name, const std::string& attribute) const;
   void write_attribute(const std::string& name, const std::string& value);
   void write_attribute(const std::string& name, double value);
 

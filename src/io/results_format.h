@@ -3,14 +3,17 @@
 // Readers of older files go through this number, not through guesses from the data:
 //   1 (no attribute): runs before 2026-12-01: /cutting/setup has 9 values (no face length),
 //     series.csv may lack the chip_thickness column;
-//   2: /cutting/setup has 10 values, /particles/id holds the particles' stable ids.
+//   2: /cutting/setup has 10 values, /particles/id holds the particles' stable ids;
+//   3: every dataset has 'unit' and 'description' attributes; the cut's set-up is one named
+//      dataset per value under /cutting (width, steady_from, tool_tip, ...); /groups/name holds
+//      the group names; /series/<column> the time history; the root has the provenance.
 #pragma once
 
 #include "io/h5file.h"
 
 namespace swarf {
 
-inline constexpr double kResultsFormat = 2.0;
+inline constexpr double kResultsFormat = 3.0;
 
 /// The layout of an open results.h5: its 'format' attribute, 1 when it has none.
 inline int results_format(const H5File& f) {

@@ -799,7 +799,7 @@ const std::vector<Key<OutputSettings>>& output_keys() {
        .default_note = "half of `end_time`",
        .range = kNonNegative,
        .doc = "Cutting runs: the summary's force statistics (`cutting` in summary.json) use the rows with time >= "
-              "this. It is stored in `results.h5` (`/cutting/setup`), which `swarf post` uses."},
+              "this. It is stored in `results.h5` (`/cutting/steady_from`), which `swarf post` uses."},
       {.name = "checkpoint_every",
        .field = &S::checkpoint_every,
        .unit = "1",

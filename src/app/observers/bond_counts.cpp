@@ -11,8 +11,11 @@ double BondCounts::broken_fraction(const Simulation& sim) const {
   return double(sim.broken_rods()) / std::max<double>(1.0, double(rods_));  // (no rods: 0, not NaN)
 }
 
-void BondCounts::columns(std::vector<std::string>& names) const {
-  names.insert(names.end(), {"broken_rods", "broken_fraction", "contacts"});
+void BondCounts::columns(std::vector<Column>& out) const {
+  out.insert(out.end(),
+             {{"broken_rods", "1", "the lattice's own rods broken now"},
+              {"broken_fraction", "1", "broken_rods / the lattice's rods at the start"},
+              {"contacts", "1", "contacts touching in the last evaluation (sphere-sphere and sphere-triangle)"}});
 }
 
 void BondCounts::row(const Simulation& sim, std::vector<double>& values) {

@@ -10,7 +10,7 @@ class BondCounts final : public Observer {
  public:
   explicit BondCounts(std::size_t rods) : rods_(rods) {}
   std::string_view name() const override { return "bonds"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
   void finish(const RunEnd& end, nlohmann::json& summary) override;
 

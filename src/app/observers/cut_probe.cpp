@@ -52,8 +52,12 @@ CutSetup CutProbe::setup_now() const {
   return s;
 }
 
-void CutProbe::columns(std::vector<std::string>& names) const {
-  names.insert(names.end(), {"tool_travel", "cutting_force_per_width", "thrust_force_per_width", "chip_thickness"});
+void CutProbe::columns(std::vector<Column>& out) const {
+  out.insert(out.end(),
+             {{"tool_travel", "m", "the tool's displacement along x from its initial placement"},
+              {"cutting_force_per_width", "N/m", "cutting force Fc = -force_<tool>_x over the workpiece width"},
+              {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
+              {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip reaches the section"}});
 }
 
 void CutProbe::row(const Simulation& sim, std::vector<double>& values) {

@@ -24,7 +24,7 @@ class CutProbe final : public Observer {
   CutProbe(const Model& model, const CutSetup& setup, int tool_mesh)
       : model_(model), setup_(setup), tool_mesh_(tool_mesh) {}
   std::string_view name() const override { return "cut"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
   void write_results(H5File& f) const override;
   void finish(const RunEnd& end, nlohmann::json& summary) override;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/console.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
 #include "swarf/simulation.h"
@@ -50,10 +51,19 @@ void check_energy_balance(const EnergyBalanceNow& b, double t) {
         nan_safe(b.plastic_work), nan_safe(b.viscous_work), nan_safe(b.fracture_energy), nan_safe(b.contact_work)));
 }
 
-void EnergyBalance::columns(std::vector<std::string>& names) const {
-  names.insert(names.end(), {"kinetic_energy", "rotational_energy", "elastic_energy", "contact_energy", "contact_work",
-                             "potential_energy", "external_work", "plastic_work", "viscous_work", "fracture_energy",
-                             "energy_error"});
+void EnergyBalance::columns(std::vector<Column>& out) const {
+  out.insert(out.end(),
+             {{"kinetic_energy", "J", "translational and rotational kinetic energy of all particles"},
+              {"rotational_energy", "J", "the rotational part of kinetic_energy"},
+              {"elastic_energy", "J", "energy stored in the intact rods"},
+              {"contact_energy", "J", "elastic energy in the touching contacts now (information only)"},
+              {"contact_work", "J", "energy taken up by the contacts since the start, stored and dissipated"},
+              {"potential_energy", "J", "energy in gravity relative to the initial positions"},
+              {"external_work", "J", "work of the groups' prescribed motions"},
+              {"plastic_work", "J", "plastic work of the rods, booked at commit"},
+              {"viscous_work", "J", "energy dissipated by the rods' viscous part"},
+              {"fracture_energy", "J", "elastic energy of each rod when it broke"},
+              {"energy_error", "J", "external work minus the energy held and dissipated (the balance's error)"}});
 }
 
 void EnergyBalance::row(const Simulation& sim, std::vector<double>& values) {
@@ -84,8 +94,8 @@ void EnergyBalance::finish(const RunEnd& end, nlohmann::json& summary) {
   r["energy_error_J"] = b.error;
   // The report's health line: the breakage beside the balance that its fracture energy enters.
   const std::size_t broken = end.sim.broken_rods();
-  fmt::print("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", broken, rods_,
-             100.0 * broken / std::max<double>(1.0, double(rods_)), b.error, b.external_work);
+  say("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", broken, rods_,
+      100.0 * broken / std::max<double>(1.0, double(rods_)), b.error, b.external_work);
 }
 
 }  // namespace swarf

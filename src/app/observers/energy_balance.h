@@ -43,7 +43,7 @@ class EnergyBalance final : public Observer {
   /// calls check_energy_balance (swarf run --no-energy-check turns it off).
   explicit EnergyBalance(std::size_t rods, bool check = true) : rods_(rods), check_(check) {}
   std::string_view name() const override { return "energy"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
   void begin(const Simulation& sim) override;
   void visit_state(StateArchive& ar) override;

@@ -7,9 +7,12 @@
 
 namespace swarf {
 
-void GroupReactions::columns(std::vector<std::string>& names) const {
+void GroupReactions::columns(std::vector<Column>& out) const {
   for (const auto& g : groups_)
-    for (char c : {'x', 'y', 'z'}) names.push_back(fmt::format("reaction_{}_{}", g.name, c));
+    for (char c : {'x', 'y', 'z'})
+      out.push_back(
+          {fmt::format("reaction_{}_{}", g.name, c), "N",
+           fmt::format("{} component of the force that the prescribed motion of group '{}' exerts", c, g.name)});
 }
 
 void GroupReactions::row(const Simulation& sim, std::vector<double>& values) {

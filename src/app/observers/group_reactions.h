@@ -13,7 +13,7 @@ class GroupReactions final : public Observer {
   /// The groups of the World the simulation steps (names only: held by reference).
   explicit GroupReactions(const std::vector<Group>& groups) : groups_(groups) {}
   std::string_view name() const override { return "reactions"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
   void finish(const RunEnd& end, nlohmann::json& summary) override;
 

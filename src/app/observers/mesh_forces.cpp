@@ -7,9 +7,11 @@
 
 namespace swarf {
 
-void MeshForces::columns(std::vector<std::string>& names) const {
+void MeshForces::columns(std::vector<Column>& out) const {
   for (const auto& m : meshes_)
-    for (char c : {'x', 'y', 'z'}) names.push_back(fmt::format("force_{}_{}", m.name, c));
+    for (char c : {'x', 'y', 'z'})
+      out.push_back({fmt::format("force_{}_{}", m.name, c), "N",
+                     fmt::format("{} component of the force the particles exert on mesh '{}'", c, m.name)});
 }
 
 void MeshForces::row(const Simulation& sim, std::vector<double>& values) {

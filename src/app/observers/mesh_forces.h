@@ -12,7 +12,7 @@ class MeshForces final : public Observer {
   /// The meshes of the World the simulation steps (names only: held by reference).
   explicit MeshForces(const std::vector<MeshBody>& meshes) : meshes_(meshes) {}
   std::string_view name() const override { return "mesh_forces"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
 
  private:

@@ -24,6 +24,14 @@ class StateArchive;
 class StepListener;
 class VtkSeries;
 
+/// One series column: its name (the CSV header, the /series dataset), its unit ("1" for
+/// counts and ratios) and a one-line meaning (docs/outputs.md has the full definitions).
+struct Column {
+  std::string name;
+  std::string unit;
+  std::string meaning;
+};
+
 /// What an observer may use at the end of the run.
 struct RunEnd {
   const Simulation& sim;
@@ -41,8 +49,8 @@ class Observer {
   virtual ~Observer() = default;
   /// Its name; its checkpoint state is stored under /run/<name>/.
   virtual std::string_view name() const = 0;
-  /// Appends the names of its series columns, in the order row() appends the values.
-  virtual void columns(std::vector<std::string>& names) const = 0;
+  /// Appends its series columns, in the order row() appends the values.
+  virtual void columns(std::vector<Column>& out) const = 0;
   /// Appends one value per column for the state now.
   virtual void row(const Simulation& sim, std::vector<double>& values) = 0;
   /// A fresh run (not a restart) begins: the initial state, before the first row.

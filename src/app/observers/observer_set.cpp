@@ -29,9 +29,15 @@ ObserverSet::~ObserverSet() {
     if (StepListener* l = o->step_listener()) sim_.remove_listener(l);
 }
 
+std::vector<Column> ObserverSet::column_specs() const {
+  std::vector<Column> cols{{"time", "s", "simulated time"}};
+  for (const auto& o : observers_) o->columns(cols);
+  return cols;
+}
+
 std::vector<std::string> ObserverSet::columns() const {
-  std::vector<std::string> names{"time"};
-  for (const auto& o : observers_) o->columns(names);
+  std::vector<std::string> names;
+  for (const auto& c : column_specs()) names.push_back(c.name);
   return names;
 }
 

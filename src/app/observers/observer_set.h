@@ -23,7 +23,9 @@ class ObserverSet {
   ObserverSet(const ObserverSet&) = delete;
   ObserverSet& operator=(const ObserverSet&) = delete;
 
-  /// "time", then each observer's columns.
+  /// "time", then each observer's columns, with units and meanings.
+  std::vector<Column> column_specs() const;
+  /// Their names.
   std::vector<std::string> columns() const;
   /// A fresh run begins (each observer's begin).
   void begin();

@@ -5,12 +5,15 @@
 
 #include <algorithm>
 
+#include "io/console.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
 
-void StepCounters::columns(std::vector<std::string>& names) const {
-  names.insert(names.end(), {"step", "dt", "iterations"});
+void StepCounters::columns(std::vector<Column>& out) const {
+  out.insert(out.end(), {{"step", "1", "steps done"},
+                         {"dt", "s", "size of the last accepted step"},
+                         {"iterations", "1", "force evaluations (sweeps or Newton iterations) of the last step"}});
 }
 
 void StepCounters::row(const Simulation& sim, std::vector<double>& values) {
@@ -48,15 +51,13 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
     summary["run"]["krylov_capped"] = ns.krylov_capped;
     summary["run"]["steps_rejected_indefinite"] = ns.indefinite;
   }
-  fmt::print("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n",
-             sim.steps(), sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s, ns_per_particle_step,
-             end.threads);
+  say("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} threads)\n", sim.steps(),
+      sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s, ns_per_particle_step, end.threads);
   if (sim.implicit())
-    fmt::print("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",
-               st.rejected, sweeps_mean, st.max_iterations, evaluations_per_us);
+    say("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",
+        st.rejected, sweeps_mean, st.max_iterations, evaluations_per_us);
   if (newton)
-    fmt::print(
-        "  newton: {} linear solves, {} tangent products ({:.1f} per step), {} solves stopped at "
+    say("  newton: {} linear solves, {} tangent products ({:.1f} per step), {} solves stopped at "
         "krylov_max_iterations, {} steps rejected on an indefinite tangent\n",
         sim.newton_stats().solves, sim.newton_stats().tangent_products,
         double(sim.newton_stats().tangent_products) / double(std::max<std::int64_t>(1, sim.steps())),

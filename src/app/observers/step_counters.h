@@ -12,7 +12,7 @@ class StepCounters final : public Observer {
   /// 'end_time' (s) as the case sets it; 'particles' for the cost per particle-step.
   StepCounters(double end_time, std::size_t particles) : end_time_(end_time), particles_(particles) {}
   std::string_view name() const override { return "steps"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
   void finish(const RunEnd& end, nlohmann::json& summary) override;
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "app/summary.h"
+#include "io/console.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
 
@@ -52,21 +53,21 @@ nlohmann::json uniaxial_json(const UniaxialInfo& ux, const Derived& d, const Loo
 }
 
 void print_table(const Derived& d, const LoopMeasurement& lm, double qs) {
-  fmt::print("\n  uniaxial [100] bar          measured        predicted   deviation\n");
+  say("\n  uniaxial [100] bar          measured        predicted   deviation\n");
   if (lm.ok) {
-    fmt::print("  Young's modulus   {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.modulus, d.youngs_modulus_100,
-               deviation_percent(lm.modulus, d.youngs_modulus_100));
-    fmt::print("  yield stress      {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.yield_stress, d.bar_yield_stress,
-               deviation_percent(lm.yield_stress, d.bar_yield_stress));
-    fmt::print("  hardening tangent {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.hardening_tangent,
-               d.bar_hardening_tangent, deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent));
+    say("  Young's modulus   {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.modulus, d.youngs_modulus_100,
+        deviation_percent(lm.modulus, d.youngs_modulus_100));
+    say("  yield stress      {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.yield_stress, d.bar_yield_stress,
+        deviation_percent(lm.yield_stress, d.bar_yield_stress));
+    say("  hardening tangent {:>14.5g} Pa {:>14.5g} Pa   {:+.2f} %\n", lm.hardening_tangent, d.bar_hardening_tangent,
+        deviation_percent(lm.hardening_tangent, d.bar_hardening_tangent));
     if (lm.reverse_ok)
-      fmt::print("  reverse elastic range {:>10.5g} Pa {:>14.5g} Pa   {:+.2f} %  (Bauschinger)\n",
-                 lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress,
-                 deviation_percent(lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress));
+      say("  reverse elastic range {:>10.5g} Pa {:>14.5g} Pa   {:+.2f} %  (Bauschinger)\n",
+          lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress,
+          deviation_percent(lm.turn_stress - lm.reverse_yield_stress, 2.0 * d.bar_yield_stress));
   }
-  if (!lm.note.empty()) fmt::print("  note: {}\n", lm.note);
-  fmt::print("  quasi-static check: grip and mid-plane stress differ by at most {:.3g} of the peak stress\n", qs);
+  if (!lm.note.empty()) say("  note: {}\n", lm.note);
+  say("  quasi-static check: grip and mid-plane stress differ by at most {:.3g} of the peak stress\n", qs);
 }
 
 }  // namespace
@@ -104,8 +105,11 @@ int UniaxialProbe::segment_at(double t) const {
   return seg;
 }
 
-void UniaxialProbe::columns(std::vector<std::string>& names) const {
-  names.insert(names.end(), {"strain", "stress", "stress_predicted", "stress_midplane"});
+void UniaxialProbe::columns(std::vector<Column>& out) const {
+  out.insert(out.end(), {{"strain", "1", "nominal bar strain from the grips' motion"},
+                         {"stress", "Pa", "nominal bar stress from the grips' reactions, positive in tension"},
+                         {"stress_predicted", "Pa", "the rod law through the FCC relations, without viscosity"},
+                         {"stress_midplane", "Pa", "axial force of the rods crossing the mid-plane over A_0"}});
 }
 
 void UniaxialProbe::row(const Simulation& sim, std::vector<double>& values) {

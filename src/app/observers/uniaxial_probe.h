@@ -21,7 +21,7 @@ class UniaxialProbe final : public Observer, public StepListener {
   /// For a model with [uniaxial] (model.uniaxial.enabled), held by reference.
   explicit UniaxialProbe(const Model& model);
   std::string_view name() const override { return "uniaxial"; }
-  void columns(std::vector<std::string>& names) const override;
+  void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
   void visit_state(StateArchive& ar) override;
   StepListener* step_listener() override { return this; }

@@ -1,0 +1,35 @@
+// tiny_cut.h: a cut small enough for a test, run through the CLI: a 6 x 2 x 3-cell block
+// (R = 0.1 mm) held at its base, a 10 degree rake tool at 5 m/s, contacts with friction, no
+// frames or plots. Tests override end_time and the output keys they need with --set.
+#pragma once
+
+namespace swarf::test {
+
+inline constexpr const char* kTinyCut = R"([workpiece]
+cells = [6, 2, 3]
+radius = 1e-4
+[rod]
+tensile_strength = 3e8
+[contact]
+friction = 0.3
+[[group]]
+name = "base"
+side = "z-"
+[[mesh]]
+name = "tool"
+rake_angle = 10.0
+width = 1.2e-3
+face_length = 1e-3
+origin = [-0.05e-3, 0.14e-3, 0.5e-3]
+motion = "velocity"
+velocity = [5.0, 0.0, 0.0]
+[integrator]
+end_time = 4e-5
+[output]
+vtk = false
+plots = false
+steady_from = 2e-5
+series_interval = 1e-6
+)";
+
+}  // namespace swarf::test
