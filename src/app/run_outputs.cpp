@@ -14,6 +14,7 @@
 #include "io/vtk_output.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
+#include "swarf/measure/particle_fields.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
@@ -65,6 +66,11 @@ double RunOutputs::seconds_since(std::chrono::steady_clock::time_point t) const 
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+void RunOutputs::write_frame(double t) {
+  const ParticleFields fields = particle_fields(model_.particles, model_.rods, model_.periodic, &sim_.contacts());
+  vtk_->write_frame(t, model_.particles, model_.rods, model_.meshes, &fields);
+}
+
 void RunOutputs::write_row() {
   const std::vector<double> row = observers_.row();
   series_.row(row);
@@ -74,7 +80,7 @@ void RunOutputs::write_row() {
 void RunOutputs::begin() {
   observers_.begin();
   write_row();
-  if (vtk_) vtk_->write_frame(0.0, model_.particles, model_.rods, model_.meshes);
+  if (vtk_) write_frame(0.0);
   rec_.next_row = series_interval_;
   rec_.next_frame = frame_interval_ > 0 ? frame_interval_ : HUGE_VAL;
   start_ = std::chrono::steady_clock::now();
@@ -108,7 +114,7 @@ void RunOutputs::after_step(bool last) {
   if (!row && !frame && !checkpoint) return;
   const auto o0 = std::chrono::steady_clock::now();
   if (row) write_row();
-  if (frame) vtk_->write_frame(t, model_.particles, model_.rods, model_.meshes);
+  if (frame) write_frame(t);
   while (rec_.next_row <= t * (1.0 + 1e-12)) rec_.next_row += series_interval_;
   while (rec_.next_frame <= t * (1.0 + 1e-12)) rec_.next_frame += frame_interval_;
   if (checkpoint) write_checkpoint_now();

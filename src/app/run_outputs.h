@@ -66,6 +66,7 @@ class RunOutputs {
 
  private:
   void write_row();
+  void write_frame(double t);  // the ParaView frame with the per-particle fields
   double seconds_since(std::chrono::steady_clock::time_point t) const;
 
   std::string dir_;

@@ -14,6 +14,7 @@
 #include "io/vtk_output.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
+#include "swarf/measure/particle_fields.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -146,6 +147,14 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     put("/particles/mass", p.mass.data(), n, 1, "kg", "particle mass");
     put("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n, 1, "1",
         "damage: broken rods over the particle's rods at the start");
+    const ParticleFields fields = particle_fields(p, r, sim.world().periodic, &sim.contacts());
+    put("/particles/stress", n ? fields.stress[0].data() : nullptr, n, 6, "Pa",
+        "virial stress of rods and contacts over 4 sqrt(2) R^3: xx, yy, zz, xy, yz, xz; positive in tension");
+    put("/particles/von_mises_stress", fields.von_mises.data(), n, 1, "Pa", "von Mises stress sqrt(3/2 s:s)");
+    put("/particles/hydrostatic_stress", fields.hydrostatic.data(), n, 1, "Pa",
+        "trace of the stress over 3, positive in tension (pressure = -this)");
+    put("/particles/plastic_strain", fields.plastic_strain.data(), n, 1, "1",
+        "von Mises equivalent of the plastic strain tensor fitted to the particle's intact rods");
     if (sim.settings().sphere_orientations) {
       put("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4, "1",
           "unit quaternion [q0 (scalar), q1, q2, q3], body to world");

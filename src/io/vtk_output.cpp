@@ -6,6 +6,8 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationStringKey.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -16,6 +18,7 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <array>
 #include <filesystem>
 
 #include "io/atomic_file.h"
@@ -25,18 +28,26 @@
 namespace swarf {
 namespace {
 
-vtkNew<vtkDoubleArray> vector_array(const char* name, const std::vector<Vec3>& v) {
+// The array's unit as VTK's UNITS_LABEL information key, which the XML writers store with
+// the array (ParaView shows it in the information panel).
+void set_unit(vtkDataArray* a, const char* unit) {
+  if (unit) a->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), unit);
+}
+
+vtkNew<vtkDoubleArray> vector_array(const char* name, const std::vector<Vec3>& v, const char* unit = nullptr) {
   vtkNew<vtkDoubleArray> a;
   a->SetName(name);
+  set_unit(a, unit);
   a->SetNumberOfComponents(3);
   a->SetNumberOfTuples(static_cast<vtkIdType>(v.size()));
   for (std::size_t i = 0; i < v.size(); ++i) a->SetTypedTuple(static_cast<vtkIdType>(i), v[i].data());
   return a;
 }
 
-vtkNew<vtkDoubleArray> scalar_array(const char* name, const std::vector<double>& v) {
+vtkNew<vtkDoubleArray> scalar_array(const char* name, const std::vector<double>& v, const char* unit = nullptr) {
   vtkNew<vtkDoubleArray> a;
   a->SetName(name);
+  set_unit(a, unit);
   a->SetNumberOfValues(static_cast<vtkIdType>(v.size()));
   for (std::size_t i = 0; i < v.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), v[i]);
   return a;
@@ -71,7 +82,9 @@ void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   w->SetDataModeToAppended();
   w->EncodeAppendedDataOff();
   w->SetHeaderTypeToUInt64();
-  w->SetCompressorTypeToNone();
+  // zlib at its fastest level: smaller frames for little time (docs/outputs.md has the sizes).
+  w->SetCompressorTypeToZLib();
+  w->SetCompressionLevel(1);
   if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
   std::filesystem::rename(tmp, path);
 }
@@ -126,7 +139,8 @@ VtkSeries::VtkSeries(const std::string& dir, bool with_rods, bool with_orientati
   std::filesystem::create_directories(std::filesystem::path(dir) / "frames");
 }
 
-void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes) {
+void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes,
+                            const ParticleFields* fields) {
   const std::size_t k = times_.size();
   mesh_names_.clear();
   for (const auto& mb : meshes) {
@@ -144,10 +158,24 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     set_cells(grid, VTK_VERTEX, 1, conn);
     std::vector<Vec3> disp(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) disp[i] = p.position[i] - p.initial_position[i];
-    grid->GetPointData()->AddArray(vector_array("velocity", p.velocity));
-    grid->GetPointData()->AddArray(vector_array("displacement", disp));
-    grid->GetPointData()->AddArray(scalar_array("radius", p.radius));
-    grid->GetPointData()->AddArray(scalar_array("broken_fraction", broken_fraction_per_particle(p, r)));
+    grid->GetPointData()->AddArray(vector_array("velocity", p.velocity, "m/s"));
+    grid->GetPointData()->AddArray(vector_array("displacement", disp, "m"));
+    grid->GetPointData()->AddArray(scalar_array("radius", p.radius, "m"));
+    grid->GetPointData()->AddArray(scalar_array("broken_fraction", broken_fraction_per_particle(p, r), "1"));
+    if (fields) {
+      // 6 components in ParaView's order for a symmetric tensor (XX, YY, ZZ, XY, YZ, XZ).
+      vtkNew<vtkDoubleArray> s;
+      s->SetName("stress");
+      set_unit(s, "Pa");
+      s->SetNumberOfComponents(6);
+      for (int c = 0; c < 6; ++c) s->SetComponentName(c, std::array{"XX", "YY", "ZZ", "XY", "YZ", "XZ"}[c]);
+      s->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
+      for (std::size_t i = 0; i < p.size(); ++i) s->SetTypedTuple(static_cast<vtkIdType>(i), fields->stress[i].data());
+      grid->GetPointData()->AddArray(s);
+      grid->GetPointData()->AddArray(scalar_array("von_mises_stress", fields->von_mises, "Pa"));
+      grid->GetPointData()->AddArray(scalar_array("hydrostatic_stress", fields->hydrostatic, "Pa"));
+      grid->GetPointData()->AddArray(scalar_array("plastic_strain", fields->plastic_strain, "1"));
+    }
     if (with_orientations_) {
       vtkNew<vtkDoubleArray> q;
       q->SetName("orientation");
@@ -155,7 +183,7 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
       q->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
       for (std::size_t i = 0; i < p.size(); ++i) q->SetTypedTuple(static_cast<vtkIdType>(i), p.orientation[i].data());
       grid->GetPointData()->AddArray(q);
-      grid->GetPointData()->AddArray(vector_array("angular_velocity", p.omega));
+      grid->GetPointData()->AddArray(vector_array("angular_velocity", p.omega, "rad/s"));
     }
     vtkNew<vtkIntArray> group;
     group->SetName("group");
@@ -184,9 +212,9 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
       state->SetValue(static_cast<vtkIdType>(b), r.intact[b]);
     }
     set_cells(grid, VTK_LINE, 2, conn);
-    grid->GetCellData()->AddArray(scalar_array("stress", stress));
-    grid->GetCellData()->AddArray(scalar_array("strain", strain));
-    grid->GetCellData()->AddArray(scalar_array("plastic_shift", shift));
+    grid->GetCellData()->AddArray(scalar_array("stress", stress, "Pa"));
+    grid->GetCellData()->AddArray(scalar_array("strain", strain, "1"));
+    grid->GetCellData()->AddArray(scalar_array("plastic_shift", shift, "1"));
     grid->GetCellData()->AddArray(state);
     write_grid(grid, fmt::format("{}/frames/rods_{:05d}.vtu", dir_, k));
   }

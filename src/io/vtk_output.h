@@ -13,6 +13,7 @@
 
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/periodic.h"
+#include "swarf/measure/particle_fields.h"
 #include "swarf/state/mesh.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
@@ -25,7 +26,10 @@ class VtkSeries {
   VtkSeries(const std::string& dir, bool with_rods, bool with_orientations = false);
   /// Writes frame number 'frames()' at simulated time t (s): particles, rods and each mesh at
   /// its current placement (reference vertices + offset).
-  void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {});
+  /// 'fields' (may be null): the per-particle stress, von Mises and hydrostatic stress and
+  /// plastic strain (measure/particle_fields.h) as point arrays.
+  void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {},
+                   const ParticleFields* fields = nullptr);
   std::size_t frames() const { return times_.size(); }
   const std::vector<double>& times() const { return times_; }
   /// Periodic width: rod strains from the nearest image (the lines still join the stored positions).

@@ -142,6 +142,13 @@ class ContactSystem {
   /// sums().add(i, radius, force, torque).
   void add_to_particle(std::size_t i, double radius, Vec3& force, Vec3& torque) const;
 
+  /// Adds each touching contact's moment sym((x_c - x_i) (x) f) on each of its spheres to
+  /// w[i] (xx, yy, zz, xy, yz, xz; N m), from the last evaluation's results: sphere-sphere at
+  /// x_c - x_i = R_i n (n from i to j, nearest image), sphere-triangle at -R_i n (n from the
+  /// wall to the sphere). Divided by a volume it is the contacts' part of the particle stress
+  /// (measure/particle_fields.h). 'w' has one entry per particle.
+  void add_virial(const Particles& p, std::vector<std::array<double, 6>>& w) const;
+
   /// Writes the trial histories back (after a converged step).
   void commit();
 

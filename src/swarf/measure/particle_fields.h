@@ -1,0 +1,70 @@
+// particle_fields.h: the per-particle fields an FEM user looks for, computed from the state:
+// the stress tensor (the virial of the particle's rods and contacts over its volume), its von
+// Mises and hydrostatic parts, and an equivalent plastic strain from its rods.
+//
+// Stress. Particle i's stress is the Love-Weber sum over the forces acting on it,
+//     sigma_i = 1/V_i sum_c sym((x_c - x_i) (x) f_c),
+// with f_c the force on i at the point x_c: a rod's force at the rod's midpoint (x_c - x_i =
+// d/2, d = x_j - x_i), a sphere-sphere contact's at R_i n, a sphere-triangle contact's at
+// -R_i n (n from the wall to the sphere). Positive in tension. V_i = 4 sqrt(2) R_i^3 is the
+// volume per particle of the FCC lattice of spheres of radius R_i in contact (a^3/4, a = 2
+// sqrt(2) R), the reference volume: the result is the Kirchhoff stress (Cauchy times the
+// volume ratio), equal to the Cauchy stress within the volume change. Under a homogeneous
+// deformation an interior particle's stress is exactly the Cauchy-Born crystal's times det F
+// (lattice_gen/cauchy_born.h); at free surfaces and in fragments the particle's volume is not
+// filled and the value is that of the particle's neighbourhood, as in any virial stress.
+//
+// Plastic strain. Each intact rod holds a plastic strain eps_p = (E - k)/E eps0 (its shift;
+// laws/rod_law.h) along its direction n. The particle's plastic strain tensor is the one whose
+// normal strains n.E.n fit its intact rods' eps_p best in least squares (exact when the rods
+// span the 6 independent directions of a symmetric tensor, as an interior FCC particle's do;
+// the minimum-norm fit otherwise), and the field is its von Mises equivalent sqrt(2/3 e:e) of
+// the deviator e. It is the plastic strain the particle's CURRENT rods hold: rods that broke
+// or were given up in a neighbour exchange take theirs with them, so in a flowing chip it is
+// below the accumulated plastic strain of a continuum (docs/outputs.md).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "swarf/core/periodic.h"
+#include "swarf/state/particles.h"
+#include "swarf/state/rods.h"
+
+namespace swarf {
+
+class ContactSystem;
+
+/// A symmetric tensor as xx, yy, zz, xy, yz, xz (ParaView's order for 6 components).
+using SymTensor = std::array<double, 6>;
+
+/// t += sym(a (x) b): a force's moment about the particle's centre, a its arm, b the force.
+inline void add_moment(SymTensor& t, const Vec3& a, const Vec3& b) {
+  t[0] += a[0] * b[0];
+  t[1] += a[1] * b[1];
+  t[2] += a[2] * b[2];
+  t[3] += 0.5 * (a[0] * b[1] + a[1] * b[0]);
+  t[4] += 0.5 * (a[1] * b[2] + a[2] * b[1]);
+  t[5] += 0.5 * (a[0] * b[2] + a[2] * b[0]);
+}
+
+struct ParticleFields {
+  std::vector<SymTensor> stress;       ///< Pa, positive in tension
+  std::vector<double> von_mises;       ///< sqrt(3/2 s:s), s the deviator of the stress, Pa
+  std::vector<double> hydrostatic;     ///< tr(sigma)/3, Pa (positive in tension; pressure = -this)
+  std::vector<double> plastic_strain;  ///< von Mises equivalent of the fitted plastic strain tensor, 1
+};
+
+/// The volume V_i = 4 sqrt(2) R^3 a particle of radius R stands for, m^3.
+double particle_volume(double radius);
+
+/// The fields for the state now. The rods' forces are those of the last evaluation
+/// (Rods::force_coef: elastic-plastic and viscous); 'contacts' may be null (no contacts), else
+/// its last evaluation's results are used. 'periodic': the nearest image for the rods.
+ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic& periodic,
+                               const ContactSystem* contacts);
+
+/// von Mises stress sqrt(3/2 s:s) of a symmetric tensor (s its deviator), in its unit.
+double von_mises(const SymTensor& t);
+
+}  // namespace swarf
