@@ -274,5 +274,46 @@ TEST(ShortCut, ShowsProgressPrintsTheTableAndPostReproducesTheSummary) {
   EXPECT_NE(bad.output.find("did not finish"), std::string::npos) << bad.output;
 }
 
+// A restart that extends: a run to t1 with a checkpoint at its end, continued with a later
+// end_time, ends bit-identically to one run to t2 (verlet: no step is shortened), with the same
+// series rows; a key other than the end time and the outputs is refused by name, and so is an
+// end time before the checkpoint's.
+TEST(Restart, ExtendsAFinishedRunBitIdenticallyToOneLongRun) {
+  test::TempDir dir("restart_extend");
+  test::write_file(dir / "c.toml", kTinyCut);
+  const std::string bin = SWARF_BINARY, c = dir / "c.toml";
+  const std::string common =
+      " --set integrator.scheme='\"verlet\"' --set output.vtk=false --set output.steady_from=1e-5 "
+      "--set output.series_interval=1e-6";
+  auto whole = test::run_command(bin + " run " + c + " --out " + (dir / "whole") + common);
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  auto first = test::run_command(bin + " run " + c + " --out " + (dir / "part") + common +
+                                 " --set integrator.end_time=2e-5 --set output.checkpoint_at_end=true");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const auto s1 = nlohmann::json::parse(test::read_file(dir / "part/summary.json"));
+  H5File ck(dir / "part/checkpoint.h5", H5File::Mode::Read);
+  EXPECT_EQ(ck.read_double_attribute("steps"), s1["run"]["steps"].get<double>()) << "a checkpoint of the last step";
+
+  auto bad = test::run_command(bin + " run --restart " + (dir / "part/checkpoint.h5") + " --set rod.yield_strain=2e-3");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("'rod.yield_strain' cannot change on a restart"), std::string::npos) << bad.output;
+  auto early = test::run_command(bin + " run --restart " + (dir / "part/checkpoint.h5") +
+                                 " --set integrator.end_time=1e-5");
+  EXPECT_EQ(early.exit_code, 2) << early.output;
+  EXPECT_NE(early.output.find("lies before the checkpoint's time"), std::string::npos) << early.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "part/summary.json")) << "a refused restart deletes nothing";
+
+  auto ext = test::run_command(bin + " run --restart " + (dir / "part/checkpoint.h5") +
+                               " --set integrator.end_time=4e-5 --threads 2");
+  ASSERT_EQ(ext.exit_code, 0) << ext.output;
+  const auto sw = nlohmann::json::parse(test::read_file(dir / "whole/summary.json"));
+  const auto se = nlohmann::json::parse(test::read_file(dir / "part/summary.json"));
+  EXPECT_EQ(sw["state_hash"], se["state_hash"]);
+  EXPECT_EQ(sw["run"]["steps"], se["run"]["steps"]);
+  EXPECT_EQ(test::read_file(dir / "whole/series.csv"), test::read_file(dir / "part/series.csv"));
+  EXPECT_EQ(sw["cutting"], se["cutting"]);
+  EXPECT_EQ(se["case_effective"]["integrator"]["end_time"], 4e-5);
+}
+
 }  // namespace
 }  // namespace swarf

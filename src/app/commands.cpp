@@ -144,8 +144,9 @@ struct RunCommand final : Command {
                   "Run on when the energy error exceeds the external work and the energy held (a sign of an "
                   "unstable step; docs/outputs.md)");
     sub->add_option("--restart", ro.restart,
-                    "Continue from a checkpoint (DIR/checkpoint.h5, written every "
-                    "output.checkpoint_every steps); no case file or --set then; --out defaults to its directory");
+                    "Continue from a checkpoint (DIR/checkpoint.h5, written every output.checkpoint_every steps "
+                    "and, with output.checkpoint_at_end, after the last); no case file; --set only "
+                    "integrator.end_time (to extend the run) and output keys; --out defaults to its directory");
   }
   int run() override {
     if (sub->count("--threads")) check_thread_count(ro.threads, "--threads");

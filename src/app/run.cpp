@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -26,6 +27,7 @@
 #include "io/atomic_file.h"
 #include "io/checkpoint.h"
 #include "io/console.h"
+#include "io/h5file.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
@@ -37,12 +39,31 @@ namespace {
 // default) with the overrides; 'stored' receives it as a checkpoint records it.
 CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
   if (!opt.restart.empty()) {
-    if (!opt.case_path.empty() || !opt.overrides.empty())
+    if (!opt.case_path.empty())
       throw InputError(
-          fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case file "
-                      "and no --set (got '{}'{})",
-                      opt.restart, opt.case_path, opt.overrides.empty() ? "" : " and --set " + opt.overrides.front()));
+          fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case "
+                      "file (got '{}')",
+                      opt.restart, opt.case_path));
+    // An extension: only the end time and the outputs may change. Every other key made the
+    // state the checkpoint holds, and a different value would not continue that run.
+    static const std::vector<std::string> extendable{
+        "integrator.end_time", "output.series_interval", "output.frame_interval",    "output.checkpoint_every",
+        "output.steady_from",  "output.plots",           "output.checkpoint_at_end", "output.progress"};
+    for (const auto& o : opt.overrides) {
+      const std::string key = o.substr(0, o.find('='));
+      auto trimmed = key;
+      while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
+      if (std::find(extendable.begin(), extendable.end(), trimmed) == extendable.end()) {
+        std::string list;
+        for (const auto& k : extendable) list += (list.empty() ? "" : ", ") + k;
+        throw InputError(
+            fmt::format("--restart {}: --set {}: key '{}' cannot change on a restart (the checkpoint's "
+                        "state was made with the case's value); a restart may set only {}",
+                        opt.restart, o, trimmed, list));
+      }
+    }
     stored = read_checkpoint_case(opt.restart);
+    stored.overrides.insert(stored.overrides.end(), opt.overrides.begin(), opt.overrides.end());
     return parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
   }
   CaseSettings cs = opt.case_path.empty() ? parse_case(kDefaultCaseToml, "<built-in default case>", opt.overrides)
@@ -139,6 +160,14 @@ void run_case(const RunOptions& opt) {
   const CaseSettings cs = read_case(opt, stored);
   check_memory(cs, opt.force);
   Model model = build_model(cs);
+  if (!opt.restart.empty()) {  // (before the run directory is touched)
+    const double t = H5File(opt.restart, H5File::Mode::Read).read_double_attribute("time_s");
+    if (model.settings.integrator.end_time < t)
+      throw InputError(
+          fmt::format("--restart {}: key 'integrator.end_time' = {:.6g} s lies before the "
+                      "checkpoint's time {:.6g} s",
+                      opt.restart, model.settings.integrator.end_time, t));
+  }
   const int threads = set_threads(opt.threads);
   const RunProvenance prov = run_provenance(threads);
   print_setup(model, threads);

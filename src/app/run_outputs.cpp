@@ -31,6 +31,7 @@ RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& s
                                                                  : model.settings.integrator.end_time / 2000),
       frame_interval_(model.settings.output.frame_interval),
       checkpoint_every_(model.settings.output.checkpoint_every),
+      checkpoint_at_end_(model.settings.output.checkpoint_at_end),
       vtk_(model.settings.output.vtk
                ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk, model.settings.output.orientations)
                : nullptr),
@@ -110,7 +111,7 @@ void RunOutputs::after_step(bool last) {
   const double t = sim_.time();
   const bool row = t >= rec_.next_row * (1.0 - 1e-12) || last;
   const bool frame = vtk_ && (t >= rec_.next_frame * (1.0 - 1e-12) || last);
-  const bool checkpoint = checkpoint_every_ > 0 && !last && sim_.steps() % checkpoint_every_ == 0;
+  const bool checkpoint = last ? checkpoint_at_end_ : checkpoint_every_ > 0 && sim_.steps() % checkpoint_every_ == 0;
   if (!row && !frame && !checkpoint) return;
   const auto o0 = std::chrono::steady_clock::now();
   if (row) write_row();

@@ -60,7 +60,7 @@ class RunOutputs {
   SeriesColumns series() const { return SeriesColumns(columns_, rec_.rows); }
   /// The ParaView series, or null without output.vtk.
   VtkSeries* vtk() { return vtk_.get(); }
-  bool checkpoints() const { return checkpoint_every_ > 0; }
+  bool checkpoints() const { return checkpoint_every_ > 0 || checkpoint_at_end_; }
   /// Writes DIR/checkpoint.h5 of the current state now (an interrupted run keeps its place).
   void write_checkpoint_now();
 
@@ -78,6 +78,7 @@ class RunOutputs {
   double series_interval_;  ///< s
   double frame_interval_;   ///< s; 0 = the first and the last frame only
   int checkpoint_every_;    ///< steps; 0 = none
+  bool checkpoint_at_end_;  ///< a checkpoint after the last step too
   std::unique_ptr<VtkSeries> vtk_;
   SeriesWriter series_;
   RunRecord rec_;

@@ -142,7 +142,8 @@ struct OutputSettings {
   bool progress = true;          ///< progress line on stderr
   double steady_from = -1.0;     ///< cutting: force statistics over rows with time >= this, s; < 0 = half the end time
   int checkpoint_every = 0;      ///< write DIR/checkpoint.h5 every this many steps; 0 = never
-  bool orientations = false;     ///< integrate the spheres' orientations and write them and the angular velocities
+  bool checkpoint_at_end = false;  ///< also write DIR/checkpoint.h5 after the last step (to extend the run)
+  bool orientations = false;       ///< integrate the spheres' orientations and write them and the angular velocities
 };
 
 /// [contact]: Hertz contacts with friction between unbonded particles and with meshes.

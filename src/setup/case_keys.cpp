@@ -807,6 +807,12 @@ const std::vector<Key<OutputSettings>>& output_keys() {
        .doc = "Write the restart file `DIR/checkpoint.h5` after every this many accepted steps (newmark: "
               "rejected tries do not count). 0 means no checkpoints. See "
               "[Restart](#restart-swarf-run---restart)."},
+      {.name = "checkpoint_at_end",
+       .field = &S::checkpoint_at_end,
+       .doc = "Also write `DIR/checkpoint.h5` after the last step, so that `swarf run --restart DIR/checkpoint.h5 "
+              "--set integrator.end_time=...` extends the finished run from its end (without it, an extension "
+              "continues from the last periodic checkpoint and computes the stretch after it again). See "
+              "[Restart](#restart-swarf-run---restart)."},
       {.name = "orientations",
        .field = &S::orientations,
        .doc = "Integrate the spheres' orientations (unit quaternions, body to world) and write them and the "

@@ -73,7 +73,18 @@ ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic
     out.von_mises[i] = von_mises(out.stress[i]);
     out.hydrostatic[i] = (out.stress[i][0] + out.stress[i][1] + out.stress[i][2]) / 3.0;
     if (rhs[i].isZero(0.0)) continue;  // (no plastic strain in any rod: 0 without a solve)
-    const Eigen::Matrix<double, 6, 1> e = normal[i].completeOrthogonalDecomposition().solve(rhs[i]);
+    // Least squares through the normal matrix's eigenvectors, keeping those it determines
+    // well: an eigenvalue below kWellDetermined of the largest (rods nearly parallel, or
+    // fewer than 6 directions) is dropped rather than inverted, which bounds each kept
+    // component by the rods' rms plastic strain / sqrt(kWellDetermined). An interior FCC
+    // particle's smallest ratio is 1/4, so it keeps all six (the fit is exact there).
+    constexpr double kWellDetermined = 0.05;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(normal[i]);
+    const double top = eig.eigenvalues().maxCoeff();
+    Eigen::Matrix<double, 6, 1> e = Eigen::Matrix<double, 6, 1>::Zero();
+    for (int q = 0; q < 6; ++q)
+      if (eig.eigenvalues()[q] > kWellDetermined * top)
+        e += (eig.eigenvectors().col(q).dot(rhs[i]) / eig.eigenvalues()[q]) * eig.eigenvectors().col(q);
     // von Mises equivalent strain of the fitted tensor: sqrt(2/3 dev:dev), off-diagonals twice.
     out.plastic_strain[i] = std::sqrt(2.0 / 3.0) * von_mises(SymTensor{e[0], e[1], e[2], e[3], e[4], e[5]}) /
                             std::sqrt(1.5);

@@ -18,10 +18,10 @@
 // laws/rod_law.h) along its direction n. The particle's plastic strain tensor is the one whose
 // normal strains n.E.n fit its intact rods' eps_p best in least squares (exact when the rods
 // span the 6 independent directions of a symmetric tensor, as an interior FCC particle's do;
-// the minimum-norm fit otherwise), and the field is its von Mises equivalent sqrt(2/3 e:e) of
-// the deviator e. It is the plastic strain the particle's CURRENT rods hold: rods that broke
-// or were given up in a neighbour exchange take theirs with them, so in a flowing chip it is
-// below the accumulated plastic strain of a continuum (docs/outputs.md).
+// otherwise the part the rods determine well: see particle_fields.cpp), and the field is its
+// von Mises equivalent sqrt(2/3 e:e), e the deviator. It is the plastic strain the particle's CURRENT rods hold: rods
+// that broke or were given up in a neighbour exchange take theirs with them, so in a flowing chip it is below the
+// accumulated plastic strain of a continuum (docs/outputs.md).
 #pragma once
 
 #include <array>
