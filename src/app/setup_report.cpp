@@ -35,7 +35,18 @@ void print_setup(const Model& m, int threads) {
   if (m.periodic.on())
     fmt::print("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n",
                m.periodic.period);
-  if (!m.rods.ends.empty()) {
+  if (d.membrane) {
+    fmt::print(
+        "  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (bond "
+        "pre-strain {:.4g}); bond k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",
+        d.membrane_modulus_2d, d.membrane_areal_density, d.membrane_tension, d.membrane_pre_strain, d.rod_stiffness,
+        d.rod_damping);
+    fmt::print(
+        "  membrane waves: c_L = {:.4g} m/s, c_S = {:.4g} m/s, c_T = sqrt(T/rho_A) = {:.4g} m/s; CFL step d/c_L = "
+        "{:.4g} s, stable step sqrt(4m/(6(k+f/d))) = {:.4g} s\n",
+        d.membrane_wave_longitudinal, d.membrane_wave_shear, d.membrane_wave_transverse, d.membrane_dt_cfl,
+        2.0 / d.omega_max);
+  } else if (!m.rods.ends.empty()) {
     const auto& mt = m.settings.material;
     if (d.converted && mt.flow_curve) {
       std::string pts;
@@ -81,7 +92,7 @@ void print_setup(const Model& m, int threads) {
         "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
         "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n",
         nu);
-  if (!m.rods.ends.empty())
+  if (!m.rods.ends.empty() && !d.membrane)
     fmt::print(
         "  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "
         "kg/m^3\n",
