@@ -19,8 +19,12 @@ void print_setup(const Model& m, int threads) {
   fmt::print("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(),
              threads);
   for (const auto& g : m.groups) fmt::print("  group '{}': {} particles\n", g.name, g.members.size());
-  fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
-             d.particle_mass);
+  if (d.membrane)
+    fmt::print("  radius R = {:.4g} m, site spacing d = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius,
+               d.nn_distance, d.particle_mass);
+  else
+    fmt::print("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
+               d.particle_mass);
   if (d.position_jitter > 0.0) {
     const auto [lo, hi] = std::minmax_element(m.rods.rest_length.begin(), m.rods.rest_length.end());
     fmt::print("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed,

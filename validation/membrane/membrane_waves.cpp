@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "../../tests/scenes/membrane_pulse.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
@@ -60,34 +61,11 @@ void run(const Run& r, const std::string& dir, std::FILE* cases) {
   const double c = r.transverse ? d.membrane_wave_transverse : d.membrane_wave_longitudinal;
   const double tau = kWave / c, amplitude = 1e-3 * kWave;
   // The source: the site nearest the centre; the probes: its row's sites towards +x.
-  const Vec3 centre(0.5 * kLength, 0.5 * kLength, 0.0);
-  std::size_t src = 0;
-  for (std::size_t i = 0; i < m.particles.size(); ++i)
-    if ((m.particles.position[i] - centre).norm() < (m.particles.position[src] - centre).norm()) src = i;
-  const Vec3 x0 = m.particles.position[src];
-  std::vector<std::size_t> probes;
-  std::vector<double> dist;
-  for (std::size_t i = 0; i < m.particles.size(); ++i) {
-    const Vec3 u = m.particles.position[i] - x0;
-    if (std::abs(u[1]) < 1e-3 * d.nn_distance && u[0] > 0.5 * kWave && u[0] < 5.5 * kWave) {
-      probes.push_back(i);
-      dist.push_back(u[0]);
-    }
-  }
-  // The pulse, piecewise linear through 129 points of (1 - cos(2 pi t / tau)) / 2, then held at 0.
-  Motion pulse;
-  pulse.kind = Motion::Kind::Table;
   const int comp = r.transverse ? 2 : 0;
-  for (int k = 0; k <= 128; ++k) {
-    const double t = tau * k / 128.0;
-    Vec3 u = Vec3::Zero();
-    u[comp] = amplitude * 0.5 * (1.0 - std::cos(2.0 * M_PI * t / tau));
-    pulse.time.push_back(t);
-    pulse.displacement.push_back(u);
-  }
-  m.particles.group[src] = static_cast<std::int32_t>(m.groups.size());
-  m.particles.prescribed[src] = static_cast<std::uint8_t>(1u << comp);
-  m.groups.push_back(Group{"source", static_cast<std::uint8_t>(1u << comp), pulse, {static_cast<std::int32_t>(src)}});
+  const test::MembranePulse pulse = test::add_membrane_pulse(m, Vec3(0.5 * kLength, 0.5 * kLength, 0.0), comp,
+                                                             amplitude, tau, 0.5 * kWave, 5.5 * kWave);
+  const auto& probes = pulse.probes;
+  const auto& dist = pulse.distance;
 
   Simulation sim(m, m.step);
   const double end = 6.5 * kWave / c;
