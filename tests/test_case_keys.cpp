@@ -86,11 +86,22 @@ radius = 1e-3
 [output]
 )";
 
-// kEveryTable with 'line' added to 'table'.
+// A [membrane] takes the place of the [workpiece] (a case has one or the other), with the keys
+// it needs.
+const std::string kMembraneCase = R"([membrane]
+length = 1e-3
+width = 1e-3
+thickness = 1e-4
+youngs_modulus = 1e6
+[integrator]
+end_time = 1e-5
+)";
+
+// kEveryTable (kMembraneCase for [membrane]) with 'line' added to 'table'.
 std::string every_table_with(const std::string& table, const std::string& line) {
   const bool array = table == "group" || table == "mesh" || table == "particle";
   const std::string header = (array ? "[[" : "[") + table + (array ? "]]\n" : "]\n");
-  std::string text = kEveryTable;
+  std::string text = table == "membrane" ? kMembraneCase : kEveryTable;
   const auto pos = text.find(header);
   EXPECT_NE(pos, std::string::npos) << header;
   return text.insert(pos + header.size(), line + "\n");
@@ -165,6 +176,7 @@ void expect_every_member_keyed(const char* table, const std::vector<Key<S>>& key
 
 TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("workpiece", workpiece_keys(), &WorkpieceSettings::enabled);
+  expect_every_member_keyed("membrane", membrane_keys(), &MembraneSettings::enabled);
   expect_every_member_keyed("material", material_keys(), &MaterialSettings::macroscopic, &MaterialSettings::flow_curve);
   expect_every_member_keyed("rod", rod_keys());
   expect_every_member_keyed("integrator", integrator_keys());
@@ -178,11 +190,11 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("output", output_keys());
   // CaseSettings: [environment] gravity; the tables; what the run records about its input.
   expect_every_member_keyed("environment", environment_keys(), &CaseSettings::source, &CaseSettings::directory,
-                            &CaseSettings::workpiece, &CaseSettings::material, &CaseSettings::rod,
-                            &CaseSettings::integrator, &CaseSettings::groups, &CaseSettings::uniaxial,
-                            &CaseSettings::contact, &CaseSettings::meshes, &CaseSettings::particles,
-                            &CaseSettings::particles_file, &CaseSettings::output, &CaseSettings::overrides,
-                            &CaseSettings::effective_toml, &CaseSettings::text);
+                            &CaseSettings::workpiece, &CaseSettings::membrane, &CaseSettings::material,
+                            &CaseSettings::rod, &CaseSettings::integrator, &CaseSettings::groups,
+                            &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::meshes,
+                            &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output,
+                            &CaseSettings::overrides, &CaseSettings::effective_toml, &CaseSettings::text);
 }
 
 // Every key the case leaves out holds the default-constructed struct's value, which is the
@@ -218,6 +230,8 @@ TEST(CaseKeys, KeysLeftOutKeepTheStructDefaults) {
   expect_defaults("particle", particle_keys(), cs.particles.at(0), {"position", "radius"});
   expect_defaults("particles", particles_file_keys(), cs.particles_file, {"file", "radius"});
   expect_defaults("output", output_keys(), cs.output, {});
+  const CaseSettings ms = parse_case(kMembraneCase, "keys.toml", {}, dir.str());
+  expect_defaults("membrane", membrane_keys(), ms.membrane, {"length", "width", "thickness", "youngs_modulus"});
 }
 
 TEST(CaseKeys, RangesKeepTheirMessagesAndDocs) {

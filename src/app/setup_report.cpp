@@ -21,8 +21,12 @@ void print_setup(const Model& m, int threads) {
       b.git_dirty == 1 ? ", uncommitted changes" : "", m.settings.source);
   say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
   for (const auto& g : m.groups) say("  group '{}': {} particles\n", g.name, g.members.size());
-  say("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
-      d.particle_mass);
+  if (d.membrane)
+    say("  radius R = {:.4g} m, site spacing d = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.nn_distance,
+        d.particle_mass);
+  else
+    say("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
+        d.particle_mass);
   if (d.position_jitter > 0.0) {
     const auto [lo, hi] = std::minmax_element(m.rods.rest_length.begin(), m.rods.rest_length.end());
     say("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed, d.position_jitter,
@@ -35,7 +39,16 @@ void print_setup(const Model& m, int threads) {
   }
   if (m.periodic.on())
     say("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n", m.periodic.period);
-  if (!m.rods.ends.empty()) {
+  if (d.membrane) {
+    say("  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (bond "
+        "pre-strain {:.4g}); bond k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",
+        d.membrane_modulus_2d, d.membrane_areal_density, d.membrane_tension, d.membrane_pre_strain, d.rod_stiffness,
+        d.rod_damping);
+    say("  membrane waves: c_L = {:.4g} m/s, c_S = {:.4g} m/s, c_T = sqrt(T/rho_A) = {:.4g} m/s; CFL step d/c_L = "
+        "{:.4g} s, stable step sqrt(4m/(6(k+f/d))) = {:.4g} s\n",
+        d.membrane_wave_longitudinal, d.membrane_wave_shear, d.membrane_wave_transverse, d.membrane_dt_cfl,
+        2.0 / d.omega_max);
+  } else if (!m.rods.ends.empty()) {
     const auto& mt = m.settings.material;
     if (d.converted && mt.flow_curve) {
       std::string pts;
@@ -80,7 +93,7 @@ void print_setup(const Model& m, int threads) {
         "swarf: warning: material.poisson_ratio = {} cannot be represented: a lattice of central rods "
         "has 1/3 along [100] (1/4 isotropic average); continuing with the lattice's\n",
         nu);
-  if (!m.rods.ends.empty())
+  if (!m.rods.ends.empty() && !d.membrane)
     say("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "
         "kg/m^3\n",
         d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);

@@ -97,6 +97,15 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"bar_yield_stress_Pa", number(d.bar_yield_stress)},
       {"bar_hardening_tangent_Pa", d.bar_hardening_tangent},
       {"bar_failure_stress_Pa", number(d.bar_failure_stress)},
+      {"membrane", d.membrane},
+      {"membrane_modulus_2d_N_per_m", d.membrane_modulus_2d},
+      {"membrane_areal_density_kg_per_m2", d.membrane_areal_density},
+      {"membrane_tension_N_per_m", d.membrane_tension},
+      {"membrane_pre_strain", d.membrane_pre_strain},
+      {"membrane_wave_longitudinal_m_per_s", d.membrane_wave_longitudinal},
+      {"membrane_wave_shear_m_per_s", d.membrane_wave_shear},
+      {"membrane_wave_transverse_m_per_s", d.membrane_wave_transverse},
+      {"membrane_dt_cfl_s", d.membrane_dt_cfl},
   };
 }
 

@@ -65,6 +65,45 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
   }
 }
 
+// [membrane]: the sheet in place of the workpiece, with its own material.
+void read_membrane(const CaseInput& in, CaseSettings& cs) {
+  const toml::table* t = in.table("membrane");
+  if (!t) return;
+  TableReader r = in.reader(t, "membrane");
+  auto& m = cs.membrane;
+  m.enabled = true;
+  r.read(membrane_keys(), m);
+  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
+  for (const char* key : {"length", "width", "thickness", "youngs_modulus"})
+    if (!r.has(key)) r.fail(key, nullptr, "is required (the sheet's extent, thickness and modulus)");
+  if (std::abs(m.poisson_ratio - 1.0 / 3.0) > 1e-6)
+    r.fail("poisson_ratio", r.get("poisson_ratio"),
+           "cannot be represented: a triangular lattice of central springs has nu = 1/3 in the plane, fixed "
+           "(give 1/3 or leave the key out)");
+  // T = sqrt(3) k eps0 / (1 + eps0) with k = sqrt(3)/2 E t: a bond pre-strain below 1 holds T < 3/4 E t.
+  if (!(m.pre_tension < 0.75 * m.youngs_modulus * m.thickness))
+    r.fail("pre_tension", r.get("pre_tension"),
+           fmt::format("needs a bond pre-strain of 1 or more: must be below 3/4 E t = {:.6g} N/m",
+                       0.75 * m.youngs_modulus * m.thickness));
+  if (r.has("density") && r.has("areal_density"))
+    r.fail("areal_density", r.get("areal_density"), "give either density (kg/m^3, times thickness) or areal_density");
+  if (cs.workpiece.enabled)
+    throw InputError(fmt::format("{}: a case has either a [workpiece] or a [membrane], not both", in.source));
+  if (in.table("rod"))
+    throw InputError(
+        fmt::format("{}: [rod] does not apply to a [membrane], whose bonds follow from its own modulus "
+                    "and damping_ratio: remove the table",
+                    in.source));
+  // [material] then only gives the free particles' density.
+  if (const toml::table* mt = in.table("material"))
+    for (const auto& [k, v] : *mt)
+      if (k.str() != "density")
+        throw InputError(
+            fmt::format("{}: key 'material.{}' does not apply to a [membrane] (its material is in "
+                        "[membrane]; [material] gives only the free particles' density)",
+                        in.source, k.str()));
+}
+
 // A hardening curve's points: 2 to FlowCurve::kMaxPoints (1 point would be perfectly plastic:
 // the yield stress alone says that), increasing strains from 0, stresses that never fall.
 void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
@@ -231,8 +270,9 @@ void read_output(const CaseInput& in, CaseSettings& cs) {
 
 // Top level: only known tables, and tables where a table is expected.
 void check_top_level(const toml::table& root, const std::string& source, const std::set<std::string>& ov) {
-  const std::set<std::string> tables{"workpiece", "material", "rod",      "integrator", "group",       "uniaxial",
-                                     "contact",   "mesh",     "particle", "particles",  "environment", "output"};
+  const std::set<std::string> tables{"workpiece", "membrane",    "material", "rod",  "integrator",
+                                     "group",     "uniaxial",    "contact",  "mesh", "particle",
+                                     "particles", "environment", "output"};
   const std::set<std::string> arrays_of_tables{"group", "mesh", "particle"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
@@ -243,7 +283,7 @@ void check_top_level(const toml::table& root, const std::string& source, const s
       else
         where += ":" + std::to_string(v.source().begin.line);
       throw InputError(
-          fmt::format("{}: unknown table or key '{}' (known: workpiece, material, rod, integrator, "
+          fmt::format("{}: unknown table or key '{}' (known: workpiece, membrane, material, rod, integrator, "
                       "group, uniaxial, contact, mesh, particle, particles, environment, output)",
                       where, key));
     }
@@ -279,6 +319,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   check_top_level(root, source, ov);
   const CaseInput in{root, source, directory, ov};
   read_workpiece(in, cs);
+  read_membrane(in, cs);
   read_material(in, cs);
   read_rod(in, cs);
   read_integrator(in, cs);
@@ -299,9 +340,9 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
         fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
                     "contacts: add a [contact] table",
                     source, cs.rod.bond_overlap));
-  if (!cs.workpiece.enabled && cs.particles.empty() && cs.particles_file.file.empty())
-    throw InputError(
-        fmt::format("{}: no particles: give a [workpiece], [[particle]] tables or [particles] file", source));
+  if (!cs.workpiece.enabled && !cs.membrane.enabled && cs.particles.empty() && cs.particles_file.file.empty())
+    throw InputError(fmt::format(
+        "{}: no particles: give a [workpiece], a [membrane], [[particle]] tables or [particles] file", source));
   read_output(in, cs);
   if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))
     throw InputError(

@@ -162,6 +162,7 @@ std::string Range::text(bool integer) const {
 std::vector<KeyRow> case_key_rows() {
   std::vector<KeyRow> rows;
   append(rows, "workpiece", workpiece_keys());
+  append(rows, "membrane", membrane_keys());
   append(rows, "material", material_keys());
   append(rows, "rod", rod_keys());
   append(rows, "integrator", integrator_keys());

@@ -84,6 +84,88 @@ const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
   return keys;
 }
 
+const std::vector<Key<MembraneSettings>>& membrane_keys() {
+  using S = MembraneSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "length",
+       .field = &S::length,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .range = kPositive,
+       .doc = "Extent of the sheet along x. Every site of the triangular lattice in the closed rectangle is kept."},
+      {.name = "width",
+       .field = &S::width,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .range = kPositive,
+       .doc = "Extent of the sheet along y (rows of sites along x, sqrt(3) R apart)."},
+      {.name = "origin",
+       .field = &S::origin,
+       .unit = "m",
+       .doc = "Corner of the sheet; it lies in the plane z = `origin[2]`."},
+      {.name = "radius",
+       .field = &S::radius,
+       .unit = "m",
+       .range = kRadius,
+       .doc = "Particle radius R; the sites are 2R apart (neighbours touch), the bonds' rest length is "
+              "2R / (1 + pre-strain)."},
+      {.name = "thickness",
+       .field = &S::thickness,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .range = kPositive,
+       .doc = "Thickness t of the sheet: in-plane modulus E_2D = E t, areal density rho t."},
+      {.name = "youngs_modulus",
+       .field = &S::youngs_modulus,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "required",
+       .range = kPositive,
+       .doc = "Young's modulus E of the sheet's material. The bonds get k = sqrt(3)/2 E t (N/m) "
+              "([membranes](#membrane-relations))."},
+      {.name = "poisson_ratio",
+       .field = &S::poisson_ratio,
+       .unit = "1",
+       .default_note = "1/3",
+       .rule = "1/3 (within 1e-6): any other value is refused",
+       .doc = "Only checked: a triangular lattice of central springs has nu = 1/3 in the plane, fixed."},
+      {.name = "density",
+       .field = &S::density,
+       .unit = "kg/m^3",
+       .range = kDensity,
+       .rule = "not with `areal_density`",
+       .doc = "Density rho of the sheet's material: areal density rho t."},
+      {.name = "areal_density",
+       .field = &S::areal_density,
+       .unit = "kg/m^2",
+       .no_default = true,
+       .default_note = "`density` x `thickness`",
+       .range = kPositive,
+       .rule = "not with `density`",
+       .doc = "Mass per area rho_A of the sheet; each particle carries rho_A sqrt(3)/2 (2R)^2 (kg)."},
+      {.name = "pre_tension",
+       .field = &S::pre_tension,
+       .unit = "N/m",
+       .range = kNonNegative,
+       .rule = "< 3/4 E t (a bond pre-strain below 1)",
+       .doc = "Isotropic in-plane tension T of the sheet as generated: every bond starts stretched by the "
+              "pre-strain that carries it. Hold the edges (`clamp_edges`) or the sheet contracts."},
+      {.name = "damping_ratio",
+       .field = &S::damping_ratio,
+       .unit = "1",
+       .range = in(0, 1, "[]"),
+       .doc = "Bond dashpot as a fraction of critical damping of one bond between two particles (as "
+              "`rod.damping_ratio`)."},
+      {.name = "clamp_edges",
+       .field = &S::clamp_edges,
+       .doc = "Holds every edge site (fewer than 6 bonds) fixed in x, y and z: a group named `membrane_edges`."},
+  };
+  return keys;
+}
+
 const std::vector<Key<MaterialSettings>>& material_keys() {
   using S = MaterialSettings;
   static const std::vector<Key<S>> keys{

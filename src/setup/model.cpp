@@ -11,6 +11,7 @@
 #include "io/particle_file.h"
 #include "lattice_gen/lattice_disorder.h"
 #include "lattice_gen/lattice_file.h"
+#include "lattice_gen/membrane_lattice.h"
 #include "swarf/core/errors.h"
 #include "tool_paths/tool_geometry.h"
 
@@ -116,6 +117,20 @@ void bond_across_periodic_width(const CaseSettings& cs, const FccSpec& spec, Lat
 // The workpiece's lattice: from a lattice file, generated, or none (free particles only).
 Lattice workpiece_lattice(const CaseSettings& cs, Periodic& periodic) {
   Lattice lat;
+  if (cs.membrane.enabled) {
+    const MembraneSettings& ms = cs.membrane;
+    MembraneSpec spec;
+    spec.radius = ms.radius;
+    spec.length = ms.length;
+    spec.width = ms.width;
+    spec.origin = ms.origin;
+    spec.pre_strain = membrane_relations_of(cs).pre_strain;
+    try {
+      return generate_membrane(spec);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", cs.source, e.what()));
+    }
+  }
   if (!cs.workpiece.enabled) return lat;
   if (!cs.workpiece.lattice_file.empty()) return read_lattice(cs.workpiece.lattice_file);
   FccSpec spec;
@@ -358,7 +373,11 @@ Model build_model(const CaseSettings& cs) {
   r.rest_length = lat.rest_length;
   r.reset_state();
   r.build_rows(model.particles.size());
-  const double h = 0.5 * model.derived.cell_edge;  // spacing of lattice layers along a cube axis
+  // Spacing of lattice layers along a cube axis; a membrane's sites are d/2 apart in x on
+  // alternate rows.
+  const double h = cs.membrane.enabled ? 0.5 * model.derived.nn_distance : 0.5 * model.derived.cell_edge;
+  if (cs.membrane.enabled && cs.membrane.clamp_edges)
+    add_group(model, cs.source, "membrane_edges", membrane_edge(lat), 7, Motion{});
   build_groups(cs, model.sites, h, model);
   if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);
