@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "io/h5file.h"
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/version.h"
 
@@ -44,7 +45,7 @@ Lattice read_lattice(const std::string& path) {
   lat.position.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     lat.position[i] = Vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
-    if (!lat.position[i].allFinite())
+    if (!all_finite(lat.position[i]))
       throw InputError(fmt::format("'{}': /particles/position row {} is not finite", path, i));
   }
   lat.radius = f.read_doubles("/particles/radius", rows, cols);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -16,7 +17,7 @@ std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<V
   if (!(max_distance > 0.0)) throw InputError("pair search: the distance must be positive");
   Vec3 lo = points[0], hi = points[0];
   for (const auto& p : points) {
-    if (!p.allFinite()) throw InputError("pair search: a position is not finite");
+    if (!all_finite(p)) throw InputError("pair search: a position is not finite");
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
