@@ -245,7 +245,8 @@ Axes check_varied(const toml::table& root, const std::string& source, const Stud
     axes.emplace_back(k, vals);
   }
   for (const auto& [k, n] : r.fixed) {
-    if (r.point_keys.count(k) || std::any_of(axes.begin(), axes.end(), [&](const auto& a) { return a.first == k; }))
+    if (r.point_keys.count(k) ||
+        std::any_of(axes.begin(), axes.end(), [&key = k](const auto& a) { return a.first == key; }))
       bad(source, *n, "set." + k, "is also varied ([grid] or [[point]]): a key is either fixed or varied");
     if (k == s.seed_key) bad(source, *n, "set." + k, "is the seed_key, which the repetitions set");
   }
@@ -282,10 +283,16 @@ Axes check_varied(const toml::table& root, const std::string& source, const Stud
 // Expansion: points (in file order) x grid (first key slowest) x repetitions.
 void expand(const std::string& source, const Axes& axes, std::vector<std::map<std::string, std::string>> points,
             Study& s) {
+  // (the count stops growing past the limit: 64 axes of two values wrapped a 64-bit product
+  // round to 0, and the study then ran no case at all)
+  constexpr std::size_t kMaxCases = 100000;
   std::size_t grid_count = 1;
-  for (const auto& [k, v] : axes) grid_count *= v.size();
+  for (const auto& [k, v] : axes) grid_count = std::min(grid_count * v.size(), kMaxCases + 1);
   const std::size_t total = std::max<std::size_t>(1, points.size()) * grid_count * std::size_t(s.repetitions);
-  if (total > 100000) throw InputError(fmt::format("{}: {} cases: more than 100000 (split the study)", source, total));
+  if (total > kMaxCases)
+    throw InputError(grid_count > kMaxCases
+                         ? fmt::format("{}: more than {} cases (split the study)", source, kMaxCases)
+                         : fmt::format("{}: {} cases: more than {} (split the study)", source, total, kMaxCases));
   if (points.empty()) points.emplace_back();
   const int width = id_width(static_cast<long long>(total));
   for (const auto& p : points) {
