@@ -26,6 +26,7 @@
 
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
+#include "setup/toml_parse.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
 #include "study/sweep.h"
@@ -179,6 +180,9 @@ StudyKeys read_study_keys(const toml::table& root, const std::string& source, St
       auto i = v.as_integer();
       if (!i) bad(source, v, key, "must be an integer");
       if (key == "seed_start") {
+        // (seed_start + repetition must not overflow: 2^63 - 1 with two repetitions did)
+        if (i->get() < -(std::int64_t{1} << 53) || i->get() > (std::int64_t{1} << 53))
+          bad(source, v, key, "must lie in [-2^53, 2^53]");
         s.seed_start = i->get();
       } else {
         if (i->get() < 1 || i->get() > 10000) bad(source, v, key, "must lie in [1, 10000]");
@@ -320,7 +324,7 @@ void expand(const std::string& source, const Axes& axes, std::vector<std::map<st
 Study parse_study(const std::string& text, const std::string& source, const std::string& directory) {
   toml::table root;
   try {
-    root = toml::parse(text, source);
+    root = parse_toml(text, source);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
                                  e.source().begin.column, e.description()));

@@ -5,7 +5,7 @@
 // these harnesses fuzz what swarf reads from a file HDF5 opens: which datasets exist, their
 // shapes and every value (NaN, inf, huge, negative, out-of-range indices, duplicates), and
 // the attributes, then go on as far as swarf would (a model built and stepped).
-#include "fuzz/fuzz_targets.h"
+#include "fuzz_targets.h"
 
 #include <fmt/format.h>
 #include <hdf5.h>

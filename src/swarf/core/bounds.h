@@ -13,8 +13,11 @@ namespace swarf {
 /// to refuse an infinite vertex trapped on it (found by the STL fuzzer).
 inline bool all_finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-/// The largest coordinate a mesh may have, m: farther is a unit or scale mistake, and the
-/// squares of such lengths (areas, distances) overflow.
+/// The largest coordinate a mesh or a lattice file may give, m: farther is a unit or scale
+/// mistake, and the squares of such lengths (areas, distances) overflow.
 inline constexpr double kMaxMeshCoordinate = 1e6;
+/// A particle radius, m (workpiece.radius and the radii of a lattice file): beyond these the
+/// derived step, the masses and the pair search overflow or divide by zero.
+inline constexpr double kMinRadius = 1e-9, kMaxRadius = 1.0;
 
 }  // namespace swarf
