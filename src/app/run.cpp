@@ -42,7 +42,15 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
                       "and no --set (got '{}'{})",
                       opt.restart, opt.case_path, opt.overrides.empty() ? "" : " and --set " + opt.overrides.front()));
     stored = read_checkpoint_case(opt.restart);
-    return parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
+    try {
+      return parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
+    } catch (const InputError& e) {
+      // (the text is the checkpoint's copy: blamed on the case file, the message sent the
+      // user to a file that may have changed or gone since)
+      throw InputError(
+          fmt::format("--restart {}: the case stored in the checkpoint (read from {} when the run began): {}",
+                      opt.restart, stored.source, e.what()));
+    }
   }
   CaseSettings cs = opt.case_path.empty() ? parse_case(kDefaultCaseToml, "<built-in default case>", opt.overrides)
                                           : load_case(opt.case_path, opt.overrides);
