@@ -55,7 +55,7 @@ Lattice read_lattice(const std::string& path) {
   lat.radius = f.read_doubles("/particles/radius", rows, cols);
   if (rows != n || cols != 1) throw InputError(fmt::format("'{}': /particles/radius must have {} entries", path, n));
   for (std::size_t i = 0; i < n; ++i)
-    if (!std::isfinite(lat.radius[i]) || !(lat.radius[i] >= kMinRadius && lat.radius[i] <= kMaxRadius))
+    if (!finite_bits(lat.radius[i]) || !(lat.radius[i] >= kMinRadius && lat.radius[i] <= kMaxRadius))
       throw InputError(fmt::format("'{}': /particles/radius[{}] = {} is not a radius from {:g} to {:g} m", path, i,
                                    lat.radius[i], kMinRadius, kMaxRadius));
   auto pairs = f.read_ints("/bonds/pairs", rows, cols);
@@ -83,13 +83,12 @@ Lattice read_lattice(const std::string& path) {
   lat.rest_length = f.read_doubles("/bonds/rest_length", rows, cols);
   if (rows != m || cols != 1) throw InputError(fmt::format("'{}': /bonds/rest_length must have {} entries", path, m));
   for (std::size_t b = 0; b < m; ++b)
-    if (!std::isfinite(lat.rest_length[b]) ||
-        !(lat.rest_length[b] >= kMinRadius && lat.rest_length[b] <= 4 * kMaxRadius))
+    if (!finite_bits(lat.rest_length[b]) || !(lat.rest_length[b] >= kMinRadius && lat.rest_length[b] <= 4 * kMaxRadius))
       throw InputError(fmt::format("'{}': /bonds/rest_length[{}] = {} is not a length from {:g} to {:g} m", path, b,
                                    lat.rest_length[b], kMinRadius, 4 * kMaxRadius));
   // (0: not known; the derived quantities then take the FCC cell of the smallest radius)
   if (f.has_attribute("cell_edge")) lat.cell_edge = f.read_double_attribute("cell_edge");
-  if (!std::isfinite(lat.cell_edge) ||
+  if (!finite_bits(lat.cell_edge) ||
       !(lat.cell_edge == 0.0 || (lat.cell_edge >= kMinRadius && lat.cell_edge <= 4 * kMaxRadius)))
     throw InputError(
         fmt::format("'{}': attribute cell_edge = {} is neither 0 (unknown) nor a length from {:g} to {:g} m", path,

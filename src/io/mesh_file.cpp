@@ -58,7 +58,7 @@ std::optional<long long> whole_number(std::string_view t) {
 // kMaxMeshCoordinate once scaled (tested before the product, which could overflow).
 std::optional<std::string> bad_vertex(const Vec3& raw, double scale) {
   for (int c = 0; c < 3; ++c) {
-    if (!std::isfinite(raw[c])) return "is not finite";
+    if (!finite_bits(raw[c])) return "is not finite";
     if (std::abs(raw[c]) > kMaxMeshCoordinate / scale)
       return fmt::format("lies beyond {:g} m once scaled by {} (a unit or scale mistake?)", kMaxMeshCoordinate, scale);
   }
@@ -89,6 +89,9 @@ TriangleMesh read_stl(const std::string& path, double scale) {
       for (int k = 0; k < 3; ++k) {
         float xyz[3];
         std::memcpy(xyz, f + 12 + 12 * k, 12);
+        // (as floats: converting a signalling NaN to double raises FE_INVALID)
+        if (!finite_bits(xyz[0]) || !finite_bits(xyz[1]) || !finite_bits(xyz[2]))
+          throw InputError(fmt::format("mesh file '{}': facet {} vertex {} is not finite", path, t, k));
         const Vec3 raw(xyz[0], xyz[1], xyz[2]);
         // (a NaN would be welded onto whatever vertex the map's ordering finds for it)
         if (const auto why = bad_vertex(raw, scale))
