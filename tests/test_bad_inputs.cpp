@@ -167,6 +167,13 @@ TEST(BadInput, AFloatBeyondTheDoublesInACaseOrStudyFileIsRefusedNotTrapped) {
   const std::string m = message_of([] { parse_case("[integrator]\nend_time = 1e309\n", "c.toml", {}); });
   EXPECT_NE(m.find("c.toml:2:"), std::string::npos) << m;
   EXPECT_NE(m.find("'1e309'"), std::string::npos) << m;
+  // (the case-file fuzzer: toml++'s printer raised FE_INVALID on a NaN, writing the effective case)
+  const std::string p = message_of([] {
+    parse_case("[[particle]]\nposition = [nan, 0.0, 0.0]\nradius = 1e-3\n[contact]\n[integrator]\nend_time = 1e-4\n",
+               "c.toml", {});
+  });
+  EXPECT_NE(p.find("particle.position"), std::string::npos) << p;
+  EXPECT_NE(p.find("must be finite"), std::string::npos) << p;
   const std::string o = message_of(
       [] { parse_case("[integrator]\nend_time = 1e-3\n", "c.toml", {"integrator.end_time=-1e400"}); });
   EXPECT_NE(o.find("integrator.end_time"), std::string::npos) << o;

@@ -272,11 +272,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   cs.source = source;
   cs.directory = directory;
   cs.overrides = overrides;
-  {
-    std::ostringstream os;
-    os << root;
-    cs.effective_toml = os.str();
-  }
+  cs.effective_toml = print_toml(root);
   check_top_level(root, source, ov);
   const CaseInput in{root, source, directory, ov};
   read_workpiece(in, cs);

@@ -81,9 +81,7 @@ std::string at(const std::string& source, const toml::node& n) {
 
 std::string shown(const toml::node& n) {
   if (n.is_table()) return "(a table)";
-  std::ostringstream os;
-  n.visit([&](auto&& v) { os << v; });
-  return os.str();
+  return print_toml(n);
 }
 
 [[noreturn]] void bad(const std::string& source, const toml::node& n, const std::string& key, const std::string& why) {
