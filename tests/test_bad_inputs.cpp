@@ -20,6 +20,7 @@
 #include "lattice_gen/lattice_file.h"
 #include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
+#include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "test_helpers.h"
 
@@ -174,6 +175,19 @@ TEST(BadInput, AFloatBeyondTheDoublesInACaseOrStudyFileIsRefusedNotTrapped) {
   });
   EXPECT_NE(p.find("particle.position"), std::string::npos) << p;
   EXPECT_NE(p.find("must be finite"), std::string::npos) << p;
+}
+
+// Found by the lattice-file fuzzer: two particles at one place have no contact normal, and the
+// first contact evaluation divided by their zero distance (SIGFPE under the traps).
+TEST(BadInput, TwoParticlesAtOnePlaceAreRefused) {
+  const std::string m = message_of([] {
+    build_model(
+        parse_case("[[particle]]\nposition = [0.0, 0.0, 0.0]\nradius = 1e-3\n[[particle]]\nposition = [1e-3, "
+                   "0.0, 0.0]\nradius = 1e-3\n[[particle]]\nposition = [0.0, 0.0, 0.0]\nradius = 1e-3\n"
+                   "[contact]\n[integrator]\nend_time = 1e-4\n",
+                   "c.toml", {}));
+  });
+  EXPECT_NE(m.find("particles 0 and 2 are both at (0, 0, 0) m"), std::string::npos) << m;
   const std::string o = message_of(
       [] { parse_case("[integrator]\nend_time = 1e-3\n", "c.toml", {"integrator.end_time=-1e400"}); });
   EXPECT_NE(o.find("integrator.end_time"), std::string::npos) << o;
@@ -286,31 +300,26 @@ TEST(Signals, ARunKilledAtSeveralPointsAndRestartedEachTimeEndsBitIdentical) {
   // prints what the kill left.
   const std::string script = fmt::format(
       "kill_at() {{ n=0; while [ $(cat {1}/series.csv.part 2>/dev/null | wc -l) -lt $1 ] && [ $n -lt 6000 ]; do "
-      "sleep 0.02; n=$((n+1)); done; kill -KILL $pid; wait $pid; echo "killed=$? rows=$(cat {1}/series.csv.part | "
-      "wc -l) checkpoint=$([ -e {1}/checkpoint.h5 ] && echo yes || echo no)";
-}
-};
-"
-    "{0} run {2} --out {1} --threads 1 --set integrator.end_time=3e-5 --set output.plots=false "
-    "--set output.vtk=false --set output.checkpoint_every=200 > {3}/log0 2>&1 & pid=$!; kill_at 7; "
-    "for k in 1 2; do {0} run --restart {1}/checkpoint.h5 --threads 1 > {3}/log$k 2>&1 & pid=$!; "
-    "kill_at $((7 + 8 * k)); done; "
-    "{0} run --restart {1}/checkpoint.h5 --threads 1 > {3}/log3 2>&1; echo " last = $
-    ? "",
-                                                                             SWARF_BINARY, out,
-                                                                             test::linear_cut_case(), dir.str());
-const auto r = test::run_command("bash -c '" + script + "'");
-std::string logs;
-for (int k = 0; k < 4; ++k) logs += test::read_file(dir / fmt::format("log{}", k));
-// Three kills, each of a run still going (137 = 128 + SIGKILL), each after a checkpoint.
-std::size_t kills = 0;
-for (std::size_t at = r.output.find("killed=137"); at != std::string::npos; at = r.output.find("killed=137", at + 1))
-  ++kills;
-EXPECT_EQ(kills, 3u) << r.output << logs;
-EXPECT_EQ(r.output.find("checkpoint=no"), std::string::npos) << r.output;
-ASSERT_NE(r.output.find("last=0"), std::string::npos) << r.output << logs;
-EXPECT_EQ(test::read_file(out + "/series.csv"),
-          test::read_file(std::string(SWARF_SOURCE_DIR) + "/tests/data/golden/linear_cut_3e-5s_series.csv"));
+      "sleep 0.02; n=$((n+1)); done; kill -KILL $pid; wait $pid; echo \"killed=$? rows=$(cat {1}/series.csv.part | "
+      "wc -l) checkpoint=$([ -e {1}/checkpoint.h5 ] && echo yes || echo no)\"; }}; "
+      "{0} run {2} --out {1} --threads 1 --set integrator.end_time=3e-5 --set output.plots=false "
+      "--set output.vtk=false --set output.checkpoint_every=200 > {3}/log0 2>&1 & pid=$!; kill_at 7; "
+      "for k in 1 2; do {0} run --restart {1}/checkpoint.h5 --threads 1 > {3}/log$k 2>&1 & pid=$!; "
+      "kill_at $((7 + 8 * k)); done; "
+      "{0} run --restart {1}/checkpoint.h5 --threads 1 > {3}/log3 2>&1; echo \"last=$?\"",
+      SWARF_BINARY, out, test::linear_cut_case(), dir.str());
+  const auto r = test::run_command("bash -c '" + script + "'");
+  std::string logs;
+  for (int k = 0; k < 4; ++k) logs += test::read_file(dir / fmt::format("log{}", k));
+  // Three kills, each of a run still going (137 = 128 + SIGKILL), each after a checkpoint.
+  std::size_t kills = 0;
+  for (std::size_t at = r.output.find("killed=137"); at != std::string::npos; at = r.output.find("killed=137", at + 1))
+    ++kills;
+  EXPECT_EQ(kills, 3u) << r.output << logs;
+  EXPECT_EQ(r.output.find("checkpoint=no"), std::string::npos) << r.output;
+  ASSERT_NE(r.output.find("last=0"), std::string::npos) << r.output << logs;
+  EXPECT_EQ(test::read_file(out + "/series.csv"),
+            test::read_file(std::string(SWARF_SOURCE_DIR) + "/tests/data/golden/linear_cut_3e-5s_series.csv"));
 }
 
 // SIGINT (Ctrl-C) as SIGTERM, with exit code 130; with checkpoints off the run says it is lost.
@@ -320,7 +329,7 @@ TEST(Signals, SigintEndsARunWithExitCode130AndSaysWhatIsLeft) {
   const std::string script = fmt::format(
       "{} run {} --out {} --threads 1 --set integrator.end_time=3e-5 --set output.plots=false --set output.vtk=false "
       "> {} 2>&1 & pid=$!; n=0; while [ $(cat {}/series.csv.part 2>/dev/null | wc -l) -lt 3 ] && [ $n -lt 2400 ]; do "
-      "sleep 0.05; n=$((n+1)); done; kill -INT $pid; wait $pid; echo "exit=$?"",
+      "sleep 0.05; n=$((n+1)); done; kill -INT $pid; wait $pid; echo \"exit=$?\"",
       SWARF_BINARY, test::linear_cut_case(), out, dir / "log", out);
   const auto r = test::run_command("bash -c '" + script + "'");
   const std::string log = test::read_file(dir / "log");
