@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "io/h5file.h"
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/version.h"
 
@@ -41,17 +42,22 @@ Lattice read_lattice(const std::string& path) {
   auto pos = f.read_doubles("/particles/position", rows, cols);
   if (cols != 3) throw InputError(fmt::format("'{}': /particles/position must be N x 3, is {} x {}", path, rows, cols));
   const std::size_t n = rows;
+  if (n == 0)
+    throw InputError(fmt::format("'{}': /particles/position has no rows: the lattice has no particles", path));
   lat.position.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     lat.position[i] = Vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
-    if (!lat.position[i].allFinite())
+    if (!all_finite(lat.position[i]))
       throw InputError(fmt::format("'{}': /particles/position row {} is not finite", path, i));
+    if (lat.position[i].cwiseAbs().maxCoeff() > kMaxMeshCoordinate)
+      throw InputError(fmt::format("'{}': /particles/position row {} lies beyond {:g} m", path, i, kMaxMeshCoordinate));
   }
   lat.radius = f.read_doubles("/particles/radius", rows, cols);
   if (rows != n || cols != 1) throw InputError(fmt::format("'{}': /particles/radius must have {} entries", path, n));
   for (std::size_t i = 0; i < n; ++i)
-    if (!(lat.radius[i] > 0.0) || !std::isfinite(lat.radius[i]))
-      throw InputError(fmt::format("'{}': /particles/radius[{}] = {} is not a positive length", path, i, lat.radius[i]));
+    if (!finite_bits(lat.radius[i]) || !(lat.radius[i] >= kMinRadius && lat.radius[i] <= kMaxRadius))
+      throw InputError(fmt::format("'{}': /particles/radius[{}] = {} is not a radius from {:g} to {:g} m", path, i,
+                                   lat.radius[i], kMinRadius, kMaxRadius));
   auto pairs = f.read_ints("/bonds/pairs", rows, cols);
   if (cols != 2 && rows > 0) throw InputError(fmt::format("'{}': /bonds/pairs must be M x 2", path));
   const std::size_t m = rows;
@@ -77,10 +83,16 @@ Lattice read_lattice(const std::string& path) {
   lat.rest_length = f.read_doubles("/bonds/rest_length", rows, cols);
   if (rows != m || cols != 1) throw InputError(fmt::format("'{}': /bonds/rest_length must have {} entries", path, m));
   for (std::size_t b = 0; b < m; ++b)
-    if (!(lat.rest_length[b] > 0.0) || !std::isfinite(lat.rest_length[b]))
-      throw InputError(
-          fmt::format("'{}': /bonds/rest_length[{}] = {} is not a positive length", path, b, lat.rest_length[b]));
+    if (!finite_bits(lat.rest_length[b]) || !(lat.rest_length[b] >= kMinRadius && lat.rest_length[b] <= 4 * kMaxRadius))
+      throw InputError(fmt::format("'{}': /bonds/rest_length[{}] = {} is not a length from {:g} to {:g} m", path, b,
+                                   lat.rest_length[b], kMinRadius, 4 * kMaxRadius));
+  // (0: not known; the derived quantities then take the FCC cell of the smallest radius)
   if (f.has_attribute("cell_edge")) lat.cell_edge = f.read_double_attribute("cell_edge");
+  if (!finite_bits(lat.cell_edge) ||
+      !(lat.cell_edge == 0.0 || (lat.cell_edge >= kMinRadius && lat.cell_edge <= 4 * kMaxRadius)))
+    throw InputError(
+        fmt::format("'{}': attribute cell_edge = {} is neither 0 (unknown) nor a length from {:g} to {:g} m", path,
+                    lat.cell_edge, kMinRadius, 4 * kMaxRadius));
   return lat;
 }
 

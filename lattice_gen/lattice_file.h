@@ -13,7 +13,8 @@ namespace swarf {
 
 /// Writes atomically: to 'path.part', then renamed, so a kill never leaves a complete-looking file.
 void write_lattice(const std::string& path, const Lattice& lattice);
-/// Reads and checks the file (shapes, index range, positive radii and lengths).
+/// Reads and checks the file (shapes, index range, each pair once, radii and rest lengths
+/// within 1 nm..1 m and 4 m, positions within 1e6 m, at least one particle).
 Lattice read_lattice(const std::string& path);
 
 }  // namespace swarf

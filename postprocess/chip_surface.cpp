@@ -10,6 +10,7 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -37,7 +38,7 @@ void check_input(const std::vector<Vec3>& centres, const std::vector<double>& ra
     throw InputError(fmt::format("chip surface: dilation {} m must be >= 0", o.dilation));
   if (!(o.max_voxels > 0)) throw InputError(fmt::format("chip surface: max_voxels {} must be > 0", o.max_voxels));
   for (std::size_t i = 0; i < centres.size(); ++i) {
-    if (!centres[i].allFinite()) throw InputError(fmt::format("chip surface: particle {} has a non-finite centre", i));
+    if (!all_finite(centres[i])) throw InputError(fmt::format("chip surface: particle {} has a non-finite centre", i));
     if (!std::isfinite(radii[i]) || !(radii[i] > 0))
       throw InputError(fmt::format("chip surface: particle {} has radius {} m (must be > 0)", i, radii[i]));
   }

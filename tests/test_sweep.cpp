@@ -103,6 +103,15 @@ TEST(StudyFile, BadFilesNameFileKeyValue) {
       {"base = \"c.toml\"\n[grid]\n\"a b\" = [1, 2]\n", {"key 'a b'", "not a case key"}},
       {"base = \"c.toml\"\n[grid\n", {"study.toml:2", "TOML syntax error"}},
       {"base = \"c.toml\"\n", {"nothing varies"}},
+      {"base = \"c.toml\"\nrepetitions = 2\nseed_key = \"a.b\"\nseed_start = 9223372036854775807\n",
+       {"key 'seed_start'", "[-2^53, 2^53]"}},  // (seed_start + 1 overflowed)
+      // 64 axes of two values: the count wrapped round to 0 cases (a study that ran nothing).
+      {[] {
+         std::string t = "base = \"c.toml\"\n[grid]\n";
+         for (int k = 0; k < 64; ++k) t += fmt::format("a{}.b = [1, 2]\n", k);
+         return t;
+       }(),
+       {"more than 100000 cases"}},
   };
   for (const auto& [text, expected] : cases) {
     const std::string msg = message_of(text);

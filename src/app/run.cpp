@@ -64,7 +64,15 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
     }
     stored = read_checkpoint_case(opt.restart);
     stored.overrides.insert(stored.overrides.end(), opt.overrides.begin(), opt.overrides.end());
-    return parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
+    try {
+      return parse_case(stored.toml, stored.source, stored.overrides, stored.directory);
+    } catch (const InputError& e) {
+      // (the text is the checkpoint's copy: blamed on the case file, the message sent the
+      // user to a file that may have changed or gone since)
+      throw InputError(
+          fmt::format("--restart {}: the case stored in the checkpoint (read from {} when the run began): {}",
+                      opt.restart, stored.source, e.what()));
+    }
   }
   CaseSettings cs = opt.case_path.empty() ? parse_case(kDefaultCaseToml, "<built-in default case>", opt.overrides)
                                           : load_case(opt.case_path, opt.overrides);

@@ -14,6 +14,7 @@
 #include "io/vtk_output.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
+#include "setup/toml_parse.h"
 #include "swarf/measure/particle_fields.h"
 #include "swarf/version.h"
 
@@ -47,12 +48,10 @@ static nlohmann::json node_to_json(const toml::node& n) {
   if (auto i = n.as_integer()) return i->get();
   if (auto f = n.as_floating_point()) return number(f->get());
   if (auto b = n.as_boolean()) return b->get();
-  std::ostringstream os;
-  n.visit([&](auto&& v) { os << v; });
-  return os.str();
+  return print_toml(n);
 }
 
-nlohmann::json case_to_json(const CaseSettings& cs) { return node_to_json(toml::parse(cs.effective_toml)); }
+nlohmann::json case_to_json(const CaseSettings& cs) { return node_to_json(parse_toml(cs.effective_toml)); }
 
 nlohmann::json derived_to_json(const Derived& d) {
   return {

@@ -5,10 +5,15 @@
 
 #include <fmt/format.h>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include "io/h5file.h"
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 #include "swarf/simulation.h"
 #include "swarf/state_archive.h"
 #include "swarf/version.h"
@@ -81,7 +86,9 @@ class H5StateWriter final : public StateArchive {
 
 class H5StateReader final : public StateArchive {
  public:
-  H5StateReader(const H5File& f, std::string root) : f_(f), root_(std::move(root)) {}
+  /// 'finite': every number read must be finite (the step's state: a NaN or an infinity there
+  /// is a corrupt file, and the first step would trap or run on garbage).
+  H5StateReader(const H5File& f, std::string root, bool finite) : f_(f), root_(std::move(root)), finite_(finite) {}
   bool loading() const override { return true; }
   void array(std::string_view name, std::vector<double>& v, std::size_t expected) override {
     v = doubles(name, expected, 1);
@@ -121,6 +128,11 @@ class H5StateReader final : public StateArchive {
           "checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
           "(the checkpoint belongs to another case or version)",
           f_.path(), key(name), r, c, expected == kAnySize ? std::string("N") : std::to_string(expected), cols));
+    if (finite_)
+      for (std::size_t k = 0; k < v.size(); ++k)
+        if (!finite_bits(v[k]))
+          throw InputError(fmt::format("checkpoint '{}': dataset '{}' entry {} = {} is not finite (a corrupt file)",
+                                       f_.path(), key(name), k, nan_safe(v[k])));
     return v;
   }
   std::vector<std::int64_t> ints(std::string_view name, std::size_t expected) const {
@@ -136,6 +148,7 @@ class H5StateReader final : public StateArchive {
   }
   const H5File& f_;
   std::string root_;
+  bool finite_;
 };
 
 // The loop's record, each field named once for save and load.
@@ -207,11 +220,18 @@ CheckpointCase read_checkpoint_case(const std::string& path) {
 
 void read_checkpoint(const std::string& path, Simulation& sim, RunRecord& rec, const RunStateVisit& run_state) {
   H5File f(path, H5File::Mode::Read);
-  H5StateReader sim_part(f, "/sim/"), run_part(f, "/run/");
+  H5StateReader sim_part(f, "/sim/", true), run_part(f, "/run/", false);
   loading(path, [&] { sim.visit_state(sim_part); });
   loading(path, [&] { visit_record(run_part, rec); });
   if (rec.columns == 0 || rec.rows.size() % rec.columns != 0)
     throw InputError(fmt::format("checkpoint '{}': series rows do not match {} columns", path, rec.columns));
+  // The output schedule goes on from these: the run loop steps each past the time by its
+  // interval, which from -1e300 never ended. (The next frame is inf without frames.)
+  const bool no_frames = std::bit_cast<std::uint64_t>(rec.next_frame) == std::bit_cast<std::uint64_t>(HUGE_VAL);
+  if (!(finite_bits(rec.next_row) && rec.next_row >= 0.0) ||
+      !(no_frames || (finite_bits(rec.next_frame) && rec.next_frame >= 0.0)))
+    throw InputError(fmt::format("checkpoint '{}': next output times {} s (row), {} s (frame) are not times >= 0", path,
+                                 nan_safe(rec.next_row), nan_safe(rec.next_frame)));
   if (run_state) loading(path, [&] { run_state(run_part); });
 }
 

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -53,6 +54,17 @@ std::optional<long long> whole_number(std::string_view t) {
   return v;
 }
 
+// A vertex of the file in m, or why not: a coordinate that is not finite, or beyond
+// kMaxMeshCoordinate once scaled (tested before the product, which could overflow).
+std::optional<std::string> bad_vertex(const Vec3& raw, double scale) {
+  for (int c = 0; c < 3; ++c) {
+    if (!finite_bits(raw[c])) return "is not finite";
+    if (std::abs(raw[c]) > kMaxMeshCoordinate / scale)
+      return fmt::format("lies beyond {:g} m once scaled by {} (a unit or scale mistake?)", kMaxMeshCoordinate, scale);
+  }
+  return std::nullopt;
+}
+
 TriangleMesh read_stl(const std::string& path, double scale) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("mesh file '{}' cannot be read", path));
@@ -77,11 +89,14 @@ TriangleMesh read_stl(const std::string& path, double scale) {
       for (int k = 0; k < 3; ++k) {
         float xyz[3];
         std::memcpy(xyz, f + 12 + 12 * k, 12);
-        const Vec3 p = Vec3(xyz[0], xyz[1], xyz[2]) * scale;
-        // (a NaN would be welded onto whatever vertex the map's ordering finds for it)
-        if (!p.allFinite())
+        // (as floats: converting a signalling NaN to double raises FE_INVALID)
+        if (!finite_bits(xyz[0]) || !finite_bits(xyz[1]) || !finite_bits(xyz[2]))
           throw InputError(fmt::format("mesh file '{}': facet {} vertex {} is not finite", path, t, k));
-        tri[k] = weld(index, m, p);
+        const Vec3 raw(xyz[0], xyz[1], xyz[2]);
+        // (a NaN would be welded onto whatever vertex the map's ordering finds for it)
+        if (const auto why = bad_vertex(raw, scale))
+          throw InputError(fmt::format("mesh file '{}': facet {} vertex {} {}", path, t, k, *why));
+        tri[k] = weld(index, m, raw * scale);
       }
       m.triangles.push_back(tri);
     }
@@ -107,6 +122,8 @@ TriangleMesh read_stl(const std::string& path, double scale) {
                                        line_facet, t));
         p[c] = *v;
       }
+      if (const auto why = bad_vertex(p, scale))
+        throw InputError(fmt::format("mesh file '{}': facet {}: vertex {}", path, line_facet, *why));
       facet.push_back(weld(index, m, p * scale));
     } else if (word == "endsolid") {
       ended = true;
@@ -149,6 +166,8 @@ TriangleMesh read_obj(const std::string& path, double scale) {
               fmt::format("{}:{}: vertex coordinate '{}' is not a finite number in '{}'", path, lineno, t, line));
         p[c] = *v;
       }
+      if (const auto why = bad_vertex(p, scale))
+        throw InputError(fmt::format("{}:{}: vertex {} in '{}'", path, lineno, *why, line));
       m.vertices.emplace_back(p * scale);
     } else if (tag == "f") {
       std::vector<int> poly;

@@ -15,6 +15,7 @@
 #include "setup/case_override.h"
 #include "setup/case_tables.h"
 #include "setup/material_presets.h"
+#include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 #include "swarf/laws/bond_formation.h"
 #include "swarf/laws/flow_curve.h"
@@ -298,7 +299,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
                         const std::string& directory) {
   toml::table root;
   try {
-    root = toml::parse(text, source);
+    root = parse_toml(text, source);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
                                  e.source().begin.column, e.description()));
@@ -311,11 +312,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   cs.source = source;
   cs.directory = directory;
   cs.overrides = overrides;
-  {
-    std::ostringstream os;
-    os << root;
-    cs.effective_toml = os.str();
-  }
+  cs.effective_toml = print_toml(root);
   check_top_level(root, source, ov);
   const CaseInput in{root, source, directory, ov};
   read_workpiece(in, cs);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "setup/case_config.h"
+#include "swarf/core/bounds.h"
 
 namespace swarf {
 
@@ -48,7 +49,7 @@ inline constexpr Range kPositiveOrInf{0.0, kInf, true, false};  ///< > 0, inf al
 inline constexpr Range kNonNegative{0.0, kInf, false, true};    ///< >= 0, finite
 /// A particle radius, m: beyond these the derived step and the lattice's pair search overflow
 /// (a radius of 1e300 m squares to inf) before any check could name the key.
-inline constexpr Range kRadius{1e-9, 1.0, false, false, "a positive length, 1 nm to 1 m"};
+inline constexpr Range kRadius{kMinRadius, kMaxRadius, false, false, "a positive length, 1 nm to 1 m"};
 /// A density, kg/m^3 (the lightest foam to beyond the densest metal).
 inline constexpr Range kDensity{1e-3, 1e6, false, false, "a positive density, 1e-3 to 1e6 kg/m^3"};
 

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -19,7 +20,7 @@ void apply_override(toml::table& root, const std::string& arg, std::set<std::str
   const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
   toml::table parsed;
   try {
-    parsed = toml::parse("v = " + text);
+    parsed = parse_toml("v = " + text);
   } catch (const toml::parse_error&) {
     // A bare word is taken as a string: --set integrator.scheme=verlet
     parsed.insert_or_assign("v", text);

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -14,15 +15,13 @@ namespace {
 
 // The value as the user wrote it (floats in their shortest form), cut to one line's worth.
 std::string repr(const toml::node& n) {
-  std::ostringstream os;
-  if (auto s = n.as_string()) {
-    os << '"' << s->get() << '"';
-  } else if (auto f = n.as_floating_point()) {
-    os << fmt::format("{}", f->get());
-  } else {
-    n.visit([&](auto&& v) { os << v; });
-  }
-  std::string out = os.str();
+  std::string out;
+  if (auto s = n.as_string())
+    out = '"' + s->get() + '"';
+  else if (auto f = n.as_floating_point())
+    out = fmt::format("{}", f->get());
+  else
+    out = print_toml(n);
   if (out.size() > 80) out = out.substr(0, 77) + "...";
   return out;
 }

@@ -13,6 +13,7 @@
 #include "lattice_gen/lattice_file.h"
 #include "lattice_gen/membrane_lattice.h"
 #include "swarf/core/errors.h"
+#include "swarf/neighbors/neighbor_pairs.h"
 #include "tool_paths/tool_geometry.h"
 
 namespace swarf {
@@ -359,6 +360,12 @@ Model build_model(const CaseSettings& cs) {
   model.lattice_particles = lat.position.size();
   std::vector<Vec3> free_velocity, free_spin;
   append_free_particles(cs, lat, free_velocity, free_spin);
+  // (two particles at one place have no contact normal: 0/0 in the first contact evaluation)
+  if (const auto c = find_coincident(lat.position); c[0] >= 0)
+    throw InputError(
+        fmt::format("{}: particles {} and {} are both at ({}, {}, {}) m (numbered lattice first, then "
+                    "[[particle]], then the [particles] file)",
+                    cs.source, c[0], c[1], lat.position[c[0]][0], lat.position[c[0]][1], lat.position[c[0]][2]));
   model.derived = compute_derived(cs, lat);  // (of the ordered lattice: the same material for every seed)
   model.sites = lat.position;
   jitter_lattice(lat, static_cast<std::uint64_t>(cs.workpiece.disorder_seed), model.derived.position_jitter,

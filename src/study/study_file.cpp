@@ -26,6 +26,7 @@
 
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
+#include "setup/toml_parse.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
 #include "study/sweep.h"
@@ -80,9 +81,7 @@ std::string at(const std::string& source, const toml::node& n) {
 
 std::string shown(const toml::node& n) {
   if (n.is_table()) return "(a table)";
-  std::ostringstream os;
-  n.visit([&](auto&& v) { os << v; });
-  return os.str();
+  return print_toml(n);
 }
 
 [[noreturn]] void bad(const std::string& source, const toml::node& n, const std::string& key, const std::string& why) {
@@ -179,6 +178,9 @@ StudyKeys read_study_keys(const toml::table& root, const std::string& source, St
       auto i = v.as_integer();
       if (!i) bad(source, v, key, "must be an integer");
       if (key == "seed_start") {
+        // (seed_start + repetition must not overflow: 2^63 - 1 with two repetitions did)
+        if (i->get() < -(std::int64_t{1} << 53) || i->get() > (std::int64_t{1} << 53))
+          bad(source, v, key, "must lie in [-2^53, 2^53]");
         s.seed_start = i->get();
       } else {
         if (i->get() < 1 || i->get() > 10000) bad(source, v, key, "must lie in [1, 10000]");
@@ -245,7 +247,8 @@ Axes check_varied(const toml::table& root, const std::string& source, const Stud
     axes.emplace_back(k, vals);
   }
   for (const auto& [k, n] : r.fixed) {
-    if (r.point_keys.count(k) || std::any_of(axes.begin(), axes.end(), [&](const auto& a) { return a.first == k; }))
+    if (r.point_keys.count(k) ||
+        std::any_of(axes.begin(), axes.end(), [&key = k](const auto& a) { return a.first == key; }))
       bad(source, *n, "set." + k, "is also varied ([grid] or [[point]]): a key is either fixed or varied");
     if (k == s.seed_key) bad(source, *n, "set." + k, "is the seed_key, which the repetitions set");
   }
@@ -282,10 +285,16 @@ Axes check_varied(const toml::table& root, const std::string& source, const Stud
 // Expansion: points (in file order) x grid (first key slowest) x repetitions.
 void expand(const std::string& source, const Axes& axes, std::vector<std::map<std::string, std::string>> points,
             Study& s) {
+  // (the count stops growing past the limit: 64 axes of two values wrapped a 64-bit product
+  // round to 0, and the study then ran no case at all)
+  constexpr std::size_t kMaxCases = 100000;
   std::size_t grid_count = 1;
-  for (const auto& [k, v] : axes) grid_count *= v.size();
+  for (const auto& [k, v] : axes) grid_count = std::min(grid_count * v.size(), kMaxCases + 1);
   const std::size_t total = std::max<std::size_t>(1, points.size()) * grid_count * std::size_t(s.repetitions);
-  if (total > 100000) throw InputError(fmt::format("{}: {} cases: more than 100000 (split the study)", source, total));
+  if (total > kMaxCases)
+    throw InputError(grid_count > kMaxCases
+                         ? fmt::format("{}: more than {} cases (split the study)", source, kMaxCases)
+                         : fmt::format("{}: {} cases: more than {} (split the study)", source, total, kMaxCases));
   if (points.empty()) points.emplace_back();
   const int width = id_width(static_cast<long long>(total));
   for (const auto& p : points) {
@@ -313,7 +322,7 @@ void expand(const std::string& source, const Axes& axes, std::vector<std::map<st
 Study parse_study(const std::string& text, const std::string& source, const std::string& directory) {
   toml::table root;
   try {
-    root = toml::parse(text, source);
+    root = parse_toml(text, source);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
                                  e.source().begin.column, e.description()));

@@ -138,9 +138,10 @@ void reconcile_study(Study& s, const std::string& out_dir) {
     if (fresh.count(c.values) || !finished.count(c.id)) continue;
     std::string why;
     for (const auto& [k, v] : c.values) {
-      const bool present = std::any_of(s.cases.begin(), s.cases.end(), [&](const StudyCase& n) {
-        auto it = n.values.find(k);
-        return it != n.values.end() && it->second == v;
+      // (init-captures: clang 14 cannot capture structured bindings)
+      const bool present = std::any_of(s.cases.begin(), s.cases.end(), [&key = k, &value = v](const StudyCase& n) {
+        auto it = n.values.find(key);
+        return it != n.values.end() && it->second == value;
       });
       if (!present) why += (why.empty() ? "" : ", ") + fmt::format("{} = {} is no longer in the study", k, v);
     }

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "io/atomic_file.h"
+#include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -68,7 +69,7 @@ std::string csv_cell(const std::string& s) {
 std::string cell_text(const std::string& toml_text) {
   if (toml_text.empty() || toml_text.front() != '"') return toml_text;
   try {
-    auto t = toml::parse("v = " + toml_text);
+    auto t = parse_toml("v = " + toml_text);
     if (auto s = t["v"].value<std::string>()) return *s;
   } catch (const toml::parse_error&) {
   }
@@ -78,7 +79,7 @@ std::string cell_text(const std::string& toml_text) {
 // The numbers of a TOML value text: one for a number, its elements for an array of numbers.
 std::optional<std::vector<double>> numbers_of(const std::string& toml_text) {
   try {
-    auto t = toml::parse("v = " + toml_text);
+    auto t = parse_toml("v = " + toml_text);
     const toml::node& n = *t.get("v");
     if (auto v = n.value<double>(); v && !n.is_boolean()) return std::vector<double>{*v};
     if (auto a = n.as_array()) {

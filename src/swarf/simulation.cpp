@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/parallel.h"
 #include "swarf/forces/rod_forces.h"
@@ -489,7 +490,7 @@ void Simulation::throw_too_far(double h) const {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec3 v = p.velocity[i];
     const double moved = v.norm() * h / p.radius[i];
-    if (!(moved <= limit) || !p.position[i].allFinite())
+    if (!(moved <= limit) || !all_finite(p.position[i]))
       throw SimulationError(fmt::format(
           "unstable: particle {} (at {:.6g}, {:.6g}, {:.6g} m) moved {:.3g} radii in step {} at t = {:.6g} s "
           "(limit integrator.max_step_displacement = {}); speed {:.4g} m/s. The step dt = {:.4g} s may be "

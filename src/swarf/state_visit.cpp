@@ -7,7 +7,9 @@
 #include <string>
 
 #include "swarf/contacts/contacts.h"
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
+#include "swarf/neighbors/neighbor_pairs.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
@@ -154,6 +156,15 @@ void Simulation::check_loaded_world(const std::vector<std::int32_t>& ends) {
     for (auto i : m_.groups[g].members)
       if (i < 0 || std::size_t(i) >= n)
         throw InputError(fmt::format("state field 'groups/{}/members': particle {} of {}", g, i, n));
+  // Far-flung or coincident particles: the contact grid's counts and the contact normal
+  // (0/0) cannot be formed (the checkpoint and lattice-file fuzzers).
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(p.position[i].cwiseAbs().maxCoeff() <= kMaxMeshCoordinate))
+      throw InputError(
+          fmt::format("state field 'particles/position': particle {} lies beyond {:g} m", i, kMaxMeshCoordinate));
+  if (const auto c = find_coincident(p.position); c[0] >= 0)
+    throw InputError(
+        fmt::format("state field 'particles/position': particles {} and {} are at the same place", c[0], c[1]));
   r.build_rows(n);
 }
 

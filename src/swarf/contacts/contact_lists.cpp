@@ -124,7 +124,12 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
   g.cell = 2.0 * max_radius_ + skin;
   // Keep the grid to about a few cells per particle even if particles fly far apart.
   for (;;) {
-    for (int k = 0; k < 3; ++k) g.n[k] = std::max<std::int64_t>(1, std::int64_t((hi[k] - lo[k]) / g.cell) + 1);
+    // (counted in double and capped: particles restored 1e21 m apart made a count beyond
+    // int64, whose conversion is undefined; found by the checkpoint fuzzer)
+    for (int k = 0; k < 3; ++k) {
+      const double cells = std::floor((hi[k] - lo[k]) / g.cell) + 1.0;
+      g.n[k] = cells < 4e18 ? std::max<std::int64_t>(1, std::int64_t(cells)) : std::int64_t(4e18);
+    }
     if (periodic_.on()) {  // whole cells over the period, none smaller than the reach
       g.period = periodic_.period;
       g.n[1] = std::max<std::int64_t>(1, std::int64_t(std::floor(g.period / g.cell)));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -16,7 +17,7 @@ std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<V
   if (!(max_distance > 0.0)) throw InputError("pair search: the distance must be positive");
   Vec3 lo = points[0], hi = points[0];
   for (const auto& p : points) {
-    if (!p.allFinite()) throw InputError("pair search: a position is not finite");
+    if (!all_finite(p)) throw InputError("pair search: a position is not finite");
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
@@ -62,6 +63,16 @@ std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<V
   }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
+}
+
+std::array<std::int32_t, 2> find_coincident(const std::vector<Vec3>& points) {
+  std::vector<std::int32_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::int32_t>(i);
+  auto key = [&](std::int32_t i) { return std::array<double, 3>{points[i][0], points[i][1], points[i][2]}; };
+  std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return key(a) < key(b); });
+  for (std::size_t k = 1; k < order.size(); ++k)
+    if (key(order[k]) == key(order[k - 1])) return {std::min(order[k], order[k - 1]), std::max(order[k], order[k - 1])};
+  return {-1, -1};
 }
 
 }  // namespace swarf

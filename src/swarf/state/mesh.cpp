@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -13,7 +14,11 @@ void TriangleMesh::validate(const std::string& source) const {
   if (triangles.empty()) throw InputError(fmt::format("mesh '{}' has no triangles", source));
   Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
   for (std::size_t v = 0; v < vertices.size(); ++v) {
-    if (!vertices[v].allFinite()) throw InputError(fmt::format("mesh '{}': vertex {} is not finite", source, v));
+    if (!all_finite(vertices[v])) throw InputError(fmt::format("mesh '{}': vertex {} is not finite", source, v));
+    if (vertices[v].cwiseAbs().maxCoeff() > kMaxMeshCoordinate)
+      throw InputError(
+          fmt::format("mesh '{}': vertex {} = ({}, {}, {}) m lies beyond {:g} m (a unit or scale mistake?)", source, v,
+                      vertices[v][0], vertices[v][1], vertices[v][2], kMaxMeshCoordinate));
     lo = lo.cwiseMin(vertices[v]);
     hi = hi.cwiseMax(vertices[v]);
   }

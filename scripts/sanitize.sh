@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The test suite under the sanitizers (issue 18, item 4):
+#   scripts/sanitize.sh asan   the whole ctest suite built with AddressSanitizer and
+#                              UndefinedBehaviorSanitizer (GCC, SWARF_SANITIZE=ON) in build-asan/;
+#                              undefined behaviour stops the test (halt_on_error) instead of
+#                              being printed and forgotten
+#   scripts/sanitize.sh tsan   the threaded tests (1 against 2 or 3 threads, the restarts on 2
+#                              threads, the study's parallel jobs) built with ThreadSanitizer in
+#                              build-tsan/: clang with LLVM's OpenMP runtime and its Archer tool,
+#                              which tells TSan about the runtime's own barriers and tasks (GCC's
+#                              libgomp is not instrumented, so under GCC every parallel loop's
+#                              barrier reads as a race)
+#   scripts/sanitize.sh [all]  both, one after the other
+# Each step is niced; SWARF_JOBS sets the build's and ctest's parallelism (2).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what=${1:-all}
+jobs=${SWARF_JOBS:-2}
+
+# The threaded tests (their names in tests/*.cpp).
+tsan_filter='Determinism.*:Newton.SameBitsForOneAndTwoThreads:Newton.WithContactsSameBitsForOneAndTwoThreads'
+tsan_filter+=':BondFormation.ACutThatFormsRodsIsBitIdenticalOnOneAndTwoThreadsAndBalancesEnergy'
+tsan_filter+=':Disorder.SameSeedGivesTheSameBitsOnOneAndTwoThreadsAndInAnyOrder'
+tsan_filter+=':Restart.ContinuesBitIdenticallyAndWhateverTheThreads:Restart.ACutThatFormsAndExchangesRodsContinuesBitIdentically'
+tsan_filter+=':Sweep.JobsTwoFailureResumeRefusalAndReport'
+
+if [ "$what" = asan ] || [ "$what" = all ]; then
+  echo "== ASan + UBSan: build-asan/"
+  cmake -S . -B build-asan -DSWARF_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+  nice -n 15 cmake --build build-asan -j"$jobs" --target swarf swarf_tests
+  (cd build-asan &&
+    ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
+      UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+      nice -n 15 ctest -j"$jobs" --output-on-failure --timeout 1800)
+fi
+
+if [ "$what" = tsan ] || [ "$what" = all ]; then
+  echo "== TSan (clang, libomp + Archer): build-tsan/"
+  archer=$(ls /usr/lib/llvm-*/lib/libarcher.so 2>/dev/null | tail -1)
+  if [ -z "$archer" ]; then
+    echo "sanitize.sh: libarcher.so (LLVM's OpenMP TSan tool) not found: apt-get install libomp-dev" >&2
+    exit 1
+  fi
+  CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS="-fsanitize=thread" -DCMAKE_C_FLAGS="-fsanitize=thread" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" > /dev/null
+  nice -n 15 cmake --build build-tsan -j"$jobs" --target swarf swarf_tests
+  # (OMP_TOOL_LIBRARIES loads Archer into libomp; the swarf runs the tests start inherit it)
+  OMP_TOOL_LIBRARIES="$archer" TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" OMP_WAIT_POLICY=PASSIVE \
+    nice -n 15 build-tsan/bin/swarf_tests --gtest_filter="$tsan_filter"
+fi

@@ -1,0 +1,493 @@
+// fuzz_targets.cpp: the readers as the fuzzers and the regression test drive them (see
+// fuzz_targets.h). The text readers take the input as the file's bytes. The HDF5 readers take
+// it as edits of a valid file: libhdf5 is not ours to fix and not instrumented (a fuzzer of
+// its raw bytes reports crashes inside the library, which has had dozens of such CVEs), so
+// these harnesses fuzz what swarf reads from a file HDF5 opens: which datasets exist, their
+// shapes and every value (NaN, inf, huge, negative, out-of-range indices, duplicates), and
+// the attributes, then go on as far as swarf would (a model built and stepped).
+#include "fuzz_targets.h"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string_view>
+
+#include "app/observers/case_observers.h"
+#include "app/observers/observer_set.h"
+#include "app/run_outputs.h"
+#include "io/checkpoint.h"
+#include "io/h5file.h"
+#include "io/mesh_file.h"
+#include "lattice_gen/fcc_lattice.h"
+#include "lattice_gen/lattice_file.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "study/sweep.h"
+#include "swarf/core/errors.h"
+#include "swarf/simulation.h"
+
+namespace swarf::fuzz {
+namespace {
+
+// A scratch directory of this process (in memory when /dev/shm exists: a file per input),
+// removed at exit.
+const std::string& scratch() {
+  // (never destroyed: the exit handler below still reads it)
+  static const std::string& dir = *new std::string([] {
+    const std::filesystem::path base = std::filesystem::is_directory("/dev/shm")
+                                           ? "/dev/shm"
+                                           : std::filesystem::temp_directory_path();
+    const std::string d = (base / fmt::format("swarf_fuzz_{}", ::getpid())).string();
+    std::filesystem::create_directories(d);
+    std::atexit([] {
+      std::error_code ec;
+      std::filesystem::remove_all(scratch(), ec);
+    });
+    return d;
+  }());
+  return dir;
+}
+
+std::string file_of(const std::string& name, const std::uint8_t* data, std::size_t size) {
+  const std::string path = scratch() + "/" + name;
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  return path;
+}
+
+// Runs f; an InputError is a clean refusal, everything else escapes to the caller.
+template <class F>
+void refused_or_accepted(F&& f) {
+  try {
+    f();
+  } catch (const InputError&) {
+  }
+}
+
+// A few steps of a built model; a SimulationError (the run would stop, exit 3) is clean too.
+void step_a_little(Model& model, int steps) {
+  Simulation sim(model, model.step);
+  try {
+    for (int k = 0; k < steps; ++k) sim.step();
+  } catch (const SimulationError&) {
+  }
+}
+
+// The small case the HDF5 targets build around their files.
+const char* const kSmallCase = R"([rod]
+youngs_modulus = 200e9
+yield_strain = 1e-3
+hardening_modulus = 20e9
+tensile_strength = 2.3e8
+[contact]
+youngs_modulus = 200e9
+poisson_ratio = 0.3
+friction = 0.3
+[[group]]
+name = "base"
+side = "z-"
+[[mesh]]
+name = "tool"
+rake_angle = 10.0
+clearance_angle = 7.0
+width = 4e-3
+face_length = 2e-3
+origin = [-0.05e-3, 1.0e-3, 1.0e-3]
+motion = "velocity"
+velocity = [20.0, 0.0, 0.0]
+[integrator]
+end_time = 1e-3
+[output]
+vtk = false
+plots = false
+progress = false
+)";
+
+// The files a fuzzed case may name (relative to the scratch directory).
+void write_case_files() {
+  static const bool done = [] {
+    TriangleMesh m;
+    m.vertices = {Vec3(0, 0, 0), Vec3(1e-3, 0, 0), Vec3(0, 1e-3, 0), Vec3(0, 0, 1e-3)};
+    m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    write_stl(scratch() + "/tool.stl", m);
+    std::ofstream(scratch() + "/tool.obj")
+        << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    std::ofstream(scratch() + "/particles.txt") << "# id x y z vx vy vz\n0 0 0 0 0 0 0\n1 0.002 0 0 -1 0 0\n";
+    FccSpec spec;
+    spec.radius = 0.5e-3;
+    spec.cells = {1, 1, 1};
+    write_lattice(scratch() + "/lattice.h5", generate_fcc(spec));
+    std::ofstream(scratch() + "/base.toml") << "[workpiece]\ncells = [2, 1, 1]\nradius = 0.5e-3\n[integrator]\n"
+                                               "end_time = 1e-6\n[output]\nvtk = false\nplots = false\n";
+    return true;
+  }();
+  (void)done;
+}
+
+// Whether a parsed case is small enough to build in a fuzzer's iteration (a few hundred
+// particles; the program itself refuses cases larger than the machine's memory, app/run.cpp).
+// A metal's flow curve is not built: its calibration runs the material lab (a minute per
+// case under the sanitizers); the keys are still read and checked.
+bool small(const CaseSettings& cs) {
+  if (cs.particles.size() > 200 || cs.material.flow_curve) return false;
+  const WorkpieceSettings& w = cs.workpiece;
+  if (!w.enabled || !w.lattice_file.empty()) return true;
+  double cells = 1;
+  const double a = 2.0 * std::sqrt(2.0) * w.radius;
+  for (int k = 0; k < 3; ++k) cells *= w.cells[0] > 0 ? double(w.cells[k]) : w.size[k] / a + 1.0;
+  return cells <= 64.0;
+}
+
+// --- Edits of an HDF5 file's contents ---
+
+// The input read as a stream of edit instructions; past its end everything reads 0.
+class Bytes {
+ public:
+  Bytes(const std::uint8_t* p, std::size_t n) : p_(p), n_(n) {}
+  bool empty() const { return n_ == 0; }
+  std::uint8_t byte() {
+    if (n_ == 0) return 0;
+    --n_;
+    return *p_++;
+  }
+  std::uint64_t u64(int bytes) {
+    std::uint64_t v = 0;
+    for (int k = 0; k < bytes; ++k) v = (v << 8) | byte();
+    return v;
+  }
+  std::string text(std::size_t most) {
+    std::string s;
+    const std::size_t len = std::min<std::size_t>(byte(), most);
+    for (std::size_t k = 0; k < len && !empty(); ++k) s += char(byte());
+    return s;
+  }
+
+ private:
+  const std::uint8_t* p_;
+  std::size_t n_;
+};
+
+struct Dataset {
+  std::string name;
+  bool integer = false;
+  std::vector<double> d;
+  std::vector<std::int64_t> i;
+  std::size_t rows = 0, cols = 1;
+  std::size_t size() const { return integer ? i.size() : d.size(); }
+};
+struct Attribute {
+  std::string name;
+  bool text = false;
+  std::string s;
+  double v = 0;
+};
+struct H5Image {
+  std::vector<Dataset> sets;
+  std::vector<Attribute> attributes;
+};
+
+herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* out) {
+  static_cast<std::vector<std::string>*>(out)->push_back(std::string("/") + name);
+  return 0;
+}
+herr_t collect_attribute(hid_t, const char* name, const H5A_info_t*, void* out) {
+  static_cast<std::vector<std::string>*>(out)->push_back(name);
+  return 0;
+}
+
+// Every dataset and root attribute of a file (the files swarf writes: numbers and strings).
+H5Image load_image(const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  std::vector<std::string> links, attributes;
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  H5Lvisit(f, H5_INDEX_NAME, H5_ITER_INC, collect_link, &links);
+  H5Aiterate2(f, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute, &attributes);
+  H5Image img;
+  const H5File file(path, H5File::Mode::Read);
+  for (const std::string& name : links) {
+    const hid_t d = H5Dopen2(f, name.c_str(), H5P_DEFAULT);
+    if (d < 0) continue;  // (a group)
+    const hid_t t = H5Dget_type(d);
+    Dataset s;
+    s.name = name;
+    s.integer = H5Tget_class(t) == H5T_INTEGER;
+    H5Tclose(t);
+    H5Dclose(d);
+    if (s.integer)
+      s.i = file.read_ints(name, s.rows, s.cols);
+    else
+      s.d = file.read_doubles(name, s.rows, s.cols);
+    img.sets.push_back(std::move(s));
+  }
+  for (const std::string& name : attributes) {
+    const hid_t a = H5Aopen(f, name.c_str(), H5P_DEFAULT);
+    const hid_t t = H5Aget_type(a);
+    Attribute at;
+    at.name = name;
+    at.text = H5Tget_class(t) == H5T_STRING;
+    H5Tclose(t);
+    H5Aclose(a);
+    if (at.text)
+      at.s = file.read_string_attribute(name);
+    else
+      at.v = file.read_double_attribute(name);
+    img.attributes.push_back(std::move(at));
+  }
+  H5Fclose(f);
+  return img;
+}
+
+void save_image(const H5Image& img, const std::string& path) {
+  H5File f(path, H5File::Mode::Create);
+  for (const Dataset& s : img.sets) {
+    if (s.integer)
+      f.write(s.name, s.i.data(), s.rows, s.cols);
+    else
+      f.write(s.name, s.d.data(), s.rows, s.cols);
+  }
+  for (const Attribute& a : img.attributes) {
+    if (a.text)
+      f.write_attribute(a.name, a.s);
+    else
+      f.write_attribute(a.name, a.v);
+  }
+  f.close();
+}
+
+double special_double(std::uint8_t k, const Dataset& s) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double table[] = {std::nan(""), inf,    -inf, 0.0,  -0.0,         1.0,    -1.0,           1e300, -1e300, 1e-300,
+                          0.5,          2.5e-4, 1e6,  1e-3, 4294967299.0, 9.3e18, double(s.rows), -1e-3, 1e-30,  2e-3};
+  return table[k % std::size(table)];
+}
+std::int64_t special_int(std::uint8_t k, const Dataset& s) {
+  const std::int64_t table[] = {0,
+                                -1,
+                                1,
+                                2,
+                                std::numeric_limits<std::int32_t>::max(),
+                                std::numeric_limits<std::int32_t>::min(),
+                                std::numeric_limits<std::int64_t>::max(),
+                                std::numeric_limits<std::int64_t>::min(),
+                                std::int64_t(1) << 32,
+                                std::int64_t(s.rows),
+                                std::int64_t(s.rows) - 1,
+                                std::int64_t(s.rows) + 1,
+                                1000000,
+                                255,
+                                256};
+  return table[k % std::size(table)];
+}
+
+// Applies the input's edits: set a value (special or raw bits), resize, reshape, delete a
+// dataset, swap two values, edit an attribute.
+void edit(H5Image& img, Bytes& in) {
+  const int edits = 1 + in.byte() % 8;
+  for (int e = 0; e < edits && !in.empty(); ++e) {
+    const int op = in.byte() % 8;
+    if (op == 7) {
+      if (img.attributes.empty()) continue;
+      Attribute& a = img.attributes[in.byte() % img.attributes.size()];
+      if (a.text) {
+        if (in.byte() % 2)
+          a.s = in.text(64);
+        else
+          a.s += "\n" + in.text(64);
+      } else {
+        const std::uint8_t k = in.byte();
+        Dataset none;
+        a.v = k < 128 ? special_double(k, none) : std::bit_cast<double>(in.u64(8));
+      }
+      continue;
+    }
+    if (img.sets.empty()) return;
+    const std::size_t which = in.u64(2) % img.sets.size();
+    Dataset& s = img.sets[which];
+    const std::size_t n = s.size();
+    switch (op) {
+      case 0:
+      case 1: {  // a value: special, or raw bits
+        if (n == 0) break;
+        const std::size_t k = in.u64(3) % n;
+        const std::uint8_t x = in.byte();
+        if (s.integer)
+          s.i[k] = op == 0 ? special_int(x, s) : std::int64_t(in.u64(8));
+        else
+          s.d[k] = op == 0 ? special_double(x, s) : std::bit_cast<double>(in.u64(8));
+        break;
+      }
+      case 2: {  // a value nudged (an index by one, a length by a little)
+        if (n == 0) break;
+        const std::size_t k = in.u64(3) % n;
+        const int delta = int(in.byte() % 5) - 2;
+        if (s.integer)
+          s.i[k] += delta;
+        else
+          s.d[k] *= 1.0 + 0.25 * delta;
+        break;
+      }
+      case 3: {  // rows
+        s.rows = in.u64(2) % (2 * s.rows + 3);
+        s.i.resize(s.integer ? s.rows * s.cols : 0, 1);
+        s.d.resize(s.integer ? 0 : s.rows * s.cols, 1.0);
+        break;
+      }
+      case 4: {  // columns
+        s.cols = 1 + in.byte() % 4;
+        s.rows = n / s.cols;
+        if (s.integer)
+          s.i.resize(s.rows * s.cols);
+        else
+          s.d.resize(s.rows * s.cols);
+        break;
+      }
+      case 5:  // gone
+        img.sets.erase(img.sets.begin() + std::ptrdiff_t(which));
+        break;
+      case 6: {  // two values swapped
+        if (n == 0) break;
+        const std::size_t a = in.u64(3) % n, b = in.u64(3) % n;
+        if (s.integer)
+          std::swap(s.i[a], s.i[b]);
+        else
+          std::swap(s.d[a], s.d[b]);
+        break;
+      }
+      default:
+        break;
+    }
+  }
+}
+
+// The valid files the HDF5 targets edit.
+const H5Image& base_lattice() {
+  static const H5Image img = [] {
+    FccSpec spec;
+    spec.radius = 0.5e-3;
+    spec.cells = {2, 2, 2};
+    write_lattice(scratch() + "/base_lattice.h5", generate_fcc(spec));
+    return load_image(scratch() + "/base_lattice.h5");
+  }();
+  return img;
+}
+
+std::string small_case_with_workpiece(const std::string& workpiece) {
+  return fmt::format("[workpiece]\n{}\n{}", workpiece, kSmallCase);
+}
+
+// A run as app/run.cpp makes one: the model, its observers and its outputs (in 'dir').
+struct Run {
+  Model model;
+  Simulation sim;
+  ObserverSet observers;
+  RunOutputs outputs;
+  Run(const CheckpointCase& c, const std::string& dir)
+      : model(build_model(parse_case(c.toml, c.source, c.overrides, c.directory))),
+        sim(model, model.step),
+        observers(sim, observers_for(model)),
+        outputs((std::filesystem::create_directories(dir), dir), model, sim, observers, c) {}
+  void steps(int n) {
+    const double end = model.settings.integrator.end_time;
+    for (int k = 0; k < n && sim.time() < end; ++k) {
+      sim.step(end - sim.time());
+      outputs.after_step(false);
+    }
+  }
+};
+
+const H5Image& base_checkpoint() {
+  static const H5Image img = [] {
+    const std::string toml = small_case_with_workpiece("cells = [3, 2, 2]\nradius = 0.5e-3");
+    const CheckpointCase c{toml, "fuzz_checkpoint.toml", scratch(), {}, 0.0, 0.0};
+    Run run(c, scratch() + "/base_run");
+    run.outputs.begin();
+    while (run.sim.time() < 2e-5) run.steps(1);  // (the tool is in contact by then)
+    run.outputs.write_checkpoint_now();
+    return load_image(scratch() + "/base_run/checkpoint.h5");
+  }();
+  return img;
+}
+
+}  // namespace
+
+void case_file(const std::uint8_t* data, std::size_t size) {
+  write_case_files();
+  std::string_view text(reinterpret_cast<const char*>(data), size);
+  std::vector<std::string> overrides;
+  while (text.starts_with("--set ")) {
+    const std::size_t eol = text.find('\n');
+    overrides.emplace_back(text.substr(6, eol == std::string_view::npos ? std::string_view::npos : eol - 6));
+    text.remove_prefix(eol == std::string_view::npos ? text.size() : eol + 1);
+  }
+  refused_or_accepted([&] {
+    const CaseSettings cs = parse_case(std::string(text), "fuzz.toml", overrides, scratch());
+    if (small(cs)) build_model(cs);
+  });
+}
+
+void stl(const std::uint8_t* data, std::size_t size) {
+  const std::string path = file_of("mesh.stl", data, size);
+  refused_or_accepted([&] { read_mesh(path); });
+}
+
+void obj(const std::uint8_t* data, std::size_t size) {
+  const std::string path = file_of("mesh.obj", data, size);
+  refused_or_accepted([&] { read_mesh(path); });
+}
+
+void study_file(const std::uint8_t* data, std::size_t size) {
+  write_case_files();
+  refused_or_accepted([&] {
+    const Study s = parse_study(std::string(reinterpret_cast<const char*>(data), size), "fuzz_study.toml", scratch());
+    if (s.cases.size() <= 8) check_cases(s);
+  });
+}
+
+void lattice_file(const std::uint8_t* data, std::size_t size) {
+  H5Image img = base_lattice();
+  Bytes in(data, size);
+  edit(img, in);
+  const std::string path = scratch() + "/lattice_edited.h5";
+  save_image(img, path);
+  refused_or_accepted([&] {
+    read_lattice(path);
+    Model model = build_model(parse_case(small_case_with_workpiece("lattice_file = \"lattice_edited.h5\""),
+                                         "fuzz_lattice.toml", {}, scratch()));
+    step_a_little(model, 3);
+  });
+}
+
+void checkpoint(const std::uint8_t* data, std::size_t size) {
+  H5Image img = base_checkpoint();
+  Bytes in(data, size);
+  edit(img, in);
+  const std::string path = scratch() + "/checkpoint_edited.h5";
+  save_image(img, path);
+  refused_or_accepted([&] {
+    // As app/run.cpp restarts: the stored case, its model and outputs, the state, the record
+    // and the observers' state; then a few steps with their outputs.
+    const CheckpointCase c = read_checkpoint_case(path);
+    Run run(c, scratch() + "/restarted");
+    run.outputs.restore(path);
+    try {
+      run.steps(3);
+    } catch (const SimulationError&) {
+    }
+  });
+}
+
+const std::vector<Target>& targets() {
+  static const std::vector<Target> t = {
+      {"case_file", case_file},  {"stl", stl}, {"obj", obj}, {"study_file", study_file}, {"lattice_file", lattice_file},
+      {"checkpoint", checkpoint}};
+  return t;
+}
+
+}  // namespace swarf::fuzz

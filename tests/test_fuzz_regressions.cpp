@@ -1,0 +1,46 @@
+// test_fuzz_regressions.cpp: every seed of the fuzzers (tests/fuzz/corpus/<target>/) and every
+// input a fuzzer found (tests/fuzz/regressions/<target>/) fed to the same reader as the
+// fuzzer feeds it (tests/fuzz/fuzz_targets.h): each must be accepted or refused with an
+// InputError, never crash, trap a floating-point exception, hang or throw anything else.
+// The files under regressions/ crashed, hung or threw before their fixes (named in their
+// commits); scripts/fuzz.sh writes new findings to build-fuzz/findings/.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "fuzz/fuzz_targets.h"
+
+namespace swarf {
+namespace {
+
+std::string bytes_of(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class FuzzInputs : public testing::TestWithParam<fuzz::Target> {};
+
+TEST_P(FuzzInputs, SeedsAndFoundInputsAreReadOrRefusedCleanly) {
+  const fuzz::Target& t = GetParam();
+  int files = 0;
+  for (const char* kind : {"corpus", "regressions"}) {
+    const std::filesystem::path dir = std::filesystem::path(SWARF_SOURCE_DIR) / "tests/fuzz" / kind / t.name;
+    if (!std::filesystem::is_directory(dir)) continue;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      const std::string data = bytes_of(e.path());
+      SCOPED_TRACE(e.path().string());
+      EXPECT_NO_THROW(t.run(reinterpret_cast<const std::uint8_t*>(data.data()), data.size()));
+      ++files;
+    }
+  }
+  EXPECT_GT(files, 0) << "no seeds for " << t.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Readers, FuzzInputs, testing::ValuesIn(fuzz::targets()),
+                         [](const testing::TestParamInfo<fuzz::Target>& i) { return std::string(i.param.name); });
+
+}  // namespace
+}  // namespace swarf
