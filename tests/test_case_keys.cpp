@@ -97,11 +97,19 @@ youngs_modulus = 1e6
 end_time = 1e-5
 )";
 
-// kEveryTable (kMembraneCase for [membrane]) with 'line' added to 'table'.
+// A [cut] with its required keys (it cannot go with [uniaxial], so it has a case of its own).
+const std::string kCutCase = R"([cut]
+uncut_chip_thickness = 0.2e-3
+cutting_speed = 10.0
+rake_angle = 10.0
+material = "C45"
+)";
+
+// kEveryTable (kMembraneCase for [membrane], kCutCase for [cut]) with 'line' added to 'table'.
 std::string every_table_with(const std::string& table, const std::string& line) {
   const bool array = table == "group" || table == "mesh" || table == "particle";
   const std::string header = (array ? "[[" : "[") + table + (array ? "]]\n" : "]\n");
-  std::string text = table == "membrane" ? kMembraneCase : kEveryTable;
+  std::string text = table == "membrane" ? kMembraneCase : table == "cut" ? kCutCase : kEveryTable;
   const auto pos = text.find(header);
   EXPECT_NE(pos, std::string::npos) << header;
   return text.insert(pos + header.size(), line + "\n");
@@ -175,6 +183,7 @@ void expect_every_member_keyed(const char* table, const std::vector<Key<S>>& key
 }
 
 TEST(CaseKeys, EverySettingsMemberHasAKey) {
+  expect_every_member_keyed("cut", cut_keys(), &CutSettings::enabled);
   expect_every_member_keyed("workpiece", workpiece_keys(), &WorkpieceSettings::enabled);
   expect_every_member_keyed("membrane", membrane_keys(), &MembraneSettings::enabled);
   expect_every_member_keyed("material", material_keys(), &MaterialSettings::macroscopic, &MaterialSettings::flow_curve);
@@ -189,12 +198,12 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("particles", particles_file_keys());
   expect_every_member_keyed("output", output_keys());
   // CaseSettings: [environment] gravity; the tables; what the run records about its input.
-  expect_every_member_keyed("environment", environment_keys(), &CaseSettings::source, &CaseSettings::directory,
-                            &CaseSettings::workpiece, &CaseSettings::membrane, &CaseSettings::material,
-                            &CaseSettings::rod, &CaseSettings::integrator, &CaseSettings::groups,
-                            &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::meshes,
-                            &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output,
-                            &CaseSettings::overrides, &CaseSettings::effective_toml, &CaseSettings::text);
+  expect_every_member_keyed(
+      "environment", environment_keys(), &CaseSettings::source, &CaseSettings::directory, &CaseSettings::workpiece,
+      &CaseSettings::membrane, &CaseSettings::material, &CaseSettings::rod, &CaseSettings::integrator,
+      &CaseSettings::groups, &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::meshes,
+      &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output, &CaseSettings::overrides,
+      &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::cut, &CaseSettings::cut_derived);
 }
 
 // Every key the case leaves out holds the default-constructed struct's value, which is the
@@ -232,6 +241,8 @@ TEST(CaseKeys, KeysLeftOutKeepTheStructDefaults) {
   expect_defaults("output", output_keys(), cs.output, {});
   const CaseSettings ms = parse_case(kMembraneCase, "keys.toml", {}, dir.str());
   expect_defaults("membrane", membrane_keys(), ms.membrane, {"length", "width", "thickness", "youngs_modulus"});
+  const CaseSettings cs_cut = parse_case(kCutCase, "keys.toml", {}, dir.str());
+  expect_defaults("cut", cut_keys(), cs_cut.cut, {"uncut_chip_thickness", "cutting_speed", "rake_angle", "material"});
 }
 
 TEST(CaseKeys, RangesKeepTheirMessagesAndDocs) {

@@ -50,6 +50,7 @@ nlohmann::json table(const std::vector<Key<S>>& keys, const S& s) {
 
 nlohmann::json case_effective_json(const CaseSettings& cs) {
   nlohmann::json j = nlohmann::json::object();
+  if (cs.cut.enabled) j["cut"] = table(cut_keys(), cs.cut);
   if (cs.workpiece.enabled) {
     j["workpiece"] = table(workpiece_keys(), cs.workpiece);
     j["material"] = table(material_keys(), cs.material);

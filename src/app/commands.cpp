@@ -147,6 +147,9 @@ struct RunCommand final : Command {
                     "Continue from a checkpoint (DIR/checkpoint.h5, written every output.checkpoint_every steps "
                     "and, with output.checkpoint_at_end, after the last); no case file; --set only "
                     "integrator.end_time (to extend the run) and output keys; --out defaults to its directory");
+    sub->add_flag("--check", ro.check,
+                  "Build the case and print its set-up (with what [cut] derives) without running or writing "
+                  "anything");
   }
   int run() override {
     if (sub->count("--threads")) check_thread_count(ro.threads, "--threads");
@@ -252,10 +255,8 @@ struct ReportCommand final : Command {
 struct CaseKeysCommand final : Command {
   bool markdown = false;
   std::string update;
-  explicit CaseKeysCommand(CLI::App& app) {
-    auto* case_cmd = app.add_subcommand("case", "Describe the case file format");
-    case_cmd->require_subcommand(1);
-    sub = case_cmd->add_subcommand("keys", "List every case key: table.key, type, unit, default");
+  explicit CaseKeysCommand(CLI::App& case_cmd) {
+    sub = case_cmd.add_subcommand("keys", "List every case key: table.key, type, unit, default");
     sub->add_flag("--markdown", markdown, "Print the key tables of docs/case-reference.md, with their marker lines");
     sub->add_option("--update", update, "Rewrite the key tables between the marker lines of this markdown file");
   }
@@ -266,6 +267,21 @@ struct CaseKeysCommand final : Command {
     } else {
       fmt::print("{}", markdown ? key_tables_markdown() : key_list_text());
     }
+    return 0;
+  }
+};
+
+// swarf case default
+struct CaseDefaultCommand final : Command {
+  bool cut = false;
+  explicit CaseDefaultCommand(CLI::App& case_cmd) {
+    sub = case_cmd.add_subcommand("default",
+                                  "Print the built-in default case (what 'swarf run' runs without a case file) as a "
+                                  "case file to start from");
+    sub->add_flag("--cut", cut, "Print the same cut in cutting terms: a [cut] table (docs/case-reference.md)");
+  }
+  int run() override {
+    fmt::print("{}", cut ? kDefaultCutTableToml : kDefaultCaseToml);
     return 0;
   }
 };
@@ -283,7 +299,10 @@ std::vector<std::unique_ptr<Command>> make_commands(CLI::App& app) {
   c.push_back(std::make_unique<BenchCommand>(app));
   c.push_back(std::make_unique<SweepCommand>(app));
   c.push_back(std::make_unique<ReportCommand>(app));
-  c.push_back(std::make_unique<CaseKeysCommand>(app));
+  CLI::App* case_cmd = app.add_subcommand("case", "Describe the case file format; print the default case");
+  case_cmd->require_subcommand(1);
+  c.push_back(std::make_unique<CaseKeysCommand>(*case_cmd));
+  c.push_back(std::make_unique<CaseDefaultCommand>(*case_cmd));
   return c;
 }
 

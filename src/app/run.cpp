@@ -179,6 +179,10 @@ void run_case(const RunOptions& opt) {
   const int threads = set_threads(opt.threads);
   const RunProvenance prov = run_provenance(threads);
   print_setup(model, threads);
+  if (opt.check) {
+    say("\n  --check: the case builds; nothing was run and nothing was written\n");
+    return;
+  }
   const std::string dir = prepare_run_directory(opt);
   // DIR/run.log: what this run prints (a restart appends to the log of the run it continues).
   if (!open_transcript(dir + "/run.log", !opt.restart.empty()))

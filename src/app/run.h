@@ -16,10 +16,12 @@ struct RunOptions {
   int threads = 0;                     ///< 0 = OpenMP default
   bool force = false;                  ///< --force: run a case whose memory estimate exceeds the machine's
   bool energy_check = true;            ///< false (--no-energy-check): a lost energy balance does not stop the run
+  bool check = false;                  ///< --check: build the case and print its set-up; no run, no outputs
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView
-/// series and the plots. Throws InputError / SimulationError.
+/// series and the plots (with options.check: builds the case, prints its set-up and returns).
+/// Throws InputError / SimulationError.
 void run_case(const RunOptions& options);
 
 }  // namespace swarf

@@ -19,6 +19,16 @@ void print_setup(const Model& m, int threads) {
   const BuildInfo& b = build_info();
   say("swarf {} (commit {}{}): case {}\n", b.version, b.git_commit.substr(0, 12),
       b.git_dirty == 1 ? ", uncommitted changes" : "", m.settings.source);
+  if (!m.settings.cut_derived.empty()) {
+    // What [cut] derived, as the case file that says the same without [cut].
+    std::string text;
+    for (std::size_t a = 0, b = 0; a < m.settings.cut_derived.size(); a = b + 1) {
+      b = m.settings.cut_derived.find('\n', a);
+      if (b == std::string::npos) b = m.settings.cut_derived.size();
+      text += b > a ? "    " + m.settings.cut_derived.substr(a, b - a) + "\n" : "\n";
+    }
+    say("{}", text);
+  }
   say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
   for (const auto& g : m.groups) say("  group '{}': {} particles\n", g.name, g.members.size());
   if (d.membrane)

@@ -14,6 +14,7 @@
 #include "setup/calibration.h"
 #include "setup/case_override.h"
 #include "setup/case_tables.h"
+#include "setup/cut_case.h"
 #include "setup/material_presets.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
@@ -271,9 +272,9 @@ void read_output(const CaseInput& in, CaseSettings& cs) {
 
 // Top level: only known tables, and tables where a table is expected.
 void check_top_level(const toml::table& root, const std::string& source, const std::set<std::string>& ov) {
-  const std::set<std::string> tables{"workpiece", "membrane",    "material", "rod",  "integrator",
-                                     "group",     "uniaxial",    "contact",  "mesh", "particle",
-                                     "particles", "environment", "output"};
+  const std::set<std::string> tables{"cut",        "workpiece", "membrane",    "material", "rod",
+                                     "integrator", "group",     "uniaxial",    "contact",  "mesh",
+                                     "particle",   "particles", "environment", "output"};
   const std::set<std::string> arrays_of_tables{"group", "mesh", "particle"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
@@ -284,8 +285,8 @@ void check_top_level(const toml::table& root, const std::string& source, const s
       else
         where += ":" + std::to_string(v.source().begin.line);
       throw InputError(
-          fmt::format("{}: unknown table or key '{}' (known: workpiece, membrane, material, rod, integrator, "
-                      "group, uniaxial, contact, mesh, particle, particles, environment, output)",
+          fmt::format("{}: unknown table or key '{}' (known: cut, workpiece, membrane, material, rod, "
+                      "integrator, group, uniaxial, contact, mesh, particle, particles, environment, output)",
                       where, key));
     }
     if (!arrays_of_tables.count(key) && !v.is_table())
@@ -312,9 +313,11 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   cs.source = source;
   cs.directory = directory;
   cs.overrides = overrides;
-  cs.effective_toml = print_toml(root);
   check_top_level(root, source, ov);
-  const CaseInput in{root, source, directory, ov};
+  std::set<std::string> derived;  // the keys [cut] put into the tree
+  expand_cut(root, CaseInput{root, source, directory, ov}, cs, derived);
+  cs.effective_toml = print_toml(root);
+  const CaseInput in{root, source, directory, ov, &derived};
   read_workpiece(in, cs);
   read_membrane(in, cs);
   read_material(in, cs);

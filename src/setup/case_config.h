@@ -32,6 +32,26 @@ struct WorkpieceSettings {
   double position_jitter = 0.02;        ///< largest jitter displacement, in radii R, 1 (used when disorder_seed > 0)
 };
 
+/// [cut]: an orthogonal cut in cutting terms. swarf derives from it the lattice, the clamps,
+/// the tool, its path, the end time and the steady window (cut_case.h), and inserts them as
+/// the lower-level keys the case file does not give itself (those it gives win).
+struct CutSettings {
+  bool enabled = false;               ///< true when the table is present
+  double uncut_chip_thickness = 0.0;  ///< h, the depth of cut of orthogonal cutting (the feed in turning), m
+  double cutting_speed = 0.0;         ///< v_c, m/s
+  double length_of_cut = 0.0;         ///< tool travel, m; 0 = 10 h
+  double width = 0.0;                 ///< b, m; 0 = plane strain (a periodic slice two cells wide)
+  double rake_angle = 0.0;            ///< gamma_o (ISO 3002), deg
+  double clearance_angle = 7.0;       ///< alpha_o (ISO 3002), deg
+  double edge_radius = 0.0;           ///< r_n of the honed edge, m; 0 = sharp
+  double friction = 0.5;              ///< Coulomb coefficient between tool, chip and workpiece, 1
+  std::string material;               ///< a material preset (material_presets.h)
+  int layers = 10;                    ///< lattice layers across h, 1
+  double workpiece_length = 0.0;      ///< extent of the block along x in multiples of h, 1; 0 = length_of_cut / h + 7.6
+  double workpiece_height = 3.0;      ///< extent of the block along z in multiples of h, 1
+  double steady_from = -1.0;          ///< tool travel from which forces are averaged, m; < 0 = half the length of cut
+};
+
 /// [membrane]: a sheet of bonded spheres on a triangular lattice (membrane_lattice.h), in place
 /// of [workpiece], with its own material ([rod] and [material] do not apply to it).
 struct MembraneSettings {
@@ -217,6 +237,8 @@ struct ParticlesFileSettings {
 struct CaseSettings {
   std::string source;     ///< file name, or "<built-in>"
   std::string directory;  ///< directory of the case file (relative paths resolve here)
+  CutSettings cut;
+  std::string cut_derived;  ///< what [cut] derived, as TOML with a note per key (empty without [cut])
   WorkpieceSettings workpiece;
   MembraneSettings membrane;
   MaterialSettings material;
@@ -241,7 +263,9 @@ CaseSettings load_case(const std::string& path, const std::vector<std::string>& 
 CaseSettings parse_case(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
                         const std::string& directory = ".");
 
-/// The built-in default case (until the cutting case exists: the hysteresis bar).
+/// The built-in default case: the C45 cut of validation/cutting/default_cut.toml (docs/default-case.md).
 extern const char* const kDefaultCaseToml;
+/// The same cut written as a [cut] table (examples/cut_c45.toml): it builds the same model.
+extern const char* const kDefaultCutTableToml;
 
 }  // namespace swarf

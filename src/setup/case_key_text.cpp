@@ -161,6 +161,7 @@ std::string Range::text(bool integer) const {
 
 std::vector<KeyRow> case_key_rows() {
   std::vector<KeyRow> rows;
+  append(rows, "cut", cut_keys());
   append(rows, "workpiece", workpiece_keys());
   append(rows, "membrane", membrane_keys());
   append(rows, "material", material_keys());

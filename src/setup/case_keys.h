@@ -76,6 +76,7 @@ struct Key {
 };
 
 // The keys of each table, in reading order. [[group]] and [[mesh]] read the motion keys too.
+const std::vector<Key<CutSettings>>& cut_keys();
 const std::vector<Key<WorkpieceSettings>>& workpiece_keys();
 const std::vector<Key<MembraneSettings>>& membrane_keys();
 const std::vector<Key<MaterialSettings>>& material_keys();

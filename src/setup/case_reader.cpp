@@ -34,6 +34,8 @@ std::string TableReader::where(const std::string& full, const toml::node* n) con
     w += fmt::format(" (--set {})", full);
   } else if (n && n->source().begin.line > 0) {
     w += fmt::format(":{}", n->source().begin.line);
+  } else if (derived_ && derived_->count(full)) {
+    w += " (derived from [cut])";
   }
   return w;
 }

@@ -22,9 +22,10 @@ class TableReader {
  public:
   /// 't' may be null (the table is absent: every key keeps its default). 'prefix' names the
   /// table in messages ("group" for every [[group]]); 'overridden' holds the --set keys.
+  /// 'derived' (may be null) holds the keys that [cut] put into the tree (cut_case.h).
   TableReader(const toml::table* t, std::string prefix, const std::string& source,
-              const std::set<std::string>& overridden)
-      : t_(t), prefix_(std::move(prefix)), source_(source), overridden_(overridden) {}
+              const std::set<std::string>& overridden, const std::set<std::string>* derived = nullptr)
+      : t_(t), prefix_(std::move(prefix)), source_(source), overridden_(overridden), derived_(derived) {}
 
   /// Makes the keys known to has(), get() and finish() without reading them, for a rule that
   /// must come before their type checks (a key that is not allowed at all, whatever its value).
@@ -104,6 +105,7 @@ class TableReader {
   std::string prefix_;
   const std::string& source_;
   const std::set<std::string>& overridden_;
+  const std::set<std::string>* derived_;
   std::set<std::string_view> known_;  // the names live in the static key tables
 };
 

@@ -21,9 +21,12 @@ struct CaseInput {
   const std::string& source;     ///< names the case in messages
   const std::string& directory;  ///< relative paths resolve here
   const std::set<std::string>& overridden;
+  const std::set<std::string>* derived = nullptr;  ///< the keys [cut] inserted (cut_case.h), or none
 
   const toml::table* table(const char* name) const { return root.get_as<toml::table>(name); }
-  TableReader reader(const toml::table* t, const char* prefix) const { return {t, prefix, source, overridden}; }
+  TableReader reader(const toml::table* t, const char* prefix) const {
+    return {t, prefix, source, overridden, derived};
+  }
 };
 
 /// 'file' relative to 'directory' unless it is absolute.

@@ -1,0 +1,281 @@
+// cut_case.cpp: [cut] turned into lower-level keys (see cut_case.h). Each rule below is the
+// built-in default cut's choice (docs/default-case.md says why); the notes printed with the
+// keys say it again for the user.
+#include "setup/cut_case.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <vector>
+
+#include "setup/case_keys.h"
+#include "setup/material_presets.h"
+#include "setup/toml_parse.h"
+#include "swarf/core/errors.h"
+
+namespace swarf {
+namespace {
+
+// The derivation as it is printed: one TOML section per table, a line per key.
+struct Printout {
+  std::vector<std::string> lines;
+
+  void section(const std::string& header) { lines.push_back((lines.empty() ? "" : "\n") + header); }
+  void key(const std::string& name, const std::string& value, const std::string& note) {
+    lines.push_back(fmt::format("{} = {}{}", name, value, note.empty() ? "" : "  # " + note));
+  }
+  void given(const std::string& name, const toml::node& n) {
+    const auto* f = n.as_floating_point();
+    lines.push_back(
+        fmt::format("# {} = {}  (given in the case)", name, f ? fmt::format("{}", f->get()) : print_toml(n)));
+  }
+  std::string text() const {
+    std::string s;
+    for (const auto& l : lines) s += l + "\n";
+    return s;
+  }
+};
+
+// TOML text of a value: floats always with a point or an exponent (so that they read back
+// as floats) and in their shortest exact form.
+std::string text_of(double v) {
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".eEni") == std::string::npos) s += ".0";
+  return s;
+}
+std::string text_of(const std::array<double, 3>& v) {
+  return fmt::format("[{}, {}, {}]", text_of(v[0]), text_of(v[1]), text_of(v[2]));
+}
+std::string text_of(const std::array<int, 3>& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
+std::string text_of(const std::string& v) { return '"' + v + '"'; }
+std::string text_of(bool v) { return v ? "true" : "false"; }
+std::string text_of(int v) { return std::to_string(v); }
+
+toml::array node_of(const std::array<double, 3>& v) { return toml::array{v[0], v[1], v[2]}; }
+toml::array node_of(const std::array<int, 3>& v) { return toml::array{v[0], v[1], v[2]}; }
+template <class T>
+T node_of(const T& v) {
+  return v;
+}
+
+// Puts derived values into one table of the tree where the case does not give them.
+class Filler {
+ public:
+  Filler(toml::table& t, std::string prefix, Printout& out, std::set<std::string>& derived)
+      : t_(t), prefix_(std::move(prefix)), out_(out), derived_(derived) {}
+
+  template <class T>
+  void put(const std::string& key, const T& value, const std::string& note) {
+    if (const toml::node* n = t_.get(key)) {
+      out_.given(key, *n);
+      return;
+    }
+    t_.insert(key, node_of(value));
+    derived_.insert(prefix_ + "." + key);
+    out_.key(key, text_of(value), note);
+  }
+
+ private:
+  toml::table& t_;
+  std::string prefix_;
+  Printout& out_;
+  std::set<std::string>& derived_;
+};
+
+toml::table& table_in(toml::table& root, const char* name) {
+  if (!root.contains(name)) root.insert(name, toml::table{});
+  return *root.get_as<toml::table>(name);
+}
+
+toml::array& array_in(toml::table& root, const char* name) {
+  if (!root.contains(name)) root.insert(name, toml::array{});
+  toml::array* a = root.get_as<toml::array>(name);
+  if (!a) throw InputError(fmt::format("'{}' must be an array of tables ([[{}]])", name, name));
+  return *a;
+}
+
+// The entry of an array of tables with that name, or null.
+toml::table* named(toml::array& arr, const std::string& name) {
+  for (auto& e : arr)
+    if (toml::table* t = e.as_table())
+      if (const auto* n = t->get_as<std::string>("name"); n && n->get() == name) return t;
+  return nullptr;
+}
+
+// Half a layer spacing above the lattice layer at or just below v: a box bound between two
+// layers, so that which particles it selects does not hang on the last bit of a coordinate.
+double between_layers(double v, double spacing) { return (std::floor(v / spacing + 1e-9) + 0.5) * spacing; }
+
+constexpr int kBaseLayers = 2;             // the vice under the block: its two bottom layers
+constexpr double kStartAhead = 0.25;       // the tool's tip starts h/4 before the block's first centres
+constexpr double kEndClampReach = 0.5;     // the end clamp holds the last h/2 of the block ...
+constexpr double kEndClampBelowTip = 0.4;  // ... from the base clamp up to 0.4 h below the tool's tip
+constexpr double kFaceLength = 5.0;        // rake and flank faces 5 h long: the chip's contact is 1 to 2 h_c
+constexpr double kToolOverhang = 2.0;      // the tool overhangs the width by 2 h on each side
+constexpr double kRunOut = 7.6;            // default block length: the cut plus 7.6 h ahead of the tool's end
+constexpr int kFrames = 10;                // ParaView frames over the run (plus the first)
+constexpr int kSeriesRows = 400;           // series.csv rows over the run
+
+}  // namespace
+
+void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::set<std::string>& derived) {
+  const toml::table* t = in.table("cut");
+  if (!t) return;
+  TableReader r = in.reader(t, "cut");
+  CutSettings& c = cs.cut;
+  c.enabled = true;
+  r.read(cut_keys(), c);
+  r.finish();
+  for (const char* key : {"uncut_chip_thickness", "cutting_speed", "rake_angle", "material"})
+    if (!r.has(key)) r.fail(key, nullptr, "is required");
+  for (const char* table : {"membrane", "uniaxial"})
+    if (in.table(table))
+      throw InputError(fmt::format("{}: [cut] makes a cutting case; it cannot go with [{}]", in.source, table));
+  if (const toml::table* w = in.table("workpiece"))
+    for (const char* key : {"lattice_file", "size"})
+      if (w->contains(key))
+        throw InputError(fmt::format(
+            "{}: key 'workpiece.{}': [cut] generates the lattice by cells from the depth of cut and 'cut.layers'; "
+            "give workpiece.cells and workpiece.radius to override it, or leave out [cut]",
+            in.source, key));
+
+  const double h = c.uncut_chip_thickness;  // m
+  const double v = c.cutting_speed;         // m/s
+  // (the keys' defaults that depend on others; cs.cut keeps what the case gave, as every table does)
+  const double length = r.has("length_of_cut") ? c.length_of_cut : 10.0 * h;                          // m
+  const double block_length = r.has("workpiece_length") ? c.workpiece_length : length / h + kRunOut;  // in h
+  const double steady_from = r.has("steady_from") ? c.steady_from : 0.5 * length;                     // m of travel
+  if (!(c.edge_radius < h))
+    r.fail("edge_radius", r.get("edge_radius"), fmt::format("must be below the depth of cut h = {} m", h));
+  if (!(steady_from < length))
+    r.fail("steady_from", r.get("steady_from"),
+           fmt::format("must be below the length of cut {} m (a tool travel, m)", length));
+  const MaterialPreset& preset = *find_material_preset(c.material);  // (the key's choices are the presets)
+  const bool plane_strain = !(c.width > 0.0);
+
+  Printout out;
+  out.lines.push_back(fmt::format(
+      "# derived from [cut]: h = {:.4g} mm, v_c = {:.4g} m/s, {:.4g} mm of cut, rake {} deg, clearance {} deg, edge "
+      "radius {:.4g} um, {}, {}",
+      h * 1e3, v, length * 1e3, c.rake_angle, c.clearance_angle, c.edge_radius * 1e6, c.material,
+      plane_strain ? "plane strain" : fmt::format("width {:.4g} mm", c.width * 1e3)));
+
+  // The lattice. The keys the case gives are read back through the key table (with its
+  // checks), so that what follows uses them.
+  out.section("[workpiece]");
+  toml::table& wt = table_in(root, "workpiece");
+  Filler w(wt, "workpiece", out, derived);
+  w.put("radius", h / (c.layers * std::sqrt(2.0)),
+        fmt::format("m: {} layers across h, R = h / (layers sqrt 2)", c.layers));
+  WorkpieceSettings ws;
+  in.reader(&wt, "workpiece").read(workpiece_keys(), ws);
+  const double s = std::sqrt(2.0) * ws.radius;  // layer spacing along x and z, m (a = 2 s)
+  const double a = 2.0 * s;
+  const auto cells_of = [&](double length) { return std::max(2, static_cast<int>(std::lround(length / a))); };
+  w.put("cells",
+        std::array<int, 3>{cells_of(block_length * h), plane_strain ? 2 : cells_of(c.width),
+                           cells_of(c.workpiece_height * h)},
+        fmt::format("{} h long, {}, {} h high, in cells of a = {} m", block_length,
+                    plane_strain ? "2 cells wide" : "the width", c.workpiece_height, a));
+  w.put("periodic_width", plane_strain, plane_strain ? "plane strain" : "free sides");
+  in.reader(&wt, "workpiece").read(workpiece_keys(), ws);
+  const std::array<int, 3> n = ws.cells;
+  const double x_last = (2 * n[0] - 1) * s, y_last = (2 * n[1] - 1) * s, z_top = (2 * n[2] - 1) * s;  // centres, m
+  const double z_tip = z_top - h;
+
+  out.section("[material]");
+  Filler m(table_in(root, "material"), "material", out, derived);
+  m.put("preset", c.material, std::string(preset.description));
+  m.put("calibration", std::string("tension"), "the flow curve matched in tension along [100]");
+
+  out.section("[rod]");
+  Filler rod(table_in(root, "rod"), "rod", out, derived);
+  rod.put("damping_ratio", 0.1, "1, of the rod's critical damping");
+  rod.put("bond_overlap", 0.0, "1: unbonded lattice neighbours that touch form a rod ...");
+  rod.put("neighbour_exchange", true, "... in exchange for the most stretched rod of a particle that has 12");
+
+  out.section("[contact]");
+  Filler ct(table_in(root, "contact"), "contact", out, derived);
+  ct.put("youngs_modulus", preset.youngs_modulus, "Pa: the material's");
+  ct.put("friction", c.friction, "1");
+
+  // The vice: the bottom layers, and the far end of the block below the cut line (a clamp
+  // over the whole end face would push the layer ahead of the tool as a column).
+  toml::array& groups = array_in(root, "group");
+  const double end_x = between_layers(x_last - kEndClampReach * h, s);
+  const double end_z_lo = between_layers(kBaseLayers * s, s);
+  const double end_z_hi = between_layers(z_tip - kEndClampBelowTip * h, s);
+  if (!(end_z_hi > end_z_lo))
+    r.fail("workpiece_height", r.get("workpiece_height"),
+           fmt::format("leaves no material for the end clamp between the base clamp ({} layers) and {} h below the "
+                       "tool's tip: raise it",
+                       kBaseLayers, kEndClampBelowTip));
+  if (!(-kStartAhead * h + length < end_x - h))
+    r.fail("workpiece_length", r.get("workpiece_length"),
+           fmt::format("is too short: the tool's tip would end at x = {} m, within h of the end clamp (from x = {} m)",
+                       -kStartAhead * h + length, end_x));
+  std::vector<toml::table> new_groups;
+  for (const char* name : {"base", "end"}) {
+    out.section("[[group]]");
+    if (named(groups, name)) {
+      out.lines.push_back(fmt::format("# [[group]] '{}' given in the case", name));
+      continue;
+    }
+    toml::table g;
+    Filler f(g, "group", out, derived);
+    f.put("name", std::string(name), "");
+    if (std::string(name) == "base") {
+      f.put("side", std::string("z-"), "the vice under the block");
+      f.put("layers", kBaseLayers, "");
+    } else {
+      f.put("box_min", std::array<double, 3>{end_x, -a, end_z_lo},
+            fmt::format("m: the last {} h of the block, above the base clamp ...", kEndClampReach));
+      f.put("box_max", std::array<double, 3>{x_last + a, y_last + a, end_z_hi},
+            fmt::format("m: ... up to {} h below the tool's tip, so the clamp does not push on the uncut layer",
+                        kEndClampBelowTip));
+    }
+    new_groups.push_back(std::move(g));
+  }
+  for (auto it = new_groups.rbegin(); it != new_groups.rend(); ++it) groups.insert(groups.begin(), std::move(*it));
+
+  // The tool: generated, its sharp tip h below the top centres and h/4 before the block.
+  out.section("[[mesh]]");
+  toml::array& meshes = array_in(root, "mesh");
+  toml::table* tool = named(meshes, "tool");
+  if (!tool) {
+    meshes.insert(meshes.begin(), toml::table{{"name", "tool"}});
+    tool = meshes.front().as_table();
+    derived.insert("mesh.name");
+    out.key("name", text_of(std::string("tool")), "");
+  } else {
+    out.lines.push_back("# name = \"tool\"  (given in the case; its other keys below win over [cut])");
+  }
+  Filler tf(*tool, "mesh", out, derived);
+  tf.put("rake_angle", c.rake_angle, "deg");
+  tf.put("clearance_angle", c.clearance_angle, "deg");
+  tf.put("edge_radius", c.edge_radius, "m");
+  const double span = plane_strain ? 2 * n[1] * s : y_last;  // the period, or the block's width between centres
+  tf.put("width", span + 2 * kToolOverhang * h,
+         fmt::format("m: overhangs the workpiece by {} h on each side", kToolOverhang));
+  tf.put("face_length", kFaceLength * h, fmt::format("m: {} h", kFaceLength));
+  tf.put("origin", std::array<double, 3>{-kStartAhead * h, 0.5 * y_last, z_tip},
+         fmt::format("m: sharp tip {} h before the block, h below its top centres ({} m)", kStartAhead, z_top));
+  tf.put("motion", std::string("velocity"), "");
+  tf.put("velocity", std::array<double, 3>{v, 0.0, 0.0}, "m/s: the cutting speed along +x");
+
+  const double end_time = length / v;
+  out.section("[integrator]");
+  Filler ig(table_in(root, "integrator"), "integrator", out, derived);
+  ig.put("end_time", end_time, "s: the length of cut over the cutting speed");
+  ig.put("scheme", std::string("verlet"), "explicit: docs/default-case.md says why");
+  ig.put("dt_safety", 0.9, "1, of the stable step for 12 rods crowding one axis (bond formation)");
+
+  out.section("[output]");
+  Filler o(table_in(root, "output"), "output", out, derived);
+  o.put("steady_from", steady_from / v, fmt::format("s: forces averaged from {} m of travel on", steady_from));
+  o.put("frame_interval", end_time / kFrames, fmt::format("s: {} ParaView frames", kFrames + 1));
+  o.put("series_interval", end_time / kSeriesRows, fmt::format("s: {} rows", kSeriesRows + 1));
+  cs.cut_derived = out.text();
+}
+
+}  // namespace swarf

@@ -1,0 +1,106 @@
+// cut_keys.cpp: the keys of [cut], the cut in cutting terms (see case_keys.h; what they
+// derive is cut_case.cpp). Edit a doc line here, then run
+// 'swarf case keys --update docs/case-reference.md'.
+#include "setup/case_keys.h"
+
+namespace swarf {
+
+const std::vector<Key<CutSettings>>& cut_keys() {
+  using S = CutSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "uncut_chip_thickness",
+       .field = &S::uncut_chip_thickness,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .range = in(1e-7, 0.1, "[]", "0.1 um to 100 mm"),
+       .doc = "h: the depth of cut of orthogonal cutting (the feed per revolution when a tube is turned on its "
+              "end face). The tool's tip runs h below the workpiece's top particle centres."},
+      {.name = "cutting_speed",
+       .field = &S::cutting_speed,
+       .unit = "m/s",
+       .no_default = true,
+       .default_note = "required",
+       .range = in(0.0, 1000.0, "(]"),
+       .doc = "v_c: the tool's speed along +x (60 m/min = 1 m/s). The end time is the length of cut over it."},
+      {.name = "length_of_cut",
+       .field = &S::length_of_cut,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "10 h",
+       .range = kPositive,
+       .doc = "Tool travel over the run."},
+      {.name = "width",
+       .field = &S::width,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "plane strain",
+       .range = kNonNegative,
+       .doc = "b: width of the workpiece along the cutting edge. Not given (or 0): plane strain, a slice two "
+              "cells wide and periodic across y, so the forces are per unit width without side flow; given: a "
+              "block of the nearest whole number of cells (at least 2) with free sides."},
+      {.name = "rake_angle",
+       .field = &S::rake_angle,
+       .unit = "deg",
+       .no_default = true,
+       .default_note = "required",
+       .range = in(-60.0, 60.0, "()"),
+       .doc = "gamma_o, the tool's orthogonal rake angle (ISO 3002): positive tilts the rake face back from the "
+              "normal to the cut surface."},
+      {.name = "clearance_angle",
+       .field = &S::clearance_angle,
+       .unit = "deg",
+       .range = in(0.0, 45.0, "(]"),
+       .doc = "alpha_o, the tool's orthogonal clearance angle (ISO 3002) between the flank and the cut surface."},
+      {.name = "edge_radius",
+       .field = &S::edge_radius,
+       .unit = "m",
+       .range = kNonNegative,
+       .rule = "below the depth of cut",
+       .doc = "r_n, radius of the honed cutting edge; 0 is a sharp edge."},
+      {.name = "friction",
+       .field = &S::friction,
+       .unit = "1",
+       .range = in(0.0, 2.0, "[]"),
+       .doc = "Coulomb coefficient of the contacts (tool-chip, chip-chip): `contact.friction`."},
+      {.name = "material",
+       .field = &S::material,
+       .no_default = true,
+       .default_note = "required",
+       .choices = {"C45", "Al2024-T351", "Ti6Al4V"},
+       .doc = "The workpiece material, a [preset](materials.md): `material.preset`, calibrated in tension "
+              "along [100], with the contacts' Young's modulus the preset's."},
+      {.name = "layers",
+       .field = &S::layers,
+       .unit = "1",
+       .range = in(2, 200, "[]"),
+       .doc = "Lattice layers across the depth of cut: the resolution. R = h / (layers sqrt 2) (FCC layers are "
+              "sqrt(2) R apart along z)."},
+      {.name = "workpiece_length",
+       .field = &S::workpiece_length,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "length_of_cut / h + 7.6",
+       .range = in(1.0, 1e4, "[]"),
+       .doc = "Length of the block along x in multiples of h (rounded to whole cells); the default leaves 7.6 h "
+              "of material ahead of the tool's end position."},
+      {.name = "workpiece_height",
+       .field = &S::workpiece_height,
+       .unit = "1",
+       .range = in(1.5, 1e3, "[]"),
+       .doc = "Height of the block along z in multiples of h (rounded to whole cells): h of it is cut, the rest "
+              "carries the cut."},
+      {.name = "steady_from",
+       .field = &S::steady_from,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "half the length of cut",
+       .range = kNonNegative,
+       .rule = "below the length of cut",
+       .doc = "Tool travel from which the forces and chip figures are averaged (`output.steady_from` is this "
+              "over the cutting speed)."},
+  };
+  return keys;
+}
+
+}  // namespace swarf

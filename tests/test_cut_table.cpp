@@ -1,0 +1,205 @@
+// test_cut_table.cpp: [cut], a cut in cutting terms (setup/cut_case.h). The built-in default
+// cut written as a [cut] table must build the model of the hand-written default; what [cut]
+// prints must read back as the same case; keys the case gives must win; bad [cut] keys are
+// refused by name; 'swarf run --check' and 'swarf case default' do what they say.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "case_errors.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+const MeshSettings& tool_of(const CaseSettings& cs) {
+  for (const auto& m : cs.meshes)
+    if (m.tool) return m;
+  throw std::runtime_error("no tool");
+}
+
+// The hand-written default rounds R to six digits (1.41421e-5 m for 1.41421356e-5) and the
+// flow curve to four (5e-4 of a value at most): positions, lengths and masses agree to 3e-6 and 8e-6 of themselves
+// (2.5e-6 in R, three times that in a^3), the rods' flow stresses to 1.2e-3 (399.2 against
+// 398.8 MPa). Everything that is counted or chosen (particles, rods, group members, the
+// tool's angles and path, the time keys) must be equal.
+TEST(CutTable, TheDefaultCutAsACutTableBuildsTheDefaultModel) {
+  const CaseSettings hand = parse_case(kDefaultCaseToml, "default", {});
+  const CaseSettings cut = parse_case(kDefaultCutTableToml, "cut", {});
+  ASSERT_TRUE(cut.cut.enabled);
+  ASSERT_FALSE(hand.cut.enabled);
+  const Model a = build_model(hand), b = build_model(cut);
+
+  ASSERT_EQ(a.particles.size(), b.particles.size());
+  const double size = 3.6e-3;  // m, the block's largest extent
+  for (std::size_t i = 0; i < a.particles.size(); ++i) {
+    ASSERT_NEAR(a.particles.position[i].x(), b.particles.position[i].x(), 3e-6 * size) << i;
+    ASSERT_NEAR(a.particles.position[i].y(), b.particles.position[i].y(), 3e-6 * size) << i;
+    ASSERT_NEAR(a.particles.position[i].z(), b.particles.position[i].z(), 3e-6 * size) << i;
+    ASSERT_NEAR(a.particles.radius[i], b.particles.radius[i], 3e-6 * a.particles.radius[i]);
+    ASSERT_NEAR(a.particles.mass[i], b.particles.mass[i], 8e-6 * a.particles.mass[i]);
+  }
+  ASSERT_EQ(a.rods.ends, b.rods.ends);
+  for (std::size_t k = 0; k < a.rods.size(); ++k)
+    ASSERT_NEAR(a.rods.rest_length[k], b.rods.rest_length[k], 3e-6 * a.rods.rest_length[k]);
+
+  const RodLaw &la = a.rods.law, &lb = b.rods.law;
+  EXPECT_NEAR(la.youngs_modulus, lb.youngs_modulus, 1e-4 * la.youngs_modulus);
+  EXPECT_EQ(la.failure_strain, lb.failure_strain);
+  EXPECT_NEAR(la.viscosity, lb.viscosity, 1e-4 * la.viscosity);
+  ASSERT_EQ(la.flow.points, lb.flow.points);
+  for (int p = 0; p < la.flow.points; ++p) {
+    EXPECT_NEAR(la.flow.plastic_strain[p], lb.flow.plastic_strain[p], 5e-4 * la.flow.plastic_strain[p]);
+    EXPECT_NEAR(la.flow.stress[p], lb.flow.stress[p], 1.2e-3 * la.flow.stress[p]);
+  }
+  EXPECT_EQ(hand.rod.bond_overlap, cut.rod.bond_overlap);
+  EXPECT_EQ(hand.rod.neighbour_exchange, cut.rod.neighbour_exchange);
+  EXPECT_EQ(hand.material.density, cut.material.density);
+
+  ASSERT_EQ(a.groups.size(), b.groups.size());
+  for (std::size_t g = 0; g < a.groups.size(); ++g) {
+    EXPECT_EQ(a.groups[g].name, b.groups[g].name);
+    EXPECT_EQ(a.groups[g].members, b.groups[g].members) << a.groups[g].name;
+    EXPECT_EQ(a.groups[g].dofs, b.groups[g].dofs);
+  }
+  EXPECT_EQ(a.periodic.on(), b.periodic.on());
+
+  // The tool: the same angles, edge, faces, tip in the x-z plane and path. Its width and its
+  // place along y differ (the hand-written tool spans the period with its own margin); along
+  // the edge a plane-strain tool only has to cover the period.
+  const MeshSettings &ta = tool_of(hand), &tb = tool_of(cut);
+  EXPECT_EQ(ta.rake_angle, tb.rake_angle);
+  EXPECT_EQ(ta.clearance_angle, tb.clearance_angle);
+  EXPECT_EQ(ta.edge_radius, tb.edge_radius);
+  EXPECT_EQ(ta.face_length, tb.face_length);
+  EXPECT_NEAR(ta.origin[0], tb.origin[0], 1e-15);
+  EXPECT_NEAR(ta.origin[2], tb.origin[2], 3e-6 * size);
+  EXPECT_EQ(ta.motion.kind, tb.motion.kind);
+  EXPECT_EQ(ta.motion.velocity, tb.motion.velocity);
+  const double period = b.periodic.period;
+  EXPECT_LE(tb.origin[1] - 0.5 * tb.width, 0.0);
+  EXPECT_GE(tb.origin[1] + 0.5 * tb.width, period);
+
+  EXPECT_EQ(hand.contact.youngs_modulus, cut.contact.youngs_modulus);
+  EXPECT_EQ(hand.contact.poisson_ratio, cut.contact.poisson_ratio);
+  EXPECT_EQ(hand.contact.restitution, cut.contact.restitution);
+  EXPECT_EQ(hand.contact.friction, cut.contact.friction);
+  EXPECT_EQ(hand.integrator.scheme, cut.integrator.scheme);
+  EXPECT_EQ(hand.integrator.dt_safety, cut.integrator.dt_safety);
+  for (auto [x, y] : {std::pair{hand.integrator.end_time, cut.integrator.end_time},
+                      std::pair{hand.output.steady_from, cut.output.steady_from},
+                      std::pair{hand.output.frame_interval, cut.output.frame_interval},
+                      std::pair{hand.output.series_interval, cut.output.series_interval}})
+    EXPECT_NEAR(x, y, 1e-12 * x);
+  EXPECT_NEAR(a.step.dt, b.step.dt, 1e-5 * a.step.dt);
+}
+
+// What [cut] prints is a case file: read back (without [cut]), it builds the same model, bit
+// for bit (the printed numbers are the shortest exact form of the derived ones).
+TEST(CutTable, ThePrintedDerivationReadsBackAsTheSameCase) {
+  const std::string text =
+      "[cut]\nuncut_chip_thickness = 0.1e-3\ncutting_speed = 2.0\nrake_angle = -5.0\nedge_radius = 5e-6\n"
+      "material = \"Al2024-T351\"\nlayers = 6\nwidth = 0.3e-3\n";
+  const CaseSettings cut = parse_case(text, "cut", {});
+  ASSERT_FALSE(cut.cut_derived.empty());
+  const CaseSettings again = parse_case(cut.cut_derived, "printed", {});
+  EXPECT_FALSE(again.cut.enabled);
+  const Model a = build_model(cut), b = build_model(again);
+  ASSERT_EQ(a.particles.size(), b.particles.size());
+  EXPECT_EQ(a.particles.position, b.particles.position);
+  EXPECT_EQ(a.rods.ends, b.rods.ends);
+  ASSERT_EQ(a.groups.size(), b.groups.size());
+  for (std::size_t g = 0; g < a.groups.size(); ++g) EXPECT_EQ(a.groups[g].members, b.groups[g].members);
+  ASSERT_EQ(a.meshes.size(), b.meshes.size());
+  EXPECT_EQ(a.meshes[0].mesh.vertices, b.meshes[0].mesh.vertices);
+  EXPECT_EQ(cut.integrator.end_time, again.integrator.end_time);
+  EXPECT_EQ(cut.output.steady_from, again.output.steady_from);
+  // The derivation itself: R = h / (6 sqrt 2), free sides, the tip h below the top centres
+  // and h/4 before the block, end time = length of cut (10 h) / v_c.
+  const double h = 0.1e-3, R = h / (6 * std::sqrt(2.0)), s = std::sqrt(2.0) * R;
+  EXPECT_DOUBLE_EQ(cut.workpiece.radius, R);
+  EXPECT_FALSE(cut.workpiece.periodic_width);
+  EXPECT_EQ(cut.workpiece.cells[1], static_cast<int>(std::lround(0.3e-3 / (2 * s))));
+  const MeshSettings& t = tool_of(cut);
+  EXPECT_DOUBLE_EQ(t.origin[2], (2 * cut.workpiece.cells[2] - 1) * s - h);
+  EXPECT_DOUBLE_EQ(t.origin[0], -0.25 * h);
+  EXPECT_DOUBLE_EQ(cut.integrator.end_time, 10 * h / 2.0);
+  EXPECT_EQ(t.rake_angle, -5.0);
+  EXPECT_EQ(cut.material.preset, "Al2024-T351");
+  // Every particle in the end clamp lies in the last h/2 of the block and at least 0.4 h
+  // below the tool's tip: the clamp never holds the layer being cut.
+  for (const auto& g : a.groups)
+    if (g.name == "end")
+      for (auto i : g.members) {
+        EXPECT_LT(a.particles.position[i].z(), t.origin[2] - 0.4 * h + 1e-12);
+        EXPECT_GT(a.particles.position[i].x(), (2 * cut.workpiece.cells[0] - 1) * s - 0.5 * h - 1e-12);
+      }
+}
+
+// Keys the case gives win over [cut], and what follows from them moves with them.
+TEST(CutTable, KeysTheCaseGivesWinAndTheDerivationFollowsThem) {
+  const std::string text = std::string(kDefaultCutTableToml) +
+                           "[workpiece]\nradius = 2.0e-5\n"
+                           "[[mesh]]\nname = \"tool\"\nface_length = 2.0e-3\n"
+                           "[[group]]\nname = \"end\"\nside = \"x+\"\n";
+  const CaseSettings cs = parse_case(text, "given", {"cut.rake_angle=20.0"});
+  EXPECT_EQ(cs.workpiece.radius, 2.0e-5);
+  const double s = std::sqrt(2.0) * 2.0e-5, h = 0.2e-3;
+  EXPECT_EQ(cs.workpiece.cells[0], static_cast<int>(std::lround(17.6 * h / (2 * s))));
+  const MeshSettings& t = tool_of(cs);
+  EXPECT_EQ(t.face_length, 2.0e-3);
+  EXPECT_EQ(t.rake_angle, 20.0);  // (the --set on [cut])
+  EXPECT_DOUBLE_EQ(t.origin[2], (2 * cs.workpiece.cells[2] - 1) * s - h);
+  EXPECT_EQ(cs.meshes.size(), 1u);
+  ASSERT_EQ(cs.groups.size(), 2u);
+  EXPECT_EQ(cs.groups[0].name, "base");
+  EXPECT_EQ(cs.groups[1].name, "end");
+  EXPECT_EQ(cs.groups[1].side, "x+");
+  EXPECT_NE(cs.cut_derived.find("# radius = 2e-05  (given in the case)"), std::string::npos) << cs.cut_derived;
+}
+
+TEST(CutTable, BadCutKeysAreRefusedByName) {
+  const std::string ok = "uncut_chip_thickness = 0.2e-3\ncutting_speed = 10.0\nrake_angle = 10.0\nmaterial = \"C45\"\n";
+  const auto refused = [&](const std::string& text, std::initializer_list<std::string> words) {
+    test::expect_mentions(test::case_error(text, {}, "c.toml"), words);
+  };
+  refused("[cut]\ncutting_speed = 10.0\nrake_angle = 10.0\nmaterial = \"C45\"\n",
+          {"c.toml", "cut.uncut_chip_thickness", "required"});
+  refused("[cut]\n" + ok + "edge_radius = 0.3e-3\n", {"c.toml:6", "cut.edge_radius", "below the depth of cut"});
+  refused("[cut]\n" + ok + "steady_from = 5e-3\n", {"cut.steady_from", "below the length of cut"});
+  refused("[cut]\n" + ok + "materail = \"C45\"\n", {"unknown key 'cut.materail'"});
+  refused("[cut]\nuncut_chip_thickness = 0.2e-3\ncutting_speed = 10.0\nrake_angle = 10.0\nmaterial = \"steel\"\n",
+          {"cut.material", "\"steel\"", "C45"});
+  refused("[cut]\n" + ok + "workpiece_height = 1.5\n", {"cut.workpiece_height", "end clamp"});
+  refused("[cut]\n" + ok + "workpiece_length = 5.0\n", {"cut.workpiece_length", "too short"});
+  refused("[cut]\n" + ok + "[workpiece]\nsize = [1e-3, 1e-3, 1e-3]\n", {"workpiece.size", "[cut]"});
+  refused("[cut]\n" + ok + "[uniaxial]\nstrain_path = [0.0, 0.01]\n", {"[cut]", "[uniaxial]"});
+  refused("[cut]\n" + ok + "layers = 1\n", {"cut.layers", "[2, 200]"});
+}
+
+// 'swarf run --check' builds and prints without running or writing; 'swarf case default'
+// prints the built-in case (and --cut the same cut as a [cut] table) as files that read back.
+TEST(CutTable, RunCheckAndCaseDefault) {
+  test::TempDir dir("cut_check");
+  const auto r = test::run_command(fmt::format("timeout 120 {} run {}/examples/cut_c45.toml --check --out {}",
+                                               SWARF_BINARY, SWARF_SOURCE_DIR, dir / "out"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("derived from [cut]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("group 'end': 130 particles"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("nothing was run"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+
+  const auto d = test::run_command(fmt::format("{} case default", SWARF_BINARY));
+  EXPECT_EQ(d.exit_code, 0);
+  EXPECT_EQ(d.output, kDefaultCaseToml);
+  const auto c = test::run_command(fmt::format("{} case default --cut", SWARF_BINARY));
+  EXPECT_EQ(c.exit_code, 0);
+  EXPECT_EQ(c.output, kDefaultCutTableToml);
+  EXPECT_EQ(c.output, test::read_file(std::string(SWARF_SOURCE_DIR) + "/examples/cut_c45.toml"));
+}
+
+}  // namespace
+}  // namespace swarf
