@@ -18,14 +18,14 @@ double quantile(std::vector<double> v, double q) {
   return k + 1 < v.size() ? v[k] * (1 - f) + v[k + 1] * f : v[k];
 }
 
-double shear_angle_deg(double r, double alpha_deg) {
-  const double a = alpha_deg * kDeg;
+double shear_angle_deg(double r, double gamma_deg) {
+  const double a = gamma_deg * kDeg;
   return std::atan2(r * std::cos(a), 1.0 - r * std::sin(a)) / kDeg;
 }
 
-double friction_angle_deg(double fc, double ft, double alpha_deg) { return alpha_deg + std::atan2(ft, fc) / kDeg; }
+double friction_angle_deg(double fc, double ft, double gamma_deg) { return gamma_deg + std::atan2(ft, fc) / kDeg; }
 
-double merchant_shear_angle_deg(double alpha_deg, double beta_deg) { return 45.0 + 0.5 * alpha_deg - 0.5 * beta_deg; }
+double merchant_shear_angle_deg(double gamma_deg, double beta_deg) { return 45.0 + 0.5 * gamma_deg - 0.5 * beta_deg; }
 
 ChipMetrics measure_chip(const ChipInput& in) {
   ChipMetrics m;

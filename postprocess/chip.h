@@ -9,10 +9,10 @@
 // chip that lies on the face: from 2 to 3 depths of cut from the tip along the face, and not
 // past the face's end (past the edge region, before the chip curls away from the face; the chip beyond, lifted off the
 // face by its curl, made the spread grow with the length of the chip: 0.66 to 1.37 mm over the second half of the
-// default cut, against 0.65 to 0.79 mm in the section). Then, with h the depth of cut (uncut chip thickness) and alpha
+// default cut, against 0.65 to 0.79 mm in the section). Then, with h the depth of cut (uncut chip thickness) and gamma
 // the rake angle:
-//   compression ratio r = h / h_c,  shear angle phi: tan(phi) = r cos(alpha) / (1 - r sin(alpha)),
-//   friction angle beta = alpha + atan(Ft / Fc),  Merchant: phi_M = 45 deg + alpha/2 - beta/2.
+//   compression ratio r = h / h_c,  shear angle phi: tan(phi) = r cos(gamma) / (1 - r sin(gamma)),
+//   friction angle beta = gamma + atan(Ft / Fc),  Merchant: phi_M = 45 deg + gamma/2 - beta/2.
 #pragma once
 
 #include <cmath>
@@ -51,7 +51,7 @@ double quantile(std::vector<double> v, double q);
 double shear_angle_deg(double compression_ratio, double rake_angle_deg);
 /// Friction angle (deg) on the rake face from the cutting and thrust forces and the rake angle.
 double friction_angle_deg(double cutting_force, double thrust_force, double rake_angle_deg);
-/// Merchant's shear angle 45 + alpha/2 - beta/2 (deg).
+/// Merchant's shear angle 45 + gamma/2 - beta/2 (deg).
 double merchant_shear_angle_deg(double rake_angle_deg, double friction_angle_deg);
 
 }  // namespace swarf

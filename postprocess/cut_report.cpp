@@ -94,7 +94,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   for (std::size_t k = 0; k < d.chip_thickness.size() && k < d.time.size(); ++k)
     if (d.time[k] >= s.steady_from && d.chip_thickness[k] > 0) steady_hc.push_back(d.chip_thickness[k]);
   const double beta = friction_angle_deg(fc, ft, s.rake_angle_deg);
-  // beta - alpha = atan2(Ft, Fc) of the means; linearised: d(beta) = (Fc dFt - Ft dFc) / (Fc^2 + Ft^2) rad.
+  // beta - gamma = atan2(Ft, Fc) of the means; linearised: d(beta) = (Fc dFt - Ft dFc) / (Fc^2 + Ft^2) rad.
   const double f2 = fc * fc + ft * ft;
   const double beta_ci = f2 > 0 ? batch_ci95_linear(bfc, bft, -ft / f2, fc / f2) / kDeg : NAN;
   double chip_broken = 0.0;
@@ -205,7 +205,7 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
   }
   t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg{}\n", nan_safe(num(chip, "friction_angle_deg")),
                    ci(chip, "friction_angle_ci95_deg", 1.0, " deg", "", rows));
-  t += fmt::format("  Merchant 45 + alpha/2 - beta/2  {:>10.1f} deg{}\n",
+  t += fmt::format("  Merchant 45 + gamma/2 - beta/2  {:>10.1f} deg{}\n",
                    nan_safe(num(chip, "merchant_shear_angle_deg")),
                    ci(chip, "merchant_shear_angle_ci95_deg", 1.0, " deg", "", rows));
   t += fmt::format("  broken-rod fraction             {:>10.2f} %\n", nan_safe(100.0 * broken));

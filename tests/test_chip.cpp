@@ -37,9 +37,9 @@ TEST(Chip, SyntheticChipOfKnownThickness) {
   // Workpiece below z = 0 (not chip), and a chip: a slab of thickness hc lying on a rake face
   // of 10 deg through the tip (0, 0, -h), filled with a square grid of particle centres a
   // radius inside both free surfaces.
-  const double R = 1e-5, h = 2e-4, hc = 5e-4, alpha = 10.0;
-  ChipInput in = cut_of(R, h, alpha);
-  const Vec3 up = face_up(alpha), normal = face_normal(alpha);
+  const double R = 1e-5, h = 2e-4, hc = 5e-4, gamma = 10.0;
+  ChipInput in = cut_of(R, h, gamma);
+  const Vec3 up = face_up(gamma), normal = face_normal(gamma);
   for (double x = -2e-3; x < 0; x += 2 * R)
     for (double z = -1e-3; z < -h; z += 2 * R) in.position.emplace_back(x, 0, z);  // workpiece, stays
   for (double s = 0; s < 3e-3; s += 2 * R)
@@ -50,7 +50,7 @@ TEST(Chip, SyntheticChipOfKnownThickness) {
   // Percentiles of a uniform spread of 21 layers: the 2nd-98th span loses 4 % of hc - 2R.
   EXPECT_NEAR(m.thickness, hc, 0.05 * hc);
   EXPECT_NEAR(m.compression_ratio, h / m.thickness, 1e-15);
-  EXPECT_NEAR(m.shear_angle_deg, shear_angle_deg(h / m.thickness, alpha), 1e-12);
+  EXPECT_NEAR(m.shear_angle_deg, shear_angle_deg(h / m.thickness, gamma), 1e-12);
 }
 
 TEST(Chip, ACurledChipIsMeasuredWhereItLiesOnTheFace) {
@@ -58,9 +58,9 @@ TEST(Chip, ACurledChipIsMeasuredWhereItLiesOnTheFace) {
   // (its centre line on a circle of radius 1 mm leaving the face): only the section on the
   // face counts, so the thickness is the slab's, not the slab's plus the curl's lift (1 mm at
   // the end: the old measure over the whole chip beyond 2 h gave about 1.5 mm).
-  const double R = 1e-5, h = 2e-4, hc = 5e-4, alpha = 10.0, rc = 1e-3;
-  ChipInput in = cut_of(R, h, alpha);
-  const Vec3 up = face_up(alpha), normal = face_normal(alpha);
+  const double R = 1e-5, h = 2e-4, hc = 5e-4, gamma = 10.0, rc = 1e-3;
+  ChipInput in = cut_of(R, h, gamma);
+  const Vec3 up = face_up(gamma), normal = face_normal(gamma);
   const double flat = 3 * h;
   for (double s = 0; s < flat + rc * M_PI / 2; s += R)
     for (double t = R; t <= hc - R + 1e-12; t += (hc - 2 * R) / 20) {
@@ -86,14 +86,14 @@ TEST(Chip, ACurledChipIsMeasuredWhereItLiesOnTheFace) {
 }
 
 TEST(Chip, AnglesAgainstHandWorkedValues) {
-  // r = 0.5, alpha = 0: tan(phi) = 0.5 -> phi = 26.565 deg.
+  // r = 0.5, gamma = 0: tan(phi) = 0.5 -> phi = 26.565 deg.
   EXPECT_NEAR(shear_angle_deg(0.5, 0.0), std::atan(0.5) / kDeg, 1e-12);
-  // r = 0.5, alpha = 10 deg: tan(phi) = 0.5 cos10 / (1 - 0.5 sin10) = 0.5383.
+  // r = 0.5, gamma = 10 deg: tan(phi) = 0.5 cos10 / (1 - 0.5 sin10) = 0.5383.
   EXPECT_NEAR(std::tan(shear_angle_deg(0.5, 10.0) * kDeg), 0.5 * std::cos(10 * kDeg) / (1 - 0.5 * std::sin(10 * kDeg)),
               1e-12);
-  // Fc = Ft: the resultant is 45 deg from the cutting direction: beta = alpha + 45.
+  // Fc = Ft: the resultant is 45 deg from the cutting direction: beta = gamma + 45.
   EXPECT_NEAR(friction_angle_deg(100.0, 100.0, 5.0), 50.0, 1e-12);
-  // Merchant: 45 + alpha/2 - beta/2.
+  // Merchant: 45 + gamma/2 - beta/2.
   EXPECT_NEAR(merchant_shear_angle_deg(10.0, 30.0), 35.0, 1e-12);
 }
 

@@ -2,9 +2,9 @@
 //
 // Frame: the cutting edge lies along y; the tool cuts moving in +x; z points away from the
 // workpiece. The origin is where the rake and flank face planes meet (the tip of the sharp
-// tool). The rake face leaves the edge upwards, tilted back from +z by the rake angle alpha
-// (positive alpha: a sharper wedge); the flank face leaves it backwards, tilted up from -x by
-// the clearance angle gamma. The wedge angle is 90 deg - alpha - gamma. An edge radius r > 0
+// tool). The rake face leaves the edge upwards, tilted back from +z by the rake angle gamma
+// (ISO 3002 gamma_o; positive gamma: a sharper wedge); the flank face leaves it backwards, tilted up from -x by
+// the clearance angle alpha (ISO 3002 alpha_o). The wedge angle is 90 deg - gamma - alpha. An edge radius r > 0
 // replaces the tip by a circular arc tangent to both faces, split finely enough to resolve
 // it (at most 'max_arc_step_deg' per segment). The profile is extruded over the width.
 #pragma once
@@ -14,8 +14,8 @@
 namespace swarf {
 
 struct ToolSpec {
-  double rake_angle_deg = 0.0;       ///< alpha, deg
-  double clearance_angle_deg = 7.0;  ///< gamma, deg
+  double rake_angle_deg = 0.0;       ///< gamma (ISO 3002 gamma_o), deg
+  double clearance_angle_deg = 7.0;  ///< alpha (ISO 3002 alpha_o), deg
   double edge_radius = 0.0;          ///< m; 0 = sharp
   double width = 0.0;                ///< extent along y, m (centred on y = 0)
   double face_length = 0.0;          ///< length of the rake and flank faces from the (sharp) tip, m

@@ -177,8 +177,8 @@ struct ToolCommand final : Command {
   std::string out, vtp;
   explicit ToolCommand(CLI::App& app) {
     sub = app.add_subcommand("tool", "Generate the cutting tool mesh (STL, and VTP for ParaView)");
-    sub->add_option("--rake-angle", ts.rake_angle_deg, "Rake angle alpha, deg (default 0)");
-    sub->add_option("--clearance-angle", ts.clearance_angle_deg, "Clearance angle gamma, deg (default 7)");
+    sub->add_option("--rake-angle", ts.rake_angle_deg, "Rake angle gamma_o (ISO 3002), deg (default 0)");
+    sub->add_option("--clearance-angle", ts.clearance_angle_deg, "Clearance angle alpha_o (ISO 3002), deg (default 7)");
     sub->add_option("--edge-radius", ts.edge_radius, "Cutting-edge radius, m (default 0: sharp)");
     sub->add_option("--width", ts.width, "Width along the edge, m")->required();
     sub->add_option("--face-length", ts.face_length, "Length of the rake and flank faces, m")->required();

@@ -90,15 +90,15 @@ std::string fit_row(const std::string& what, const LinearFit& f, const char* slo
                      icpt_unit, f.r2, f.n);
 }
 
-// Shear angle measured against Merchant's 45 deg + alpha/2 - beta/2 (both from summary.json).
+// Shear angle measured against Merchant's 45 deg + gamma/2 - beta/2 (both from summary.json).
 std::string merchant_section(const StudyTable& t) {
   std::string out = "## Shear angle against Merchant's theory\n\n";
   out +=
-      "Merchant: phi_M = 45 deg + alpha/2 - beta/2, with the rake angle alpha of the tool and the friction angle "
-      "beta = alpha + atan(Ft/Fc) from the mean forces (`chip.merchant_shear_angle_deg`); phi is the shear angle "
-      "measured from the chip thickness (`chip.shear_angle_deg`). alpha is `chip.rake_angle_deg` where the summary has "
+      "Merchant: phi_M = 45 deg + gamma/2 - beta/2, with the rake angle gamma of the tool and the friction angle "
+      "beta = gamma + atan(Ft/Fc) from the mean forces (`chip.merchant_shear_angle_deg`); phi is the shear angle "
+      "measured from the chip thickness (`chip.shear_angle_deg`). gamma is `chip.rake_angle_deg` where the summary has "
       "it, else recovered as 2 (phi_M - 45 deg) + beta.\n\n";
-  out += "| case | alpha [deg] | beta [deg] | phi measured [deg] | phi Merchant [deg] | phi - phi_M [deg] |\n";
+  out += "| case | gamma [deg] | beta [deg] | phi measured [deg] | phi Merchant [deg] | phi - phi_M [deg] |\n";
   out += "|---|---|---|---|---|---|\n";
   std::vector<double> ab, phi, diff;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
@@ -129,7 +129,7 @@ std::string merchant_section(const StudyTable& t) {
   const LinearFit f = fit_line_r2(ab, phi);
   if (f.ok)
     out += fmt::format(
-        "Least-squares line phi = a (alpha - beta) + b: a = {:.4g} (Merchant: 0.5), b = {:.4g} deg "
+        "Least-squares line phi = a (gamma - beta) + b: a = {:.4g} (Merchant: 0.5), b = {:.4g} deg "
         "(Merchant: 45 deg), R^2 = {:.4f}, {} cases.\n",
         f.slope, f.intercept, f.r2, f.n);
   return out + "\n";
