@@ -78,8 +78,8 @@ double batch_ci95_linear(const std::vector<double>& bx, const std::vector<double
 /// tau = (2 sum_j G_j - c_0) / c_0. NaN for fewer than kSteadyMinSamples samples or no variance.
 double integrated_autocorrelation_time(const std::vector<double>& x);
 
-/// The 0.975 quantile of Student's t distribution with dof degrees of freedom (dof >= 1): a
-/// table to 30, Cornish-Fisher expansion above (error below 1e-6 there).
+/// The 0.975 quantile of Student's t distribution with dof degrees of freedom (dof >= 1; NaN
+/// for 0), from Boost.Math.
 double student_t_975(std::size_t dof);
 
 }  // namespace swarf

@@ -8,7 +8,7 @@ PKGS=(
   # toolchain
   build-essential cmake g++ pkg-config git clang-format
   # numerics and I/O
-  libeigen3-dev libhdf5-dev libvtk9-dev libopenvdb-dev libboost-iostreams-dev libtbb-dev
+  libeigen3-dev libhdf5-dev libvtk9-dev libopenvdb-dev libboost-iostreams-dev libboost-math-dev libtbb-dev
   # case files, command line, JSON, formatting
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   # tests
