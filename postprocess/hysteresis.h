@@ -3,7 +3,7 @@
 // Under uniaxial stress along a cube axis every rod of the FCC lattice carries the strain
 // eps/3 in magnitude (tension for the 8 rods with an axial component, compression for the
 // 4 across), so a homogeneous bar follows the rod law scaled:
-//     sigma_bar(eps) = 3 (E100 / E) sigma_rod(eps / 3)         (physics notes section 5).
+//     sigma_bar(eps) = 3 (E100 / E) sigma_rod(eps / 3)         (docs/physics.md section 1).
 // BarPrediction evaluates that along the strain history; analyze_loop fits the measured
 // loop (elastic modulus, yield stress, hardening tangent, reverse yield stress) by straight
 // lines on the first two segments of the path.

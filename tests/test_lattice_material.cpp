@@ -1,7 +1,7 @@
 // test_lattice_material.cpp: the material lab's homogeneous (Cauchy-Born) lattice against closed
 // forms: the cubic elastic constants and the directional moduli and Poisson ratios they imply, the
-// exact finite-strain elastic [100] tension, the small-strain plastic relation of physics notes
-// section 5, the rods that carry simple shear on the cube plane and on the 45-degree plane, the
+// exact finite-strain elastic [100] tension, the small-strain plastic relation of docs/physics.md
+// section 1, the rods that carry simple shear on the cube plane and on the 45-degree plane, the
 // Bauschinger reversal, mirrored compression, and failure by the rods' strain.
 #include <gtest/gtest.h>
 
@@ -51,7 +51,7 @@ RodLaw curve_law() {
 double rod_stress(const RodLaw& law, double e) { return evaluate(law, e, 0.0, 0.0).stress; }
 
 TEST(LatticeMaterial, ElasticConstantsAreTheCentralForceLattice) {
-  // Physics notes section 5: C11 = 2 kb/a, C12 = C44 = kb/a (the Cauchy relation), no coupling of
+  // docs/physics.md section 1: C11 = 2 kb/a, C12 = C44 = kb/a (the Cauchy relation), no coupling of
   // shear and normal components. Six products and sums: 1e-12 relative.
   const CauchyBornCrystal c(elastic_law(), kA, kArea);
   const auto C = c.elastic_constants();
@@ -140,7 +140,7 @@ TEST(LatticeMaterial, FiniteStrainElasticTension100IsExact) {
 }
 
 TEST(LatticeMaterial, SmallStrainPlasticRelation100) {
-  // Physics notes section 5: at small strain every rod carries |eps|/3 under uniaxial stress
+  // docs/physics.md section 1: at small strain every rod carries |eps|/3 under uniaxial stress
   // along [100], so sigma_100(eps) = 3 (E100/E) sigma_rod(eps/3) for any rod law. The lattice
   // departs from it by the geometric nonlinearity (the rods turn towards the axis, the cross-
   // section changes, true stress against log strain), terms of relative size O(eps): measured

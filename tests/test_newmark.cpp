@@ -125,7 +125,7 @@ end_time = 1
 }
 
 TEST(Newmark, FixedPointConvergesBelowTheLimitAndDivergesAbove) {
-  // physics notes section 6: a sweep contracts by about beta dt^2 omega_max^2 = (dt/dt_stable)^2.
+  // docs/physics.md section 7: a sweep contracts by about beta dt^2 omega_max^2 = (dt/dt_stable)^2.
   const Model probe = random_block("");
   const double ds = probe.derived.dt_stable;
   auto first_step = [&](double factor) {

@@ -1,7 +1,7 @@
 // test_patch.cpp: patch tests of the bonded lattice. A homogeneous deformation x = F X
 // gives zero net force on every interior particle, and the stored energy of the closed form
-// W = 1/2 eps:C:eps with the FCC constants C11 = 2 kb/a, C12 = C44 = kb/a (physics notes
-// section 5) times the volume the rods represent.
+// W = 1/2 eps:C:eps with the FCC constants C11 = 2 kb/a, C12 = C44 = kb/a (docs/physics.md
+// section 1) times the volume the rods represent.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>

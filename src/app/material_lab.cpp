@@ -68,7 +68,7 @@ nlohmann::json value(double v) {
 double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) && b != 0 ? a / b : NAN; }
 
 // The small-strain mapping of a test: sigma = factor * sigma_rod(r * strain), the rod driven
-// along the test's path (committed per increment, like the lattice). Physics notes section 5 and
+// along the test's path (committed per increment, like the lattice). docs/physics.md section 1 and
 // the tests' comments: [100] factor 3 E100/E = 4 kb/(a E), r = 1/3; [110] E110/E = 2 kb/(a E),
 // r = 1 (only the axial rod strains); cube shear 2 kb/(a E), r = 1/2; 45-degree shear
 // 2 kb/(a E), r = 1/4.

@@ -2,7 +2,7 @@
 // preset): Young's modulus, a flow curve (yield and hardening, a table, or Johnson-Cook's
 // A + B eps_p^n) and a strain at failure.
 //
-// The elastic part follows the FCC lattice relations along [100] (physics notes section 5).
+// The elastic part follows the FCC lattice relations along [100] (docs/physics.md section 1).
 // The plastic part is matched in the mode that forms a chip, simple shear, taken as von Mises
 // equivalent (tau = sigma_eq / sqrt 3, gamma_p = sqrt 3 eps_p): on the cube plane only the two
 // (1,0,+-1) rods carry, each at strain +-gamma/2, and tau = (3/2) (E100/E_rod) s with s their

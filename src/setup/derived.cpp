@@ -166,7 +166,7 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   double l0 = d.nn_distance;
   if (!lat.rest_length.empty()) l0 = *std::min_element(lat.rest_length.begin(), lat.rest_length.end());
   // The rod law: given directly, or derived from macroscopic properties along [100]
-  // (physics notes section 5): E100 = 4 kb/(3a), every rod strained by eps/3 in magnitude
+  // (docs/physics.md section 1): E100 = 4 kb/(3a), every rod strained by eps/3 in magnitude
   // under uniaxial stress, so sigma_y = 3 E100 eps_y, H = E100 k/E, sigma_f = 3 (E100/E) sigma_max.
   RodSettings rod = cs.rod;
   const double a_cell = d.cell_edge;

@@ -1,7 +1,7 @@
 // derived.h: every quantity that follows from the case settings, computed in one place.
 //
 // Particle mass, rod stiffness and damping, the stable step, and the FCC lattice relations
-// (physics notes sections 5 and 6) that predict the macroscopic response. Printed at start-up
+// (docs/physics.md sections 1, 7 and 8) that predict the macroscopic response. Printed at start-up
 // and written to summary.json.
 #pragma once
 

@@ -178,8 +178,8 @@ bool Simulation::try_newmark(double h) {
   bool converged = false;
   double previous = HUGE_VAL;
   // Relaxation w < 1: the next sweep places with (1 - w) a_guess + w a_swept. The sweep maps
-  // a guess to new accelerations with eigenvalues in [-(dt/dt_stable)^2, 0] (physics notes
-  // section 6); relaxed, they become 1 - w + w lambda: at dt_max (0.8 dt_stable, L = 0.64 the
+  // a guess to new accelerations with eigenvalues in [-(dt/dt_stable)^2, 0] (docs/physics.md
+  // section 7); relaxed, they become 1 - w + w lambda: at dt_max (0.8 dt_stable, L = 0.64 the
   // spectrum's extent) the contraction per sweep drops from 0.64 to 0.25 with w = 0.75 (optimal:
   // w = 2 / (2 + L)), and the iteration converges up to dt/dt_stable = sqrt(2/w - 1).
   const double w = g.relaxation;

@@ -1,5 +1,5 @@
 // contacts.h: Hertz contacts with friction between unbonded spheres and between spheres and
-// triangles (paper section 4; physics notes section 3).
+// triangles (paper section 4; docs/physics.md sections 5 and 6).
 //
 // Neighbour search: cell lists build Verlet lists of candidate pairs within the contact
 // distance plus a skin; the lists are rebuilt when a particle (or a mesh) has moved more

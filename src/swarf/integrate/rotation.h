@@ -1,5 +1,5 @@
 // rotation.h: rigid rotation of a particle with unit quaternions (paper eqs. 2-7, 12-13;
-// physics notes sections 1 and 2).
+// docs/physics.md sections 9, 7 and 8).
 //
 // State per particle: orientation q = [q0 q1 q2 q3] (body to world), body-frame angular
 // velocity w and acceleration dw, principal inertia I = (Ix, Iy, Iz). Kinematics:

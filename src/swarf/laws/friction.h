@@ -1,5 +1,5 @@
 // friction.h: the tangential contact law, a pure function of the relative tangential
-// velocity, the committed history and the normal force (physics notes section 3).
+// velocity, the committed history and the normal force (docs/physics.md section 5).
 //
 // Three laws: none; Cundall-Strack (a tangential spring with a dashpot, capped by Coulomb,
 // whose stretch is the contact's history, committed with the step); regularized Coulomb

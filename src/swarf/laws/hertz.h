@@ -1,5 +1,5 @@
 // hertz.h: the Hertz normal contact law with restitution damping, and its parameters
-// (paper eqs. 14-16; physics notes section 3).
+// (paper eqs. 14-16; docs/physics.md section 5).
 //
 //   F = K delta^(3/2) + alpha sqrt(m* K) delta^(1/4) d(delta)/dt,   F >= 0 (no adhesion)
 //   K = 4/3 E* sqrt(R*),  1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j,  1/R* = 1/R_i + 1/R_j,

@@ -1,5 +1,5 @@
 // rod_law.h: the elastic-plastic-viscous rod law with the Bauschinger effect
-// (paper section 4.5, eqs. 23-31; physics notes section 4).
+// (paper section 4.5, eqs. 23-31; docs/physics.md sections 2 to 4).
 //
 // The paper shifts the symmetric bilinear curve along h(eps) = k eps. That is exactly
 // 1-D linear kinematic hardening: the elastic-plastic stress stays inside the band
@@ -102,7 +102,7 @@ inline double plastic_tangent(const RodLaw& law, double trial_shift) {
 }
 
 /// Plastic work density of committing a change 'dshift' of the shift at stress sigma, J/m^3:
-/// sigma d(eps_p), the plastic strain being eps_p = (E - k)/E eps0 (physics notes section 4).
+/// sigma d(eps_p), the plastic strain being eps_p = (E - k)/E eps0 (docs/physics.md sections 2 to 4).
 inline double plastic_work_density(const RodLaw& law, double stress, double dshift) {
   return stress * ((law.youngs_modulus - law.hardening) / law.youngs_modulus) * dshift;
 }
