@@ -93,9 +93,10 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   std::vector<double> steady_hc;
   for (std::size_t k = 0; k < d.chip_thickness.size() && k < d.time.size(); ++k)
     if (d.time[k] >= s.steady_from && d.chip_thickness[k] > 0) steady_hc.push_back(d.chip_thickness[k]);
-  const double beta = friction_angle_deg(fc, ft, s.rake_angle_deg);
   // beta - gamma = atan2(Ft, Fc) of the means; linearised: d(beta) = (Fc dFt - Ft dFc) / (Fc^2 + Ft^2) rad.
+  // No force (no steady rows, or the tool never touched): no direction, so no angle.
   const double f2 = fc * fc + ft * ft;
+  const double beta = f2 > 0 ? friction_angle_deg(fc, ft, s.rake_angle_deg) : NAN;
   const double beta_ci = f2 > 0 ? batch_ci95_linear(bfc, bft, -ft / f2, fc / f2) / kDeg : NAN;
   double chip_broken = 0.0;
   for (auto i : cm.members) chip_broken += i < d.broken_fraction.size() ? d.broken_fraction[i] : 0.0;
@@ -105,9 +106,9 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
               {"rake_angle_deg", s.rake_angle_deg},
               {"chip_particles", cm.chip_particles},
               {"measured_particles", cm.measured_particles},
-              {"friction_angle_deg", beta},
+              {"friction_angle_deg", finite_or_null(beta)},
               {"friction_angle_ci95_deg", finite_or_null(beta_ci)},
-              {"merchant_shear_angle_deg", merchant_shear_angle_deg(s.rake_angle_deg, beta)},
+              {"merchant_shear_angle_deg", finite_or_null(merchant_shear_angle_deg(s.rake_angle_deg, beta))},
               {"merchant_shear_angle_ci95_deg", finite_or_null(0.5 * beta_ci)},
               {"chip_broken_fraction_mean", cm.members.empty() ? 0.0 : chip_broken / double(cm.members.size())},
               {"damaged_particle_fraction",

@@ -1,9 +1,8 @@
 // steady_stats.cpp: steady-part statistics of a series (see steady_stats.h).
 #include "postprocess/steady_stats.h"
 
-#include <boost/math/distributions/students_t.hpp>
-
 #include <algorithm>
+#include <boost/math/distributions/students_t.hpp>
 #include <numeric>
 
 #include "postprocess/chip.h"

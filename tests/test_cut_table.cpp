@@ -203,3 +203,24 @@ TEST(CutTable, RunCheckAndCaseDefault) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A cut stopped before the tool touches the block has no force, so no force direction: the
+// friction angle and Merchant's angle are not measured (null), not the rake angle that
+// atan2(0, 0) = 0 would make of them.
+TEST(CutTable, ACutWithoutForceHasNoFrictionAngle) {
+  test::TempDir dir("cut_noforce");
+  const auto r = test::run_command(fmt::format(
+      "timeout 120 {} run {}/examples/cut_c45.toml --out {} --set integrator.end_time=1e-8 --set output.plots=false "
+      "--set output.vtk=false --threads 1",
+      SWARF_BINARY, SWARF_SOURCE_DIR, dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string summary = test::read_file(dir / "out/summary.json");
+  EXPECT_NE(summary.find("\"friction_angle_deg\": null"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"merchant_shear_angle_deg\": null"), std::string::npos) << summary;
+}
+
+}  // namespace
+}  // namespace swarf
