@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case_errors.h"
+#include "io/csv_cell.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -169,6 +170,38 @@ TEST(CaseFiles, OverridesApplyAndAreChecked) {
   expect_mentions(
       case_error(kGood, {"group.0.motion=velocity", "group.0.velocity=[1, 2, 3]", "group.0.velocity.2=\"a\""}),
       {"group.velocity"});
+}
+
+// A velocity CSV's cells are numbers, whole: trailing junk, an empty cell, a fifth column or
+// a fraction written wrong are refused with the file and line, not read as the number's start
+// or as 0 (stream extraction stopped at the first character it could not use).
+TEST(Motions, VelocityCsvRefusesBadCells) {
+  test::TempDir dir("motions_csv");
+  const std::string text = replace(kGood, "side = \"x-\"",
+                                   "side = \"x-\"\nmotion = \"velocity_table\"\nvelocity_file = \"v.csv\"");
+  const auto error = [&] {
+    try {
+      parse_case(text, "c.toml", {}, dir.str());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  for (const char* row : {"1e-3,2.0,0,0abc", "1e-3,2.0,,0", "1e-3,2.0,0,0,5", "1e-3,2..0,0,0", "1e-3,2.0,0"}) {
+    test::write_file(dir / "v.csv", std::string("time,vx,vy,vz\n0,0,0,0\n") + row + "\n");
+    expect_mentions(error(), {"velocity_file", "v.csv:3", "four finite numbers", row});
+  }
+  test::write_file(dir / "v.csv", "time,vx,vy,vz\r\n0,0,0,0\r\n1e-3, 2.0 ,0,0\r\n");  // (spaces and CRLF are fine)
+  EXPECT_EQ(error(), "");
+}
+
+TEST(CsvCell, ReadsTheWholeCellOrNothing) {
+  double v = -1;
+  EXPECT_TRUE(parse_csv_number(" 2.5e-3\r", v));
+  EXPECT_EQ(v, 2.5e-3);
+  EXPECT_TRUE(parse_csv_number("nan", v));
+  EXPECT_TRUE(std::isnan(v));
+  for (const char* bad : {"", " ", "3abc", "3.7.1", "abc", "1e", "--1"}) EXPECT_FALSE(parse_csv_number(bad, v)) << bad;
 }
 
 TEST(Motions, RampAndVelocityTableIntegrateExactly) {

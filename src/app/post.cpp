@@ -11,6 +11,7 @@
 #include "app/plots.h"
 #include "io/atomic_file.h"
 #include "io/console.h"
+#include "io/csv_cell.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
@@ -57,7 +58,13 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
     std::vector<double> v;
     std::stringstream ss(line);
     std::string cell;
-    while (std::getline(ss, cell, ',')) v.push_back(std::strtod(cell.c_str(), nullptr));
+    while (std::getline(ss, cell, ',')) {
+      double x = 0;
+      if (!parse_csv_number(cell, x))
+        throw InputError(
+            fmt::format("post: '{}' line {} column {}: '{}' is not a number", path, row, v.size() + 1, cell));
+      v.push_back(x);
+    }
     if (v.size() != head.size())
       throw InputError(fmt::format("post: '{}' line {} has {} values, the header {}", path, row, v.size(), head.size()));
     for (std::size_t k = 0; k < idx.size(); ++k) out[k].push_back(v[idx[k]]);

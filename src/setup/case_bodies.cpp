@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "io/csv_cell.h"
 #include "setup/case_tables.h"
 #include "swarf/core/errors.h"
 
@@ -25,15 +26,21 @@ void read_velocity_csv(const TableReader& r, const std::string& path, MotionSett
   int lineno = 0;
   while (std::getline(in, line)) {
     ++lineno;
-    if (lineno == 1 || line.empty()) continue;  // header
-    std::replace(line.begin(), line.end(), ',', ' ');
+    if (lineno == 1 || line.empty() || line == "\r") continue;  // header
+    std::vector<double> x;
     std::istringstream ls(line);
-    double t, vx, vy, vz;
-    if (!(ls >> t >> vx >> vy >> vz) || !std::isfinite(t + vx + vy + vz))
+    bool ok = true;
+    for (std::string cell; std::getline(ls, cell, ',');) {
+      double c = 0;
+      ok = ok && parse_csv_number(cell, c) && std::isfinite(c);
+      x.push_back(c);
+    }
+    if (!ok || x.size() != 4)
       r.fail("velocity_file", r.get("velocity_file"),
-             fmt::format("{}:{}: expected 'time,vx,vy,vz' in s and m/s", path, lineno));
-    m.table_time.push_back(t);
-    m.table_velocity.push_back({vx, vy, vz});
+             fmt::format("{}:{}: expected 'time,vx,vy,vz': four finite numbers in s and m/s, got '{}'", path, lineno,
+                         line));
+    m.table_time.push_back(x[0]);
+    m.table_velocity.push_back({x[1], x[2], x[3]});
   }
 }
 
