@@ -102,7 +102,7 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
                 ObserverSet& observers, const RunProvenance& prov, const std::string& restarted_from) {
   const int threads = prov.threads;
   const RunOutputs::WallTimes wall = outputs.finish();
-  write_results_h5(dir + "/results.h5", sim, [&](H5File& f) {
+  write_results_h5(dir + "/results.h5", sim, model.settings.output.fields, [&](H5File& f) {
     write_disorder_attributes(f, model.derived);
     write_provenance_attributes(f, prov);
     write_series_datasets(f, observers.column_specs(), outputs.series());
