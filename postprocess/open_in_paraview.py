@@ -138,7 +138,8 @@ def main():
     from paraview import servermanager
     from paraview.simple import (AddCameraLink, AssignViewToLayout, ColorBy, CreateView, GetActiveViewOrCreate,
                                  GetAnimationScene, GetColorTransferFunction, GetLayout, GetOpacityTransferFunction,
-                                 Hide, OpenDataFile, RenameSource, Render, SaveScreenshot, SetActiveView, Show)
+                                 GetScalarBar, Hide, OpenDataFile, RenameSource, Render, SaveScreenshot, SetActiveView,
+                                 Show)
 
     run_dir = run_directory()
     parts = parts_of(os.path.join(run_dir, "particles.pvd"))
@@ -219,12 +220,11 @@ def main():
         GetOpacityTransferFunction(field).RescaleTransferFunction(0.0, top)
         lut.AutomaticRescaleRangeMode = "Never"
         d.SetScalarBarVisibility(view, True)
-        bar = lut.GetScalarBar(view) if hasattr(lut, "GetScalarBar") else None
-        if bar is not None:
-            bar.Title = title
-            bar.ComponentTitle = ""
-            bar.TitleColor = [0.0, 0.0, 0.0]
-            bar.LabelColor = [0.0, 0.0, 0.0]
+        bar = GetScalarBar(lut, view)
+        bar.Title = title
+        bar.ComponentTitle = ""
+        bar.TitleColor = [0.0, 0.0, 0.0]
+        bar.LabelColor = [0.0, 0.0, 0.0]
         for name, src in sources.items():
             if name == "particles":
                 continue

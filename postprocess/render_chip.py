@@ -44,7 +44,7 @@ XVFB_GUARD = "SWARF_RENDER_UNDER_XVFB"
 FIELDS = {
     "broken_fraction": ("", "damage: broken-rod fraction", 1.0, "%.2f"),
     "plastic_strain": ("_plastic_strain", "equivalent plastic strain held by the rods", 1.0, "%.3g"),
-    "von_mises_stress": ("_von_mises_stress", "von Mises stress (MPa)", 1e-6, "%.0f"),
+    "von_mises_stress": ("_von_mises_stress", "von Mises stress (MPa)", 1e-6, "%.3g"),
 }
 
 

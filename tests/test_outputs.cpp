@@ -335,7 +335,7 @@ TEST(Outputs, ParaViewScriptWrittenAndRunsAgainstAStub) {
   EXPECT_NE(script.find("\"depth_of_cut_m\":"), std::string::npos);
   const auto compiled = test::run_command("/usr/bin/python3 -m py_compile " + out + "/open_in_paraview.py");
   EXPECT_EQ(compiled.exit_code, 0) << compiled.output;
-  const auto ran = test::run_command("cd / && PYTHONPATH=" + std::string(SWARF_SOURCE_DIR) +
+  const auto ran = test::run_command("cd / && PYTHONDONTWRITEBYTECODE=1 PYTHONPATH=" + std::string(SWARF_SOURCE_DIR) +
                                      "/tests/data/paraview_stub /usr/bin/python3 " + out +
                                      "/open_in_paraview.py --screenshot " + out + "/pv.png");
   ASSERT_EQ(ran.exit_code, 0) << ran.output;

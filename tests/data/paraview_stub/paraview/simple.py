@@ -65,7 +65,7 @@ def _proxy(kind):
 
 
 for _name in ("AddCameraLink", "AssignViewToLayout", "ColorBy", "CreateView", "GetActiveViewOrCreate",
-              "GetAnimationScene", "GetColorTransferFunction", "GetLayout", "GetOpacityTransferFunction", "Hide",
+              "GetAnimationScene", "GetColorTransferFunction", "GetLayout", "GetOpacityTransferFunction", "GetScalarBar", "Hide",
               "RenameSource", "Render", "SetActiveView", "Show"):
     globals()[_name] = _proxy(_name)
 
