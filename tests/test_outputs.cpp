@@ -169,6 +169,16 @@ TEST(Outputs, FieldsChooseThePerParticleArrays) {
   const auto sum = nlohmann::json::parse(test::read_file(dir / "some/summary.json"));
   EXPECT_EQ(sum["case_effective"]["output"]["fields"], (nlohmann::json{"plastic_strain", "velocity"}));
 
+  // A restart may choose other fields (the state does not depend on them).
+  const auto first = test::run_command(run + " --out " + (dir / "ext") + " --set output.checkpoint_at_end=true");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const auto ext = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "ext/checkpoint.h5") +
+                                     " --set integrator.end_time=3e-5 --set 'output.fields=[\"velocity\"]'");
+  ASSERT_EQ(ext.exit_code, 0) << ext.output;
+  H5File h5ext(dir / "ext/results.h5", H5File::Mode::Read);
+  EXPECT_TRUE(h5ext.has("/particles/velocity"));
+  EXPECT_FALSE(h5ext.has("/particles/plastic_strain"));
+
   // The default writes every field.
   const auto all = test::run_command(run + " --out " + (dir / "all"));
   ASSERT_EQ(all.exit_code, 0) << all.output;

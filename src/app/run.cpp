@@ -47,8 +47,9 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
     // An extension: only the end time and the outputs may change. Every other key made the
     // state the checkpoint holds, and a different value would not continue that run.
     static const std::vector<std::string> extendable{
-        "integrator.end_time", "output.series_interval", "output.frame_interval",    "output.checkpoint_every",
-        "output.steady_from",  "output.plots",           "output.checkpoint_at_end", "output.progress"};
+        "integrator.end_time",      "output.series_interval", "output.frame_interval",
+        "output.checkpoint_every",  "output.steady_from",     "output.plots",
+        "output.checkpoint_at_end", "output.progress",        "output.fields"};
     for (const auto& o : opt.overrides) {
       const std::string key = o.substr(0, o.find('='));
       auto trimmed = key;
