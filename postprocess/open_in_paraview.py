@@ -40,6 +40,8 @@ import os
 import sys
 import xml.etree.ElementTree as ET
 
+ARGV = list(getattr(sys, "argv", None) or [])  # (an embedded interpreter, the GUI's, may have none)
+
 # (field, colour bar title, colour map preset), in the order of the views
 FIELDS = [
     ("von_mises_stress", "von Mises stress (Pa)", "Cool to Warm"),
@@ -52,7 +54,7 @@ def run_directory():
     """The run directory: the script's own (a run's copy), the first argument (the template),
     or the one recorded by swarf (ParaView's --script may not set __file__)."""
     candidates = []
-    args = [a for a in sys.argv[1:] if not a.startswith("-")]
+    args = [a for a in ARGV[1:] if not a.startswith("-")]
     if args and os.path.isdir(args[0]):
         candidates.append(args[0])
     try:
@@ -69,11 +71,11 @@ def run_directory():
 
 
 def option(name, default=None):
-    """The value after --name in sys.argv (pvpython only; the GUI passes none)."""
-    if name in sys.argv:
-        i = sys.argv.index(name)
-        if i + 1 < len(sys.argv):
-            return sys.argv[i + 1]
+    """The value after --name in the arguments (pvpython only; the GUI passes none)."""
+    if name in ARGV:
+        i = ARGV.index(name)
+        if i + 1 < len(ARGV):
+            return ARGV[i + 1]
     return default
 
 
