@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "io/atomic_file.h"
 #include "io/h5file.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
@@ -31,7 +32,7 @@ void write_lattice(const std::string& path, const Lattice& lat) {
     f.write_attribute("cell_edge", lat.cell_edge);
     f.close();  // (a failed close throws before the rename)
   }
-  std::filesystem::rename(tmp, path);
+  commit_file(tmp, path);
 }
 
 Lattice read_lattice(const std::string& path) {

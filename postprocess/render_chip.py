@@ -1,20 +1,33 @@
 #!/usr/bin/python3
-"""render_chip.py: a PNG picture of the workpiece, the chip and the tool at the end of a swarf run.
+"""render_chip.py: PNG pictures of the workpiece, the chip and the tool at the end of a swarf run.
 
 Usage: render_chip.py RUN_DIR [OUTPUT.png] [--size WxH] [--max-fraction F] [--frame N]
+                      [--fields F1,F2,...] [--tool NAME] [--depth H]
 
-Reads the last particles frame RUN_DIR/frames/particles_NNNNN.vtu (point data radius and
-broken_fraction), the tool meshes of the same frame RUN_DIR/frames/mesh_<name>_NNNNN.vtp and,
-if present and the frame is the last, the chip surface RUN_DIR/chip_surface.vtp (drawn translucent). Particles are
-spheres of their own radius, coloured by their broken-rod fraction (0 = all rods intact,
-blue, to the colour bar's top, red); meshes are grey. The view looks along +y at the cutting
-plane x-z (x, the cutting direction, to the right; z up), parallel projection; the title gives
-the run's name and the simulated time of the frame (from RUN_DIR/particles.pvd).
-Default output RUN_DIR/chip.png, 1280x800. Prints 'wrote PATH'.
+Reads the last particles frame RUN_DIR/frames/particles_NNNNN.vtu (point data radius and the
+fields), the meshes of the same frame RUN_DIR/frames/mesh_<name>_NNNNN.vtp and, if present and
+the frame is the last, the chip surface RUN_DIR/chip_surface.vtp (drawn translucent). Particles
+are spheres of their own radius, meshes grey. One picture per field of --fields (default
+broken_fraction,plastic_strain,von_mises_stress), each coloured blue (low) to red (high):
+  broken_fraction     OUTPUT (default RUN_DIR/chip.png), 0 to the largest fraction (at least
+                      0.05; --max-fraction sets it)
+  plastic_strain      OUTPUT's stem + _plastic_strain.png, 0 to the 99th percentile in view
+  von_mises_stress    OUTPUT's stem + _von_mises_stress.png, MPa, 0 to the 99th percentile in view
+A field the frame does not hold (output.fields left it out) is skipped with a note.
+
+The camera looks along +y at the cutting plane x-z (x, the cutting direction, to the right;
+z up), parallel projection. With a tool (--tool NAME, or the mesh reaching lowest) it frames the
+cut: the particles within a few depths of cut of the tool's tip (its lowest vertex), from
+3 depths behind the tip to 5 ahead and from 2 below to 5 above, so the chip, the tool and the
+machined surface fill the picture and fragments flung far away stay out. --depth H is the depth
+of cut in m (default: the highest particle ahead of the tool minus the tip). Without a tool it
+frames the connected extent of the particles. The title gives the run's name and the simulated
+time of the frame (from RUN_DIR/particles.pvd). Size 1280x800 by default. Prints 'wrote PATH'
+for each picture.
 
 Rendering is offscreen but Debian's VTK needs an X server: without DISPLAY the script runs
 itself again under `xvfb-run -a` if that exists, or exits with a message. Exit code 1 if the
-frames are missing, 2 on bad arguments or no X server.
+frames are missing or no picture could be drawn, 2 on bad arguments or no X server.
 Use /usr/bin/python3 (module vtk from python3-vtk9).
 """
 import argparse
@@ -27,6 +40,13 @@ import xml.etree.ElementTree as ET
 
 XVFB_GUARD = "SWARF_RENDER_UNDER_XVFB"
 
+# field -> (picture suffix, colour bar title, factor to the bar's unit, label format)
+FIELDS = {
+    "broken_fraction": ("", "damage: broken-rod fraction", 1.0, "%.2f"),
+    "plastic_strain": ("_plastic_strain", "equivalent plastic strain held by the rods", 1.0, "%.3g"),
+    "von_mises_stress": ("_von_mises_stress", "von Mises stress (MPa)", 1e-6, "%.3g"),
+}
+
 
 def fail(msg, code=1):
     print("render_chip.py: " + msg, file=sys.stderr)
@@ -34,14 +54,27 @@ def fail(msg, code=1):
 
 
 def parse_args():
-    ap = argparse.ArgumentParser(description="Render the end of a swarf run (particles by broken-rod fraction, tool, chip surface) to PNG.")
+    ap = argparse.ArgumentParser(description="Render the end of a swarf run (particles coloured by damage, plastic "
+                                 "strain and von Mises stress; tool; chip surface) to PNG.")
     ap.add_argument("run_dir")
     ap.add_argument("output", nargs="?", help="PNG path (default RUN_DIR/chip.png)")
     ap.add_argument("--size", default="1280x800", help="image size WxH in pixels (default 1280x800)")
     ap.add_argument("--max-fraction", type=float, default=0.0,
                     help="top of the colour bar (default: the largest broken-rod fraction, at least 0.05)")
     ap.add_argument("--frame", type=int, default=-1, help="frame number (default: the last)")
+    ap.add_argument("--fields", default="broken_fraction,plastic_strain,von_mises_stress",
+                    help="one picture per field, comma-separated (default broken_fraction,plastic_strain,von_mises_stress)")
+    ap.add_argument("--tool", default="", help="name of the tool's mesh (default: the mesh reaching lowest)")
+    ap.add_argument("--depth", type=float, default=0.0, help="depth of cut, m (default: from the particles)")
     a = ap.parse_args()
+    a.fields = [f for f in a.fields.split(",") if f]
+    for f in a.fields:
+        if f not in FIELDS:
+            fail("--fields: '%s' is not one of %s" % (f, ", ".join(FIELDS)), 2)
+    if not a.fields:
+        fail("--fields: give at least one of %s" % ", ".join(FIELDS), 2)
+    if not (a.depth >= 0.0):
+        fail("--depth must be a length >= 0 in m (got %s)" % a.depth, 2)
     m = re.fullmatch(r"(\d+)x(\d+)", a.size)
     if not m or int(m.group(1)) < 16 or int(m.group(2)) < 16:
         fail("--size must be WxH with W, H >= 16, e.g. 1280x800 (got '%s')" % a.size, 2)
@@ -123,6 +156,48 @@ def connected_extent(values, gap):
     return values[i], values[j]
 
 
+def tool_tip(np, vtk_to_numpy, meshes, tool):
+    """(x, z) of the tool's tip, its lowest vertex (the one furthest ahead among the lowest), or
+    None without a tool. 'meshes': (name, polydata) of the frame; 'tool': the tool's name or ''."""
+    best = None
+    for name, poly in meshes:
+        if tool and name != tool:
+            continue
+        if poly.GetNumberOfPoints() == 0:
+            continue
+        v = vtk_to_numpy(poly.GetPoints().GetData()).astype(float)
+        zmin = v[:, 2].min()
+        low = v[v[:, 2] <= zmin + 1e-9 * max(1.0, abs(zmin))]
+        tip = (float(low[:, 0].max()), float(zmin))
+        if best is None or tip[1] < best[1]:
+            best = tip
+    return best
+
+
+def cut_window(np, pos, rmax, tip, depth):
+    """The box (lo, hi) in x-z around the cut: the particles from 3 depths behind the tip to 5
+    ahead and from 2 below to 5 above (clipped to those present), grown by a radius."""
+    tx, tz = tip
+    if depth <= 0:
+        # The uncut surface: the highest particle ahead of the tool, near it.
+        ahead = pos[(pos[:, 0] > tx + 4 * rmax) & (pos[:, 0] < tx + 60 * rmax) & (pos[:, 2] < tz + 60 * rmax)]
+        depth = float(ahead[:, 2].max() - tz) if len(ahead) else 0.0
+        if depth <= 2 * rmax:
+            depth = 10 * rmax
+    box_lo = np.array([tx - 3 * depth, tz - 2 * depth])
+    box_hi = np.array([tx + 5 * depth, tz + 5 * depth])
+    xz = pos[:, [0, 2]]
+    inside = np.all((xz >= box_lo) & (xz <= box_hi), axis=1)
+    if inside.sum() < 2:
+        return box_lo, box_hi, inside
+    lo = np.maximum(xz[inside].min(axis=0) - rmax, box_lo)
+    hi = np.minimum(xz[inside].max(axis=0) + rmax, box_hi)
+    # The tool's tip stays in view (a tool that has run past the material).
+    lo = np.minimum(lo, [tx - 2 * rmax, tz - 2 * rmax])
+    hi = np.maximum(hi, [tx + 2 * rmax, tz + 2 * rmax])
+    return lo, hi, inside
+
+
 def main():
     a = parse_args()
     run_dir = a.run_dir
@@ -132,7 +207,9 @@ def main():
     out = a.output or os.path.join(run_dir, "chip.png")
     ensure_display()
 
+    import numpy as np
     import vtk  # after the display check: importing is slow and needs no X, rendering does
+    from vtk.util.numpy_support import vtk_to_numpy, numpy_to_vtk
 
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(particles_path)
@@ -144,10 +221,8 @@ def main():
     pd = grid.GetPointData()
     if pd.GetArray("radius") is None:
         fail("%s has no point data 'radius'" % particles_path)
-    fraction = pd.GetArray("broken_fraction")
-    top = a.max_fraction
-    if top <= 0:
-        top = max(0.05, fraction.GetRange()[1] if fraction is not None else 0.0)
+    pos = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
+    rmax = float(pd.GetArray("radius").GetRange()[1])
 
     ren = vtk.vtkRenderer()
     ren.SetBackground(1.0, 1.0, 1.0)
@@ -164,34 +239,18 @@ def main():
     glyphs.SetScaleModeToScaleByMagnitude()
     glyphs.SetScaleFactor(1.0)
     glyphs.OrientOff()
-    lut = vtk.vtkLookupTable()
-    lut.SetHueRange(0.667, 0.0)  # blue (intact) to red
-    lut.SetNumberOfTableValues(256)
-    lut.SetTableRange(0.0, top)
-    lut.Build()
-    if fraction is not None:
-        glyphs.SetScalarModeToUsePointFieldData()
-        glyphs.SelectColorArray("broken_fraction")
-        glyphs.SetLookupTable(lut)
-        glyphs.SetScalarRange(0.0, top)
-        glyphs.UseLookupTableScalarRangeOn()
-        glyphs.ScalarVisibilityOn()
-    else:
-        glyphs.ScalarVisibilityOff()
     particles = vtk.vtkActor()
     particles.SetMapper(glyphs)
-    if fraction is None:
-        particles.GetProperty().SetColor(0.2, 0.3, 0.8)
     ren.AddActor(particles)
 
     # Tools and walls of the same frame, grey.
-    meshes = sorted(glob.glob(os.path.join(run_dir, "frames", "mesh_*_%05d.vtp" % frame)))
-    mesh_bounds = []
-    for path in meshes:
+    meshes = []
+    for path in sorted(glob.glob(os.path.join(run_dir, "frames", "mesh_*_%05d.vtp" % frame))):
+        name = re.fullmatch(r"mesh_(.*)_\d{5}\.vtp", os.path.basename(path)).group(1)
         act, poly = polydata_actor(vtk, path, (0.55, 0.55, 0.58))
         act.GetProperty().SetSpecular(0.3)
         ren.AddActor(act)
-        mesh_bounds.append(poly.GetBounds())
+        meshes.append((name, poly))
 
     # The chip surface (end of the run), translucent over the particles: only over the last
     # frame, since over an earlier one it shows a chip that has not formed yet.
@@ -205,23 +264,54 @@ def main():
             ren.SetUseDepthPeeling(1)  # correct blending of the translucent surface
             chip_drawn = True
 
-    if fraction is not None:
-        bar = vtk.vtkScalarBarActor()
-        bar.SetLookupTable(lut)
-        bar.SetTitle("broken-rod fraction")
-        bar.SetNumberOfLabels(5)
-        bar.SetLabelFormat("%.2f")
-        bar.SetOrientationToHorizontal()
-        bar.SetPosition(0.25, 0.03)
-        bar.SetWidth(0.5)
-        bar.SetHeight(0.1)
-        bar.UnconstrainedFontSizeOn()
-        for tp in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
-            tp.SetColor(0.0, 0.0, 0.0)
-            tp.SetFontSize(max(10, a.height // 50))
-            tp.ItalicOff()
-            tp.ShadowOff()
-        ren.AddActor2D(bar)
+    # The view: on the cut when there is a tool, else on the connected extent of the particles.
+    tip = tool_tip(np, vtk_to_numpy, meshes, a.tool)
+    if a.tool and tip is None:
+        fail("no mesh '%s' in frame %d (meshes: %s)" % (a.tool, frame, ", ".join(m for m, _ in meshes) or "none"))
+    if tip is not None:
+        lo2, hi2, in_view = cut_window(np, pos, rmax, tip, a.depth)
+        lo = [lo2[0], pos[:, 1].min() - rmax, lo2[1]]
+        hi = [hi2[0], pos[:, 1].max() + rmax, hi2[1]]
+        framing = "framed on the tool tip"
+    else:
+        lo, hi = [0.0] * 3, [0.0] * 3
+        for ax in range(3):
+            lo[ax], hi[ax] = connected_extent(sorted(pos[:, ax]), 4.0 * rmax)
+            lo[ax] -= rmax
+            hi[ax] += rmax
+        in_view = (pos[:, 0] >= lo[0]) & (pos[:, 0] <= hi[0]) & (pos[:, 2] >= lo[2]) & (pos[:, 2] <= hi[2])
+        framing = "framed on the particles"
+    dx, dz = hi[0] - lo[0], hi[2] - lo[2]
+    aspect = a.width / float(a.height)
+    # The content fills the band 0.16-0.92 of the height (title above, colour bar below).
+    scale = 1.04 * max(dz / 1.52, dx / (1.92 * aspect))
+    centre = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) - 0.08 * scale]
+    cam = ren.GetActiveCamera()
+    cam.ParallelProjectionOn()
+    cam.SetFocalPoint(*centre)
+    cam.SetPosition(centre[0], centre[1] - 10.0 * max(dx, dz, hi[1] - lo[1]), centre[2])
+    cam.SetViewUp(0.0, 0.0, 1.0)
+    cam.SetParallelScale(scale)
+    ren.ResetCameraClippingRange()
+
+    lut = vtk.vtkLookupTable()
+    lut.SetHueRange(0.667, 0.0)  # blue (low) to red (high)
+    lut.SetNumberOfTableValues(256)
+    lut.Build()
+    bar = vtk.vtkScalarBarActor()
+    bar.SetLookupTable(lut)
+    bar.SetNumberOfLabels(5)
+    bar.SetOrientationToHorizontal()
+    bar.SetPosition(0.25, 0.03)
+    bar.SetWidth(0.5)
+    bar.SetHeight(0.1)
+    bar.UnconstrainedFontSizeOn()
+    for tp in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+        tp.SetColor(0.0, 0.0, 0.0)
+        tp.SetFontSize(max(10, a.height // 50))
+        tp.ItalicOff()
+        tp.ShadowOff()
+    ren.AddActor2D(bar)
 
     t = frame_time(run_dir, particles_path)
     title = "%s   t = %s   %d particles%s%s" % (
@@ -236,35 +326,8 @@ def main():
     text.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
     text.SetPosition(0.5, 0.97)
     ren.AddActor2D(text)
-
-    # Look along +y at the x-z plane (x to the right, z up), framing the workpiece and chip
-    # (not stray fragments far away) between the title and the colour bar.
-    from vtk.util.numpy_support import vtk_to_numpy
-    pos = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
-    rmax = float(pd.GetArray("radius").GetRange()[1])
-    lo, hi = [0.0] * 3, [0.0] * 3
-    for ax in range(3):
-        lo[ax], hi[ax] = connected_extent(sorted(pos[:, ax]), 4.0 * rmax)
-        lo[ax] -= rmax
-        hi[ax] += rmax
-    dx, dz = hi[0] - lo[0], hi[2] - lo[2]
-    for b in mesh_bounds:  # tools: shown if near, but never widen the view by more than half
-        lo[0], hi[0] = min(lo[0], max(b[0], lo[0] - 0.5 * dx)), max(hi[0], min(b[1], hi[0] + 0.5 * dx))
-        lo[2], hi[2] = min(lo[2], max(b[4], lo[2] - 0.5 * dz)), max(hi[2], min(b[5], hi[2] + 0.5 * dz))
-    dx, dz = hi[0] - lo[0], hi[2] - lo[2]
-    aspect = a.width / float(a.height)
-    # The content fills the band 0.16-0.92 of the height (title above, colour bar below).
-    scale = 1.04 * max(dz / 1.52, dx / (1.92 * aspect))
-    centre = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) - 0.08 * scale]
-    cam = ren.GetActiveCamera()
-    cam.ParallelProjectionOn()
-    cam.SetFocalPoint(*centre)
-    cam.SetPosition(centre[0], centre[1] - 10.0 * max(dx, dz, hi[1] - lo[1]), centre[2])
-    cam.SetViewUp(0.0, 0.0, 1.0)
-    cam.SetParallelScale(scale)
-    ren.ResetCameraClippingRange()
-    text.SetInput(title + "\nview along +y (x, the cutting direction, to the right; z up), %.3g mm wide"
-                  % (2e3 * scale * aspect))
+    text.SetInput(title + "\nview along +y (x, the cutting direction, to the right; z up), %.3g mm wide, %s"
+                  % (2e3 * scale * aspect, framing))
 
     win = vtk.vtkRenderWindow()
     win.SetOffScreenRendering(1)
@@ -272,22 +335,59 @@ def main():
     win.SetMultiSamples(0)
     win.AddRenderer(ren)
     win.SetSize(a.width, a.height)
-    win.Render()
 
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    tmp = out + ".part"
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(tmp)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    if not os.path.exists(tmp) or os.path.getsize(tmp) == 0:
-        fail("could not write %s" % out)
-    os.replace(tmp, out)
-    print("wrote " + out)
+    stem = out[:-4] if out.lower().endswith(".png") else out
+    wrote = 0
+    for field in a.fields:
+        suffix, bar_title, factor, fmt = FIELDS[field]
+        arr = pd.GetArray(field)
+        if arr is None:
+            print("render_chip.py: no point data '%s' in %s (output.fields left it out): picture skipped"
+                  % (field, particles_path), file=sys.stderr)
+            continue
+        values = vtk_to_numpy(arr).astype(float) * factor
+        shown = values[in_view] if in_view.any() else values
+        if field == "broken_fraction":
+            top = a.max_fraction if a.max_fraction > 0 else max(0.05, float(values.max()))
+        else:  # the 99th percentile of what is in view: a few extreme particles do not wash the map out
+            top = float(np.percentile(shown, 99.0)) if len(shown) else 0.0
+            if not top > 0:
+                top = max(float(shown.max()) if len(shown) else 0.0, 1e-12)
+        name = "swarf_colour_" + field
+        if pd.GetArray(name) is None:
+            scaled = numpy_to_vtk(np.ascontiguousarray(values), deep=1)
+            scaled.SetName(name)
+            pd.AddArray(scaled)
+        lut.SetTableRange(0.0, top)
+        glyphs.SetScalarModeToUsePointFieldData()
+        glyphs.SelectColorArray(name)
+        glyphs.SetLookupTable(lut)
+        glyphs.SetScalarRange(0.0, top)
+        glyphs.UseLookupTableScalarRangeOn()
+        glyphs.ScalarVisibilityOn()
+        glyphs.Modified()
+        bar.SetTitle(bar_title + ("" if field == "broken_fraction" else ", 0 to the 99th percentile in view"))
+        bar.SetLabelFormat(fmt)
+        win.Render()
+
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(win)
+        grab.SetInputBufferTypeToRGB()
+        grab.ReadFrontBufferOff()
+        grab.Update()
+        path = stem + suffix + ".png"
+        tmp = path + ".part"
+        writer = vtk.vtkPNGWriter()
+        writer.SetFileName(tmp)
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+        if not os.path.exists(tmp) or os.path.getsize(tmp) == 0:
+            fail("could not write %s" % path)
+        os.replace(tmp, path)
+        print("wrote " + path)
+        wrote += 1
+    if wrote == 0:
+        fail("no picture drawn: the frame holds none of the fields %s" % ", ".join(a.fields))
 
 
 if __name__ == "__main__":

@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
 """test_render.py: ctest 'render_chip': postprocess/render_chip.py on a tiny synthetic run directory.
 
-Writes 5 x 2 x 4 particles (radius, broken_fraction rising along x, velocity, displacement,
-group) as frames/particles_00000.vtu and particles_00001.vtu, a one-triangle 'tool' for frame
-1 and a particles.pvd, renders under xvfb-run at 320 x 240 and checks: exit code 0, 'wrote'
-printed, the PNG exists with exactly the requested size and more than one colour (not a blank
-image), and the blue-to-red colour map shows (some pixel red-dominant, some blue-dominant).
+Writes 5 x 2 x 4 particles (radius, broken_fraction rising along x, plastic_strain falling
+along x, velocity, displacement, group; no von_mises_stress) and one fragment flung 400 radii
+away as frames/particles_00000.vtu and particles_00001.vtu, a one-triangle 'tool' for frame 1
+and a particles.pvd, renders under xvfb-run at 320 x 240 and checks: exit code 0, 'wrote'
+printed for the damage and the plastic strain pictures, the von Mises picture skipped with a
+note (the frame lacks the field), each PNG with exactly the requested size and more than one
+colour (not a blank image), and the blue-to-red colour map shows (some pixels red-dominant,
+some blue-dominant: the view is on the cut, so the particles are many pixels wide, not dots
+in a view stretched to the fragment).
 Also: a directory without frames exits non-zero with a message naming frames/.
 Usage: test_render.py PATH/TO/render_chip.py. Exit 77 (skipped) without xvfb-run or vtk.
 """
@@ -38,10 +42,10 @@ def main():
         R = 1e-4
         pts = vtk.vtkPoints()
         pts.SetDataTypeToDouble()
-        radius, frac, vel, disp = (vtk.vtkDoubleArray() for _ in range(4))
+        radius, frac, plastic, vel, disp = (vtk.vtkDoubleArray() for _ in range(5))
         group = vtk.vtkIntArray()
-        for arr, name, nc in ((radius, "radius", 1), (frac, "broken_fraction", 1), (vel, "velocity", 3),
-                              (disp, "displacement", 3), (group, "group", 1)):
+        for arr, name, nc in ((radius, "radius", 1), (frac, "broken_fraction", 1), (plastic, "plastic_strain", 1),
+                              (vel, "velocity", 3), (disp, "displacement", 3), (group, "group", 1)):
             arr.SetName(name)
             arr.SetNumberOfComponents(nc)
         nx = 5
@@ -51,14 +55,21 @@ def main():
                     pts.InsertNextPoint(2 * R * i, 2 * R * j, 2 * R * k)
                     radius.InsertNextValue(R)
                     frac.InsertNextValue(i / (nx - 1))
+                    plastic.InsertNextValue(0.3 * (nx - 1 - i) / (nx - 1))
                     vel.InsertNextTuple3(0, 0, 0)
                     disp.InsertNextTuple3(0, 0, 0)
                     group.InsertNextValue(0)
+        pts.InsertNextPoint(400 * R, 0, 200 * R)  # a fragment flung far away
+        for arr, v in ((radius, R), (frac, 1.0), (plastic, 0.0)):
+            arr.InsertNextValue(v)
+        vel.InsertNextTuple3(0, 0, 0)
+        disp.InsertNextTuple3(0, 0, 0)
+        group.InsertNextValue(0)
         grid = vtk.vtkUnstructuredGrid()
         grid.SetPoints(pts)
         for p in range(pts.GetNumberOfPoints()):
             grid.InsertNextCell(vtk.VTK_VERTEX, 1, [p])
-        for arr in (radius, frac, vel, disp, group):
+        for arr in (radius, frac, plastic, vel, disp, group):
             grid.GetPointData().AddArray(arr)
         for f in (0, 1):
             w = vtk.vtkXMLUnstructuredGridWriter()
@@ -95,11 +106,15 @@ def main():
             ok = ok and cond
 
         check(r.returncode == 0, "render_chip.py exits 0 (got %d)" % r.returncode)
-        check(("wrote " + out) in r.stdout, "prints 'wrote %s'" % out)
-        check(os.path.exists(out), "the PNG exists")
-        if os.path.exists(out):
+        check("no point data 'von_mises_stress'" in r.stderr, "the von Mises picture skipped with a note")
+        check(not os.path.exists(os.path.join(tmp, "picture_von_mises_stress.png")), "no von Mises picture")
+        for png in (out, os.path.join(tmp, "picture_plastic_strain.png")):
+            check(("wrote " + png) in r.stdout, "prints 'wrote %s'" % png)
+            check(os.path.exists(png), "the PNG exists")
+            if not os.path.exists(png):
+                continue
             rd = vtk.vtkPNGReader()
-            rd.SetFileName(out)
+            rd.SetFileName(png)
             rd.Update()
             img = rd.GetOutput()
             dims = img.GetDimensions()
@@ -110,7 +125,8 @@ def main():
             check(len(colours) > 1, "more than one colour (%d sampled)" % len(colours))
             red = ((a[:, 0] > 150) & (a[:, 2] < 100)).sum()
             blue = ((a[:, 2] > 150) & (a[:, 0] < 100)).sum()
-            check(red > 20 and blue > 20, "red (broken) and blue (intact) particles show (%d, %d pixels)" % (red, blue))
+            check(red > 200 and blue > 200, "red (high) and blue (low) particles show large, the view on the cut "
+                  "(%d, %d pixels)" % (red, blue))
 
         empty = os.path.join(tmp, "empty")
         os.makedirs(empty)

@@ -272,6 +272,16 @@ TEST(ShortCut, ShowsProgressPrintsTheTableAndPostReproducesTheSummary) {
   auto bad = test::run_command(bin + " post " + (dir / "nothing"));
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("did not finish"), std::string::npos) << bad.output;
+  // ... and a series.csv with a cell that is not a number (once read as 0), naming line, column and cell.
+  std::string csv = test::read_file(dir / "out/series.csv");
+  const auto eol = csv.find('\n', csv.find('\n') + 1);  // the end of the first data row
+  const auto comma = csv.rfind(',', eol);
+  csv.replace(comma + 1, eol - comma - 1, "12x");
+  test::write_file(dir / "out/series.csv", csv);
+  auto cell = test::run_command(bin + " post " + (dir / "out"));
+  EXPECT_EQ(cell.exit_code, 2) << cell.output;
+  EXPECT_NE(cell.output.find("line 2 column"), std::string::npos) << cell.output;
+  EXPECT_NE(cell.output.find("= '12x' is not a number"), std::string::npos) << cell.output;
 }
 
 // A restart that extends: a run to t1 with a checkpoint at its end, continued with a later

@@ -12,6 +12,7 @@
 #include "app/build_config.h"
 #include "app/git_info.h"
 #include "io/h5file.h"
+#include "postprocess/script_dir.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -28,8 +29,8 @@ static std::string dirty_word(int dirty) {
 
 std::string version_text() {
   const BuildInfo& b = build_info();
-  return fmt::format("swarf {}\ncommit {} ({})\nbuild {}, {}\nflags {}", b.version, b.git_commit,
-                     dirty_word(b.git_dirty), b.build_type, b.compiler, b.compile_flags);
+  return fmt::format("swarf {}\ncommit {} ({})\nbuild {}, {}\nflags {}\nscripts {}", b.version, b.git_commit,
+                     dirty_word(b.git_dirty), b.build_type, b.compiler, b.compile_flags, postprocess_dir());
 }
 
 RunProvenance run_provenance(int threads) {

@@ -22,7 +22,8 @@ struct BuildInfo {
 
 const BuildInfo& build_info();
 
-/// The text of `swarf --version`: one line with version and commit, then build and compiler.
+/// The text of `swarf --version`: one line with version and commit, then build and compiler,
+/// flags, and the folder of the post-processing scripts it runs (postprocess/script_dir.h).
 std::string version_text();
 
 /// Where and when a run ran: the build, its start (UTC, ISO 8601), the host and the threads.

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 namespace swarf {
@@ -24,8 +25,7 @@ std::string quote(const std::string& s) {
 ScriptRun run_postprocess_script(const std::string& name, const std::vector<std::string>& args,
                                  const std::string& prefix) {
   ScriptRun r;
-  const char* env = std::getenv("SWARF_POSTPROCESS_DIR");
-  const std::string script = std::string(env ? env : SWARF_POSTPROCESS_DIR) + "/" + name;
+  const std::string script = postprocess_path(name);
   if (!std::filesystem::exists(script)) {
     r.output = "script not found: " + script;
     return r;
@@ -51,20 +51,25 @@ ScriptRun run_postprocess_script(const std::string& name, const std::vector<std:
   return r;
 }
 
-PlotResult make_plots(const std::string& dir, const std::string& summary_path) {
-  PlotResult r;
-  const ScriptRun run = run_postprocess_script("plot_run.py", {dir, summary_path});
-  const std::string& out = run.output;
+std::vector<std::string> written_files(const std::string& output) {
+  std::vector<std::string> files;
   std::size_t pos = 0;
-  while (pos < out.size()) {
-    const auto eol = out.find('\n', pos);
-    const std::string line = out.substr(pos, eol - pos);
-    if (line.rfind("wrote ", 0) == 0) r.files.push_back(line.substr(6));
+  while (pos < output.size()) {
+    const auto eol = output.find('\n', pos);
+    const std::string line = output.substr(pos, eol - pos);
+    if (line.rfind("wrote ", 0) == 0) files.push_back(line.substr(6));
     if (eol == std::string::npos) break;
     pos = eol + 1;
   }
+  return files;
+}
+
+PlotResult make_plots(const std::string& dir, const std::string& summary_path) {
+  PlotResult r;
+  const ScriptRun run = run_postprocess_script("plot_run.py", {dir, summary_path});
+  r.files = written_files(run.output);
   r.ok = run.ok;
-  if (!r.ok) r.message = "plot script failed: " + out.substr(0, 400);
+  if (!r.ok) r.message = "plot script failed: " + run.output.substr(0, 400);
   return r;
 }
 

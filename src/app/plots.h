@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "postprocess/script_dir.h"
+
 namespace swarf {
 
 struct PlotResult {
@@ -21,7 +23,10 @@ struct ScriptRun {
   std::string output;  ///< stdout and stderr together (or why it could not start)
 };
 
-/// Runs postprocess/NAME (the build tree's folder, or $SWARF_POSTPROCESS_DIR) with
+/// The paths a script reported, one "wrote PATH" line each, in order.
+std::vector<std::string> written_files(const std::string& output);
+
+/// Runs postprocess_path(NAME) with
 /// /usr/bin/python3 and the arguments, each shell-quoted; 'prefix' goes before the
 /// interpreter (e.g. xvfb-run). A missing script is reported in 'output'.
 ScriptRun run_postprocess_script(const std::string& name, const std::vector<std::string>& args,

@@ -59,10 +59,12 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
     std::stringstream ss(line);
     std::string cell;
     while (std::getline(ss, cell, ',')) {
+      // The whole cell must be a number (as swarf writes them, nan and inf included): a cell
+      // that is empty or has text in it is refused, not read as 0.
       double x = 0;
       if (!parse_csv_number(cell, x))
-        throw InputError(
-            fmt::format("post: '{}' line {} column {}: '{}' is not a number", path, row, v.size() + 1, cell));
+        throw InputError(fmt::format("post: '{}' line {} column {} ('{}') = '{}' is not a number", path, row,
+                                     v.size() + 1, v.size() < head.size() ? head[v.size()] : "?", cell));
       v.push_back(x);
     }
     if (v.size() != head.size())
@@ -74,24 +76,29 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
 
 }  // namespace
 
-std::string render_picture(const std::string& dir, std::string& message) {
+std::vector<std::string> render_pictures(const std::string& dir, const CutSetup& setup, std::string& message) {
   namespace fs = std::filesystem;
   // Debian's VTK renders through X only: without a display, a virtual one (xvfb-run).
   std::string prefix;
   if (!std::getenv("DISPLAY")) {
     if (!fs::exists("/usr/bin/xvfb-run")) {
-      message = "no display and no xvfb-run (Debian package xvfb) to render the picture";
-      return "";
+      message = "no display and no xvfb-run (Debian package xvfb) to render the pictures";
+      return {};
     }
     prefix = "/usr/bin/xvfb-run -a -s '-screen 0 1280x1024x24' ";
   }
-  const std::string out = dir + "/chip.png";
-  const ScriptRun run = run_postprocess_script("render_chip.py", {dir, out}, prefix);
-  if (!run.ok || !fs::exists(out)) {
+  std::vector<std::string> args{dir, dir + "/chip.png", "--tool", setup.tool_mesh};
+  const double depth = setup.uncut_surface_z - setup.tool_tip.z();  // m
+  if (depth > 0) args.insert(args.end(), {"--depth", fmt::format("{:.17g}", depth)});
+  const ScriptRun run = run_postprocess_script("render_chip.py", args, prefix);
+  std::vector<std::string> files;
+  for (const auto& f : written_files(run.output))
+    if (fs::exists(f)) files.push_back(fs::path(f).filename().string());
+  if (!run.ok || files.empty()) {
     message = "render failed: " + run.output.substr(0, 400);
-    return "";
+    return {};
   }
-  return out;
+  return files;
 }
 
 void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
@@ -128,9 +135,9 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
   }
   if (pictures) {
     std::string message;
-    const std::string png = render_picture(dir, message);
-    if (!png.empty()) {
-      sum["pictures"] = {"chip.png"};
+    const std::vector<std::string> pngs = render_pictures(dir, setup, message);
+    if (!pngs.empty()) {
+      sum["pictures"] = pngs;
     } else {
       sum["picture_error"] = message;
       eprint("swarf: warning: picture not rendered: {}\n", message);

@@ -47,8 +47,9 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
     // An extension: only the end time and the outputs may change. Every other key made the
     // state the checkpoint holds, and a different value would not continue that run.
     static const std::vector<std::string> extendable{
-        "integrator.end_time", "output.series_interval", "output.frame_interval",    "output.checkpoint_every",
-        "output.steady_from",  "output.plots",           "output.checkpoint_at_end", "output.progress"};
+        "integrator.end_time",      "output.series_interval", "output.frame_interval",
+        "output.checkpoint_every",  "output.steady_from",     "output.plots",
+        "output.checkpoint_at_end", "output.progress",        "output.fields"};
     for (const auto& o : opt.overrides) {
       const std::string key = o.substr(0, o.find('='));
       auto trimmed = key;
@@ -102,7 +103,7 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
                 ObserverSet& observers, const RunProvenance& prov, const std::string& restarted_from) {
   const int threads = prov.threads;
   const RunOutputs::WallTimes wall = outputs.finish();
-  write_results_h5(dir + "/results.h5", sim, [&](H5File& f) {
+  write_results_h5(dir + "/results.h5", sim, model.settings.output.fields, [&](H5File& f) {
     write_disorder_attributes(f, model.derived);
     write_provenance_attributes(f, prov);
     write_series_datasets(f, observers.column_specs(), outputs.series());

@@ -55,7 +55,8 @@ std::string prepare_run_directory(const RunOptions& opt) {
   // Outputs of an earlier run in the same directory would mix with this one's (and a previous
   // summary would make an interrupted run look complete). A restart keeps the frames.
   for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",
-                           "stress_strain.png", "energy.png", "forces.png", "chip.png", "chip_surface.vtp"})
+                           "stress_strain.png", "energy.png", "forces.png", "chip.png", "chip_plastic_strain.png",
+                           "chip_von_mises_stress.png", "chip_surface.vtp", "open_in_paraview.py"})
     fs::remove(fs::path(dir) / name);
   if (!restarting) {
     fs::remove(fs::path(dir) / "particles.pvd");

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "app/observers/observer_set.h"
+#include "app/paraview_script.h"
 #include "app/run_directory.h"
 #include "io/atomic_file.h"
 #include "io/console.h"
@@ -33,10 +34,15 @@ RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& s
       checkpoint_every_(model.settings.output.checkpoint_every),
       checkpoint_at_end_(model.settings.output.checkpoint_at_end),
       vtk_(model.settings.output.vtk
-               ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk, model.settings.output.orientations)
+               ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk, model.settings.output.orientations,
+                                             model.settings.output.fields)
                : nullptr),
       series_(dir + "/series.csv", columns_) {
-  if (vtk_) vtk_->set_periodic(model.periodic);
+  if (vtk_) {
+    vtk_->set_periodic(model.periodic);
+    if (const std::string why = write_paraview_script(dir, model); !why.empty())
+      eprint("swarf: warning: {}/open_in_paraview.py not written: {}\n", dir, why);
+  }
   rec_.columns = columns_.size();
   write_column_table(dir + "/series_columns.csv", observers.column_specs());
 }
@@ -68,6 +74,10 @@ double RunOutputs::seconds_since(std::chrono::steady_clock::time_point t) const 
 }
 
 void RunOutputs::write_frame(double t) {
+  if (!needs_particle_fields(model_.settings.output.fields)) {  // (none chosen: not computed)
+    vtk_->write_frame(t, model_.particles, model_.rods, model_.meshes, nullptr);
+    return;
+  }
   const ParticleFields fields = particle_fields(model_.particles, model_.rods, model_.periodic, &sim_.contacts());
   vtk_->write_frame(t, model_.particles, model_.rods, model_.meshes, &fields);
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/case_effective.h"
+#include "io/atomic_file.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
@@ -133,15 +134,14 @@ void write_disorder_attributes(H5File& f, const Derived& d) {
   f.write_attribute("position_jitter", d.position_jitter);
 }
 
-void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra) {
+void write_results_h5(const std::string& path, const Simulation& sim, const std::vector<std::string>& fields,
+                      const std::function<void(H5File&)>& extra) {
   const auto& p = sim.world().particles;
   const auto& r = sim.world().rods;
   const std::string tmp = path + ".part";
   {
     H5File f(tmp, H5File::Mode::Create);
     const std::size_t n = p.size(), m = r.size();
-    std::vector<Vec3> disp(n);
-    for (std::size_t i = 0; i < n; ++i) disp[i] = p.position[i] - p.initial_position[i];
     // Each dataset with its unit and meaning (docs/outputs.md has the full definitions).
     auto put = [&f](const std::string& name, const auto* data, std::size_t rows, std::size_t cols, const char* unit,
                     const char* what) {
@@ -149,20 +149,31 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
       f.describe(name, unit, what);
     };
     put("/particles/position", n ? p.position[0].data() : nullptr, n, 3, "m", "particle centre at the end");
-    put("/particles/velocity", n ? p.velocity[0].data() : nullptr, n, 3, "m/s", "particle velocity at the end");
-    put("/particles/displacement", n ? disp[0].data() : nullptr, n, 3, "m", "position minus initial position");
+    if (has_field(fields, "velocity"))
+      put("/particles/velocity", n ? p.velocity[0].data() : nullptr, n, 3, "m/s", "particle velocity at the end");
+    if (has_field(fields, "displacement")) {
+      std::vector<Vec3> disp(n);
+      for (std::size_t i = 0; i < n; ++i) disp[i] = p.position[i] - p.initial_position[i];
+      put("/particles/displacement", n ? disp[0].data() : nullptr, n, 3, "m", "position minus initial position");
+    }
     put("/particles/radius", p.radius.data(), n, 1, "m", "particle radius");
     put("/particles/mass", p.mass.data(), n, 1, "kg", "particle mass");
     put("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n, 1, "1",
         "damage: broken rods over the particle's rods at the start");
-    const ParticleFields fields = particle_fields(p, r, sim.world().periodic, &sim.contacts());
-    put("/particles/stress", n ? fields.stress[0].data() : nullptr, n, 6, "Pa",
-        "virial stress of rods and contacts over 4 sqrt(2) R^3: xx, yy, zz, xy, yz, xz; positive in tension");
-    put("/particles/von_mises_stress", fields.von_mises.data(), n, 1, "Pa", "von Mises stress sqrt(3/2 s:s)");
-    put("/particles/hydrostatic_stress", fields.hydrostatic.data(), n, 1, "Pa",
-        "trace of the stress over 3, positive in tension (pressure = -this)");
-    put("/particles/plastic_strain", fields.plastic_strain.data(), n, 1, "1",
-        "von Mises equivalent of the plastic strain tensor fitted to the particle's intact rods");
+    if (needs_particle_fields(fields)) {
+      const ParticleFields pf = particle_fields(p, r, sim.world().periodic, &sim.contacts());
+      if (has_field(fields, "stress"))
+        put("/particles/stress", n ? pf.stress[0].data() : nullptr, n, 6, "Pa",
+            "virial stress of rods and contacts over 4 sqrt(2) R^3: xx, yy, zz, xy, yz, xz; positive in tension");
+      if (has_field(fields, "von_mises_stress"))
+        put("/particles/von_mises_stress", pf.von_mises.data(), n, 1, "Pa", "von Mises stress sqrt(3/2 s:s)");
+      if (has_field(fields, "hydrostatic_stress"))
+        put("/particles/hydrostatic_stress", pf.hydrostatic.data(), n, 1, "Pa",
+            "trace of the stress over 3, positive in tension (pressure = -this)");
+      if (has_field(fields, "plastic_strain"))
+        put("/particles/plastic_strain", pf.plastic_strain.data(), n, 1, "1",
+            "von Mises equivalent of the plastic strain tensor fitted to the particle's intact rods");
+    }
     if (sim.settings().sphere_orientations) {
       put("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4, "1",
           "unit quaternion [q0 (scalar), q1, q2, q3], body to world");
@@ -196,7 +207,7 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     if (extra) extra(f);
     f.close();  // (a failed close throws: the .part file is never renamed into place)
   }
-  std::filesystem::rename(tmp, path);
+  commit_file(tmp, path);
 }
 
 }  // namespace swarf

@@ -31,7 +31,9 @@ nlohmann::json summary_head(const Model& model, const Simulation& sim, const std
 void write_disorder_attributes(H5File& f, const Derived& d);
 
 /// Writes the final state (particles with their broken-rod fraction, rods with plastic state)
-/// atomically; 'extra' may add datasets (the cut's setup) before the file is closed.
-void write_results_h5(const std::string& path, const Simulation& sim, const std::function<void(H5File&)>& extra = {});
+/// atomically; 'fields' are the per-particle fields chosen (output.fields; broken_fraction is
+/// written always); 'extra' may add datasets (the cut's setup) before the file is closed.
+void write_results_h5(const std::string& path, const Simulation& sim, const std::vector<std::string>& fields,
+                      const std::function<void(H5File&)>& extra = {});
 
 }  // namespace swarf

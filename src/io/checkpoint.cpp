@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "io/atomic_file.h"
 #include "io/h5file.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
@@ -197,7 +198,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const RunR
     if (run_state) run_state(run_part);
     f.close();  // (flushed, or an error: a failed checkpoint never replaces the last good one)
   }
-  std::filesystem::rename(tmp, path);
+  commit_file(tmp, path);
 }
 
 CheckpointCase read_checkpoint_case(const std::string& path) {

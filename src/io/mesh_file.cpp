@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "io/atomic_file.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
@@ -229,7 +230,7 @@ void write_stl(const std::string& path, const TriangleMesh& m) {
     out.close();  // (the last buffer is written here: a full disk shows now)
     if (!out) throw OutputError("write to '" + tmp + "' failed (disk full?)");
   }
-  std::filesystem::rename(tmp, path);
+  commit_file(tmp, path);
 }
 
 }  // namespace swarf

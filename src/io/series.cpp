@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "io/atomic_file.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -41,7 +42,7 @@ void SeriesWriter::finish() {
     throw OutputError("writing '" + path_ + ".part' failed (disk full?)");
   }
   f_ = nullptr;
-  std::filesystem::rename(path_ + ".part", path_);
+  commit_file(path_ + ".part", path_);
 }
 
 }  // namespace swarf

@@ -18,6 +18,7 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 
@@ -86,7 +87,7 @@ void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   w->SetCompressorTypeToZLib();
   w->SetCompressionLevel(1);
   if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
-  std::filesystem::rename(tmp, path);
+  commit_file(tmp, path);
 }
 
 }  // namespace
@@ -108,7 +109,7 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh) {
   w->SetFileName(tmp.c_str());
   w->SetInputData(poly);
   if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
-  std::filesystem::rename(tmp, path);
+  commit_file(tmp, path);
 }
 
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r) {
@@ -134,8 +135,18 @@ std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods&
   return out;
 }
 
-VtkSeries::VtkSeries(const std::string& dir, bool with_rods, bool with_orientations)
-    : dir_(dir), with_rods_(with_rods), with_orientations_(with_orientations) {
+bool has_field(const std::vector<std::string>& fields, std::string_view name) {
+  return std::find(fields.begin(), fields.end(), name) != fields.end();
+}
+
+bool needs_particle_fields(const std::vector<std::string>& fields) {
+  for (const char* f : {"stress", "von_mises_stress", "hydrostatic_stress", "plastic_strain"})
+    if (has_field(fields, f)) return true;
+  return false;
+}
+
+VtkSeries::VtkSeries(const std::string& dir, bool with_rods, bool with_orientations, std::vector<std::string> fields)
+    : dir_(dir), with_rods_(with_rods), with_orientations_(with_orientations), fields_(std::move(fields)) {
   std::filesystem::create_directories(std::filesystem::path(dir) / "frames");
 }
 
@@ -156,25 +167,33 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     std::vector<vtkIdType> conn(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) conn[i] = static_cast<vtkIdType>(i);
     set_cells(grid, VTK_VERTEX, 1, conn);
-    std::vector<Vec3> disp(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) disp[i] = p.position[i] - p.initial_position[i];
-    grid->GetPointData()->AddArray(vector_array("velocity", p.velocity, "m/s"));
-    grid->GetPointData()->AddArray(vector_array("displacement", disp, "m"));
+    auto add = [&](const char* name, auto make) {
+      if (has_field(fields_, name)) grid->GetPointData()->AddArray(make());
+    };
+    add("velocity", [&] { return vector_array("velocity", p.velocity, "m/s"); });
+    add("displacement", [&] {
+      std::vector<Vec3> disp(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) disp[i] = p.position[i] - p.initial_position[i];
+      return vector_array("displacement", disp, "m");
+    });
     grid->GetPointData()->AddArray(scalar_array("radius", p.radius, "m"));
-    grid->GetPointData()->AddArray(scalar_array("broken_fraction", broken_fraction_per_particle(p, r), "1"));
+    add("broken_fraction", [&] { return scalar_array("broken_fraction", broken_fraction_per_particle(p, r), "1"); });
     if (fields) {
-      // 6 components in ParaView's order for a symmetric tensor (XX, YY, ZZ, XY, YZ, XZ).
-      vtkNew<vtkDoubleArray> s;
-      s->SetName("stress");
-      set_unit(s, "Pa");
-      s->SetNumberOfComponents(6);
-      for (int c = 0; c < 6; ++c) s->SetComponentName(c, std::array{"XX", "YY", "ZZ", "XY", "YZ", "XZ"}[c]);
-      s->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
-      for (std::size_t i = 0; i < p.size(); ++i) s->SetTypedTuple(static_cast<vtkIdType>(i), fields->stress[i].data());
-      grid->GetPointData()->AddArray(s);
-      grid->GetPointData()->AddArray(scalar_array("von_mises_stress", fields->von_mises, "Pa"));
-      grid->GetPointData()->AddArray(scalar_array("hydrostatic_stress", fields->hydrostatic, "Pa"));
-      grid->GetPointData()->AddArray(scalar_array("plastic_strain", fields->plastic_strain, "1"));
+      add("stress", [&] {
+        // 6 components in ParaView's order for a symmetric tensor (XX, YY, ZZ, XY, YZ, XZ).
+        vtkNew<vtkDoubleArray> s;
+        s->SetName("stress");
+        set_unit(s, "Pa");
+        s->SetNumberOfComponents(6);
+        for (int c = 0; c < 6; ++c) s->SetComponentName(c, std::array{"XX", "YY", "ZZ", "XY", "YZ", "XZ"}[c]);
+        s->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
+        for (std::size_t i = 0; i < p.size(); ++i)
+          s->SetTypedTuple(static_cast<vtkIdType>(i), fields->stress[i].data());
+        return s;
+      });
+      add("von_mises_stress", [&] { return scalar_array("von_mises_stress", fields->von_mises, "Pa"); });
+      add("hydrostatic_stress", [&] { return scalar_array("hydrostatic_stress", fields->hydrostatic, "Pa"); });
+      add("plastic_strain", [&] { return scalar_array("plastic_strain", fields->plastic_strain, "1"); });
     }
     if (with_orientations_) {
       vtkNew<vtkDoubleArray> q;

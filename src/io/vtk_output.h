@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "swarf/contacts/contacts.h"
@@ -20,14 +21,23 @@
 
 namespace swarf {
 
+/// Whether 'fields' (the names of output.fields) holds 'name'.
+bool has_field(const std::vector<std::string>& fields, std::string_view name);
+/// Whether 'fields' holds one of the fields computed by particle_fields() (stress, von Mises and
+/// hydrostatic stress, plastic strain).
+bool needs_particle_fields(const std::vector<std::string>& fields);
+
 class VtkSeries {
  public:
   /// 'with_orientations': the particles' orientations and angular velocities as point data.
-  VtkSeries(const std::string& dir, bool with_rods, bool with_orientations = false);
+  /// 'fields': the point arrays written besides the radius and the group, by name (output.fields:
+  /// velocity, displacement, broken_fraction, stress, von_mises_stress, hydrostatic_stress,
+  /// plastic_strain).
+  VtkSeries(const std::string& dir, bool with_rods, bool with_orientations, std::vector<std::string> fields);
   /// Writes frame number 'frames()' at simulated time t (s): particles, rods and each mesh at
   /// its current placement (reference vertices + offset).
   /// 'fields' (may be null): the per-particle stress, von Mises and hydrostatic stress and
-  /// plastic strain (measure/particle_fields.h) as point arrays.
+  /// plastic strain (measure/particle_fields.h), written as point arrays if chosen.
   void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {},
                    const ParticleFields* fields = nullptr);
   std::size_t frames() const { return times_.size(); }
@@ -45,6 +55,7 @@ class VtkSeries {
   std::string dir_;
   bool with_rods_;
   bool with_orientations_;
+  std::vector<std::string> fields_;
   std::vector<double> times_;
   std::vector<std::string> mesh_names_;
   std::vector<std::pair<std::string, std::string>> final_parts_;

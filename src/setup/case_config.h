@@ -170,6 +170,12 @@ struct UniaxialSettings {
   double strain_rate = 10.0;             ///< |d strain/dt| of the grips, 1/s
 };
 
+/// The per-particle fields of the ParaView frames and results.h5 that output.fields chooses
+/// from (docs/outputs.md); the positions, radii and groups are always written.
+inline const std::vector<std::string> kParticleFieldNames{"velocity",      "displacement",     "broken_fraction",
+                                                          "stress",        "von_mises_stress", "hydrostatic_stress",
+                                                          "plastic_strain"};
+
 /// [output]
 struct OutputSettings {
   double frame_interval = 0.0;   ///< ParaView frame interval, s; 0 = first and last state only
@@ -182,6 +188,7 @@ struct OutputSettings {
   int checkpoint_every = 0;      ///< write DIR/checkpoint.h5 every this many steps; 0 = never
   bool checkpoint_at_end = false;  ///< also write DIR/checkpoint.h5 after the last step (to extend the run)
   bool orientations = false;       ///< integrate the spheres' orientations and write them and the angular velocities
+  std::vector<std::string> fields = kParticleFieldNames;  ///< per-particle fields written (frames, results.h5)
 };
 
 /// [contact]: Hertz contacts with friction between unbonded particles and with meshes.

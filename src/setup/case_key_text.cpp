@@ -46,6 +46,7 @@ std::string type_name(const std::array<int, 3>&) { return "int[3]"; }
 std::string type_name(const std::array<int, 2>&) { return "int[2]"; }
 std::string type_name(const std::vector<double>&) { return "float[]"; }
 std::string type_name(const std::vector<std::array<double, 3>>&) { return "array of float[3]"; }
+std::string type_name(const std::vector<std::string>&) { return "string[]"; }
 
 template <class Seq, class F>
 std::string list(const Seq& values, F&& format) {
@@ -72,6 +73,9 @@ std::string value_text(const std::vector<double>& v) {
 std::string value_text(const std::vector<std::array<double, 3>>& v) {
   return list(v, [](const std::array<double, 3>& x) { return value_text(x); });
 }
+std::string value_text(const std::vector<std::string>& v) {
+  return "`" + list(v, [](const std::string& x) { return "\"" + x + "\""; }) + "`";
+}
 
 // What the type and range checks admit, before the hand-checked rule.
 template <class S>
@@ -91,6 +95,10 @@ std::string checked_text(const Key<S>& k, const std::string&) {
   std::string out;
   for (const auto& c : k.choices) out += (out.empty() ? "`\"" : ", `\"") + std::string(c) + "\"`";
   return out;
+}
+template <class S>
+std::string checked_text(const Key<S>& k, const std::vector<std::string>&) {
+  return "each one of " + checked_text(k, std::string());
 }
 template <class S>
 std::string checked_text(const Key<S>& k, const std::array<int, 3>&) {

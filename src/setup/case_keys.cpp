@@ -870,8 +870,9 @@ const std::vector<Key<OutputSettings>>& output_keys() {
       {.name = "plots",
        .field = &S::plots,
        .doc = "Write PNG plots at the end. This needs `python3` with matplotlib. In "
-              "[cutting runs](outputs.md#cutting-runs) it also renders the picture `chip.png` from the last frame "
-              "(needs VTK's Python module and `vtk = true`). If plotting or rendering fails, you get a warning and "
+              "[cutting runs](outputs.md#cutting-runs) it also renders the pictures `chip.png`, "
+              "`chip_plastic_strain.png` and `chip_von_mises_stress.png` from the last frame (needs VTK's Python "
+              "module and `vtk = true`). If plotting or rendering fails, you get a warning and "
               "the run still completes."},
       {.name = "progress", .field = &S::progress, .doc = "Print the progress line on stderr."},
       {.name = "steady_from",
@@ -903,6 +904,15 @@ const std::vector<Key<OutputSettings>>& output_keys() {
               "nothing in a sphere's dynamics depends on it (isotropic inertia, central rods and normal forces), "
               "so it is not integrated, as LAMMPS's sphere atoms have none. Angular velocities are integrated "
               "either way."},
+      {.name = "fields",
+       .field = &S::fields,
+       .default_note = "all",
+       .choices = std::vector<std::string_view>(kParticleFieldNames.begin(), kParticleFieldNames.end()),
+       .doc = "The per-particle fields written to the ParaView frames and to `results.h5` "
+              "([outputs.md](outputs.md#choosing-the-fields-outputfields)); `[]` writes none. The positions, radii "
+              "and groups are always written, and `results.h5` always holds `broken_fraction` (`swarf post` "
+              "reads it). Fewer fields make smaller frames, and without `stress`, `von_mises_stress`, "
+              "`hydrostatic_stress` and `plastic_strain` the frames skip computing them."},
   };
   return keys;
 }

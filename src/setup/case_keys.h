@@ -57,7 +57,7 @@ inline constexpr Range kDensity{1e-3, 1e6, false, false, "a positive density, 1e
 template <class S>
 using Field = std::variant<double S::*, int S::*, bool S::*, std::string S::*, std::array<double, 3> S::*,
                            std::array<int, 3> S::*, std::array<int, 2> S::*, std::vector<double> S::*,
-                           std::vector<std::array<double, 3>> S::*>;
+                           std::vector<std::array<double, 3>> S::*, std::vector<std::string> S::*>;
 
 /// One key of a table whose settings struct is S. The members are in the order of the docs'
 /// columns, so that entries written with designated initialisers read like a table row.
@@ -65,13 +65,14 @@ template <class S>
 struct Key {
   std::string_view name = {};
   Field<S> field = {};
-  std::string_view unit = {};                  ///< SI unit of the value; "1" dimensionless; "" for text and bool
-  bool no_default = false;                     ///< the member's initial value only means "not given"
-  std::string_view default_note = {};          ///< docs: follows the default, or replaces it when no_default
-  Range range = {};                            ///< numbers (each entry of a number array) and integers
-  std::vector<std::string_view> choices = {};  ///< strings: the accepted values; empty = any text
-  std::string_view rule = {};                  ///< docs: the conditions that the reader checks by hand
-  std::string_view doc = {};                   ///< docs: the meaning, one line
+  std::string_view unit = {};          ///< SI unit of the value; "1" dimensionless; "" for text and bool
+  bool no_default = false;             ///< the member's initial value only means "not given"
+  std::string_view default_note = {};  ///< docs: follows the default, or replaces it when no_default
+  Range range = {};                    ///< numbers (each entry of a number array) and integers
+  std::vector<std::string_view> choices =
+      {};                         ///< strings (and each of a string list): the accepted values; empty = any text
+  std::string_view rule = {};     ///< docs: the conditions that the reader checks by hand
+  std::string_view doc = {};      ///< docs: the meaning, one line
   std::string_view section = {};  ///< docs: the sub-table it is listed in ("newmark"); empty = the main one
 };
 
@@ -98,7 +99,7 @@ struct KeyRow {
   std::string section;  ///< sub-table of the docs, or empty
   std::string name;
   std::string type;  ///< "float", "int", "bool", "string", "float[3]", "int[3]", "int[2]", "float[]",
-                     ///< "array of float[3]"
+                     ///< "array of float[3]", "string[]"
   std::string unit;
   std::string default_value;  ///< markdown
   std::string allowed;        ///< markdown: range or choices, then the hand-checked rule

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -102,21 +103,50 @@ void TableReader::boolean(std::string_view key, bool& v) const {
   v = b->get();
 }
 
+namespace {
+
+// "\"a\", \"b\", \"c\"": the accepted values, for a message.
+std::string choice_list(const std::vector<std::string_view>& choices) {
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+  return list;
+}
+
+bool is_choice(const std::vector<std::string_view>& choices, const std::string& s) {
+  if (choices.empty()) return true;
+  for (const auto& c : choices)
+    if (c == s) return true;
+  return false;
+}
+
+}  // namespace
+
 void TableReader::string(std::string_view key, const std::vector<std::string_view>& choices, std::string& v) const {
   const toml::node* n = get(key);
   if (!n) return;
   auto s = n->as_string();
   if (!s) fail(key, n, "must be a string");
-  if (!choices.empty()) {
-    bool ok = false;
-    for (const auto& c : choices) ok = ok || c == s->get();
-    if (!ok) {
-      std::string list;
-      for (const auto& c : choices) list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
-      fail(key, n, "must be one of " + list);
-    }
-  }
+  if (!is_choice(choices, s->get())) fail(key, n, "must be one of " + choice_list(choices));
   v = s->get();
+}
+
+void TableReader::strings(std::string_view key, const std::vector<std::string_view>& choices,
+                          std::vector<std::string>& v) const {
+  const toml::node* n = get(key);
+  if (!n) return;
+  auto a = n->as_array();
+  if (!a) fail(key, n, "must be an array of strings, e.g. [" + choice_list(choices) + "]");
+  std::vector<std::string> out;
+  for (const auto& e : *a) {
+    auto s = e.as_string();
+    if (!s) fail(key, n, "every entry must be a string in quotes");
+    if (!is_choice(choices, s->get()))
+      fail(key, n, fmt::format("\"{}\" is not one of the accepted values {}", s->get(), choice_list(choices)));
+    if (std::find(out.begin(), out.end(), s->get()) != out.end())
+      fail(key, n, fmt::format("\"{}\" is given twice", s->get()));
+    out.push_back(s->get());
+  }
+  v = std::move(out);
 }
 
 void TableReader::numbers(std::string_view key, std::vector<double>& v) const {

@@ -87,6 +87,10 @@ class TableReader {
   void read_value(const Key<S>& k, std::vector<std::array<double, 3>>& v) {
     triples(k.name, k.unit, v);
   }
+  template <class S>
+  void read_value(const Key<S>& k, std::vector<std::string>& v) {
+    strings(k.name, k.choices, v);
+  }
 
   void number(std::string_view key, const Range& range, double& v) const;
   void integer(std::string_view key, const Range& range, int& v) const;
@@ -97,6 +101,8 @@ class TableReader {
   void ivec3(std::string_view key, const Range& range, std::array<int, 3>& v) const;
   void ivec2(std::string_view key, const Range& range, std::array<int, 2>& v) const;
   void triples(std::string_view key, std::string_view unit, std::vector<std::array<double, 3>>& v) const;
+  /// An array of strings, each one of 'choices' (when not empty) and none twice.
+  void strings(std::string_view key, const std::vector<std::string_view>& choices, std::vector<std::string>& v) const;
 
   std::string where(const std::string& full, const toml::node* n) const;
   void check_known(std::string_view key) const;

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "io/atomic_file.h"
+#include "postprocess/script_dir.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 
@@ -396,8 +397,7 @@ std::string draw_plots(const Study& study, const StudyTable& table, const std::s
   }
   write_text_atomic((dir / "plots.json").string(), j.dump(1) + "\n");
   if (series.empty()) return "nothing to plot (no numeric varied key with completed cases)";
-  std::string script = std::string(SWARF_POSTPROCESS_DIR) + "/study_plots.py";
-  if (const char* env = std::getenv("SWARF_POSTPROCESS_DIR")) script = std::string(env) + "/study_plots.py";
+  const std::string script = postprocess_path("study_plots.py");
   if (!fs::exists(script)) return "plot script not found: " + script;
   const std::string py = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "/usr/bin/env";
   std::vector<std::string> argv{py};

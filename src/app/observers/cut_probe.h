@@ -28,6 +28,8 @@ class CutProbe final : public Observer {
   void row(const Simulation& sim, std::vector<double>& values) override;
   void write_results(H5File& f) const override;
   void finish(const RunEnd& end, nlohmann::json& summary) override;
+  /// The cut's setup at the start of the run (the tip where the tool starts).
+  const CutSetup& setup() const { return setup_; }
 
  private:
   /// The tool's sharp tip now (m): it moves with the tool's mesh.
