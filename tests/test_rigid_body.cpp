@@ -248,6 +248,35 @@ TEST(Hinge, AWheelUnderATorqueAndADamperReachesTOverC) {
   }
 }
 
+TEST(Constraints, AFixedPointHoldsAndAPrescribedSpinKeepsItsRate) {
+  // fixed = xyz under gravity and a force: the centre stays where it is, bit for bit, while the
+  // body tumbles under a torque. rotation = prescribed: omega stays, the turn is omega t (to
+  // rounding of the angle's sum over the steps).
+  for (const bool implicit : {false, true}) {
+    World world = free_body_world(Vec3(1e-3, 2e-3, 3.5e-3), Vec3::Zero(), Vec3(2.0, 3.0, -1.0));
+    world.gravity = Vec3(0, 0, -9.81);
+    world.bodies[0].fixed = 7;
+    world.bodies[0].load.force = Vec3(1, 2, 3);
+    world.bodies[0].load.torque = Vec3(1e-3, 0, 0);
+    World spin = free_body_world(Vec3(1e-3, 2e-3, 3.5e-3), Vec3::Zero(), Vec3(0.0, 0.0, 5.0));
+    spin.bodies[0].rotation = BodyRotation::Prescribed;
+    spin.bodies[0].load.torque = Vec3(1.0, 2.0, 3.0);  // (no effect on a prescribed rotation)
+    const Vec3 x0 = world.bodies[0].state.position;
+    const Quat q0 = spin.bodies[0].state.orientation;
+    Simulation a(world, implicit ? newmark(1e-3) : verlet(1e-3)), b(spin, implicit ? newmark(1e-3) : verlet(1e-3));
+    for (int k = 0; k < 100; ++k) {
+      a.step();
+      b.step();
+    }
+    EXPECT_EQ(world.bodies[0].state.position, x0);
+    EXPECT_GT((world.bodies[0].state.omega - Vec3(2.0, 3.0, -1.0)).norm(), 1e-3);  // it does turn
+    EXPECT_EQ(spin.bodies[0].state.omega, Vec3(0.0, 0.0, 5.0));
+    // q = rot(z, 5 t) q0 after t = 0.1 s.
+    const Quat want = qmul(Quat(std::cos(0.25), 0.0, 0.0, std::sin(0.25)), q0);
+    EXPECT_NEAR((spin.bodies[0].state.orientation - want).norm(), 0.0, 1e-13) << implicit;
+  }
+}
+
 // ---- spheres against a body ---------------------------------------------------------------
 
 // Eight spheres fly at a free box (no gravity) and hit it off its centre, with friction: the
