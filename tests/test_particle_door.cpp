@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "memory_archive.h"
 #include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
@@ -147,37 +148,7 @@ TEST(ParticleDoor, AnAppendedParticleFallsFreelyAndLeavesTheOthersUntouched) {
 // The state visit carries the World's variable part: a checkpoint taken after a removal loads
 // into a Simulation built from the case (the full, original particle set) and continues as the
 // one it was taken from, bit for bit (same state hash after more steps).
-class MemoryArchive final : public StateArchive {
- public:
-  bool loading() const override { return loading_; }
-  void set_loading(bool l) { loading_ = l; }
-  void array(std::string_view n, std::vector<double>& v, std::size_t) override { io(d_[std::string(n)], v); }
-  void array(std::string_view n, std::vector<Vec3>& v, std::size_t) override { io(v3_[std::string(n)], v); }
-  void array(std::string_view n, std::vector<Quat>& v, std::size_t) override { io(q_[std::string(n)], v); }
-  void array(std::string_view n, std::vector<std::uint8_t>& v, std::size_t) override { io(u8_[std::string(n)], v); }
-  void array(std::string_view n, std::vector<std::int32_t>& v, std::size_t) override { io(i32_[std::string(n)], v); }
-  void array(std::string_view n, std::vector<std::int64_t>& v, std::size_t) override { io(i64_[std::string(n)], v); }
-  void scalar(std::string_view n, double& v) override { io(sd_[std::string(n)], v); }
-  void scalar(std::string_view n, std::int64_t& v) override { io(si_[std::string(n)], v); }
-
- private:
-  template <class T>
-  void io(T& stored, T& v) {
-    if (loading_)
-      v = stored;
-    else
-      stored = v;
-  }
-  bool loading_ = false;
-  std::map<std::string, std::vector<double>> d_;
-  std::map<std::string, std::vector<Vec3>> v3_;
-  std::map<std::string, std::vector<Quat>> q_;
-  std::map<std::string, std::vector<std::uint8_t>> u8_;
-  std::map<std::string, std::vector<std::int32_t>> i32_;
-  std::map<std::string, std::vector<std::int64_t>> i64_;
-  std::map<std::string, double> sd_;
-  std::map<std::string, std::int64_t> si_;
-};
+using test::MemoryArchive;
 
 TEST(ParticleDoor, AStateSavedAfterARemovalLoadsIntoAFreshWorldAndContinuesBitIdentically) {
   test::TempDir dir("door_gas");

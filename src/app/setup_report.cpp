@@ -31,6 +31,13 @@ void print_setup(const Model& m, int threads) {
   }
   say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
   for (const auto& g : m.groups) say("  group '{}': {} particles\n", g.name, g.members.size());
+  for (const RigidBody& rb : m.bodies) {
+    const Vec3& c = rb.state.position;
+    say("  rigid body '{}': mass {:.4g} kg, centre of mass ({:.4g}, {:.4g}, {:.4g}) m, principal inertia ({:.4g}, "
+        "{:.4g}, {:.4g}) kg m^2{}\n",
+        m.meshes[rb.mesh].name, rb.mass, c[0], c[1], c[2], rb.inertia[0], rb.inertia[1], rb.inertia[2],
+        rb.rotation == BodyRotation::Hinge ? fmt::format(", {:.4g} kg m^2 about the hinge", rb.axis_inertia()) : "");
+  }
   if (d.membrane)
     say("  radius R = {:.4g} m, site spacing d = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.nn_distance,
         d.particle_mass);

@@ -156,7 +156,7 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
   mesh_names_.clear();
   for (const auto& mb : meshes) {
     TriangleMesh placed = mb.mesh;
-    for (auto& v : placed.vertices) v += mb.offset;
+    for (std::size_t v = 0; v < placed.vertices.size(); ++v) placed.vertices[v] = mb.vertex(static_cast<int>(v));
     write_vtp(fmt::format("{}/frames/mesh_{}_{:05d}.vtp", dir_, mb.name, k), placed);
     mesh_names_.push_back(mb.name);
   }

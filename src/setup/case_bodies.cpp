@@ -102,6 +102,38 @@ const toml::array* entries(const CaseInput& in, const char* name) {
   return arr;
 }
 
+// dynamics = "rigid_body": its keys only there, and the rules between them.
+void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
+  const bool body = m.dynamics == "rigid_body";
+  for (const char* key : {"density", "mass", "initial_velocity", "angular_velocity", "rotation", "hinge_axis", "fixed",
+                          "force", "torque", "damping", "torque_damping"})
+    if (!body && r.has(key)) r.fail(key, r.get(key), "is a rigid body's key: it needs dynamics = \"rigid_body\"");
+  if (!body) return;
+  if (open_shape)
+    r.fail("dynamics", r.get("dynamics"),
+           "a rigid body needs a closed mesh: file, box_size or cylinder_radius (a rectangle or a tool is open)");
+  if (r.has("motion")) r.fail("motion", r.get("motion"), "a rigid body moves by its dynamics, not by a motion");
+  if (r.has("density") == r.has("mass")) r.fail("density", r.get("density"), "give density (kg/m^3) or mass (kg)");
+  if (r.has("hinge_axis") && m.rotation != "hinge")
+    r.fail("hinge_axis", r.get("hinge_axis"), "is used only with rotation = \"hinge\"");
+  const auto& e = m.hinge_axis;
+  const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+  if (!(e2 > 0.0)) r.fail("hinge_axis", r.get("hinge_axis"), "must not be zero");
+  if (m.rotation == "hinge") {
+    const auto& w = m.angular_velocity;
+    const double wx = w[1] * e[2] - w[2] * e[1], wy = w[2] * e[0] - w[0] * e[2], wz = w[0] * e[1] - w[1] * e[0];
+    if (!(std::sqrt(wx * wx + wy * wy + wz * wz) <=
+          1e-12 * std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * std::sqrt(e2)))
+      r.fail("angular_velocity", r.get("angular_velocity"), "must lie along hinge_axis with rotation = \"hinge\"");
+  }
+  std::string seen;
+  for (char c : m.fixed)
+    if ((c != 'x' && c != 'y' && c != 'z') || seen.find(c) != std::string::npos)
+      r.fail("fixed", r.get("fixed"), "use the letters x, y and z, each at most once (\"xyz\", \"z\", ...)");
+    else
+      seen += c;
+}
+
 void check_mesh(const TableReader& r, const std::string& directory, MeshSettings& m) {
   if (static_cast<double>(m.divisions[0]) * m.divisions[1] > 1e7)
     r.fail("divisions", r.get("divisions"), "must be two positive integers [n1, n2]");
@@ -112,12 +144,25 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
     r.fail("rake_angle", r.get("rake_angle"), "a tool needs width (m) and face_length (m) too");
   check_motion(r, directory, m.motion);
   const bool rect = r.has("edge1") || r.has("edge2") || r.has("divisions");
-  if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) > 1)
-    r.fail("file", r.get("file") ? r.get("file") : r.get("rake_angle"),
-           "give one of: file, a rectangle (edge1, edge2, divisions) or a tool (rake_angle, ...)");
-  if (m.file.empty() && !m.tool && !(r.has("edge1") && r.has("edge2")))
+  const bool box = r.has("box_size"), cyl = r.has("cylinder_radius");
+  for (const char* key : {"cylinder_length", "cylinder_axis", "cylinder_segments"})
+    if (!cyl && r.has(key)) r.fail(key, r.get(key), "is a cylinder key: give cylinder_radius (m) to make a cylinder");
+  if (cyl && !r.has("cylinder_length"))
+    r.fail("cylinder_radius", r.get("cylinder_radius"), "needs cylinder_length (m)");
+  if (cyl && !(m.cylinder_axis[0] != 0.0 || m.cylinder_axis[1] != 0.0 || m.cylinder_axis[2] != 0.0))
+    r.fail("cylinder_axis", r.get("cylinder_axis"), "must not be zero");
+  if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) + (box ? 1 : 0) + (cyl ? 1 : 0) > 1)
+    r.fail("file",
+           r.get("file")         ? r.get("file")
+           : r.get("rake_angle") ? r.get("rake_angle")
+                                 : r.get("box_size"),
+           "give one of: file, a rectangle (edge1, edge2, divisions), a tool (rake_angle, ...), box_size or "
+           "cylinder_radius");
+  if (m.file.empty() && !m.tool && !box && !cyl && !(r.has("edge1") && r.has("edge2")))
     r.fail("file", nullptr,
-           "a mesh needs file = \"...stl|obj\", a rectangle (origin, edge1, edge2 in m) or a tool (rake_angle, ...)");
+           "a mesh needs file = \"...stl|obj\", a rectangle (origin, edge1, edge2 in m), a tool (rake_angle, ...), "
+           "box_size or cylinder_radius");
+  check_body(r, m, rect || m.tool);
   if (!m.file.empty() && r.has("origin"))
     r.fail("origin", r.get("origin"),
            "places a rectangle or a generated tool; a mesh file is used where its coordinates (times scale) put it");
@@ -126,7 +171,7 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
     if (!std::filesystem::exists(m.file)) r.fail("file", r.get("file"), "file not found: " + m.file);
     if (std::filesystem::is_directory(m.file))
       r.fail("file", r.get("file"), "is a directory, not a mesh file: " + m.file);
-  } else if (!m.tool) {  // a tool's angles and sizes are checked by its generator, which names them
+  } else if (!m.tool && !box && !cyl) {  // a tool's angles and sizes are checked by its generator, which names them
     const auto& e1 = m.edge1;
     const auto& e2 = m.edge2;
     const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],

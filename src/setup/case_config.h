@@ -225,6 +225,25 @@ struct MeshSettings {
   double youngs_modulus = kInf;  ///< Pa; inf = rigid
   double poisson_ratio = 0.3;    ///< 1
   double parting_lead = kInf;    ///< parting line at the lowest point: reach ahead of it, m; inf = none
+  // Generated closed shapes, centred on 'origin' (for rigid bodies):
+  std::array<double, 3> box_size{0, 0, 0};       ///< m; all > 0 makes a box
+  double cylinder_radius = 0.0;                  ///< m; > 0 makes a cylinder
+  double cylinder_length = 0.0;                  ///< m
+  std::array<double, 3> cylinder_axis{0, 1, 0};  ///< direction of the cylinder's axis
+  int cylinder_segments = 32;                    ///< flat sides of the faceted round face
+  // dynamics = "rigid_body": the mesh moves as a rigid body (swarf/state/rigid_body.h).
+  std::string dynamics = "prescribed";              ///< "prescribed" or "rigid_body"
+  double density = 0.0;                             ///< kg/m^3 (0: from 'mass')
+  double mass = 0.0;                                ///< kg (0: from 'density')
+  std::array<double, 3> initial_velocity{0, 0, 0};  ///< m/s, of the centre of mass
+  std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s, world frame
+  std::string rotation = "free";                    ///< "free", "hinge" or "prescribed"
+  std::array<double, 3> hinge_axis{0, 1, 0};        ///< hinge direction, world frame
+  std::string fixed;                                ///< translation components held: a subset of "xyz"
+  std::array<double, 3> force{0, 0, 0};             ///< constant external force, N
+  std::array<double, 3> torque{0, 0, 0};            ///< constant external torque, N m
+  double damping = 0.0;                             ///< force -damping v, N s/m
+  double torque_damping = 0.0;                      ///< torque -torque_damping omega, N m s/rad
 };
 
 /// [[particle]]: a single free particle (contact tests, packings written by hand).

@@ -2,6 +2,7 @@
 // the docs) and one row per key with its type, unit, default, allowed values and meaning.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -179,8 +180,12 @@ std::vector<KeyRow> case_key_rows() {
   append(rows, "group", motion_keys());
   append(rows, "uniaxial", uniaxial_keys());
   append(rows, "contact", contact_keys());
-  append(rows, "mesh", mesh_keys());
-  append(rows, "mesh", motion_keys(), "group");
+  std::vector<KeyRow> mesh;
+  append(mesh, "mesh", mesh_keys());
+  append(mesh, "mesh", motion_keys(), "group");
+  // (the mesh's sub-tables, shapes and rigid body, after its main table with the motion keys)
+  std::stable_partition(mesh.begin(), mesh.end(), [](const KeyRow& r) { return r.section.empty(); });
+  rows.insert(rows.end(), mesh.begin(), mesh.end());
   append(rows, "particle", particle_keys());
   append(rows, "particles", particles_file_keys());
   append(rows, "environment", environment_keys());

@@ -13,6 +13,8 @@
 #include "lattice_gen/lattice_file.h"
 #include "lattice_gen/membrane_lattice.h"
 #include "swarf/core/errors.h"
+#include "swarf/geometry/mass_properties.h"
+#include "swarf/geometry/shapes.h"
 #include "swarf/neighbors/neighbor_pairs.h"
 #include "tool_paths/tool_geometry.h"
 
@@ -276,7 +278,45 @@ void build_uniaxial(const CaseSettings& cs, const std::vector<Vec3>& sites, doub
   }
 }
 
-// The [[mesh]] tables: from a file, a generated tool, or a rectangle; with their motions.
+static Vec3 to_vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
+
+// A [[mesh]] with dynamics = "rigid_body": mass properties from its closed mesh, then the
+// keys' initial state, constraints and loads.
+static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std::size_t index,
+                            const TriangleMesh& mesh) {
+  const auto where = [&] { return fmt::format("{}: [[mesh]] '{}'", cs.source, ms.name); };
+  double density = ms.density;
+  if (!(density > 0.0)) {  // from 'mass'
+    const double volume = mass_properties(mesh, 1.0).volume;
+    if (!(volume > 0.0))
+      throw InputError(
+          fmt::format("{}: mass = {} kg: the mesh encloses no positive volume ({:.4g} m^3); it must be "
+                      "closed with its triangles counterclockwise seen from outside",
+                      where(), ms.mass, volume));
+    density = ms.mass / volume;
+  }
+  RigidBody rb;
+  try {
+    rb = rigid_body_of(index, mesh, density);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", where(), e.what()));
+  }
+  rb.state.velocity = to_vec(ms.initial_velocity);
+  rb.state.omega = to_vec(ms.angular_velocity);
+  rb.rotation = ms.rotation == "hinge"        ? BodyRotation::Hinge
+                : ms.rotation == "prescribed" ? BodyRotation::Prescribed
+                                              : BodyRotation::Free;
+  rb.axis = to_vec(ms.hinge_axis).normalized();
+  for (char c : ms.fixed) rb.fixed |= static_cast<std::uint8_t>(1u << (c - 'x'));
+  rb.load.force = to_vec(ms.force);
+  rb.load.torque = to_vec(ms.torque);
+  rb.load.force_damping = ms.damping;
+  rb.load.torque_damping = ms.torque_damping;
+  return rb;
+}
+
+// The [[mesh]] tables: from a file, a generated tool, a rectangle or a closed shape; with
+// their motions, or moved as rigid bodies.
 void build_meshes(const CaseSettings& cs, Model& model) {
   for (const auto& ms : cs.meshes) {
     MeshBody mb;
@@ -299,10 +339,18 @@ void build_meshes(const CaseSettings& cs, Model& model) {
       mb.mesh.name = ms.name;
       const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]);
       for (auto& v : mb.mesh.vertices) v += o;
+    } else if (ms.box_size[0] > 0.0) {
+      mb.mesh = box_mesh(to_vec(ms.origin), to_vec(ms.box_size));
+      mb.mesh.name = ms.name;
+    } else if (ms.cylinder_radius > 0.0) {
+      mb.mesh = cylinder_mesh(to_vec(ms.origin), to_vec(ms.cylinder_axis), ms.cylinder_radius, ms.cylinder_length,
+                              ms.cylinder_segments);
+      mb.mesh.name = ms.name;
     } else {
       mb.mesh = rectangle_mesh(ms);
       mb.mesh.validate(cs.source + " [[mesh]] " + ms.name);
     }
+    if (ms.dynamics == "rigid_body") model.bodies.push_back(rigid_body(cs, ms, model.meshes.size(), mb.mesh));
     mb.youngs_modulus = ms.youngs_modulus;
     mb.poisson_ratio = ms.poisson_ratio;
     mb.parting.lead = ms.parting_lead;

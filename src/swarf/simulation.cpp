@@ -48,6 +48,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   group_mass_.assign(ng, 0.0);
   for (std::size_t g = 0; g < ng; ++g)
     for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
+  setup_bodies();
   if (m_.contacts) {
     contact_force_.assign(m_.particles.size(), Vec3::Zero());
     contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
@@ -57,6 +58,8 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   rod_forces();
   contact_forces(dt_);
   gather();
+  init_body_accelerations();
+  body_power_old_ = body_load_power();
   if (rotations_) set_rotations(true);
   compute_reactions(reaction_);
   broken_ = m_.rods.broken_count();
@@ -73,7 +76,14 @@ double Simulation::contact_power(bool from_kick) const {
   double power = from_kick ? kick_power_ : deterministic_sum(p.size(), [&](std::size_t i) {
     return contact_force_[i].dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
   });
-  for (std::size_t k = 0; k < m_.meshes.size(); ++k) power += mesh_force_[k].dot(m_.meshes[k].velocity);
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    if (mesh_body_[k] >= 0) {  // (a body's: its force and torque, from the same evaluation)
+      const RigidBody& rb = m_.bodies[mesh_body_[k]];
+      power += rb.contact_force.dot(rb.state.velocity) + rb.contact_torque.dot(rb.state.omega);
+    } else {
+      power += mesh_force_[k].dot(m_.meshes[k].velocity);
+    }
+  }
   return power;
 }
 
@@ -152,6 +162,11 @@ void Simulation::step_explicit() {
   const double h = dt_;
   clock_.start();
   if (!prescribe(h)) throw_mesh_too_far(h);
+  if (!m_.bodies.empty() && !drift_bodies(h))
+    throw SimulationError(fmt::format(
+        "a rigid body moves more than integrator.max_step_displacement = {} radii of the smallest particle in "
+        "step {} at t = {:.6g} s (dt = {:.4g} s): lower the step",
+        set_.max_step_displacement, stats_.accepted + 1, time_, h));
   clock_.lap(Stage::Prescribe);
   if (!kick_drift(h)) throw_too_far(h);
   clock_.lap(Stage::Integrate);
@@ -244,6 +259,7 @@ bool Simulation::prescribe(double h) {
   const double limit = mesh_step_limit_;
   bool within = true;
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    if (mesh_body_[k] >= 0) continue;  // (placed from its body's pose)
     const Vec3 u_old = m_.mesh_motion[k].displacement_at(time_), u_new = m_.mesh_motion[k].displacement_at(t_new);
     m_.meshes[k].offset = u_new;
     m_.meshes[k].velocity = (u_new - u_old) / h;
@@ -268,6 +284,7 @@ bool Simulation::prescribe(double h) {
 
 void Simulation::throw_mesh_too_far(double h) const {
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    if (mesh_body_[k] >= 0) continue;
     const Vec3 du = m_.mesh_motion[k].displacement_at(time_ + h) - m_.mesh_motion[k].displacement_at(time_);
     if (du.norm() <= mesh_step_limit_) continue;
     throw SimulationError(fmt::format(
@@ -389,7 +406,8 @@ bool Simulation::place(double h) {
   }
   step_disp2_ = disp2;
   moved2_ = xb ? moved2 : -1.0;
-  return bad == 0;
+  const bool bodies_within = m_.bodies.empty() || place_bodies(h);
+  return bad == 0 && bodies_within;
 }
 
 void Simulation::rod_forces() {
@@ -452,6 +470,7 @@ void Simulation::save_state() {
     f_n_[i] = p.force[i];
     if (rot) rot_n_[i] = RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
   }
+  if (!m_.bodies.empty()) body_n_ = m_.bodies;
   if (set_.solver == Solver::Newton) {
     // The rods' trial fields too: a rejected Newton try then leaves the state hash as it was
     // (the fixed-point solver leaves the failed try's trial values, which no step reads).
@@ -469,6 +488,7 @@ void Simulation::restore_state() {
   p.velocity = v_n_;
   p.acceleration = a_n_;
   p.force = f_n_;
+  if (!m_.bodies.empty()) restore_bodies();
   if (set_.solver == Solver::Newton) {
     auto& r = m_.rods;
     r.trial_shift = nk_.trial_shift;
@@ -506,7 +526,13 @@ double Simulation::kinetic_energy() const {
   const auto& p = m_.particles;
   const bool rot = rotations_;
   return deterministic_sum(p.size(), [&](std::size_t i) { return 0.5 * p.mass[i] * p.velocity[i].squaredNorm(); }) +
-         (rot ? rotational_energy() : 0.0);
+         (rot ? rotational_energy() : 0.0) + body_kinetic_energy();
+}
+
+double Simulation::body_kinetic_energy() const {
+  double e = 0.0;
+  for (const RigidBody& rb : m_.bodies) e += rb.kinetic_energy();
+  return e;
 }
 
 double Simulation::rotational_energy() const {
@@ -530,8 +556,12 @@ double Simulation::potential_energy() const {
   const auto& p = m_.particles;
   const Vec3 g = m_.gravity;
   if (g.squaredNorm() == 0.0) return 0.0;
+  double bodies = 0.0;
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b)
+    bodies -= m_.bodies[b].mass * g.dot(m_.bodies[b].state.position - body_x0_[b]);
   return deterministic_sum(p.size(),
-                           [&](std::size_t i) { return -p.mass[i] * g.dot(p.position[i] - p.initial_position[i]); });
+                           [&](std::size_t i) { return -p.mass[i] * g.dot(p.position[i] - p.initial_position[i]); }) +
+         bodies;
 }
 
 }  // namespace swarf

@@ -2,7 +2,8 @@
 //
 // Both schemes are Newmark's family, x+ = x + dt v + dt^2 ((1/2 - beta) a + beta a+),
 // v+ = v + dt ((1 - gamma) a + gamma a+), and share the stages:
-//   prescribe     group and mesh motions at t + dt (displacements and step velocities)
+//   prescribe     group and mesh motions at t + dt (displacements and step velocities); rigid
+//                 bodies are placed with the particles (simulation_bodies.cpp)
 //   rod_forces    every intact rod evaluated from its COMMITTED state: trial shift, trial
 //                 break flag, force coefficient
 //   contact_forces  Verlet lists updated if needed; every contact evaluated from its
@@ -116,6 +117,8 @@ class Simulation {
   double potential_energy() const;
   /// Force the particles exert on mesh m in the last evaluation of an accepted step, N.
   Vec3 mesh_force(std::size_t m) const { return mesh_force_[m]; }
+  /// Kinetic energy of the rigid bodies, J (part of kinetic_energy()).
+  double body_kinetic_energy() const;
   const ContactSystem& contacts() const { return contacts_; }
   /// Per-stage wall time of the steps taken while enabled (swarf bench --stages).
   StageClock& stage_clock() { return clock_; }
@@ -168,6 +171,18 @@ class Simulation {
   void form_rods();
   void account(double h);
 
+  // Rigid bodies (simulation_bodies.cpp).
+  void setup_bodies();                                       // checks, the mesh -> body map, the meshes placed
+  void place_body_mesh(std::size_t b);                       // body b's mesh from its pose
+  bool advance_bodies(double h, double beta, double gamma);  // from body_n_ and the latest wrench; false if too far
+  bool place_bodies(double h);                               // Newmark placement
+  bool drift_bodies(double h);     // explicit: saves the start, then positions and orientations
+  void kick_bodies(double h);      // explicit: the velocities with the new wrench
+  double body_wrenches();          // the wrench of every body; Newmark: the sweep's change
+  void init_body_accelerations();  // accelerations consistent with the wrench (construction)
+  void restore_bodies();           // a rejected step
+  double body_load_power() const;  // power of the bodies' external loads, W
+
   void update_free_to_rotate();
   void reindex_all(const Reindex& r);  // the door's common part
   void resize_scratch();
@@ -203,6 +218,11 @@ class Simulation {
   std::vector<Vec3> group_v_;        // velocity of the prescribed components in the last step, m/s
   std::vector<double> group_mass_;   // total mass of each group, kg
   std::vector<Vec3> mesh_force_;     // force on each mesh after the last accepted step, N
+  std::vector<int> mesh_body_;       // per mesh: the rigid body that moves it, or -1
+  std::vector<RigidBody> body_n_;    // the bodies at the start of the step
+  std::vector<Vec3> body_x0_;        // the bodies' initial centres (potential energy), m
+  double body_power_old_ = 0;        // power of the bodies' loads at the start of the step, W
+  double sweep_force_level2_ = 0;    // the particles' force level of the last sweep squared, N^2
   std::vector<Vec3> contact_force_;  // contact part of each particle's force, N
   double contact_power_old_ = 0;     // power of the contact forces at the start of the step, W
   double kick_power_ = 0;            // power of the contact forces on the particles after the kick, W

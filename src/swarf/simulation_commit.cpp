@@ -167,6 +167,11 @@ void Simulation::compute_reactions(std::vector<Vec3>& out) const {
 }
 
 void Simulation::account(double h) {
+  if (!m_.bodies.empty()) {  // the bodies' external loads (gravity: potential_energy())
+    const double power = body_load_power();
+    ledger_.external_work += 0.5 * (body_power_old_ + power) * h;
+    body_power_old_ = power;
+  }
   double visc = 0.0;
   for (double v : block_viscous_) visc += v;
   ledger_.viscous_work += visc * h;
@@ -191,7 +196,8 @@ void Simulation::account(double h) {
     previous.swap(mesh_force_);
     contacts_.mesh_forces(mesh_force_);
     for (std::size_t k = 0; k < m_.meshes.size(); ++k)
-      ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
+      if (mesh_body_[k] < 0)  // (a body's mesh is moved by the contacts, not by a prescription)
+        ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
     // What the contacts take up (stored + dissipated): minus the power of their forces,
     // trapezoid over the step.
     const double power = contact_power(!implicit_);

@@ -1,6 +1,7 @@
 // simulation_gather.cpp: the gather stage: each particle's rod and contact forces summed in a
 // fixed order, the accelerations, the convergence measure of the Newmark sweeps, and the
 // explicit scheme's corrector fused with it (see simulation.h).
+#include <algorithm>
 #include <cmath>
 
 #include "swarf/core/parallel.h"
@@ -127,6 +128,7 @@ double Simulation::gather_impl(double h) {
     else
       block.template operator()<false>(b, dmax, fmax, damax);
   }
+  if constexpr (Measure) sweep_force_level2_ = fmax;  // (the bodies' measure compares with it)
   if constexpr (Kick) {
     kick_power_ = 0.0;
     for (double w : block_power_) kick_power_ += w;
@@ -149,9 +151,14 @@ double Simulation::gather_impl(double h) {
 
 double Simulation::gather() {
   const double h = sweep_dt_;
+  double change;
   if (!implicit_)
-    return m_.periodic.on() ? gather_impl<GatherMode::Plain, true>(h) : gather_impl<GatherMode::Plain, false>(h);
-  return m_.periodic.on() ? gather_impl<GatherMode::Measure, true>(h) : gather_impl<GatherMode::Measure, false>(h);
+    change = m_.periodic.on() ? gather_impl<GatherMode::Plain, true>(h) : gather_impl<GatherMode::Plain, false>(h);
+  else
+    change = m_.periodic.on() ? gather_impl<GatherMode::Measure, true>(h) : gather_impl<GatherMode::Measure, false>(h);
+  if (m_.bodies.empty()) return change;
+  const double bodies = body_wrenches();  // (NaN-safe: a NaN change fails the isfinite test of the caller)
+  return std::isnan(bodies) ? bodies : std::max(change, bodies);
 }
 
 void Simulation::gather_kick(double h) {
@@ -159,6 +166,9 @@ void Simulation::gather_kick(double h) {
     gather_impl<GatherMode::Kick, true>(h);
   else
     gather_impl<GatherMode::Kick, false>(h);
+  if (m_.bodies.empty()) return;
+  body_wrenches();
+  kick_bodies(h);
 }
 
 }  // namespace swarf

@@ -3,6 +3,7 @@
 // checkpoint holds, and everything the state hash covers, is listed in one file.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -37,6 +38,8 @@ void ContactSystem::visit_state(StateArchive& ar, const Particles& p) {
   ar.array("contacts/x_build", x_build_, load ? p.size() : StateArchive::kAnySize);
   ar.array("contacts/mesh_build", mesh_build_, load ? meshes_->size() : StateArchive::kAnySize);
   ar.scalar("contacts/builds", builds_);
+  if (std::any_of(meshes_->begin(), meshes_->end(), [](const MeshBody& mb) { return mb.turns; }))
+    ar.array("contacts/mesh_build_turn", mesh_build_turn_, load ? meshes_->size() : StateArchive::kAnySize);
   if (!load) return;
   if (pairs.size() % 2 != 0 || tris.size() % 2 != 0)
     throw InputError("state field 'contacts/pairs' or 'contacts/triangle_contacts' is not a list of index pairs");
@@ -92,6 +95,44 @@ void Simulation::visit_state(StateArchive& ar) {
       m_.meshes[k].offset = offset[k];
       m_.meshes[k].velocity = velocity[k];
     }
+  if (const std::size_t nb = m_.bodies.size(); nb > 0) {
+    // The rigid bodies' state and last wrench (the next step's predictor reads it); their
+    // meshes are placed again from it after a load.
+    std::vector<Vec3> x(nb), v(nb), a(nb), w(nb), dw(nb), f(nb), t(nb), cf(nb), ct(nb);
+    std::vector<Quat> q(nb);
+    std::vector<double> angle(nb);
+    for (std::size_t b = 0; b < nb; ++b) {
+      const RigidBody& rb = m_.bodies[b];
+      x[b] = rb.state.position, v[b] = rb.state.velocity, a[b] = rb.state.acceleration;
+      q[b] = rb.state.orientation, w[b] = rb.state.omega, dw[b] = rb.state.omega_dot, angle[b] = rb.state.angle;
+      f[b] = rb.force, t[b] = rb.torque, cf[b] = rb.contact_force, ct[b] = rb.contact_torque;
+    }
+    ar.array("bodies/position", x, nb);
+    ar.array("bodies/velocity", v, nb);
+    ar.array("bodies/acceleration", a, nb);
+    ar.array("bodies/orientation", q, nb);
+    ar.array("bodies/omega", w, nb);
+    ar.array("bodies/omega_dot", dw, nb);
+    ar.array("bodies/angle", angle, nb);
+    ar.array("bodies/force", f, nb);
+    ar.array("bodies/torque", t, nb);
+    ar.array("bodies/contact_force", cf, nb);
+    ar.array("bodies/contact_torque", ct, nb);
+    ar.scalar("bodies/load_power_old", body_power_old_);
+    if (load)
+      for (std::size_t b = 0; b < nb; ++b) {
+        RigidBody& rb = m_.bodies[b];
+        // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
+        const bool finite_q = finite_bits(q[b][0]) && finite_bits(q[b][1]) && finite_bits(q[b][2]) &&
+                              finite_bits(q[b][3]);
+        if (!all_finite(x[b]) || !all_finite(v[b]) || !all_finite(w[b]) || !finite_q ||
+            !(std::abs(q[b].norm() - 1.0) < 1e-9))
+          throw InputError(fmt::format("state fields 'bodies/*': body {} has a non-finite pose or velocity", b));
+        rb.state = BodyState{x[b], v[b], a[b], q[b], w[b], dw[b], angle[b]};
+        rb.force = f[b], rb.torque = t[b], rb.contact_force = cf[b], rb.contact_torque = ct[b];
+        place_body_mesh(b);
+      }
+  }
   const std::size_t n_now = p.size();
   ar.array("groups/u_old", group_u_old_, ng);
   ar.array("groups/u_new", group_u_new_, ng);

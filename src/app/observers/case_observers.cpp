@@ -1,6 +1,7 @@
 // case_observers.cpp: the observers of a case (see case_observers.h).
 #include "app/observers/case_observers.h"
 
+#include "app/observers/body_states.h"
 #include "app/observers/bond_counts.h"
 #include "app/observers/cut_probe.h"
 #include "app/observers/energy_balance.h"
@@ -20,6 +21,7 @@ std::vector<std::unique_ptr<Observer>> observers_for(const Model& model, bool en
   obs.push_back(std::make_unique<BondCounts>(model.rods.size()));
   obs.push_back(std::make_unique<GroupReactions>(model.groups));
   obs.push_back(std::make_unique<MeshForces>(model.meshes));
+  if (!model.bodies.empty()) obs.push_back(std::make_unique<BodyStates>(model.bodies, model.meshes));
   if (auto cut = CutProbe::of(model)) obs.push_back(std::move(cut));
   return obs;
 }

@@ -53,7 +53,7 @@ void check_energy_balance(const EnergyBalanceNow& b, double t) {
 
 void EnergyBalance::columns(std::vector<Column>& out) const {
   out.insert(out.end(),
-             {{"kinetic_energy", "J", "translational and rotational kinetic energy of all particles"},
+             {{"kinetic_energy", "J", "translational and rotational kinetic energy of all particles and rigid bodies"},
               {"rotational_energy", "J", "the rotational part of kinetic_energy"},
               {"elastic_energy", "J", "energy stored in the intact rods"},
               {"contact_energy", "J", "elastic energy in the touching contacts now (information only)"},

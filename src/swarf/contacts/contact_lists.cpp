@@ -94,8 +94,14 @@ void ContactSystem::update_lists(const Particles& p, const Rods& rods, bool forc
   if (!rebuild) {
     const double half = 0.5 * prm_.skin;
     double mesh_move = 0.0;
-    for (std::size_t m = 0; m < meshes_->size(); ++m)
-      mesh_move = std::max(mesh_move, ((*meshes_)[m].offset - mesh_build_[m]).norm());
+    for (std::size_t m = 0; m < meshes_->size(); ++m) {
+      const MeshBody& mb = (*meshes_)[m];
+      double move = (mb.offset - mesh_build_[m]).norm();
+      // A turn by theta moves a vertex at distance r from the pivot by 2 r sin(theta/2), and
+      // sin(theta/2) is the vector part's norm of the relative rotation.
+      if (mb.turns) move += 2.0 * mb.reach * vec(qmul(qconj(mesh_build_turn_[m]), mb.turn)).norm();
+      mesh_move = std::max(mesh_move, move);
+    }
     double worst = moved2;
     if (worst < 0.0) {
       worst = 0.0;
@@ -235,7 +241,7 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
       const auto& tri = mb.mesh.triangles[tri_local_[t]];
       Vec3 tlo = Vec3::Constant(HUGE_VAL), thi = Vec3::Constant(-HUGE_VAL);
       for (int k = 0; k < 3; ++k) {
-        const Vec3 v = mb.mesh.vertices[tri[k]] + mb.offset;
+        const Vec3 v = mb.vertex(tri[k]);
         tlo = tlo.cwiseMin(v);
         thi = thi.cwiseMax(v);
       }
@@ -283,9 +289,7 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
             const std::int32_t t = titems[s];
             const MeshBody& mb = (*meshes_)[tri_mesh_[t]];
             const auto& tri = mb.mesh.triangles[tri_local_[t]];
-            const Vec3 q = closest_on_triangle(p.position[i], mb.mesh.vertices[tri[0]] + mb.offset,
-                                               mb.mesh.vertices[tri[1]] + mb.offset,
-                                               mb.mesh.vertices[tri[2]] + mb.offset);
+            const Vec3 q = closest_on_triangle(p.position[i], mb.vertex(tri[0]), mb.vertex(tri[1]), mb.vertex(tri[2]));
             const double r = p.radius[i] + skin;
             if ((q - p.position[i]).squaredNorm() <= r * r) ts.push_back(t);
           }
@@ -308,7 +312,11 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
   finish_build(p);
   x_build_ = p.position;
   mesh_build_.resize(meshes_->size());
-  for (std::size_t m = 0; m < meshes_->size(); ++m) mesh_build_[m] = (*meshes_)[m].offset;
+  mesh_build_turn_.resize(meshes_->size());
+  for (std::size_t m = 0; m < meshes_->size(); ++m) {
+    mesh_build_[m] = (*meshes_)[m].offset;
+    mesh_build_turn_[m] = (*meshes_)[m].turn;
+  }
 }
 
 void ContactSystem::finish_build(const Particles& p) {
@@ -328,6 +336,7 @@ void ContactSystem::finish_build(const Particles& p) {
   ph_.resize(np);
   pe_.resize(np);
   tres_.assign(nt, Result{Vec3::Zero(), Vec3::Zero()});
+  tpoint_.assign(nt, Vec3::Zero());
   th_.resize(nt);
   te_.resize(nt);
   ptouch_.resize(np);

@@ -26,9 +26,13 @@ void ContactSystem::add_virial(const Particles& p, std::vector<std::array<double
     const TriPair& q = tris_[k];
     const MeshBody& mb = (*meshes_)[tri_mesh_[q.tri]];
     const auto& tri = mb.mesh.triangles[tri_local_[q.tri]];
-    const SphereTriangleHit hit = sphere_triangle(p.position[q.i], p.radius[q.i], mb.mesh.vertices[tri[0]] + mb.offset,
-                                                  mb.mesh.vertices[tri[1]] + mb.offset,
-                                                  mb.mesh.vertices[tri[2]] + mb.offset, tri_frame_[q.tri]);
+    const Vec3& c = p.position[q.i];
+    const double R = p.radius[q.i];
+    const SphereTriangleHit hit = mb.turns
+                                      ? sphere_triangle(c, R, mb.placed[tri[0]], mb.placed[tri[1]], mb.placed[tri[2]])
+                                      : sphere_triangle(c, R, mb.mesh.vertices[tri[0]] + mb.offset,
+                                                        mb.mesh.vertices[tri[1]] + mb.offset,
+                                                        mb.mesh.vertices[tri[2]] + mb.offset, tri_frame_[q.tri]);
     add_moment(w[q.i], -p.radius[q.i] * hit.normal, f);
   }
 }

@@ -38,6 +38,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   Vec3* th = th_.data();
   std::uint8_t* ttouch = ttouch_.data();
   Result* tres = tres_.data();
+  Vec3* tpoint = tpoint_.data();
   double* te = te_.data();
   const Vec3* x = p.position.data();
   const Vec3* v = p.velocity.data();
@@ -116,9 +117,12 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const MeshBody& mb = meshes[tri_mesh[t]];
       const auto& tri = mb.mesh.triangles[tri_local[t]];
       const double R = radius[i];
-      const SphereTriangleHit hit = sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset,
-                                                    mb.mesh.vertices[tri[1]] + mb.offset,
-                                                    mb.mesh.vertices[tri[2]] + mb.offset, tri_frame[t]);
+      // (A turning mesh's frames turn with it: made from its placed vertices.)
+      const SphereTriangleHit hit = mb.turns ? sphere_triangle(x[i], R, mb.placed[tri[0]], mb.placed[tri[1]],
+                                                               mb.placed[tri[2]])
+                                             : sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset,
+                                                               mb.mesh.vertices[tri[1]] + mb.offset,
+                                                               mb.mesh.vertices[tri[2]] + mb.offset, tri_frame[t]);
       if (!hit.touching) {
         if (ttouch[k]) {
           tres[k] = Result{Vec3::Zero(), Vec3::Zero()};
@@ -130,7 +134,12 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       ttouch[k] = 1;
       const Vec3 n = hit.normal;  // from the wall towards the sphere
       const HertzLaw hz{q.K, q.D};
-      const Vec3 vrel = v[i] + w[i].cross(-R * n) - mb.velocity;  // sphere relative to the wall
+      // The force acts on the wall at the sphere's surface point x - R n: its normal part
+      // passes through the centre, its tangential part is the sphere's torque arm, so the
+      // wall's torque about any point balances the sphere's angular momentum exactly.
+      const Vec3 at = x[i] - R * n;
+      tpoint[k] = at;
+      const Vec3 vrel = v[i] + w[i].cross(-R * n) - mb.velocity_at(at);  // sphere relative to the wall
       const double vn = vrel.dot(n);
       const double root = std::sqrt(hit.overlap), root4 = std::sqrt(root);
       const double fn = hit.weight * hz.force(hit.overlap, root, root4, -vn);
@@ -205,6 +214,19 @@ void ContactSystem::mesh_forces(std::vector<Vec3>& out) const {
   out.assign(meshes_->size(), Vec3::Zero());
   for (std::size_t k = 0; k < tris_.size(); ++k)
     if (ttouch_[k]) out[tri_mesh_[tris_[k].tri]] -= tres_[k].force;
+}
+
+void ContactSystem::mesh_wrenches(std::vector<Vec3>& force, std::vector<Vec3>& torque) const {
+  const std::size_t nm = meshes_->size();
+  force.assign(nm, Vec3::Zero());
+  torque.assign(nm, Vec3::Zero());
+  for (std::size_t k = 0; k < tris_.size(); ++k) {
+    if (!ttouch_[k]) continue;
+    const std::int32_t m = tri_mesh_[tris_[k].tri];
+    const Vec3 f = -tres_[k].force;
+    force[m] += f;
+    torque[m] += (tpoint_[k] - (*meshes_)[m].centre()).cross(f);
+  }
 }
 
 double ContactSystem::elastic_energy() const {

@@ -201,6 +201,9 @@ class ContactSystem {
 
   /// Force the particles exert on each mesh (sums over its contacts in a fixed order), N; one pass.
   void mesh_forces(std::vector<Vec3>& out) const;
+  /// Force (N) and torque about each mesh's centre() (N m) that the particles exert on each
+  /// mesh, summed over its contacts in list order (a rigid body's wrench).
+  void mesh_wrenches(std::vector<Vec3>& force, std::vector<Vec3>& torque) const;
   /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
   double elastic_energy() const;
   /// Current number of touching sphere-sphere and sphere-triangle contacts.
@@ -255,6 +258,7 @@ class ContactSystem {
   std::vector<Vec3> phist_;  // committed tangential spring displacement of each pair, m
   std::vector<TriPair> tris_;
   std::vector<Result> pres_, tres_;
+  std::vector<Vec3> tpoint_;  // per triangle contact: where its force acts on the mesh, m
   std::vector<Result> psum_;  // per particle: the sum of its pairs' results (see Sums)
   // The pair loop's partition: thread t evaluates the rows (first particles) row_split_[t] to
   // row_split_[t + 1] - 1; spanning_: 1 for a particle with pairs in two threads' rows;
@@ -278,6 +282,7 @@ class ContactSystem {
   // Reference state of the last build.
   std::vector<Vec3> x_build_;
   std::vector<Vec3> mesh_build_;
+  std::vector<Quat> mesh_build_turn_;  // the meshes' turns at the build (turning meshes)
   // Newton tangent blocks (tangent()): per pair and per triangle contact; zero for a contact
   // that does not touch.
   std::vector<Vec3> ptan_axis_, ttan_axis_;

@@ -1,0 +1,205 @@
+// simulation_bodies.cpp: the rigid bodies' part of the step (state/rigid_body.h): their
+// wrench from the contacts, loads and gravity; their translation and rotation by the step's
+// scheme; their meshes placed from their poses (see simulation.h for the stages).
+//
+// Newmark: the bodies take part in the fixed point like particles. place() puts each body at
+// x+ = x + h v + h^2 ((1/2 - beta) a + beta a+), with a+ from the latest wrench, and turns
+// it by the quaternion Newmark update (rotation_step, with its inner loop) under the latest
+// torque; gather() sums the new wrench and adds the change of force and torque to the
+// sweep's convergence measure. A rejected step restores them with the particles.
+// Verlet: the drift (v += h/2 a, x += h v; q+ from the beta = 0 update, which needs only the
+// start of the step) before the contacts, the kick (v += h/2 a+, the angular velocity from the
+// same update under the new torque) after them. Loads linear in the velocities see the
+// drift's predicted velocities v + h a (for the hinge's damper: Heun's explicit trapezoid).
+// A hinge integrates the angle about its fixed axis as a scalar with the same scheme, with
+// I_axis and the torque's axial part, and builds q from the angle, so the axis holds exactly.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "swarf/core/bounds.h"
+#include "swarf/core/errors.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+namespace {
+
+// Rotation by 'angle' (rad) about the unit 'axis'.
+Quat axis_turn(const Vec3& axis, double angle) {
+  const double s = std::sin(0.5 * angle);
+  return Quat(std::cos(0.5 * angle), s * axis[0], s * axis[1], s * axis[2]);
+}
+
+// Free components only: the held ones keep their velocity and get no acceleration.
+Vec3 masked(Vec3 a, std::uint8_t fixed) {
+  for (int c = 0; c < 3; ++c)
+    if (fixed & (1u << c)) a[c] = 0.0;
+  return a;
+}
+
+}  // namespace
+
+void Simulation::setup_bodies() {
+  mesh_body_.assign(m_.meshes.size(), -1);
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+    RigidBody& rb = m_.bodies[b];
+    if (rb.mesh >= m_.meshes.size())
+      throw InputError(fmt::format("rigid body {} names mesh {} of {}", b, rb.mesh, m_.meshes.size()));
+    const std::string& name = m_.meshes[rb.mesh].name;
+    if (mesh_body_[rb.mesh] >= 0) throw InputError(fmt::format("mesh '{}' is moved by two rigid bodies", name));
+    mesh_body_[rb.mesh] = static_cast<int>(b);
+    if (!(rb.mass > 0.0 && std::isfinite(rb.mass)) || !(rb.inertia.minCoeff() > 0.0) || !all_finite(rb.inertia))
+      throw InputError(
+          fmt::format("rigid body '{}': mass {} kg and principal inertia ({}, {}, {}) kg m^2 must be "
+                      "positive and finite",
+                      name, rb.mass, rb.inertia[0], rb.inertia[1], rb.inertia[2]));
+    if (set_.solver == Solver::Newton)
+      throw InputError(
+          fmt::format("rigid body '{}': the Newton solver's tangent treats meshes as prescribed; "
+                      "use the fixed-point solver with rigid bodies",
+                      name));
+    BodyState& s = rb.state;
+    s.orientation /= s.orientation.norm();
+    if (rb.rotation == BodyRotation::Hinge) {
+      rb.axis.normalize();
+      if (!((s.omega - s.omega.dot(rb.axis) * rb.axis).norm() <= 1e-12 * s.omega.norm()))
+        throw InputError(fmt::format("rigid body '{}': its angular velocity must lie along the hinge axis", name));
+    } else if (rb.rotation == BodyRotation::Prescribed) {
+      // Turns at its initial angular velocity: a hinge without angular acceleration.
+      rb.axis = s.omega.norm() > 0.0 ? Vec3(s.omega.normalized()) : Vec3::UnitZ();
+    }
+    rb.hinge_start = qmul(axis_turn(rb.axis, -s.angle), s.orientation);
+    body_x0_.push_back(s.position);
+    place_body_mesh(b);
+  }
+}
+
+void Simulation::place_body_mesh(std::size_t b) {
+  const RigidBody& rb = m_.bodies[b];
+  MeshBody& mb = m_.meshes[rb.mesh];
+  mb.turns = true;
+  mb.pivot = rb.centre_ref;
+  mb.offset = rb.state.position - rb.centre_ref;
+  mb.turn = qmul(rb.state.orientation, qconj(rb.principal));  // reference frame -> world
+  mb.velocity = rb.state.velocity;
+  mb.omega = rb.state.omega;
+  mb.place();
+}
+
+bool Simulation::advance_bodies(double h, double beta, double gamma) {
+  bool within = true;
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+    RigidBody& rb = m_.bodies[b];
+    const BodyState& n = body_n_[b].state;
+    BodyState& s = rb.state;
+    const double cx_n = h * h * (0.5 - beta), cx = h * h * beta, cv_n = h * (1.0 - gamma), cv = h * gamma;
+    const Vec3 a = masked(rb.force / rb.mass, rb.fixed);
+    s.acceleration = a;
+    s.position = n.position + h * n.velocity + cx_n * n.acceleration + cx * a;
+    s.velocity = n.velocity + cv_n * n.acceleration + cv * a;
+    if (rb.rotation == BodyRotation::Free) {
+      RotationSettings rs;
+      rs.beta = beta;
+      rs.gamma = gamma;
+      const RotState body{n.orientation, to_body(n.orientation, n.omega), to_body(n.orientation, n.omega_dot)};
+      const RotStepResult r = rotation_step(body, rb.torque, rb.inertia, h, rs);
+      s.orientation = r.state.q;
+      s.omega = to_world(r.state.q, r.state.w);
+      s.omega_dot = to_world(r.state.q, r.state.dw);
+    } else {
+      const double alpha = rb.rotation == BodyRotation::Hinge ? rb.torque.dot(rb.axis) / rb.axis_inertia() : 0.0;
+      const double w_n = n.omega.dot(rb.axis), alpha_n = n.omega_dot.dot(rb.axis);
+      s.angle = n.angle + h * w_n + cx_n * alpha_n + cx * alpha;
+      s.omega = (w_n + cv_n * alpha_n + cv * alpha) * rb.axis;
+      s.omega_dot = alpha * rb.axis;
+      s.orientation = qmul(axis_turn(rb.axis, s.angle), rb.hinge_start);
+    }
+    // How far a vertex moved in the step: the centre's move plus the chord of the turn.
+    const double moved = (s.position - n.position).norm() +
+                         2.0 * m_.meshes[rb.mesh].reach * vec(qmul(qconj(n.orientation), s.orientation)).norm();
+    if (!(moved <= mesh_step_limit_)) within = false;
+    place_body_mesh(b);
+  }
+  return within;
+}
+
+bool Simulation::place_bodies(double h) { return advance_bodies(h, set_.beta, set_.gamma); }
+
+bool Simulation::drift_bodies(double h) {
+  body_n_ = m_.bodies;
+  // beta = 0: the positions and the orientation need only the start of the step; the
+  // velocities are the drift's (the kick redoes them with the new wrench).
+  return advance_bodies(h, 0.0, 0.5);
+}
+
+void Simulation::kick_bodies(double h) {
+  // The same beta = 0 update from the start of the step, now with the new wrench: the
+  // positions and the orientation come out the same bits, the velocities get the kick.
+  advance_bodies(h, 0.0, 0.5);
+}
+
+double Simulation::body_wrenches() {
+  if (m_.bodies.empty()) return 0.0;
+  std::vector<Vec3> f, t;
+  if (contacts_.enabled()) contacts_.mesh_wrenches(f, t);
+  double dmax = 0.0, level = sweep_force_level2_, damax = 0.0, disp2 = 0.0;
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+    RigidBody& rb = m_.bodies[b];
+    const BodyState& s = rb.state;
+    const MeshBody& mb = m_.meshes[rb.mesh];
+    rb.contact_force = f.empty() ? Vec3::Zero() : f[rb.mesh];
+    rb.contact_torque = t.empty() ? Vec3::Zero() : t[rb.mesh];
+    const Vec3 force = rb.contact_force + rb.load.force - rb.load.force_damping * s.velocity + rb.mass * m_.gravity;
+    const Vec3 torque = rb.contact_torque + rb.load.torque - rb.load.torque_damping * s.omega;
+    // Convergence: the change of force, and of torque over the mesh's reach (a force at its
+    // rim), against the particles' force level and the body's own; or, as for the particles,
+    // the position correction it makes against the step's displacement.
+    const double r = std::max(mb.reach, 1e-300);
+    const Vec3 df = masked(force - rb.force, rb.fixed);
+    const double dt = (torque - rb.torque).norm() / r;
+    dmax = std::max({dmax, df.squaredNorm(), dt * dt});
+    level = std::max({level, force.squaredNorm(), torque.squaredNorm() / (r * r)});
+    const double da = std::max(df.norm() / rb.mass, dt * r * r / rb.inertia.minCoeff());
+    damax = std::max(damax, da * da);
+    if (!body_n_.empty()) disp2 = std::max(disp2, (s.position - body_n_[b].state.position).squaredNorm());
+    rb.force = force;
+    rb.torque = torque;
+  }
+  if (!implicit_ || dmax == 0.0) return 0.0;
+  const double h = sweep_dt_;
+  const double by_force = level > 0.0 ? std::sqrt(dmax / level) : HUGE_VAL;
+  const double moved2 = std::max(disp2, step_disp2_);
+  const double by_motion = moved2 > 0.0 ? set_.beta * h * h * std::sqrt(damax / moved2) : HUGE_VAL;
+  return std::min(by_force, by_motion);
+}
+
+void Simulation::init_body_accelerations() {
+  for (RigidBody& rb : m_.bodies) {
+    BodyState& s = rb.state;
+    s.acceleration = masked(rb.force / rb.mass, rb.fixed);
+    if (rb.rotation == BodyRotation::Free) {
+      const Quat& q = s.orientation;
+      s.omega_dot = to_world(q, euler_acceleration(to_body(q, rb.torque), to_body(q, s.omega), rb.inertia));
+    } else {
+      s.omega_dot = (rb.rotation == BodyRotation::Hinge ? rb.torque.dot(rb.axis) / rb.axis_inertia() : 0.0) * rb.axis;
+    }
+  }
+}
+
+void Simulation::restore_bodies() {
+  m_.bodies = body_n_;
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b) place_body_mesh(b);
+}
+
+double Simulation::body_load_power() const {
+  double p = 0.0;
+  for (const RigidBody& rb : m_.bodies) {
+    const BodyState& s = rb.state;
+    p += (rb.load.force - rb.load.force_damping * s.velocity).dot(s.velocity) +
+         (rb.load.torque - rb.load.torque_damping * s.omega).dot(s.omega);
+  }
+  return p;
+}
+
+}  // namespace swarf
