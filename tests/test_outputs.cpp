@@ -13,6 +13,7 @@
 #include <regex>
 #include <sstream>
 
+#include "app/plots.h"
 #include "io/h5file.h"
 #include "scenes/tiny_cut.h"
 #include "test_helpers.h"
@@ -356,6 +357,42 @@ TEST(Outputs, ParaViewScriptWrittenAndRunsAgainstAStub) {
   EXPECT_NEAR(series["files"][2]["time"].get<double>(), 1e-5, 1e-7);
   EXPECT_TRUE(std::filesystem::exists(out + "/tool.vtp.series"));
   EXPECT_TRUE(std::filesystem::exists(out + "/rods.vtu.series"));
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// The post-processing scripts start without a shell (posix_spawn): an argument reaches the
+// script as it is, spaces, quotes and '$(...)' included, and nothing in it is run; stdout
+// and stderr both come back, and the exit code decides 'ok'.
+TEST(Scripts, ArgumentsReachTheScriptAsTheyAreWithoutAShell) {
+  test::TempDir dir("spawn");
+  test::write_file(dir / "echo_args.py",
+                   "import sys\nfor a in sys.argv[1:]:\n    print('arg<' + a + '>')\n"
+                   "print('to stderr', file=sys.stderr)\nsys.exit(3 if 'fail' in sys.argv else 0)\n");
+  const char* before = std::getenv("SWARF_POSTPROCESS_DIR");
+  const std::string saved = before ? before : "";
+  ::setenv("SWARF_POSTPROCESS_DIR", dir.str().c_str(), 1);
+  const std::string marker = dir / "ran";
+  const ScriptRun r = run_postprocess_script("echo_args.py", {"a b", "it's", "$(touch " + marker + ")", ""});
+  EXPECT_TRUE(r.ok) << r.output;
+  EXPECT_NE(r.output.find("arg<a b>"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("arg<it's>"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("arg<$(touch " + marker + ")>"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("arg<>"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("to stderr"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(marker));
+  EXPECT_FALSE(run_postprocess_script("echo_args.py", {"fail"}).ok);
+  const ScriptRun missing = run_postprocess_script("no_such_script.py", {});
+  EXPECT_FALSE(missing.ok);
+  EXPECT_NE(missing.output.find("script not found"), std::string::npos);
+  if (before)
+    ::setenv("SWARF_POSTPROCESS_DIR", saved.c_str(), 1);
+  else
+    ::unsetenv("SWARF_POSTPROCESS_DIR");
 }
 
 }  // namespace

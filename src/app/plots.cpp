@@ -2,51 +2,71 @@
 // of a plotting library; the script only draws columns that swarf computed.
 #include "app/plots.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
-#include <cstdio>
-#include <cstdlib>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+
+extern char** environ;
 
 namespace swarf {
 
-namespace {
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-}  // namespace
-
 ScriptRun run_postprocess_script(const std::string& name, const std::vector<std::string>& args,
-                                 const std::string& prefix) {
+                                 const std::vector<std::string>& prefix) {
   ScriptRun r;
   const std::string script = postprocess_path(name);
   if (!std::filesystem::exists(script)) {
     r.output = "script not found: " + script;
     return r;
   }
-  const char* py = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  std::string cmd = prefix;
-  cmd += py;
-  cmd += ' ';
-  cmd += quote(script);
-  for (const auto& a : args) {
-    cmd += ' ';
-    cmd += quote(a);
-  }
-  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-  if (!pipe) {
-    r.output = std::string("cannot start ") + py;
+  std::vector<std::string> argv = prefix;
+  argv.push_back(std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3");
+  argv.push_back(script);
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> cargv;
+  for (auto& a : argv) cargv.push_back(a.data());
+  cargv.push_back(nullptr);
+
+  // The child's stdout and stderr go into one pipe; its stdin is /dev/null.
+  int fd[2];
+  if (::pipe(fd) != 0) {
+    r.output = "cannot make a pipe for " + argv[0];
     return r;
   }
-  std::array<char, 512> buf{};
-  while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addclose(&fa, fd[0]);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&fa, fd[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, fd[1], 2);
+  posix_spawn_file_actions_addclose(&fa, fd[1]);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, argv[0].c_str(), &fa, nullptr, cargv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  ::close(fd[1]);
+  if (rc != 0) {
+    ::close(fd[0]);
+    r.output = fmt::format("cannot start {}: {}", argv[0], std::strerror(rc));
+    return r;
+  }
+  std::array<char, 4096> buf{};
+  for (ssize_t n; (n = ::read(fd[0], buf.data(), buf.size())) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    r.output.append(buf.data(), static_cast<std::size_t>(n));
+  }
+  ::close(fd[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
   r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   return r;
 }

@@ -26,10 +26,11 @@ struct ScriptRun {
 /// The paths a script reported, one "wrote PATH" line each, in order.
 std::vector<std::string> written_files(const std::string& output);
 
-/// Runs postprocess_path(NAME) with
-/// /usr/bin/python3 and the arguments, each shell-quoted; 'prefix' goes before the
-/// interpreter (e.g. xvfb-run). A missing script is reported in 'output'.
+/// Runs postprocess_path(NAME) with /usr/bin/python3 and the arguments, started directly
+/// (posix_spawn, no shell: an argument is passed as it is, whatever characters it holds);
+/// 'prefix' is a program with its arguments that goes before the interpreter (e.g. xvfb-run).
+/// Its stdout and stderr are returned in 'output'; a missing script is reported there.
 ScriptRun run_postprocess_script(const std::string& name, const std::vector<std::string>& args,
-                                 const std::string& prefix = "");
+                                 const std::vector<std::string>& prefix = {});
 
 }  // namespace swarf

@@ -79,13 +79,13 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
 std::vector<std::string> render_pictures(const std::string& dir, const CutSetup& setup, std::string& message) {
   namespace fs = std::filesystem;
   // Debian's VTK renders through X only: without a display, a virtual one (xvfb-run).
-  std::string prefix;
+  std::vector<std::string> prefix;
   if (!std::getenv("DISPLAY")) {
     if (!fs::exists("/usr/bin/xvfb-run")) {
       message = "no display and no xvfb-run (Debian package xvfb) to render the pictures";
       return {};
     }
-    prefix = "/usr/bin/xvfb-run -a -s '-screen 0 1280x1024x24' ";
+    prefix = {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
   }
   std::vector<std::string> args{dir, dir + "/chip.png", "--tool", setup.tool_mesh};
   const double depth = setup.uncut_surface_z - setup.tool_tip.z();  // m
