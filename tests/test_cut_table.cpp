@@ -175,6 +175,12 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
           {"cut.material", "\"steel\"", "C45"});
   refused("[cut]\n" + ok + "workpiece_height = 1.5\n", {"cut.workpiece_height", "end clamp"});
   refused("[cut]\n" + ok + "workpiece_length = 5.0\n", {"cut.workpiece_length", "too short"});
+  // With its own end clamp, the case's block need only outlast the tool; a low block is its business.
+  const std::string
+      own_end = "[[group]]\nname = \"end\"\nbox_min = [3.3e-3, -1.0, 0.05e-3]\nbox_max = [1.0, 1.0, 0.1e-3]\n";
+  EXPECT_EQ(test::case_error("[cut]\n" + ok + "workpiece_height = 1.5\n" + own_end), "");
+  refused("[cut]\n" + ok + "workpiece_length = 5.0\nlength_of_cut = 1.2e-3\n" + own_end,
+          {"cut.workpiece_length", "beyond the block"});
   refused("[cut]\n" + ok + "[workpiece]\nsize = [1e-3, 1e-3, 1e-3]\n", {"workpiece.size", "[cut]"});
   refused("[cut]\n" + ok + "[uniaxial]\nstrain_path = [0.0, 0.01]\n", {"[cut]", "[uniaxial]"});
   refused("[cut]\n" + ok + "layers = 1\n", {"cut.layers", "[2, 200]"});

@@ -205,15 +205,23 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   const double end_x = between_layers(x_last - kEndClampReach * h, s);
   const double end_z_lo = between_layers(kBaseLayers * s, s);
   const double end_z_hi = between_layers(z_tip - kEndClampBelowTip * h, s);
-  if (!(end_z_hi > end_z_lo))
+  // (the end clamp's own rules only when [cut] makes it; a case's own 'end' group is its own)
+  const bool derive_end = !named(groups, "end");
+  if (derive_end && !(end_z_hi > end_z_lo))
     r.fail("workpiece_height", r.get("workpiece_height"),
            fmt::format("leaves no material for the end clamp between the base clamp ({} layers) and {} h below the "
                        "tool's tip: raise it",
                        kBaseLayers, kEndClampBelowTip));
-  if (!(-kStartAhead * h + length < end_x - h))
+  const double tool_end = -kStartAhead * h + length;  // m, the tip's x at the end of the cut
+  if (derive_end && !(tool_end < end_x - h))
     r.fail("workpiece_length", r.get("workpiece_length"),
            fmt::format("is too short: the tool's tip would end at x = {} m, within h of the end clamp (from x = {} m)",
-                       -kStartAhead * h + length, end_x));
+                       tool_end, end_x));
+  if (!derive_end && !(tool_end < x_last))
+    r.fail("workpiece_length", r.get("workpiece_length"),
+           fmt::format("is too short: the tool's tip would end at x = {} m, beyond the block's last particles at "
+                       "x = {} m",
+                       tool_end, x_last));
   std::vector<toml::table> new_groups;
   for (const char* name : {"base", "end"}) {
     out.section("[[group]]");
