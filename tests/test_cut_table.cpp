@@ -184,6 +184,8 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
   refused("[cut]\n" + ok + "[workpiece]\nsize = [1e-3, 1e-3, 1e-3]\n", {"workpiece.size", "[cut]"});
   refused("[cut]\n" + ok + "[uniaxial]\nstrain_path = [0.0, 0.01]\n", {"[cut]", "[uniaxial]"});
   refused("[cut]\n" + ok + "layers = 1\n", {"cut.layers", "[2, 200]"});
+  // (found by the fuzzer: a width of 5e42 m made lround overflow under the FP traps)
+  refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "cells", "more than"});
 }
 
 // 'swarf run --check' builds and prints without running or writing; 'swarf case default'

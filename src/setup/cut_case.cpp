@@ -171,10 +171,19 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   in.reader(&wt, "workpiece").read(workpiece_keys(), ws);
   const double s = std::sqrt(2.0) * ws.radius;  // layer spacing along x and z, m (a = 2 s)
   const double a = 2.0 * s;
-  const auto cells_of = [&](double length) { return std::max(2, static_cast<int>(std::lround(length / a))); };
+  // Whole cells along an axis; a count beyond any lattice a machine holds is refused by the
+  // key that asked for it (before lround, which a count beyond a long's range would trap).
+  constexpr double kMaxCells = 1e6;
+  const auto cells_of = [&](double length, const char* key) {
+    const double n = length / a;
+    if (!(n <= kMaxCells))
+      r.fail(key, r.get(key),
+             fmt::format("makes {:.3g} cells of a = {:.4g} m along its axis, more than {:g}", n, a, kMaxCells));
+    return std::max(2, static_cast<int>(std::lround(n)));
+  };
   w.put("cells",
-        std::array<int, 3>{cells_of(block_length * h), plane_strain ? 2 : cells_of(c.width),
-                           cells_of(c.workpiece_height * h)},
+        std::array<int, 3>{cells_of(block_length * h, "workpiece_length"), plane_strain ? 2 : cells_of(c.width, "width"),
+                           cells_of(c.workpiece_height * h, "workpiece_height")},
         fmt::format("{} h long, {}, {} h high, in cells of a = {} m", block_length,
                     plane_strain ? "2 cells wide" : "the width", c.workpiece_height, a));
   w.put("periodic_width", plane_strain, plane_strain ? "plane strain" : "free sides");
