@@ -6,7 +6,7 @@
 // of inversion symmetry, so the affinely deformed periodic crystal is in equilibrium with no
 // relaxation of the atoms, and its Cauchy stress is exactly
 //     sigma = 1 / (det(F) a^3/4) * sum_k T_k (r_k (x) r_k) / |r_k|,
-// the sum over the 6 rod directions of one atom (each atom has 12 bonds, each shared by two
+// the sum over the 6 rod directions of one atom (each atom has 12 rods, each shared by two
 // atoms), r_k = F r0_k, r0_k = a/2 (1,1,0), (1,-1,0), (1,0,1), (1,0,-1), (0,1,1), (0,1,-1),
 // T_k = A sigma_rod(eps_k) with the rod strain eps_k = (|r_k| - l0) / l0.
 //
@@ -22,7 +22,7 @@
 
 namespace swarf {
 
-/// The 6 bond vectors of an FCC atom in units of a/2 (the other 6 are their negatives).
+/// The 6 rod vectors of an FCC atom in units of a/2 (the other 6 are their negatives).
 inline constexpr std::array<std::array<int, 3>, 6> kFccBonds{
     {{1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1}, {0, 1, 1}, {0, 1, -1}}};
 
@@ -71,7 +71,7 @@ class CauchyBornCrystal {
  private:
   RodLaw law_;
   double a_, l0_, area_;
-  std::array<Eigen::Vector3d, 6> r0_;  ///< the bond vectors, m
+  std::array<Eigen::Vector3d, 6> r0_;  ///< the rod vectors, m
   std::array<double, 6> shift_{};
   std::array<bool, 6> broken_{};
 };

@@ -73,11 +73,11 @@ Lattice generate_fcc(const FccSpec& spec) {
 void bond_nearest_neighbours(Lattice& lat, double nominal_distance, double tolerance) {
   if (!(tolerance >= 0.0 && tolerance < 0.2))
     throw InputError(fmt::format("lattice: bond tolerance must lie in [0, 0.2), got {}", tolerance));
-  lat.bonds = find_pairs_in_range(lat.position, nominal_distance * (1.0 - tolerance),
-                                  nominal_distance * (1.0 + tolerance));
-  lat.rest_length.resize(lat.bonds.size());
-  for (std::size_t b = 0; b < lat.bonds.size(); ++b)
-    lat.rest_length[b] = (lat.position[lat.bonds[b][1]] - lat.position[lat.bonds[b][0]]).norm();
+  lat.rods = find_pairs_in_range(lat.position, nominal_distance * (1.0 - tolerance),
+                                 nominal_distance * (1.0 + tolerance));
+  lat.rest_length.resize(lat.rods.size());
+  for (std::size_t b = 0; b < lat.rods.size(); ++b)
+    lat.rest_length[b] = (lat.position[lat.rods[b][1]] - lat.position[lat.rods[b][0]]).norm();
 }
 
 }  // namespace swarf

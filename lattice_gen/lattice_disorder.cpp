@@ -58,11 +58,11 @@ void jitter_lattice(Lattice& lat, std::uint64_t seed, double amplitude, std::siz
     lat.position[i] += (amplitude * lat.radius[i]) * unit_ball_jitter(seed, static_cast<std::uint64_t>(i));
   // Rest lengths: the moved distance, measured as the rod kernel measures it (the nearest image,
   // the square root of the squared length), so the first evaluation finds each rod at rest.
-  const auto m = static_cast<std::int64_t>(lat.bonds.size());
-  lat.rest_length.resize(lat.bonds.size());
+  const auto m = static_cast<std::int64_t>(lat.rods.size());
+  lat.rest_length.resize(lat.rods.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t b = 0; b < m; ++b) {
-    Vec3 dx = lat.position[lat.bonds[b][1]] - lat.position[lat.bonds[b][0]];
+    Vec3 dx = lat.position[lat.rods[b][1]] - lat.position[lat.rods[b][0]];
     periodic.wrap(dx);
     lat.rest_length[b] = std::sqrt(dx.squaredNorm());
   }

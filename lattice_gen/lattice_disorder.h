@@ -10,7 +10,7 @@
 //    the same seed would give other positions with another library. The hash and the
 //    rejection use integer arithmetic and exact scalings only: the same bits everywhere.
 //  - A ball rather than a cube: isotropic, and |displacement| <= amplitude x R exactly.
-// The bonds stay those of the ordered lattice (the FCC topology: a generated site keeps its 12
+// The rods stay those of the ordered lattice (the FCC topology: a generated site keeps its 12
 // neighbours; no distance search after the jitter), and each rest length becomes the distance
 // between the moved ends, so the block starts stress-free.
 #pragma once

@@ -21,12 +21,12 @@ void write_lattice(const std::string& path, const Lattice& lat) {
     H5File f(tmp, H5File::Mode::Create);
     f.write("/particles/position", lat.position.empty() ? nullptr : lat.position[0].data(), lat.position.size(), 3);
     f.write("/particles/radius", lat.radius.data(), lat.radius.size());
-    std::vector<std::int64_t> pairs(2 * lat.bonds.size());
-    for (std::size_t b = 0; b < lat.bonds.size(); ++b) {
-      pairs[2 * b] = lat.bonds[b][0];
-      pairs[2 * b + 1] = lat.bonds[b][1];
+    std::vector<std::int64_t> pairs(2 * lat.rods.size());
+    for (std::size_t b = 0; b < lat.rods.size(); ++b) {
+      pairs[2 * b] = lat.rods[b][0];
+      pairs[2 * b + 1] = lat.rods[b][1];
     }
-    f.write("/bonds/pairs", pairs.data(), lat.bonds.size(), 2);
+    f.write("/bonds/pairs", pairs.data(), lat.rods.size(), 2);
     f.write("/bonds/rest_length", lat.rest_length.data(), lat.rest_length.size());
     f.write_attribute("generator", std::string("swarf ") + SWARF_VERSION + " fcc");
     f.write_attribute("cell_edge", lat.cell_edge);
@@ -62,24 +62,24 @@ Lattice read_lattice(const std::string& path) {
   auto pairs = f.read_ints("/bonds/pairs", rows, cols);
   if (cols != 2 && rows > 0) throw InputError(fmt::format("'{}': /bonds/pairs must be M x 2", path));
   const std::size_t m = rows;
-  lat.bonds.resize(m);
+  lat.rods.resize(m);
   for (std::size_t b = 0; b < m; ++b) {
     std::int64_t i = pairs[2 * b], j = pairs[2 * b + 1];
     if (i < 0 || j < 0 || i >= std::int64_t(n) || j >= std::int64_t(n) || i == j)
       throw InputError(fmt::format("'{}': /bonds/pairs row {} = ({}, {}) is not a pair of distinct particles 0..{}",
                                    path, b, i, j, n - 1));
-    lat.bonds[b] = {static_cast<std::int32_t>(std::min(i, j)), static_cast<std::int32_t>(std::max(i, j))};
+    lat.rods[b] = {static_cast<std::int32_t>(std::min(i, j)), static_cast<std::int32_t>(std::max(i, j))};
   }
   // A pair listed twice would be two rods in parallel: twice the stiffness, silently.
   {
     std::vector<std::size_t> order(m);
     for (std::size_t b = 0; b < m; ++b) order[b] = b;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.rods[x] < lat.rods[y]; });
     for (std::size_t k = 1; k < m; ++k)
-      if (lat.bonds[order[k]] == lat.bonds[order[k - 1]])
+      if (lat.rods[order[k]] == lat.rods[order[k - 1]])
         throw InputError(fmt::format("'{}': /bonds/pairs rows {} and {} both bond particles ({}, {}): each pair once",
                                      path, std::min(order[k - 1], order[k]), std::max(order[k - 1], order[k]),
-                                     lat.bonds[order[k]][0], lat.bonds[order[k]][1]));
+                                     lat.rods[order[k]][0], lat.rods[order[k]][1]));
   }
   lat.rest_length = f.read_doubles("/bonds/rest_length", rows, cols);
   if (rows != m || cols != 1) throw InputError(fmt::format("'{}': /bonds/rest_length must have {} entries", path, m));

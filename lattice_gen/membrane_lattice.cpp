@@ -17,7 +17,7 @@ Lattice generate_membrane(const MembraneSpec& spec) {
     throw InputError(
         fmt::format("membrane: length and width must be positive lengths in m, got {}, {}", spec.length, spec.width));
   if (!(spec.pre_strain > -0.5 && spec.pre_strain < 1.0))
-    throw InputError(fmt::format("membrane: the bonds' pre-strain must lie in (-0.5, 1), got {}", spec.pre_strain));
+    throw InputError(fmt::format("membrane: the rods' pre-strain must lie in (-0.5, 1), got {}", spec.pre_strain));
   const double d = 2.0 * spec.radius, row = 0.5 * std::sqrt(3.0) * d;
   const double tol = 1e-9 * d;  // keeps sites on the far edges
   const long rows = static_cast<long>(std::floor((spec.width + tol) / row)) + 1;
@@ -66,7 +66,7 @@ MembraneRelations membrane_relations(const MembraneMaterial& mt) {
   const double s = mt.pre_tension / (s3 * k);
   if (!(s < 0.5))
     throw InputError(
-        fmt::format("membrane: the pre-tension {} N/m needs a bond pre-strain of {:.3g}; at most 1 (T < {:.4g} N/m)",
+        fmt::format("membrane: the pre-tension {} N/m needs a rod pre-strain of {:.3g}; at most 1 (T < {:.4g} N/m)",
                     mt.pre_tension, s / (1.0 - s), 0.5 * s3 * k));
   r.pre_strain = s / (1.0 - s);
   r.bond_force = mt.pre_tension * d / s3;
@@ -83,7 +83,7 @@ MembraneRelations membrane_relations(const MembraneMaterial& mt) {
 
 std::vector<std::int32_t> membrane_edge(const Lattice& lat) {
   std::vector<int> count(lat.position.size(), 0);
-  for (const auto& b : lat.bonds) {
+  for (const auto& b : lat.rods) {
     ++count[b[0]];
     ++count[b[1]];
   }

@@ -1,7 +1,7 @@
 // membrane_lattice.h: a membrane of bonded spheres (paper section 5.3): the sites of a flat
-// triangular (hexagonal close-packed) sheet, its nearest-neighbour bonds, and the relations
+// triangular (hexagonal close-packed) sheet, its nearest-neighbour rods, and the relations
 // that turn the sheet's in-plane modulus, Poisson ratio, areal density and pre-tension into
-// the bond stiffness, the particle mass, the wave speeds and the stable step.
+// the rod stiffness, the particle mass, the wave speeds and the stable step.
 //
 // The sheet lies in the plane z = origin_z: rows along x at spacing d = 2R, row j at
 // y = j sqrt(3)/2 d, odd rows shifted by d/2; every site inside the closed rectangle
@@ -14,8 +14,8 @@
 // whatever the spacing: a central-force triangular lattice cannot carry another Poisson ratio,
 // so any other nu is refused. Each site stands for the area sqrt(3)/2 d^2, so a sheet of areal
 // density rho_A gets the particle mass m = rho_A sqrt(3)/2 d^2. A pre-strain eps0 of every
-// bond (rest length d / (1 + eps0), bond force f = k d eps0 / (1 + eps0)) gives the isotropic
-// tension T = sqrt(3) f / d. Long waves along a bond direction (pre-stress included):
+// rod (rest length d / (1 + eps0), rod force f = k d eps0 / (1 + eps0)) gives the isotropic
+// tension T = sqrt(3) f / d. Long waves along a rod direction (pre-stress included):
 //     c_L^2 = (d^2/m)(9 k/8 + 3 f/(8 d)),  c_S^2 = (d^2/m)(3 k/8 + 9 f/(8 d)),
 //     c_T^2 = (3/2) f d / m = T / rho_A     (out of plane).
 // The highest in-plane mode (zone edge, M point) has omega^2 = 6 k / m; with the pre-stress,
@@ -37,10 +37,10 @@ struct MembraneSpec {
   double length = 0.0;                    ///< extent along x, m
   double width = 0.0;                     ///< extent along y, m
   std::array<double, 3> origin{0, 0, 0};  ///< corner of the sheet, m
-  double pre_strain = 0.0;                ///< eps0 of every bond: rest length d / (1 + eps0), 1
+  double pre_strain = 0.0;                ///< eps0 of every rod: rest length d / (1 + eps0), 1
 };
 
-/// The sheet's sites (radius R) and bonds (rest length d / (1 + eps0)); cell_edge is 0 (no
+/// The sheet's sites (radius R) and rods (rest length d / (1 + eps0)); cell_edge is 0 (no
 /// cubic cell). Throws InputError on a bad spec (naming the value).
 Lattice generate_membrane(const MembraneSpec& spec);
 
@@ -74,7 +74,7 @@ struct MembraneRelations {
 /// Poisson ratio other than 1/3 (beyond 1e-6) or a tension the springs cannot hold.
 MembraneRelations membrane_relations(const MembraneMaterial& material);
 
-/// Indices of the sites with fewer than 6 bonds: the sheet's edge.
+/// Indices of the sites with fewer than 6 rods: the sheet's edge.
 std::vector<std::int32_t> membrane_edge(const Lattice& lattice);
 
 }  // namespace swarf

@@ -131,8 +131,8 @@ TEST(BadInput, ALatticeFileListingABondTwiceIsRefused) {
   spec.cells = {2, 2, 2};
   Lattice lat = generate_fcc(spec);
   write_lattice(dir / "ok.h5", lat);
-  EXPECT_EQ(read_lattice(dir / "ok.h5").bonds.size(), lat.bonds.size());
-  lat.bonds.push_back({lat.bonds[3][1], lat.bonds[3][0]});  // the same pair, ends swapped
+  EXPECT_EQ(read_lattice(dir / "ok.h5").rods.size(), lat.rods.size());
+  lat.rods.push_back({lat.rods[3][1], lat.rods[3][0]});  // the same pair, ends swapped
   lat.rest_length.push_back(lat.rest_length[3]);
   write_lattice(dir / "twice.h5", lat);
   EXPECT_NE(message_of([&] { read_lattice(dir / "twice.h5"); }).find("each pair once"), std::string::npos);

@@ -378,7 +378,7 @@ TEST(TurnedLattice, EverySiteKeepsItsTwelveNeighboursInsideAndTheBoxIsTheUnturne
   const double a = plain.cell_edge, lx = (2 * 6 - 1) * 0.5 * a, lz = lx;
   EXPECT_NEAR(double(turned.position.size()), 363.0, 0.05 * 363.0);
   std::vector<int> degree(turned.position.size(), 0);
-  for (const auto& b : turned.bonds) {
+  for (const auto& b : turned.rods) {
     ++degree[b[0]];
     ++degree[b[1]];
   }
@@ -394,11 +394,11 @@ TEST(TurnedLattice, EverySiteKeepsItsTwelveNeighboursInsideAndTheBoxIsTheUnturne
       EXPECT_EQ(degree[i], 12) << i;
     }
   }
-  // The cube axes are turned: bonds come in the turned directions, e.g. (cos 30 - sin 30)/sqrt 2
+  // The cube axes are turned: rods come in the turned directions, e.g. (cos 30 - sin 30)/sqrt 2
   // along x for the former [1 0 -1]/sqrt 2, and no bond lies along x itself.
   int along_x = 0;
-  for (std::size_t k = 0; k < turned.bonds.size(); ++k) {
-    const Vec3 u = (turned.position[turned.bonds[k][1]] - turned.position[turned.bonds[k][0]]).normalized();
+  for (std::size_t k = 0; k < turned.rods.size(); ++k) {
+    const Vec3 u = (turned.position[turned.rods[k][1]] - turned.position[turned.rods[k][0]]).normalized();
     if (std::abs(std::abs(u[0]) - 1.0) < 1e-9) ++along_x;
   }
   EXPECT_EQ(along_x, 0);

@@ -39,7 +39,7 @@ TEST(CutForce, ToolPushingAClampedBlockMatchesTheLatticeStiffness) {
     x_max = std::max(x_max, x[0]);
     y_max = std::max(y_max, x[1]);
   }
-  for (const auto& b : lat.bonds) {
+  for (const auto& b : lat.rods) {
     const double x0 = std::min(lat.position[b[0]][0], lat.position[b[1]][0]);
     const double x1 = std::max(lat.position[b[0]][0], lat.position[b[1]][0]);
     n_cross += x0 < 0.25 * h && x1 > 0.75 * h ? 1 : 0;

@@ -86,7 +86,7 @@ TEST(Disorder, SeedZeroOrAmplitudeZeroIsTheOrderedLatticeBitForBit) {
       ASSERT_EQ(m.particles.position[i], ordered.position[i]) << "particle " << i;
       ASSERT_EQ(m.sites[i], ordered.position[i]);
     }
-    EXPECT_EQ(m.rods.ends, ordered.bonds);
+    EXPECT_EQ(m.rods.ends, ordered.rods);
     EXPECT_EQ(m.rods.rest_length, ordered.rest_length);
     EXPECT_EQ(m.derived.position_jitter, 0.0);
   }
@@ -156,7 +156,7 @@ TEST(Disorder, RodsAreTheOrderedLatticesTwelveNeighboursAtTheirJitteredLengths) 
     const double A = 0.2;  // the largest allowed
     const Model m = jittered(5, A, more);
     ASSERT_EQ(m.periodic.on(), periodic);
-    EXPECT_EQ(m.rods.ends, ordered.rods.ends) << "bonds come from the ordered lattice's topology";
+    EXPECT_EQ(m.rods.ends, ordered.rods.ends) << "rods come from the ordered lattice's topology";
     // Coordination: 12 rods for every site away from the open faces (and from y's when not periodic).
     const double a = m.derived.cell_edge;
     Vec3 hi = Vec3::Zero();

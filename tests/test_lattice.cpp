@@ -18,7 +18,7 @@ namespace {
 // Bonds of an NX x NY x NZ cell block (half-open index box 2N per axis): for each of the six
 // directions (1,+-1,0), (1,0,+-1), (0,1,+-1) the bonded sites fill a box one shorter along
 // the two axes involved, half of whose points have an even index sum.
-long expected_bonds(long nx, long ny, long nz) {
+long expected_rods(long nx, long ny, long nz) {
   return 2 * ((2 * nx - 1) * (2 * ny - 1) * nz + (2 * nx - 1) * (2 * nz - 1) * ny + (2 * ny - 1) * (2 * nz - 1) * nx);
 }
 
@@ -29,18 +29,18 @@ TEST(Lattice, CountsByCells) {
     spec.cells = c;
     const Lattice lat = generate_fcc(spec);
     EXPECT_EQ(long(lat.position.size()), 4L * c[0] * c[1] * c[2]);
-    EXPECT_EQ(long(lat.bonds.size()), expected_bonds(c[0], c[1], c[2]));
+    EXPECT_EQ(long(lat.rods.size()), expected_rods(c[0], c[1], c[2]));
   }
 }
 
 TEST(Lattice, W1SceneMatchesPeers) {
-  // validation/bench/peers/README.md: 19,652 particles and 111,078 bonds.
+  // validation/bench/peers/README.md: 19,652 particles and 111,078 rods.
   FccSpec spec;
   spec.radius = 0.5e-3;
   spec.cells = {17, 17, 17};
   const Lattice lat = generate_fcc(spec);
   EXPECT_EQ(lat.position.size(), 19652u);
-  EXPECT_EQ(lat.bonds.size(), 111078u);
+  EXPECT_EQ(lat.rods.size(), 111078u);
 }
 
 TEST(Lattice, BondLengthsCoordinationAndUniqueness) {
@@ -51,8 +51,8 @@ TEST(Lattice, BondLengthsCoordinationAndUniqueness) {
   const double d = 2 * spec.radius;
   std::vector<int> coordination(lat.position.size(), 0);
   std::set<std::pair<int, int>> seen;
-  for (std::size_t b = 0; b < lat.bonds.size(); ++b) {
-    const auto [i, j] = lat.bonds[b];
+  for (std::size_t b = 0; b < lat.rods.size(); ++b) {
+    const auto [i, j] = lat.rods[b];
     EXPECT_LT(i, j);
     EXPECT_TRUE(seen.insert({i, j}).second) << "bond (" << i << "," << j << ") twice";
     // Lattice sites are multiples of a/2; the length is 2R to rounding (1e-12 relative).
@@ -60,7 +60,7 @@ TEST(Lattice, BondLengthsCoordinationAndUniqueness) {
     ++coordination[i];
     ++coordination[j];
   }
-  // Interior sites (at least one half-cell from every face) have exactly 12 bonds.
+  // Interior sites (at least one half-cell from every face) have exactly 12 rods.
   const double h = d / std::sqrt(2.0);
   Eigen::Vector3d hi(4 * 2 * h - h, 5 * 2 * h - h, 6 * 2 * h - h);
   int interior = 0;
@@ -80,7 +80,7 @@ TEST(Lattice, BondLengthsCoordinationAndUniqueness) {
   for (std::size_t i = 0; i < lat.position.size(); ++i)
     for (std::size_t j = i + 1; j < lat.position.size(); ++j)
       if (std::abs((lat.position[i] - lat.position[j]).norm() - d) < 1e-6 * d) ++brute;
-  EXPECT_EQ(brute, long(lat.bonds.size()));
+  EXPECT_EQ(brute, long(lat.rods.size()));
 }
 
 TEST(Lattice, BySizeFillsTheClosedBox) {
@@ -115,10 +115,10 @@ TEST(Lattice, Hdf5RoundTrip) {
   write_lattice(dir / "l.h5", lat);
   const Lattice back = read_lattice(dir / "l.h5");
   ASSERT_EQ(back.position.size(), lat.position.size());
-  ASSERT_EQ(back.bonds.size(), lat.bonds.size());
+  ASSERT_EQ(back.rods.size(), lat.rods.size());
   for (std::size_t i = 0; i < lat.position.size(); ++i) EXPECT_EQ(back.position[i], lat.position[i]);
-  for (std::size_t b = 0; b < lat.bonds.size(); ++b) {
-    EXPECT_EQ(back.bonds[b], lat.bonds[b]);
+  for (std::size_t b = 0; b < lat.rods.size(); ++b) {
+    EXPECT_EQ(back.rods[b], lat.rods[b]);
     EXPECT_EQ(back.rest_length[b], lat.rest_length[b]);
   }
   EXPECT_EQ(back.cell_edge, lat.cell_edge);
@@ -131,7 +131,7 @@ TEST(Lattice, CliWritesFileAndCounts) {
                                    (dir / "w.h5"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("96 particles"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(std::to_string(expected_bonds(2, 3, 4)) + " bonds"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(std::to_string(expected_rods(2, 3, 4)) + " rods"), std::string::npos) << r.output;
   const Lattice lat = read_lattice(dir / "w.h5");
   EXPECT_EQ(lat.position.size(), 96u);
   const auto bad = test::run_command(std::string(SWARF_BINARY) + " lattice --cells 2,3,4 --radius -1 --out " +

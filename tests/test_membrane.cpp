@@ -213,9 +213,9 @@ TEST(Membrane, ClampedEdgesHoldThePreTensionedSheet) {
 }
 
 // The transverse wave at a coarse resolution (validation/membrane at a quarter of its size):
-// a clamped sheet, 128 x 128 spacings (R = 0.5 mm), under T = 144 N/m (bond pre-strain 4 %),
+// a clamped sheet, 128 x 128 spacings (R = 0.5 mm), under T = 144 N/m (rod pre-strain 4 %),
 // excited at its centre by a pulse of wave length c_T tau = 16 spacings; the peaks' arrival
-// along a bond direction between 1.5 and 3 wave lengths against c_T = sqrt(T / rho_A).
+// along a rod direction between 1.5 and 3 wave lengths against c_T = sqrt(T / rho_A).
 // Tolerance 2 %: at 16 spacings the discrete branch's group velocity lies 1.4 % below c_T, and
 // the cylindrical wave's near field bends the arrival times this close to the source
 // (validation/membrane/README.md); a wrong mass, tension or bond stiffness moves c_T by more.

@@ -25,7 +25,7 @@ Model pair_model(const test::TempDir& dir, const std::string& integrator, double
   Lattice lat;
   lat.position = {Vec3(0, 0, 0), Vec3(kL0 - compression, 0, 0)};
   lat.radius = {kRadius, kRadius};
-  lat.bonds = {{0, 1}};
+  lat.rods = {{0, 1}};
   lat.rest_length = {kL0};
   write_lattice(dir / "pair.h5", lat);
   return build_model(parse_case("[workpiece]\nlattice_file = \"" + (dir / "pair.h5") +

@@ -35,7 +35,7 @@ Model chain_model(const test::TempDir& dir, int n, const std::string& rod, const
     lat.radius.push_back(kRadius);
   }
   for (int i = 0; i + 1 < n; ++i) {
-    lat.bonds.push_back({i, i + 1});
+    lat.rods.push_back({i, i + 1});
     lat.rest_length.push_back(kL0);
   }
   write_lattice(dir / "chain.h5", lat);

@@ -21,7 +21,7 @@ Model two_particles(const test::TempDir& dir, double dt) {
   Lattice lat;
   lat.position = {Vec3(0, 0, 0), Vec3(2 * kRadius, 0, 0)};
   lat.radius = {kRadius, kRadius};
-  lat.bonds = {{0, 1}};
+  lat.rods = {{0, 1}};
   lat.rest_length = {2 * kRadius};
   write_lattice(dir / "two.h5", lat);
   const std::string toml = "[workpiece]\nlattice_file = \"" + (dir / "two.h5") +

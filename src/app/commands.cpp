@@ -49,13 +49,13 @@ struct LatticeCommand final : Command {
   std::string size_s, cells_s, out;
   double radius = 0, tol = 1e-6;
   explicit LatticeCommand(CLI::App& app) {
-    sub = app.add_subcommand("lattice", "Generate an FCC lattice with nearest-neighbour bonds (HDF5)");
+    sub = app.add_subcommand("lattice", "Generate an FCC lattice with nearest-neighbour rods (HDF5)");
     auto* o_size = sub->add_option("--size", size_s, "Box size LX,LY,LZ in m (every site in the closed box)");
     auto* o_cells = sub->add_option("--cells", cells_s, "Conventional cells NX,NY,NZ (4 NX NY NZ particles)");
     o_size->excludes(o_cells);
-    sub->add_option("--radius", radius, "Particle radius R in m (bond length 2R)")->required();
+    sub->add_option("--radius", radius, "Particle radius R in m (rod length 2R)")->required();
     sub->add_option("--out", out, "Output HDF5 file")->required();
-    sub->add_option("--bond-tolerance", tol, "Relative tolerance on the bond length 2R (default 1e-6)");
+    sub->add_option("--bond-tolerance", tol, "Relative tolerance on the rod length 2R (default 1e-6)");
   }
   int run() override {
     FccSpec spec;
@@ -78,7 +78,7 @@ struct LatticeCommand final : Command {
     }
     const auto lattice = generate_fcc(spec);
     write_lattice(out, lattice);
-    fmt::print("wrote {}: {} particles, {} bonds\n", out, lattice.position.size(), lattice.bonds.size());
+    fmt::print("wrote {}: {} particles, {} rods\n", out, lattice.position.size(), lattice.rods.size());
     return 0;
   }
 };

@@ -57,8 +57,8 @@ void print_setup(const Model& m, int threads) {
   if (m.periodic.on())
     say("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n", m.periodic.period);
   if (d.membrane) {
-    say("  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (bond "
-        "pre-strain {:.4g}); bond k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",
+    say("  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (rod "
+        "pre-strain {:.4g}); rod k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",
         d.membrane_modulus_2d, d.membrane_areal_density, d.membrane_tension, d.membrane_pre_strain, d.rod_stiffness,
         d.rod_damping);
     say("  membrane waves: c_L = {:.4g} m/s, c_S = {:.4g} m/s, c_T = sqrt(T/rho_A) = {:.4g} m/s; CFL step d/c_L = "

@@ -43,7 +43,7 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
            "turns a generated lattice; lattice_file's positions are used as they are");
   if (!w.lattice_file.empty() && (r.has("radius") || r.has("bond_tolerance"))) {
     const char* key = r.has("radius") ? "radius" : "bond_tolerance";
-    r.fail(key, r.get(key), "radii and bonds come from lattice_file; remove this key");
+    r.fail(key, r.get(key), "radii and rods come from lattice_file; remove this key");
   }
   if (!w.lattice_file.empty() && w.disorder_seed > 0)
     r.fail("disorder_seed", r.get("disorder_seed"),
@@ -82,10 +82,10 @@ void read_membrane(const CaseInput& in, CaseSettings& cs) {
     r.fail("poisson_ratio", r.get("poisson_ratio"),
            "cannot be represented: a triangular lattice of central springs has nu = 1/3 in the plane, fixed "
            "(give 1/3 or leave the key out)");
-  // T = sqrt(3) k eps0 / (1 + eps0) with k = sqrt(3)/2 E t: a bond pre-strain below 1 holds T < 3/4 E t.
+  // T = sqrt(3) k eps0 / (1 + eps0) with k = sqrt(3)/2 E t: a rod pre-strain below 1 holds T < 3/4 E t.
   if (!(m.pre_tension < 0.75 * m.youngs_modulus * m.thickness))
     r.fail("pre_tension", r.get("pre_tension"),
-           fmt::format("needs a bond pre-strain of 1 or more: must be below 3/4 E t = {:.6g} N/m",
+           fmt::format("needs a rod pre-strain of 1 or more: must be below 3/4 E t = {:.6g} N/m",
                        0.75 * m.youngs_modulus * m.thickness));
   if (r.has("density") && r.has("areal_density"))
     r.fail("areal_density", r.get("areal_density"), "give either density (kg/m^3, times thickness) or areal_density");
@@ -93,7 +93,7 @@ void read_membrane(const CaseInput& in, CaseSettings& cs) {
     throw InputError(fmt::format("{}: a case has either a [workpiece] or a [membrane], not both", in.source));
   if (in.table("rod"))
     throw InputError(
-        fmt::format("{}: [rod] does not apply to a [membrane], whose bonds follow from its own modulus "
+        fmt::format("{}: [rod] does not apply to a [membrane], whose rods follow from its own modulus "
                     "and damping_ratio: remove the table",
                     in.source));
   // [material] then only gives the free particles' density.

@@ -25,7 +25,7 @@ struct WorkpieceSettings {
   std::array<int, 3> cells{0, 0, 0};    ///< conventional FCC cells per axis (generate by cells)
   std::array<double, 3> size{0, 0, 0};  ///< box size, m (generate by size, if cells not given)
   double radius = 0.5e-3;               ///< particle radius R, m (nearest-neighbour distance 2R)
-  double bond_tolerance = 1e-6;         ///< relative tolerance on the bond length 2R, 1
+  double bond_tolerance = 1e-6;         ///< relative tolerance on the rod length 2R, 1
   bool periodic_width = false;          ///< periodic along y (plane strain): period = cells[1] x a
   double lattice_rotation = 0.0;        ///< turn of the lattice about y, deg (fcc_lattice.h)
   int disorder_seed = 0;                ///< seed of the position jitter (lattice_disorder.h); 0 = the ordered lattice
@@ -66,8 +66,8 @@ struct MembraneSettings {
   double density = 1000.0;                ///< rho, kg/m^3 (areal density rho t)
   double areal_density = 0.0;             ///< kg/m^2, replaces density x thickness when > 0
   double pre_tension = 0.0;               ///< isotropic in-plane tension of the sheet as generated, N/m
-  double damping_ratio = 0.0;             ///< bond dashpot as a fraction of critical for two particles, 1
-  bool clamp_edges = false;               ///< hold every edge site (fewer than 6 bonds) fixed
+  double damping_ratio = 0.0;             ///< rod dashpot as a fraction of critical for two particles, 1
+  bool clamp_edges = false;               ///< hold every edge site (fewer than 6 rods) fixed
 };
 
 /// [material]: what the particles are made of.

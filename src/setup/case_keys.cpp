@@ -38,7 +38,7 @@ const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
        .unit = "1",
        .range = in(0, 0.2, "[)"),
        .rule = "not with `lattice_file`",
-       .doc = "Relative tolerance on the bond length 2R when bonding generated sites."},
+       .doc = "Relative tolerance on the rod length 2R when bonding generated sites."},
       {.name = "periodic_width",
        .field = &S::periodic_width,
        .rule = "only with `cells`, and `cells[1]` >= 2",
@@ -109,7 +109,7 @@ const std::vector<Key<MembraneSettings>>& membrane_keys() {
        .field = &S::radius,
        .unit = "m",
        .range = kRadius,
-       .doc = "Particle radius R; the sites are 2R apart (neighbours touch), the bonds' rest length is "
+       .doc = "Particle radius R; the sites are 2R apart (neighbours touch), the rods' rest length is "
               "2R / (1 + pre-strain)."},
       {.name = "thickness",
        .field = &S::thickness,
@@ -124,7 +124,7 @@ const std::vector<Key<MembraneSettings>>& membrane_keys() {
        .no_default = true,
        .default_note = "required",
        .range = kPositive,
-       .doc = "Young's modulus E of the sheet's material. The bonds get k = sqrt(3)/2 E t (N/m) "
+       .doc = "Young's modulus E of the sheet's material. The rods get k = sqrt(3)/2 E t (N/m) "
               "([membranes](#membrane-relations))."},
       {.name = "poisson_ratio",
        .field = &S::poisson_ratio,
@@ -150,18 +150,18 @@ const std::vector<Key<MembraneSettings>>& membrane_keys() {
        .field = &S::pre_tension,
        .unit = "N/m",
        .range = kNonNegative,
-       .rule = "< 3/4 E t (a bond pre-strain below 1)",
-       .doc = "Isotropic in-plane tension T of the sheet as generated: every bond starts stretched by the "
+       .rule = "< 3/4 E t (a rod pre-strain below 1)",
+       .doc = "Isotropic in-plane tension T of the sheet as generated: every rod starts stretched by the "
               "pre-strain that carries it. Hold the edges (`clamp_edges`) or the sheet contracts."},
       {.name = "damping_ratio",
        .field = &S::damping_ratio,
        .unit = "1",
        .range = in(0, 1, "[]"),
-       .doc = "Bond dashpot as a fraction of critical damping of one bond between two particles (as "
+       .doc = "Rod dashpot as a fraction of critical damping of one rod between two particles (as "
               "`rod.damping_ratio`)."},
       {.name = "clamp_edges",
        .field = &S::clamp_edges,
-       .doc = "Holds every edge site (fewer than 6 bonds) fixed in x, y and z: a group named `membrane_edges`."},
+       .doc = "Holds every edge site (fewer than 6 rods) fixed in x, y and z: a group named `membrane_edges`."},
   };
   return keys;
 }

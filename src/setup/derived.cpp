@@ -98,7 +98,7 @@ MembraneRelations membrane_relations_of(const CaseSettings& cs) {
   }
 }
 
-// The membrane's sheet: bonds of stiffness k as rods (the rod law with plasticity and failure
+// The membrane's sheet: rods of stiffness k (the rod law with plasticity and failure
 // off: one law, one kernel, and the dashpot comes with it), the mass per site, the stable step
 // of the triangular lattice (omega_max^2 = 6 (k + f/d) / m), and the CFL step of its waves.
 static Derived membrane_derived(const CaseSettings& cs, const Lattice& lat, Derived d) {
@@ -227,7 +227,7 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   // eta A / L0 for its own L0, so the ratio c/k is the same for every rod, and the stiffest
   // rods' mode has sqrt(kb_max/kb) times the ratio.
   const double zeta_max = std::sqrt(modal / 2.0) * zeta * std::sqrt(d.rod_stiffness_max / kb);
-  d.dt_stable = lat.bonds.empty() ? HUGE_VAL : 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
+  d.dt_stable = lat.rods.empty() ? HUGE_VAL : 2.0 / d.omega_max * (std::sqrt(1.0 + zeta_max * zeta_max) - zeta_max);
   limit_by_contacts(cs, d);
   d.wave_speed = d.nn_distance * std::sqrt(kb / m);
 

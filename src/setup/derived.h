@@ -43,14 +43,14 @@ struct Derived {
   double bar_failure_stress = 0;     ///< 3 (E100/E) sigma_max (first rods break), Pa
   double bar_stress_factor = 0;      ///< 3 E100 / E: sigma_bar = factor * sigma_rod(eps_bar/3), 1
 
-  // [membrane] (membrane_lattice.h): the sheet's relations; the rods are its bonds.
+  // [membrane] (membrane_lattice.h): the sheet's relations; the rods are the sheet's.
   bool membrane = false;                  ///< the particles are a [membrane]
   double membrane_modulus_2d = 0;         ///< E_2D = E t, N/m
   double membrane_areal_density = 0;      ///< rho_A, kg/m^2
   double membrane_tension = 0;            ///< isotropic pre-tension T, N/m
-  double membrane_pre_strain = 0;         ///< bond strain carrying T, 1
+  double membrane_pre_strain = 0;         ///< rod strain carrying T, 1
   double membrane_lambda = 0;             ///< in-plane Lame constant = mu = sqrt(3) k/4, N/m
-  double membrane_wave_longitudinal = 0;  ///< c_L along a bond direction (pre-stress included), m/s
+  double membrane_wave_longitudinal = 0;  ///< c_L along a rod direction (pre-stress included), m/s
   double membrane_wave_shear = 0;         ///< c_S, m/s
   double membrane_wave_transverse = 0;    ///< c_T = sqrt(T / rho_A), m/s
   double membrane_dt_cfl = 0;             ///< d / c_L: a wave crosses one spacing per step, s

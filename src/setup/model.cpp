@@ -100,20 +100,20 @@ void bond_across_periodic_width(const CaseSettings& cs, const FccSpec& spec, Lat
       periodic.wrap(dx);
       const double len = dx.norm();
       if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
-      lat.bonds.push_back({std::min(i, j), std::max(i, j)});
+      lat.rods.push_back({std::min(i, j), std::max(i, j)});
       lat.rest_length.push_back(len);
     }
   // Keep the rods sorted as the generator gives them (the gather order follows the rods).
-  std::vector<std::size_t> order(lat.bonds.size());
+  std::vector<std::size_t> order(lat.rods.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.bonds[x] < lat.bonds[y]; });
-  std::vector<std::array<std::int32_t, 2>> bonds(order.size());
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.rods[x] < lat.rods[y]; });
+  std::vector<std::array<std::int32_t, 2>> sorted(order.size());
   std::vector<double> rest(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
-    bonds[k] = lat.bonds[order[k]];
+    sorted[k] = lat.rods[order[k]];
     rest[k] = lat.rest_length[order[k]];
   }
-  lat.bonds.swap(bonds);
+  lat.rods.swap(sorted);
   lat.rest_length.swap(rest);
 }
 
@@ -148,7 +148,7 @@ Lattice workpiece_lattice(const CaseSettings& cs, Periodic& periodic) {
 }
 
 // The free particles ([[particle]] and [particles] file) appended to the lattice's
-// positions and radii (no bonds); their velocities and spins returned beside.
+// positions and radii (no rods); their velocities and spins returned beside.
 void append_free_particles(const CaseSettings& cs, Lattice& lat, std::vector<Vec3>& free_velocity,
                            std::vector<Vec3>& free_spin) {
   for (const auto& ps : cs.particles) {
@@ -424,7 +424,7 @@ Model build_model(const CaseSettings& cs) {
   r.area = model.derived.rod_area;
   r.formation.overlap = cs.rod.bond_overlap;
   r.formation.exchange = cs.rod.neighbour_exchange;
-  r.ends = lat.bonds;
+  r.ends = lat.rods;
   r.rest_length = lat.rest_length;
   r.reset_state();
   r.build_rows(model.particles.size());

@@ -7,7 +7,7 @@
 // set-up); analyse.py measures the speeds and draws the plots.
 //
 // The sheet: 120 x 120 mm, E = 5 MPa, t = 0.5 mm, rho = 1200 kg/m^3 (a rubber sheet), tension
-// T = 37.5 N/m (bond pre-strain 1 %), clamped edges; two resolutions, R = 0.25 and 0.125 mm. The
+// T = 37.5 N/m (rod pre-strain 1 %), clamped edges; two resolutions, R = 0.25 and 0.125 mm. The
 // pulse's wave length c tau is 10 mm (20 and 40 spacings); the probes lie 1 to 5 wave lengths
 // from the source, and the run ends before the reflection from the clamped edge (6 wave lengths
 // away) reaches the farthest probe.

@@ -2,11 +2,11 @@
 #include "app/observers/case_observers.h"
 
 #include "app/observers/body_states.h"
-#include "app/observers/bond_counts.h"
 #include "app/observers/cut_probe.h"
 #include "app/observers/energy_balance.h"
 #include "app/observers/group_reactions.h"
 #include "app/observers/mesh_forces.h"
+#include "app/observers/rod_counts.h"
 #include "app/observers/step_counters.h"
 #include "app/observers/uniaxial_probe.h"
 #include "setup/model.h"
@@ -18,7 +18,7 @@ std::vector<std::unique_ptr<Observer>> observers_for(const Model& model, bool en
   if (model.uniaxial.enabled) obs.push_back(std::make_unique<UniaxialProbe>(model));
   obs.push_back(std::make_unique<StepCounters>(model.settings.integrator.end_time, model.particles.size()));
   obs.push_back(std::make_unique<EnergyBalance>(model.rods.size(), energy_check));
-  obs.push_back(std::make_unique<BondCounts>(model.rods.size()));
+  obs.push_back(std::make_unique<RodCounts>(model.rods.size()));
   obs.push_back(std::make_unique<GroupReactions>(model.groups));
   obs.push_back(std::make_unique<MeshForces>(model.meshes));
   if (!model.bodies.empty()) obs.push_back(std::make_unique<BodyStates>(model.bodies, model.meshes));

@@ -10,7 +10,7 @@ namespace swarf {
 
 struct Model;
 
-/// The uniaxial probe (with [uniaxial]), the step counters, the energy balance, the bond
+/// The uniaxial probe (with [uniaxial]), the step counters, the energy balance, the rod
 /// counts, the group reactions, the mesh forces and the cut probe (with a tool mesh and a
 /// workpiece); they hold 'model' by reference. 'energy_check': a lost energy balance stops
 /// the run (EnergyBalance).

@@ -1,4 +1,4 @@
-// rods.h: the bonds of the workpiece, each rod stored once.
+// rods.h: the rods of the workpiece, each stored once.
 //
 // Per rod: its two particles, rest length, the COMMITTED plastic shift and intact flag,
 // plus the trial values and the force of the last evaluation, kept as one coefficient: the

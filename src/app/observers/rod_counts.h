@@ -1,4 +1,4 @@
-// bond_counts.h: what holds the particles together, counted per row: rods broken (and their
+// rod_counts.h: what holds the particles together, counted per row: rods broken (and their
 // fraction of all rods) and contacts touching; the breakage in summary.json "results".
 #pragma once
 
@@ -6,9 +6,11 @@
 
 namespace swarf {
 
-class BondCounts final : public Observer {
+class RodCounts final : public Observer {
  public:
-  explicit BondCounts(std::size_t rods) : rods_(rods) {}
+  explicit RodCounts(std::size_t rods) : rods_(rods) {}
+  // "bonds": the checkpoint group of this observer, named before "rod" was chosen (kept so that
+  // checkpoints written by earlier versions restart).
   std::string_view name() const override { return "bonds"; }
   void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;

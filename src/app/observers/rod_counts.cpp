@@ -1,5 +1,5 @@
-// bond_counts.cpp: broken rods and touching contacts (see bond_counts.h).
-#include "app/observers/bond_counts.h"
+// rod_counts.cpp: broken rods and touching contacts (see rod_counts.h).
+#include "app/observers/rod_counts.h"
 
 #include <algorithm>
 
@@ -7,23 +7,23 @@
 
 namespace swarf {
 
-double BondCounts::broken_fraction(const Simulation& sim) const {
+double RodCounts::broken_fraction(const Simulation& sim) const {
   return double(sim.broken_rods()) / std::max<double>(1.0, double(rods_));  // (no rods: 0, not NaN)
 }
 
-void BondCounts::columns(std::vector<Column>& out) const {
+void RodCounts::columns(std::vector<Column>& out) const {
   out.insert(out.end(),
              {{"broken_rods", "1", "the lattice's own rods broken now"},
               {"broken_fraction", "1", "broken_rods / the lattice's rods at the start"},
               {"contacts", "1", "contacts touching in the last evaluation (sphere-sphere and sphere-triangle)"}});
 }
 
-void BondCounts::row(const Simulation& sim, std::vector<double>& values) {
+void RodCounts::row(const Simulation& sim, std::vector<double>& values) {
   values.insert(values.end(), {double(sim.broken_rods()), broken_fraction(sim),
                                double(sim.contacts().enabled() ? sim.contacts().touching() : 0)});
 }
 
-void BondCounts::finish(const RunEnd& end, nlohmann::json& summary) {
+void RodCounts::finish(const RunEnd& end, nlohmann::json& summary) {
   summary["results"]["broken_rods"] = end.sim.broken_rods();
   summary["results"]["broken_fraction"] = broken_fraction(end.sim);
   if (end.sim.world().rods.formation.enabled()) summary["results"]["formed_rods"] = end.sim.formed_rods();
