@@ -225,6 +225,8 @@ def main():
         bar = GetScalarBar(lut, view)
         bar.Title = title
         bar.ComponentTitle = ""
+        bar.Orientation = "Horizontal"  # above the uncut surface ahead of the chip, off the block
+        bar.WindowLocation = "Upper Right Corner"
         bar.TitleColor = [0.0, 0.0, 0.0]
         bar.LabelColor = [0.0, 0.0, 0.0]
         for name, src in sources.items():
@@ -235,7 +237,9 @@ def main():
                 continue
             m = Show(src, view)
             m.SetRepresentationType("Surface")
-            ColorBy(m, None)
+            # Solid colour. (Not ColorBy(m, None): ParaView 5.11 raises 'invalid association
+            # string NONE' for a representation that was never coloured by an array.)
+            m.ColorArrayName = ["POINTS", ""]
             if name in final:  # the chip surface: the end of the run, translucent
                 m.DiffuseColor = [0.95, 0.75, 0.2]
                 m.AmbientColor = [0.95, 0.75, 0.2]
@@ -245,6 +249,9 @@ def main():
                 m.AmbientColor = [0.55, 0.55, 0.58]
 
     # The camera: along +y, x to the right, z up, parallel; on the cut when there is a tool.
+    # (Rendered once first: pvpython's first Render of a view resets its camera.)
+    for v in views:
+        Render(v)
     view = views[0]
     view.ResetCamera()
     view.CameraParallelProjection = 1

@@ -20,7 +20,7 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSWARF_FUZZ=ON -DSWARF_BUILD_TEST
   > build-fuzz/configure.log
 targets=()
 for n in "${names[@]}"; do targets+=(--target "fuzz_$n"); done
-cmake --build build-fuzz -j2 "${targets[@]}"
+cmake --build build-fuzz -j"${SWARF_JOBS:-2}" "${targets[@]}"
 
 status=0
 for n in "${names[@]}"; do

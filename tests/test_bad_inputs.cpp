@@ -476,7 +476,7 @@ TEST(DiskFull, AFrameThatCannotBeWrittenStopsTheRunAndIsNotRenamed) {
   for (const auto& e : std::filesystem::directory_iterator(dir / "tiny/cut/frames")) {
     const std::string name = e.path().filename().string();
     if (name.find(".part") != std::string::npos) continue;
-    // Every file under its final name is complete: VTK's appended XML ends with its closing tag.
+    // Every file under its final name is complete: VTK's XML ends with its closing tag.
     const std::string text = test::read_file(e.path().string());
     EXPECT_NE(text.rfind("</VTKFile>"), std::string::npos) << name;
   }
