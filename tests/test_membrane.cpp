@@ -241,6 +241,87 @@ TEST(Membrane, TransverseWaveSpeedAtACoarseResolution) {
   EXPECT_NEAR(test::fitted_speed(pulse.distance, peaks), c, 0.02 * c);
 }
 
+// The lattice's dispersion where the wave length nears the spacing, which the pulses of
+// validation/membrane cannot reach, for its three branches along a rod direction (x). A standing
+// wave u = A cos(q (x - x_c)) e_a, laid on a clamped, pre-tensioned sheet at rest, is an exact
+// mode of the infinite lattice (the neighbours at x +- d/2 pull symmetrically about the row,
+// so no other component is stirred), with, from the rod's axial stiffness k and its geometric
+// stiffness f/d across it (docs/physics.md, Membranes),
+//     transverse (a = z):   m w^2 = (f/d) [2 (1 - cos q d) + 4 (1 - cos(q d/2))]
+//     shear (a = y):        m w^2 = (f/d) 2 (1 - cos q d) + (3 k + f/d) (1 - cos(q d/2))
+//     longitudinal (a = x): m w^2 = 2 k (1 - cos q d) + (k + 3 f/d) (1 - cos(q d/2)),
+// whose long-wave limits are c_T, c_S and c_L. Velocity Verlet oscillates at W with
+// cos(W h) = 1 - (w h)^2 / 2 (its recurrence for an oscillator). The sheet's centre follows the
+// mode until the edges, clamped off the mode, are heard (their disturbance travels at most c_T
+// out of plane, c_L in plane); W is measured from the zero crossings of the centre's
+// displacement over 3 periods, before that (linear interpolation between steps: its error is
+// third order at a zero of a cosine). Step 0.2 of the stable step, so that the in-plane modes
+// get 25 steps a period or more. Tolerance 1e-4 relative: the amplitude (1e-4 d) shifts a
+// frequency by a relative (A q)^2 k d/f ~ 1e-6 at most, and the crossings' interpolation errs
+// below that; a wrong neighbour count, mass, rest length, tension or stiffness, or a
+// continuum-like law (which lies 0.8 % to 36 % off at these wave lengths), misses by more.
+// validation/membrane/README.md has the numbers.
+TEST(Membrane, DispersionOfTheThreeBranchesIsTheLatticesClosedForm) {
+  const double d = 1e-3, T = 144.0;
+  const std::vector<std::string> keys = {"membrane.length=0.1",       "membrane.width=0.1",
+                                         "membrane.radius=0.5e-3",    fmt::format("membrane.pre_tension={}", T),
+                                         "membrane.clamp_edges=true", "integrator.scheme=verlet"};
+  const double dt = 0.2 * sheet("", keys).derived.dt_stable;
+  std::vector<std::string> with_dt = keys;
+  with_dt.push_back(fmt::format("integrator.dt={:.17g}", dt));
+  const Model m = sheet("", with_dt);
+  const double mass = m.particles.mass[0], f = T * d / std::sqrt(3.0), k = m.derived.rod_stiffness;
+  std::size_t centre = 0;
+  const Vec3 middle(0.05, 0.05, 0);
+  for (std::size_t i = 0; i < m.particles.size(); ++i)
+    if ((m.particles.position[i] - middle).norm() < (m.particles.position[centre] - middle).norm()) centre = i;
+  const double xc = m.particles.position[centre][0];
+  struct Branch {
+    const char* name;
+    int axis;
+    double c;      // long-wave speed, m/s
+    double heard;  // fastest signal from the edges, m/s
+    std::vector<double> spacings;
+  };
+  const double cL = m.derived.membrane_wave_longitudinal, cS = m.derived.membrane_wave_shear,
+               cT = m.derived.membrane_wave_transverse;
+  const std::vector<Branch> branches = {
+      {"transverse", 2, cT, cT, {2, 4, 8}}, {"shear", 1, cS, cL, {3, 4, 8}}, {"longitudinal", 0, cL, cL, {3, 4, 8}}};
+  for (const Branch& b : branches) {
+    for (const double spacings : b.spacings) {
+      Model run = m;
+      const double q = 2 * M_PI / (spacings * d), amplitude = 1e-4 * d, c1 = 1 - std::cos(q * d),
+                   c2 = 1 - std::cos(q * d / 2);
+      for (std::size_t i = 0; i < run.particles.size(); ++i)
+        if (run.particles.group[i] < 0)  // (the clamped edge stays where it is)
+          run.particles.position[i][b.axis] += amplitude * std::cos(q * (run.particles.position[i][0] - xc));
+      const double mw2 = b.axis == 2   ? f / d * (2 * c1 + 4 * c2)
+                         : b.axis == 1 ? f / d * 2 * c1 + (3 * k + f / d) * c2
+                                       : 2 * k * c1 + (k + 3 * f / d) * c2;
+      const double w = std::sqrt(mw2 / mass), expected = std::acos(1 - 0.5 * w * w * dt * dt) / dt;
+      ASSERT_LT(3.5 * 2 * M_PI / expected * b.heard, 0.05 - 0.001) << b.name << ": the edges would be heard";
+      Simulation sim(run, run.step);
+      ASSERT_EQ(sim.dt(), dt);
+      auto displacement = [&] {
+        return run.particles.position[centre][b.axis] - run.particles.initial_position[centre][b.axis];
+      };
+      std::vector<double> crossings;
+      double t0 = 0, u0 = displacement();
+      while (crossings.size() < 7) {  // 7 zeros: 3 periods between the first and the last
+        sim.step();
+        const double t1 = sim.time(), u1 = displacement();
+        if ((u0 > 0) != (u1 > 0)) crossings.push_back(t0 + (t1 - t0) * u0 / (u0 - u1));
+        t0 = t1;
+        u0 = u1;
+        ASSERT_LT(t1, 10 * 2 * M_PI / expected) << b.name << ": no oscillation at " << spacings << " spacings";
+      }
+      const double measured = 6 * M_PI / (crossings.back() - crossings.front());
+      EXPECT_NEAR(measured, expected, 1e-4 * expected) << b.name << ", " << spacings << " spacings";
+      EXPECT_GT(std::abs(b.c * q / w - 1), 0.005) << b.name << ": the lattice shows dispersion here";
+    }
+  }
+}
+
 TEST(Membrane, BadKeysAreRejectedWithTheKeyNamed) {
   using test::case_error;
   using test::expect_mentions;
