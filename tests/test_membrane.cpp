@@ -322,6 +322,53 @@ TEST(Membrane, DispersionOfTheThreeBranchesIsTheLatticesClosedForm) {
   }
 }
 
+// Self-contact of the sheet (paper section 5.3: "between unbonded particles Hertz and friction",
+// here within one sheet as it folds): a site j far from site i (no rod, no common neighbour)
+// laid on i with an overlap delta pushes i by the Hertz force of two spheres,
+// F = 4/3 E* sqrt(R*) delta^(3/2), 1/E* = 2 (1 - nu^2)/E, R* = R/2 (hertz.h), at rest (no
+// dashpot, no friction); i's own rods are at their rest length, so that is all i feels. A
+// bonded neighbour pressed onto i by the same overlap adds the rod's force k delta and no
+// contact: the rod replaces the contact between bonded sites. Tolerance 1e-9 relative (the
+// same formula evaluated twice, rounding only); a missing self-contact, a contact on the rod
+// or a double count misses by a factor.
+TEST(Membrane, SelfContactIsHertzBetweenUnbondedSitesOnly) {
+  const double E = 1e7, nu = 0.3, delta = 1e-5;
+  Model m = sheet(fmt::format("[contact]\nyoungs_modulus = {}\npoisson_ratio = {}\n", E, nu));
+  const auto& r = m.rods;
+  auto nearest = [&](const Vec3& x) {
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < m.particles.size(); ++i)
+      if ((m.particles.position[i] - x).norm() < (m.particles.position[best] - x).norm()) best = i;
+    return best;
+  };
+  const std::size_t i = nearest(Vec3(5e-3, 5e-3, 0)), j = nearest(Vec3(1e-3, 1e-3, 0));
+  ASSERT_EQ(r.row_start[i + 1] - r.row_start[i], 6);
+  ASSERT_GT((m.particles.position[j] - m.particles.position[i]).norm(), 6 * kR);  // no common neighbour
+  const double Estar = E / (2 * (1 - nu * nu)), Rstar = kR / 2;
+  const double hertz = 4.0 / 3.0 * Estar * std::sqrt(Rstar) * std::pow(delta, 1.5);
+  {
+    Model run = m;
+    run.particles.position[j] = run.particles.position[i] + Vec3(0, 0, 2 * kR - delta);
+    Simulation sim(run, run.step);  // evaluates the forces of the given state
+    const Vec3 f = run.particles.force[i];
+    EXPECT_NEAR(f[2], -hertz, 1e-9 * hertz);
+    EXPECT_NEAR(f[0], 0.0, 1e-9 * hertz);
+    EXPECT_NEAR(f[1], 0.0, 1e-9 * hertz);
+  }
+  {
+    Model run = m;
+    const auto& e = r.entries[r.row_start[i]];  // a bonded neighbour of i
+    const Vec3 n = (run.particles.position[e.other] - run.particles.position[i]).normalized();
+    run.particles.position[e.other] -= delta * n;
+    Simulation sim(run, run.step);
+    const double rod = m.derived.rod_stiffness * delta;  // the rod, compressed by delta
+    const Vec3 f = run.particles.force[i];
+    EXPECT_NEAR(f.dot(n), -rod, 1e-6 * rod);  // (the rod's strain delta / L0, to first order)
+    EXPECT_GT(hertz, 0.01 * rod) << "a contact on the rod would show";
+    EXPECT_NEAR((f - f.dot(n) * n).norm(), 0.0, 1e-9 * rod);
+  }
+}
+
 TEST(Membrane, BadKeysAreRejectedWithTheKeyNamed) {
   using test::case_error;
   using test::expect_mentions;
