@@ -212,6 +212,18 @@ TEST(Membrane, ClampedEdgesHoldThePreTensionedSheet) {
   EXPECT_NEAR(sim.group_reaction(0)[1], 0.0, 1e-9);
 }
 
+// The clamp takes the sheet's edge only: a free particle ([[particle]]) has no rods either, and
+// was once frozen in the clamp group with the edge sites (found by the membrane restart test).
+TEST(Membrane, ClampedEdgesLeaveFreeParticlesFree) {
+  const Model m = sheet(
+      "[[particle]]\nposition = [5e-3, 5e-3, 2e-3]\nradius = 0.5e-3\n[material]\ndensity = "
+      "1200.0\n[contact]\n",
+      {"membrane.clamp_edges=true"});
+  ASSERT_EQ(m.particles.size(), 21u * 12u + 20u * 12u + 1u);
+  EXPECT_EQ(m.particles.group.back(), -1);
+  EXPECT_EQ(m.groups[0].members.size(), 21u + 20u + 2u * 22u);
+}
+
 // The transverse wave at a coarse resolution (validation/membrane at a quarter of its size):
 // a clamped sheet, 128 x 128 spacings (R = 0.5 mm), under T = 144 N/m (rod pre-strain 4 %),
 // excited at its centre by a pulse of wave length c_T tau = 16 spacings; the peaks' arrival

@@ -431,8 +431,12 @@ Model build_model(const CaseSettings& cs) {
   // Spacing of lattice layers along a cube axis; a membrane's sites are d/2 apart in x on
   // alternate rows.
   const double h = cs.membrane.enabled ? 0.5 * model.derived.nn_distance : 0.5 * model.derived.cell_edge;
-  if (cs.membrane.enabled && cs.membrane.clamp_edges)
-    add_group(model, cs.source, "membrane_edges", membrane_edge(lat), 7, Motion{});
+  if (cs.membrane.enabled && cs.membrane.clamp_edges) {
+    // The sheet's edge only: the free particles appended after its sites have no rods either.
+    auto edge = membrane_edge(lat);
+    std::erase_if(edge, [&](std::int32_t i) { return std::size_t(i) >= model.lattice_particles; });
+    add_group(model, cs.source, "membrane_edges", edge, 7, Motion{});
+  }
   build_groups(cs, model.sites, h, model);
   if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);
