@@ -67,6 +67,17 @@ test::CommandResult run_and_keep_checkpoint(const test::TempDir& dir, const std:
   return a;
 }
 
+// Continues DIR/b/checkpoint.h5 (in DIR/b) on 'threads' threads; returns the summaries of the
+// uninterrupted run (DIR/a) and of the continued one, and checks that the two series agree.
+std::pair<nlohmann::json, nlohmann::json> continue_on(const test::TempDir& dir, int threads) {
+  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads " +
+                             std::to_string(threads));
+  EXPECT_EQ(b.exit_code, 0) << b.output;
+  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
+  return {nlohmann::json::parse(test::read_file(dir / "a/summary.json")),
+          nlohmann::json::parse(test::read_file(dir / "b/summary.json"))};
+}
+
 TEST(Restart, ContinuesBitIdenticallyAndWhateverTheThreads) {
   test::TempDir dir("restart");
   test::write_file(dir / "c.toml", kTinyCut);
@@ -110,11 +121,7 @@ TEST(Restart, ADisorderedWorkpieceContinuesBitIdentically) {
   auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 1);
   ASSERT_EQ(a.exit_code, 0) << a.output;
   ASSERT_NE(a.output.find("disorder: seed 4"), std::string::npos) << a.output;
-  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
-  ASSERT_EQ(b.exit_code, 0) << b.output;
-  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
-  const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
-  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  const auto [sa, sb] = continue_on(dir, 2);
   EXPECT_EQ(sa["state_hash"], sb["state_hash"]);
   EXPECT_EQ(sb["derived"]["disorder_seed"], 4);
 }
@@ -129,12 +136,8 @@ TEST(Restart, ACutThatFormsAndExchangesRodsContinuesBitIdentically) {
                                        cut.substr(at) + "vtk = false\n");
   auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 1);
   ASSERT_EQ(a.exit_code, 0) << a.output;
-  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
-  ASSERT_EQ(b.exit_code, 0) << b.output;
-  const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
-  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  const auto [sa, sb] = continue_on(dir, 2);
   ASSERT_GT(sa["results"]["formed_rods"].get<double>(), 0.0);  // (else the test proves nothing)
-  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
   EXPECT_EQ(sa["state_hash"], sb["state_hash"]);
   EXPECT_EQ(sa["results"], sb["results"]);
 }
@@ -227,11 +230,7 @@ series_interval = 1e-4
 )");
   auto a = run_and_keep_checkpoint(dir, "m.toml", 400, 1);
   ASSERT_EQ(a.exit_code, 0) << a.output;
-  auto b = test::run_command(std::string(SWARF_BINARY) + " run --restart " + (dir / "b/checkpoint.h5") + " --threads 2");
-  ASSERT_EQ(b.exit_code, 0) << b.output;
-  EXPECT_EQ(test::read_file(dir / "a/series.csv"), test::read_file(dir / "b/series.csv"));
-  const auto sa = nlohmann::json::parse(test::read_file(dir / "a/summary.json"));
-  const auto sb = nlohmann::json::parse(test::read_file(dir / "b/summary.json"));
+  const auto [sa, sb] = continue_on(dir, 2);
   EXPECT_EQ(sa["state_hash"], sb["state_hash"]);
   EXPECT_GT(sa["results"]["contact_work_J"].get<double>(), 0.0) << sa["results"].dump();  // the sphere landed
   H5File ck(dir / "b/checkpoint.h5", H5File::Mode::Read);
