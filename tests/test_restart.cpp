@@ -233,6 +233,11 @@ series_interval = 1e-4
   const auto [sa, sb] = continue_on(dir, 2);
   EXPECT_EQ(sa["state_hash"], sb["state_hash"]);
   EXPECT_GT(sa["results"]["contact_work_J"].get<double>(), 0.0) << sa["results"].dump();  // the sphere landed
+  // The effective case records the sheet with its defaults and the free particles' density.
+  const auto& e = sa["case_effective"];
+  EXPECT_EQ(e["membrane"]["pre_tension"], 10.0) << e.dump();
+  EXPECT_TRUE(e["membrane"].contains("poisson_ratio")) << e.dump();
+  EXPECT_EQ(e["material"]["density"], 1200.0) << e.dump();
   H5File ck(dir / "b/checkpoint.h5", H5File::Mode::Read);
   EXPECT_GT(ck.read_double_attribute("steps"), 0.0);
 }

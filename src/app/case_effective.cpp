@@ -55,7 +55,11 @@ nlohmann::json case_effective_json(const CaseSettings& cs) {
     j["workpiece"] = table(workpiece_keys(), cs.workpiece);
     j["material"] = table(material_keys(), cs.material);
     j["rod"] = table(rod_keys(), cs.rod);
+  } else if (!cs.particles.empty() || !cs.particles_file.file.empty()) {
+    // (without a workpiece [material] gives only the free particles' density: case_config.cpp)
+    j["material"] = {{"density", value(cs.material.density)}};
   }
+  if (cs.membrane.enabled) j["membrane"] = table(membrane_keys(), cs.membrane);
   j["integrator"] = table(integrator_keys(), cs.integrator);
   for (const auto& g : cs.groups) {
     nlohmann::json t = table(group_keys(), g);
