@@ -193,7 +193,8 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("motion", motion_keys());
   expect_every_member_keyed("uniaxial", uniaxial_keys(), &UniaxialSettings::enabled);
   expect_every_member_keyed("contact", contact_keys(), &ContactSettings::enabled);
-  expect_every_member_keyed("mesh", mesh_keys(), &MeshSettings::tool, &MeshSettings::motion);
+  expect_every_member_keyed("mesh", mesh_keys(), &MeshSettings::tool, &MeshSettings::motion,
+                            &MeshSettings::hinge_at_point);
   expect_every_member_keyed("particle", particle_keys());
   expect_every_member_keyed("particles", particles_file_keys());
   expect_every_member_keyed("output", output_keys());

@@ -105,8 +105,8 @@ const toml::array* entries(const CaseInput& in, const char* name) {
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
-  for (const char* key : {"density", "mass", "initial_velocity", "angular_velocity", "rotation", "hinge_axis", "fixed",
-                          "force", "torque", "damping", "torque_damping"})
+  for (const char* key : {"density", "mass", "initial_velocity", "angular_velocity", "rotation", "hinge_axis",
+                          "hinge_point", "fixed", "force", "torque", "damping", "torque_damping"})
     if (!body && r.has(key)) r.fail(key, r.get(key), "is a rigid body's key: it needs dynamics = \"rigid_body\"");
   if (!body) return;
   if (open_shape)
@@ -116,6 +116,10 @@ void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   if (r.has("density") == r.has("mass")) r.fail("density", r.get("density"), "give density (kg/m^3) or mass (kg)");
   if (r.has("hinge_axis") && m.rotation != "hinge")
     r.fail("hinge_axis", r.get("hinge_axis"), "is used only with rotation = \"hinge\"");
+  if (r.has("hinge_point") && m.rotation != "hinge")
+    r.fail("hinge_point", r.get("hinge_point"), "is used only with rotation = \"hinge\"");
+  if (r.has("hinge_point") && r.has("fixed"))
+    r.fail("fixed", r.get("fixed"), "does not apply with hinge_point: the axle is fixed there");
   const auto& e = m.hinge_axis;
   const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
   if (!(e2 > 0.0)) r.fail("hinge_axis", r.get("hinge_axis"), "must not be zero");
@@ -138,6 +142,7 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
   if (static_cast<double>(m.divisions[0]) * m.divisions[1] > 1e7)
     r.fail("divisions", r.get("divisions"), "must be two positive integers [n1, n2]");
   m.tool = r.has("rake_angle");
+  m.hinge_at_point = r.has("hinge_point");
   for (const char* key : {"clearance_angle", "edge_radius", "width", "face_length"})
     if (!m.tool && r.has(key)) r.fail(key, r.get(key), "is a tool key: give rake_angle (deg) to make a tool");
   if (m.tool && (!r.has("width") || !r.has("face_length")))

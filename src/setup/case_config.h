@@ -239,6 +239,8 @@ struct MeshSettings {
   std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s, world frame
   std::string rotation = "free";                    ///< "free", "hinge" or "prescribed"
   std::array<double, 3> hinge_axis{0, 1, 0};        ///< hinge direction, world frame
+  std::array<double, 3> hinge_point{0, 0, 0};       ///< a point of the hinge's axis, m (if given)
+  bool hinge_at_point = false;                      ///< hinge_point given: the axis is fixed there
   std::string fixed;                                ///< translation components held: a subset of "xyz"
   std::array<double, 3> force{0, 0, 0};             ///< constant external force, N
   std::array<double, 3> torque{0, 0, 0};            ///< constant external torque, N m

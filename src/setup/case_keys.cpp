@@ -883,14 +883,25 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .choices = {"free", "hinge", "prescribed"},
        .rule = "only with `dynamics = \"rigid_body\"`",
        .doc = "`free`: Euler's equations with the full inertia. `hinge`: turns only about `hinge_axis` through "
-              "the centre of mass. `prescribed`: keeps `angular_velocity` (zero: does not turn).",
+              "the centre of mass, or through `hinge_point`. `prescribed`: keeps `angular_velocity` (zero: does "
+              "not turn).",
        .section = "rigid_body"},
       {.name = "hinge_axis",
        .field = &S::hinge_axis,
        .unit = "1",
        .rule = "non-zero; only with `rotation = \"hinge\"`",
        .doc = "Direction of the hinge's axis, world frame (normalised). The axis passes through the centre of "
-              "mass; add `fixed = \"xyz\"` for a fixed axle.",
+              "mass (add `fixed = \"xyz\"` for a fixed axle there), or through `hinge_point`.",
+       .section = "rigid_body"},
+      {.name = "hinge_point",
+       .field = &S::hinge_point,
+       .unit = "m",
+       .default_note = "the centre of mass",
+       .rule = "only with `rotation = \"hinge\"`; not with `fixed`",
+       .doc = "A point of the hinge's axis, world frame, where the axle is fixed: the body turns about it and "
+              "its centre of mass moves on a circle about the axis (a pendulum, an eccentric wheel). The moment "
+              "of inertia and the torque are taken about the axis through this point; `initial_velocity` is "
+              "replaced by angular_velocity x (centre of mass - hinge_point).",
        .section = "rigid_body"},
       {.name = "fixed",
        .field = &S::fixed,

@@ -307,6 +307,8 @@ static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std:
                 : ms.rotation == "prescribed" ? BodyRotation::Prescribed
                                               : BodyRotation::Free;
   rb.axis = to_vec(ms.hinge_axis).normalized();
+  rb.pivoted = ms.hinge_at_point;
+  rb.pivot = to_vec(ms.hinge_point);
   for (char c : ms.fixed) rb.fixed |= static_cast<std::uint8_t>(1u << (c - 'x'));
   rb.load.force = to_vec(ms.force);
   rb.load.torque = to_vec(ms.torque);

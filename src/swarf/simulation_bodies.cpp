@@ -12,7 +12,8 @@
 // same update under the new torque) after them. Loads linear in the velocities see the
 // drift's predicted velocities v + h a (for the hinge's damper: Heun's explicit trapezoid).
 // A hinge integrates the angle about its fixed axis as a scalar with the same scheme, with
-// I_axis and the torque's axial part, and builds q from the angle, so the axis holds exactly.
+// I_axis and the torque's axial part, and builds q from the angle, so the axis holds exactly;
+// a pivoted hinge places the centre of mass on its circle about the axis from the same angle.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -61,6 +62,11 @@ void Simulation::setup_bodies() {
                       name));
     BodyState& s = rb.state;
     s.orientation /= s.orientation.norm();
+    if (rb.pivoted && (rb.rotation != BodyRotation::Hinge || rb.fixed != 0))
+      throw InputError(
+          fmt::format("rigid body '{}': a pivot needs a hinge and no held components (the centre "
+                      "of mass turns about the axis)",
+                      name));
     if (rb.rotation == BodyRotation::Hinge) {
       rb.axis.normalize();
       if (!((s.omega - s.omega.dot(rb.axis) * rb.axis).norm() <= 1e-12 * s.omega.norm()))
@@ -70,6 +76,11 @@ void Simulation::setup_bodies() {
       rb.axis = s.omega.norm() > 0.0 ? Vec3(s.omega.normalized()) : Vec3::UnitZ();
     }
     rb.hinge_start = qmul(axis_turn(rb.axis, -s.angle), s.orientation);
+    if (rb.pivoted) {  // (the velocity follows from the turn: what was given for it is replaced)
+      const Vec3 r = s.position - rb.pivot;
+      rb.pivot_arm = to_world(axis_turn(rb.axis, -s.angle), r);
+      s.velocity = s.omega.cross(r);
+    }
     body_x0_.push_back(s.position);
     place_body_mesh(b);
   }
@@ -93,6 +104,9 @@ bool Simulation::advance_bodies(double h, double beta, double gamma) {
     RigidBody& rb = m_.bodies[b];
     const BodyState& n = body_n_[b].state;
     BodyState& s = rb.state;
+    // (before the state moves: a pivoted hinge's torque has its arm at the latest placement,
+    // where the wrench was evaluated)
+    const double alpha = rb.rotation == BodyRotation::Hinge ? rb.hinge_acceleration() : 0.0;
     const double cx_n = h * h * (0.5 - beta), cx = h * h * beta, cv_n = h * (1.0 - gamma), cv = h * gamma;
     const Vec3 a = masked(rb.force / rb.mass, rb.fixed);
     s.acceleration = a;
@@ -108,12 +122,17 @@ bool Simulation::advance_bodies(double h, double beta, double gamma) {
       s.omega = to_world(r.state.q, r.state.w);
       s.omega_dot = to_world(r.state.q, r.state.dw);
     } else {
-      const double alpha = rb.rotation == BodyRotation::Hinge ? rb.torque.dot(rb.axis) / rb.axis_inertia() : 0.0;
       const double w_n = n.omega.dot(rb.axis), alpha_n = n.omega_dot.dot(rb.axis);
       s.angle = n.angle + h * w_n + cx_n * alpha_n + cx * alpha;
       s.omega = (w_n + cv_n * alpha_n + cv * alpha) * rb.axis;
       s.omega_dot = alpha * rb.axis;
       s.orientation = qmul(axis_turn(rb.axis, s.angle), rb.hinge_start);
+      if (rb.pivoted) {
+        const Vec3 r = to_world(axis_turn(rb.axis, s.angle), rb.pivot_arm);
+        s.position = rb.pivot + r;
+        s.velocity = s.omega.cross(r);
+        s.acceleration = s.omega_dot.cross(r) + s.omega.cross(s.omega.cross(r));
+      }
     }
     // How far a vertex moved in the step: the centre's move plus the chord of the turn.
     const double moved = (s.position - n.position).norm() +
@@ -182,7 +201,11 @@ void Simulation::init_body_accelerations() {
       const Quat& q = s.orientation;
       s.omega_dot = to_world(q, euler_acceleration(to_body(q, rb.torque), to_body(q, s.omega), rb.inertia));
     } else {
-      s.omega_dot = (rb.rotation == BodyRotation::Hinge ? rb.torque.dot(rb.axis) / rb.axis_inertia() : 0.0) * rb.axis;
+      s.omega_dot = (rb.rotation == BodyRotation::Hinge ? rb.hinge_acceleration() : 0.0) * rb.axis;
+      if (rb.pivoted) {
+        const Vec3 r = s.position - rb.pivot;
+        s.acceleration = s.omega_dot.cross(r) + s.omega.cross(s.omega.cross(r));
+      }
     }
   }
 }

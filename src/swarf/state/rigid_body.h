@@ -11,9 +11,12 @@
 //
 // Constraints, each optional: translation components held at their initial velocity
 // ('fixed'; all three: a fixed point at the centre of mass); rotation free, about a fixed
-// axis through the centre of mass (a hinge: then only the turn angle about the axis is
-// integrated, with the moment of inertia about it), or prescribed (held at its initial
-// angular velocity; zero: it does not turn). External loads: a constant
+// axis (a hinge: then only the turn angle about the axis is integrated, with the moment of
+// inertia about it), or prescribed (held at its initial angular velocity; zero: it does not
+// turn). The hinge's axis passes through the centre of mass, or through a fixed point of the
+// world ('pivoted': a pendulum, an eccentric wheel): then the centre of mass turns about the
+// axis with the body, the moment of inertia is that about the axis through the pivot
+// (parallel axes) and the torque is taken about it; the axle's reaction does no work. External loads: a constant
 // force and torque, and dampers linear in the velocity and the angular velocity (the water
 // wheel's braking torque -c omega).
 #pragma once
@@ -59,7 +62,10 @@ struct RigidBody {
   Vec3 axis = Vec3::UnitZ();  ///< hinge axis, world frame, unit
   BodyLoad load;
   BodyState state;
+  bool pivoted = false;                  ///< hinge: the axis passes through 'pivot', not the centre of mass
+  Vec3 pivot = Vec3::Zero();             ///< a point of the hinge's axis, world frame, m
   Quat hinge_start{1.0, 0.0, 0.0, 0.0};  ///< hinge: the orientation at angle 0 (set by the step)
+  Vec3 pivot_arm = Vec3::Zero();         ///< pivoted: centre of mass - pivot at angle 0 (set by the step), m
   // The wrench of the last evaluation, world frame (written by the step).
   Vec3 contact_force = Vec3::Zero();   ///< from the particles, N
   Vec3 contact_torque = Vec3::Zero();  ///< from the particles, about the centre of mass, N m
@@ -70,6 +76,14 @@ struct RigidBody {
   double axis_inertia() const {
     const Vec3 e = to_body(state.orientation, axis);
     return e.dot(inertia.cwiseProduct(e));
+  }
+  /// Hinge: the angular acceleration about its axis from the latest wrench, rad/s^2. Pivoted:
+  /// the torque about the axis through the pivot, over the moment of inertia about it.
+  double hinge_acceleration() const {
+    if (!pivoted) return torque.dot(axis) / axis_inertia();
+    const Vec3 r = state.position - pivot;
+    const Vec3 across = r - r.dot(axis) * axis;
+    return (torque + r.cross(force)).dot(axis) / (axis_inertia() + mass * across.squaredNorm());
   }
   /// Kinetic energy, J.
   double kinetic_energy() const {
