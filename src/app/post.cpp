@@ -13,6 +13,7 @@
 #include "io/console.h"
 #include "io/csv_cell.h"
 #include "io/h5file.h"
+#include "io/path_kind.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
 #include "postprocess/chip_surface.h"
@@ -150,7 +151,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
 void post_run(const std::string& dir) {
   namespace fs = std::filesystem;
   const std::string summary_path = dir + "/summary.json";
-  if (!fs::exists(summary_path))
+  if (path_kind(summary_path).kind != PathKind::File)
     throw InputError(
         fmt::format("post: '{}' does not exist: the run in '{}' did not finish (or this is not a run "
                     "directory)",

@@ -12,6 +12,7 @@
 
 #include "io/atomic_file.h"
 #include "io/h5file.h"
+#include "io/path_kind.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
@@ -202,7 +203,11 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const RunR
 }
 
 CheckpointCase read_checkpoint_case(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError(fmt::format("--restart: checkpoint '{}' does not exist", path));
+  if (const PathKind k = path_kind(path); k.kind != PathKind::File)
+    throw InputError(fmt::format("--restart: checkpoint '{}' {}", path,
+                                 k.kind == PathKind::Missing     ? "does not exist"
+                                 : k.kind == PathKind::Directory ? "is a directory (give DIR/checkpoint.h5)"
+                                                                 : "cannot be used: " + k.error));
   H5File f(path, H5File::Mode::Read);
   if (!f.has_attribute("format") || !f.has_attribute("case_toml"))
     throw InputError(fmt::format("--restart: '{}' is not a swarf checkpoint", path));

@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "io/atomic_file.h"
+#include "io/path_kind.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 
@@ -195,7 +196,11 @@ TriangleMesh read_obj(const std::string& path, double scale) {
 }  // namespace
 
 TriangleMesh read_mesh(const std::string& path, double scale) {
-  if (!std::filesystem::exists(path)) throw InputError(fmt::format("mesh file '{}' does not exist", path));
+  if (const PathKind k = path_kind(path); k.kind != PathKind::File)
+    throw InputError(fmt::format("mesh file '{}' {}", path,
+                                 k.kind == PathKind::Missing     ? "does not exist"
+                                 : k.kind == PathKind::Directory ? "is a directory"
+                                                                 : "cannot be used: " + k.error));
   const std::string ext = lower_ext(path);
   TriangleMesh m;
   if (ext == ".stl")

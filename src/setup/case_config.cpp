@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/path_kind.h"
 #include "setup/calibration.h"
 #include "setup/case_override.h"
 #include "setup/case_tables.h"
@@ -62,8 +63,12 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
     r.fail("cells", nullptr, "the workpiece needs cells = [NX, NY, NZ], size = [LX, LY, LZ] (m) or lattice_file");
   if (!w.lattice_file.empty()) {
     w.lattice_file = resolve(w.lattice_file, in.directory);
-    if (!std::filesystem::exists(w.lattice_file))
-      r.fail("lattice_file", r.get("lattice_file"), "file not found: " + w.lattice_file);
+    if (const PathKind k = path_kind(w.lattice_file); k.kind != PathKind::File)
+      r.fail("lattice_file", r.get("lattice_file"),
+             (k.kind == PathKind::Missing     ? "file not found: "
+              : k.kind == PathKind::Directory ? "is a directory, not a lattice file: "
+                                              : k.error + ": ") +
+                 w.lattice_file);
   }
 }
 
@@ -351,8 +356,10 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
 }
 
 CaseSettings load_case(const std::string& path, const std::vector<std::string>& overrides) {
-  if (std::filesystem::is_directory(path))
+  if (const PathKind k = path_kind(path); k.kind == PathKind::Directory)
     throw InputError(fmt::format("case file '{}' is a directory, not a case file (TOML)", path));
+  else if (k.kind == PathKind::Unusable)
+    throw InputError(fmt::format("case file '{}': {}", path, k.error));
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("case file '{}' cannot be read (missing or no permission)", path));
   std::stringstream ss;

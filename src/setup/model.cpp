@@ -411,11 +411,12 @@ Model build_model(const CaseSettings& cs) {
   std::vector<Vec3> free_velocity, free_spin;
   append_free_particles(cs, lat, free_velocity, free_spin);
   // (two particles at one place have no contact normal: 0/0 in the first contact evaluation)
-  if (const auto c = find_coincident(lat.position); c[0] >= 0)
-    throw InputError(
-        fmt::format("{}: particles {} and {} are both at ({}, {}, {}) m (numbered lattice first, then "
-                    "[[particle]], then the [particles] file)",
-                    cs.source, c[0], c[1], lat.position[c[0]][0], lat.position[c[0]][1], lat.position[c[0]][2]));
+  const double near = 1e-6 * *std::min_element(lat.radius.begin(), lat.radius.end());
+  if (const auto c = find_coincident(lat.position, near); c[0] >= 0)
+    throw InputError(fmt::format(
+        "{}: particles {} and {} lie within {:g} m of each other (a millionth of the smallest radius), at ({}, {}, "
+        "{}) m (numbered lattice first, then [[particle]], then the [particles] file)",
+        cs.source, c[0], c[1], near, lat.position[c[0]][0], lat.position[c[0]][1], lat.position[c[0]][2]));
   model.derived = compute_derived(cs, lat);  // (of the ordered lattice: the same material for every seed)
   model.sites = lat.position;
   jitter_lattice(lat, static_cast<std::uint64_t>(cs.workpiece.disorder_seed), model.derived.position_jitter,

@@ -41,6 +41,13 @@ void ContactSystem::visit_state(StateArchive& ar, const Particles& p) {
   if (std::any_of(meshes_->begin(), meshes_->end(), [](const MeshBody& mb) { return mb.turns; }))
     ar.array("contacts/mesh_build_turn", mesh_build_turn_, load ? meshes_->size() : StateArchive::kAnySize);
   if (!load) return;
+  // The build positions lie where positions may (the particles' check below): beyond, their
+  // distance to the particles overflowed in the skin check (1e289 m, the checkpoint fuzzer).
+  for (const auto* build : {&x_build_, &mesh_build_})
+    for (std::size_t i = 0; i < build->size(); ++i)
+      if (!((*build)[i].cwiseAbs().maxCoeff() <= kMaxMeshCoordinate))
+        throw InputError(fmt::format("state field 'contacts/{}': entry {} lies beyond {:g} m",
+                                     build == &x_build_ ? "x_build" : "mesh_build", i, kMaxMeshCoordinate));
   if (pairs.size() % 2 != 0 || tris.size() % 2 != 0)
     throw InputError("state field 'contacts/pairs' or 'contacts/triangle_contacts' is not a list of index pairs");
   pairs_.resize(np);
@@ -168,6 +175,14 @@ void Simulation::visit_state(StateArchive& ar) {
           fmt::format("state fields 'time' = {} s, 'dt' = {} s, 'last_dt' = {} s: not finite times "
                       "(time >= 0, dt > 0)",
                       time_, dt_, last_dt_));
+    // The step the run goes on with: within the step control's range (Newmark), or the
+    // constant step (Verlet). A checkpoint's dt of 1e289 s overflowed the first placement
+    // (the checkpoint fuzzer).
+    if (implicit_ ? !(dt_ >= set_.dt_min && dt_ <= set_.dt_max) : dt_ != set_.dt)
+      throw InputError(
+          implicit_ ? fmt::format("state field 'dt' = {} s lies outside the case's [dt_min, dt_max] = [{}, {}] s", dt_,
+                                  set_.dt_min, set_.dt_max)
+                    : fmt::format("state field 'dt' = {} s is not the case's constant step {} s", dt_, set_.dt));
     if (mesh_force_.size() != nm && !mesh_force_.empty())
       throw InputError(fmt::format("state field 'mesh_force' has {} entries, expected {}", mesh_force_.size(), nm));
     resize_scratch();
@@ -203,9 +218,12 @@ void Simulation::check_loaded_world(const std::vector<std::int32_t>& ends) {
     if (!(p.position[i].cwiseAbs().maxCoeff() <= kMaxMeshCoordinate))
       throw InputError(
           fmt::format("state field 'particles/position': particle {} lies beyond {:g} m", i, kMaxMeshCoordinate));
-  if (const auto c = find_coincident(p.position); c[0] >= 0)
-    throw InputError(
-        fmt::format("state field 'particles/position': particles {} and {} are at the same place", c[0], c[1]));
+  const double near = n > 0 ? 1e-6 * *std::min_element(p.radius.begin(), p.radius.end()) : 0.0;
+  if (const auto c = find_coincident(p.position, near); c[0] >= 0)
+    throw InputError(fmt::format(
+        "state field 'particles/position': particles {} and {} lie within {:g} m of each other (a millionth of "
+        "the smallest radius)",
+        c[0], c[1], near));
   r.build_rows(n);
 }
 

@@ -65,13 +65,34 @@ std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<V
   return pairs;
 }
 
-std::array<std::int32_t, 2> find_coincident(const std::vector<Vec3>& points) {
-  std::vector<std::int32_t> order(points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::int32_t>(i);
+std::array<std::int32_t, 2> find_coincident(const std::vector<Vec3>& points, double tolerance) {
+  // Sorted by x, then y, then z: a point need be compared only with those of the same x up to
+  // 'tolerance' further in y, and with those less than 'tolerance' further in x (a lattice
+  // plane of one x is not scanned whole for every point of it).
+  const std::size_t n = points.size();
+  std::vector<std::int32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::int32_t>(i);
   auto key = [&](std::int32_t i) { return std::array<double, 3>{points[i][0], points[i][1], points[i][2]}; };
   std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return key(a) < key(b); });
-  for (std::size_t k = 1; k < order.size(); ++k)
-    if (key(order[k]) == key(order[k - 1])) return {std::min(order[k], order[k - 1]), std::max(order[k], order[k - 1])};
+  auto close = [&](const Vec3& a, const Vec3& b) { return a == b || (b - a).norm() <= tolerance; };
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3& a = points[order[k]];
+    auto found = [&](std::size_t l) {
+      return std::array<std::int32_t, 2>{std::min(order[k], order[l]), std::max(order[k], order[l])};
+    };
+    std::size_t l = k + 1;
+    for (; l < n && points[order[l]][0] == a[0]; ++l) {
+      if (points[order[l]][1] - a[1] > tolerance) {  // (the rest of this x lies further in y)
+        l = static_cast<std::size_t>(std::upper_bound(order.begin() + static_cast<std::ptrdiff_t>(l), order.end(), a[0],
+                                                      [&](double x, std::int32_t i) { return x < points[i][0]; }) -
+                                     order.begin());
+        break;
+      }
+      if (close(a, points[order[l]])) return found(l);
+    }
+    for (; l < n && points[order[l]][0] - a[0] <= tolerance; ++l)
+      if (close(a, points[order[l]])) return found(l);
+  }
   return {-1, -1};
 }
 

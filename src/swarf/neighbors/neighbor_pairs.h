@@ -16,9 +16,10 @@ namespace swarf {
 std::vector<std::array<std::int32_t, 2>> find_pairs_in_range(const std::vector<Vec3>& points, double min_distance,
                                                              double max_distance);
 
-/// Two points (i < j, the first in x, y, z order) at exactly the same place, or {-1, -1}.
-/// Two particles there have no contact normal (0/0): a lattice file, the free particles or a
-/// checkpoint that puts them so is refused (found by the lattice-file fuzzer).
-std::array<std::int32_t, 2> find_coincident(const std::vector<Vec3>& points);
+/// Two points (i < j) closer than 'tolerance' (m; 0: at exactly the same place), or {-1, -1}.
+/// Two particles there have no contact normal: 0/0 at one place, and a distance whose square
+/// underflows (1e-170 m) divides by zero too. A lattice file, the free particles or a checkpoint
+/// that puts them so is refused (found by the lattice-file fuzzer, twice).
+std::array<std::int32_t, 2> find_coincident(const std::vector<Vec3>& points, double tolerance = 0.0);
 
 }  // namespace swarf
