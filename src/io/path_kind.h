@@ -25,4 +25,20 @@ inline PathKind path_kind(const std::string& path) {
   return {PathKind::File, ""};
 }
 
+/// What is wrong with 'path' as the name of a file of the kind 'what' ("a mesh file"), for
+/// a key's message: "" if it names a file.
+inline std::string file_problem(const std::string& path, const std::string& what) {
+  const PathKind k = path_kind(path);
+  switch (k.kind) {
+    case PathKind::File:
+      return "";
+    case PathKind::Missing:
+      return "file not found: " + path;
+    case PathKind::Directory:
+      return "is a directory, not " + what + ": " + path;
+    default:
+      return k.error + ": " + path;
+  }
+}
+
 }  // namespace swarf

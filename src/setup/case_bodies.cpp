@@ -174,12 +174,7 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
            "places a rectangle or a generated tool; a mesh file is used where its coordinates (times scale) put it");
   if (!m.file.empty()) {
     m.file = resolve(m.file, directory);
-    if (const PathKind k = path_kind(m.file); k.kind != PathKind::File)
-      r.fail("file", r.get("file"),
-             (k.kind == PathKind::Missing     ? "file not found: "
-              : k.kind == PathKind::Directory ? "is a directory, not a mesh file: "
-                                              : k.error + ": ") +
-                 m.file);
+    if (const std::string why = file_problem(m.file, "a mesh file"); !why.empty()) r.fail("file", r.get("file"), why);
   } else if (!m.tool && !box && !cyl) {  // a tool's angles and sizes are checked by its generator, which names them
     const auto& e1 = m.edge1;
     const auto& e2 = m.edge2;
@@ -262,12 +257,8 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
     f.file = resolve(f.file, in.directory);
     if (!r.has("file")) r.fail("file", nullptr, "[particles] needs file = \"...\" (columns id x y z vx vy vz)");
     if (!r.has("radius")) r.fail("radius", nullptr, "[particles] needs radius in m");
-    if (const PathKind k = path_kind(f.file); k.kind != PathKind::File)
-      r.fail("file", r.get("file"),
-             (k.kind == PathKind::Missing     ? "file not found: "
-              : k.kind == PathKind::Directory ? "is a directory, not a particles file: "
-                                              : k.error + ": ") +
-                 f.file);
+    if (const std::string why = file_problem(f.file, "a particles file"); !why.empty())
+      r.fail("file", r.get("file"), why);
   }
 }
 

@@ -63,12 +63,8 @@ void read_workpiece(const CaseInput& in, CaseSettings& cs) {
     r.fail("cells", nullptr, "the workpiece needs cells = [NX, NY, NZ], size = [LX, LY, LZ] (m) or lattice_file");
   if (!w.lattice_file.empty()) {
     w.lattice_file = resolve(w.lattice_file, in.directory);
-    if (const PathKind k = path_kind(w.lattice_file); k.kind != PathKind::File)
-      r.fail("lattice_file", r.get("lattice_file"),
-             (k.kind == PathKind::Missing     ? "file not found: "
-              : k.kind == PathKind::Directory ? "is a directory, not a lattice file: "
-                                              : k.error + ": ") +
-                 w.lattice_file);
+    if (const std::string why = file_problem(w.lattice_file, "a lattice file"); !why.empty())
+      r.fail("lattice_file", r.get("lattice_file"), why);
   }
 }
 
