@@ -106,13 +106,25 @@ const toml::array* entries(const CaseInput& in, const char* name) {
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
-  for (const char* key : {"density", "mass", "initial_velocity", "angular_velocity", "rotation", "hinge_axis",
-                          "hinge_point", "fixed", "force", "torque", "damping", "torque_damping"})
+  for (const char* key :
+       {"density", "mass", "centre_of_mass", "inertia", "initial_velocity", "angular_velocity", "rotation",
+        "hinge_axis", "hinge_point", "fixed", "force", "torque", "damping", "torque_damping"})
     if (!body && r.has(key)) r.fail(key, r.get(key), "is a rigid body's key: it needs dynamics = \"rigid_body\"");
   if (!body) return;
-  if (open_shape)
+  const bool given = r.has("inertia");
+  if (open_shape && !given)
     r.fail("dynamics", r.get("dynamics"),
-           "a rigid body needs a closed mesh: file, box_size or cylinder_radius (a rectangle or a tool is open)");
+           "a rigid body needs a closed mesh: file, box_size or cylinder_radius (a rectangle or a tool is open), "
+           "or its mass, centre_of_mass and inertia given");
+  if (given) {
+    if (m.inertia.size() != 6)
+      r.fail("inertia", r.get("inertia"), "give 6 numbers [Ixx, Iyy, Izz, Ixy, Iyz, Ixz] in kg m^2");
+    if (!r.has("mass") || r.has("density"))
+      r.fail("inertia", r.get("inertia"), "goes with mass (kg), not density: the mesh's volume is not used");
+    if (!r.has("centre_of_mass")) r.fail("inertia", r.get("inertia"), "needs centre_of_mass (m) too");
+  } else if (r.has("centre_of_mass")) {
+    r.fail("centre_of_mass", r.get("centre_of_mass"), "is given with inertia (kg m^2)");
+  }
   if (r.has("motion")) r.fail("motion", r.get("motion"), "a rigid body moves by its dynamics, not by a motion");
   if (r.has("density") == r.has("mass")) r.fail("density", r.get("density"), "give density (kg/m^3) or mass (kg)");
   if (r.has("hinge_axis") && m.rotation != "hinge")

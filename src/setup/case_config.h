@@ -235,6 +235,8 @@ struct MeshSettings {
   std::string dynamics = "prescribed";              ///< "prescribed" or "rigid_body"
   double density = 0.0;                             ///< kg/m^3 (0: from 'mass')
   double mass = 0.0;                                ///< kg (0: from 'density')
+  std::array<double, 3> centre_of_mass{0, 0, 0};    ///< m, mesh coordinates (with 'inertia')
+  std::vector<double> inertia;                      ///< Ixx Iyy Izz Ixy Iyz Ixz about it, kg m^2 (empty: from the mesh)
   std::array<double, 3> initial_velocity{0, 0, 0};  ///< m/s, of the centre of mass
   std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s, world frame
   std::string rotation = "free";                    ///< "free", "hinge" or "prescribed"

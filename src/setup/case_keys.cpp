@@ -864,7 +864,26 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .no_default = true,
        .range = kPositive,
        .rule = "as `density`",
-       .doc = "Mass of the body instead of its density (uniform: density = mass / the mesh's volume).",
+       .doc = "Mass of the body instead of its density (uniform: density = mass / the mesh's volume; with "
+              "`inertia`, the mass as given).",
+       .section = "rigid_body"},
+      {.name = "centre_of_mass",
+       .field = &S::centre_of_mass,
+       .unit = "m",
+       .default_note = "from the mesh",
+       .rule = "with `inertia`",
+       .doc = "Centre of mass in the mesh's coordinates (as its file or shape places it), given with `inertia`.",
+       .section = "rigid_body"},
+      {.name = "inertia",
+       .field = &S::inertia,
+       .unit = "kg m^2",
+       .default_note = "from the mesh",
+       .rule = "6 numbers; needs `mass` and `centre_of_mass`, not `density`; principal moments positive, each at "
+               "most the sum of the other two",
+       .doc = "Inertia tensor about `centre_of_mass`, mesh coordinates: [Ixx, Iyy, Izz, Ixy, Iyz, Ixz] (the "
+              "products of inertia as tensor entries, Ixy = -integral of x y dm). With it the mass properties are "
+              "not computed from the mesh, which may then be open (a tool's faces) or stand for a body whose mass "
+              "is not spread uniformly in it.",
        .section = "rigid_body"},
       {.name = "initial_velocity",
        .field = &S::initial_velocity,

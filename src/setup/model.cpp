@@ -280,10 +280,10 @@ void build_uniaxial(const CaseSettings& cs, const std::vector<Vec3>& sites, doub
 
 static Vec3 to_vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 
-// A [[mesh]] with dynamics = "rigid_body": mass properties from its closed mesh, then the
-// keys' initial state, constraints and loads.
-static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std::size_t index,
-                            const TriangleMesh& mesh) {
+// The mass properties of a [[mesh]] with dynamics = "rigid_body" from its closed mesh, filled
+// uniformly at 'density' or so that it has 'mass'.
+static RigidBody rigid_body_from_mesh(const CaseSettings& cs, const MeshSettings& ms, std::size_t index,
+                                      const TriangleMesh& mesh) {
   const auto where = [&] { return fmt::format("{}: [[mesh]] '{}'", cs.source, ms.name); };
   double density = ms.density;
   if (!(density > 0.0)) {  // from 'mass'
@@ -295,11 +295,30 @@ static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std:
                       where(), ms.mass, volume));
     density = ms.mass / volume;
   }
-  RigidBody rb;
   try {
-    rb = rigid_body_of(index, mesh, density);
+    return rigid_body_of(index, mesh, density);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", where(), e.what()));
+  }
+}
+
+// A [[mesh]] with dynamics = "rigid_body": mass properties given or from its closed mesh, then
+// the keys' initial state, constraints and loads.
+static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std::size_t index,
+                            const TriangleMesh& mesh) {
+  const auto where = [&] { return fmt::format("{}: [[mesh]] '{}'", cs.source, ms.name); };
+  RigidBody rb;
+  if (!ms.inertia.empty()) {  // given: the mesh only carries the contacts
+    const auto& t = ms.inertia;
+    Eigen::Matrix3d I;
+    I << t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2];
+    try {
+      rb = rigid_body_given(index, ms.mass, to_vec(ms.centre_of_mass), I);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: key 'inertia': {}", where(), e.what()));
+    }
+  } else {
+    rb = rigid_body_from_mesh(cs, ms, index, mesh);
   }
   rb.state.velocity = to_vec(ms.initial_velocity);
   rb.state.omega = to_vec(ms.angular_velocity);

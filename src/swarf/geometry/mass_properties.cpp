@@ -99,4 +99,26 @@ RigidBody rigid_body_of(std::size_t mesh_index, const TriangleMesh& m, double de
   return rb;
 }
 
+RigidBody rigid_body_given(std::size_t mesh_index, double mass, const Vec3& centre, const Eigen::Matrix3d& inertia) {
+  if (!(mass > 0.0 && std::isfinite(mass))) throw InputError(fmt::format("mass {} kg must be positive", mass));
+  Vec3 moments;
+  Quat axes;
+  principal_frame(0.5 * (inertia + inertia.transpose()), moments, axes);
+  // (I1 + I2 >= I3 for any distribution of mass; equality for a flat one: a relative slack)
+  if (!(moments[0] > 0.0) || !(moments[0] + moments[1] >= moments[2] * (1.0 - 1e-12)))
+    throw InputError(
+        fmt::format("principal moments ({:.6g}, {:.6g}, {:.6g}) kg m^2 are not those of a body: each "
+                    "must be positive and at most the sum of the other two",
+                    moments[0], moments[1], moments[2]));
+  RigidBody rb;
+  rb.mesh = mesh_index;
+  rb.mass = mass;
+  rb.inertia = moments;
+  rb.centre_ref = centre;
+  rb.principal = axes;
+  rb.state.position = centre;
+  rb.state.orientation = axes;
+  return rb;
+}
+
 }  // namespace swarf

@@ -32,6 +32,13 @@ MassProperties mass_properties(const TriangleMesh& m, double density);
 /// mesh encloses no positive volume (open, or its triangles face inwards).
 RigidBody rigid_body_of(std::size_t mesh_index, const TriangleMesh& m, double density);
 
+/// A rigid body of mesh 'mesh_index' with given mass (kg), centre of mass (m) and inertia
+/// tensor about it (kg m^2), both in the mesh's reference coordinates, at rest where those put
+/// it: for a body whose mass is not spread uniformly in its mesh, or whose mesh is open (a
+/// tool's faces). Throws InputError if the mass is not positive or the tensor is not that of
+/// a mass distribution (principal moments positive, each at most the sum of the other two).
+RigidBody rigid_body_given(std::size_t mesh_index, double mass, const Vec3& centre, const Eigen::Matrix3d& inertia);
+
 /// The principal moments (ascending) and axes of a symmetric inertia tensor.
 void principal_frame(const Eigen::Matrix3d& inertia, Vec3& moments, Quat& axes);
 
