@@ -89,14 +89,25 @@ void configure(vtkXMLWriter* w) {
   w->SetCompressionLevel(1);
 }
 
+// VTK writes the file into memory and swarf writes it out, with the checks every file gets
+// (write_text_atomic: close and fsync checked, renamed only when complete). VTK's own file
+// error path is never taken: on a full disk its binary mode aborted the program with a double
+// free (DiskFull.AFrameThatCannotBeWrittenStopsTheRunAndIsNotRenamed).
+void write_xml(vtkXMLWriter* w, const std::string& path) {
+  configure(w);
+  w->WriteToOutputStringOn();
+  if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "'");
+  try {
+    write_text_atomic(path, w->GetOutputString());
+  } catch (const std::exception& e) {
+    throw OutputError("cannot write VTK file '" + path + "' (disk full?): " + e.what());
+  }
+}
+
 void write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   vtkNew<vtkXMLUnstructuredGridWriter> w;
-  const std::string tmp = path + ".part.vtu";
-  w->SetFileName(tmp.c_str());
   w->SetInputData(grid);
-  configure(w);
-  if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
-  commit_file(tmp, path);
+  write_xml(w, path);
 }
 
 }  // namespace
@@ -114,12 +125,8 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh) {
   poly->SetPoints(pts);
   poly->SetPolys(tris);
   vtkNew<vtkXMLPolyDataWriter> w;
-  const std::string tmp = path + ".part.vtp";
-  w->SetFileName(tmp.c_str());
   w->SetInputData(poly);
-  configure(w);
-  if (w->Write() != 1 || w->GetErrorCode() != 0) throw OutputError("cannot write VTK file '" + path + "' (disk full?)");
-  commit_file(tmp, path);
+  write_xml(w, path);
 }
 
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r) {
