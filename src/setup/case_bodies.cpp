@@ -106,9 +106,9 @@ const toml::array* entries(const CaseInput& in, const char* name) {
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
-  for (const char* key :
-       {"density", "mass", "centre_of_mass", "inertia", "initial_velocity", "angular_velocity", "rotation",
-        "hinge_axis", "hinge_point", "fixed", "force", "torque", "damping", "torque_damping"})
+  for (const char* key : {"density", "mass", "centre_of_mass", "inertia", "initial_velocity", "angular_velocity",
+                          "rotation", "hinge_axis", "hinge_point", "fixed", "force", "torque", "damping",
+                          "torque_damping", "spring_stiffness", "holder_velocity"})
     if (!body && r.has(key)) r.fail(key, r.get(key), "is a rigid body's key: it needs dynamics = \"rigid_body\"");
   if (!body) return;
   const bool given = r.has("inertia");
@@ -143,6 +143,9 @@ void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
           1e-12 * std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * std::sqrt(e2)))
       r.fail("angular_velocity", r.get("angular_velocity"), "must lie along hinge_axis with rotation = \"hinge\"");
   }
+  for (double k : m.spring_stiffness)
+    if (!(k >= 0.0 && std::isfinite(k)))
+      r.fail("spring_stiffness", r.get("spring_stiffness"), "each stiffness must be >= 0 and finite (N/m)");
   std::string seen;
   for (char c : m.fixed)
     if ((c != 'x' && c != 'y' && c != 'z') || seen.find(c) != std::string::npos)

@@ -246,6 +246,8 @@ struct MeshSettings {
   std::string fixed;                                ///< translation components held: a subset of "xyz"
   std::array<double, 3> force{0, 0, 0};             ///< constant external force, N
   std::array<double, 3> torque{0, 0, 0};            ///< constant external torque, N m
+  std::array<double, 3> spring_stiffness{0, 0, 0};  ///< mount's stiffness along x, y, z, N/m
+  std::array<double, 3> holder_velocity{0, 0, 0};   ///< the mount's anchor moves at it, m/s
   double damping = 0.0;                             ///< force -damping v, N s/m
   double torque_damping = 0.0;                      ///< torque -torque_damping omega, N m s/rad
 };

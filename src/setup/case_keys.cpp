@@ -946,7 +946,24 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .unit = "N s/m",
        .range = kNonNegative,
        .rule = "only with `dynamics = \"rigid_body\"`",
-       .doc = "External force -damping v on the centre of mass.",
+       .doc = "External force -damping (v - holder_velocity) on the centre of mass (a mount's damper; without a "
+              "holder, a drag -damping v). Damping ratio zeta = damping / (2 sqrt(k m)) along an axis of "
+              "stiffness k.",
+       .section = "rigid_body"},
+      {.name = "spring_stiffness",
+       .field = &S::spring_stiffness,
+       .unit = "N/m",
+       .rule = "each >= 0 and finite; only with `dynamics = \"rigid_body\"`",
+       .doc = "Stiffness of a mount along x, y and z: the force -k_c (x_c - a_c(t)) on the centre of mass, where "
+              "the anchor a(t) starts at the initial centre of mass and moves at `holder_velocity` (a compliant "
+              "tool on its holder: natural frequency sqrt(k/m) / (2 pi), static deflection F/k).",
+       .section = "rigid_body"},
+      {.name = "holder_velocity",
+       .field = &S::holder_velocity,
+       .unit = "m/s",
+       .rule = "only with `dynamics = \"rigid_body\"`",
+       .doc = "Velocity of the mount's anchor (the tool holder), world frame: the spring and damper pull the body "
+              "along. Give the body the same `initial_velocity` to start it at the holder's speed.",
        .section = "rigid_body"},
       {.name = "torque_damping",
        .field = &S::torque_damping,

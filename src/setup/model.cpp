@@ -332,6 +332,9 @@ static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std:
   rb.load.force = to_vec(ms.force);
   rb.load.torque = to_vec(ms.torque);
   rb.load.force_damping = ms.damping;
+  rb.load.spring = to_vec(ms.spring_stiffness);
+  rb.load.anchor = rb.state.position;  // (the initial centre of mass)
+  rb.load.holder_velocity = to_vec(ms.holder_velocity);
   rb.load.torque_damping = ms.torque_damping;
   return rb;
 }

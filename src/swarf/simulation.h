@@ -220,6 +220,7 @@ class Simulation {
   std::vector<Vec3> mesh_force_;     // force on each mesh after the last accepted step, N
   std::vector<int> mesh_body_;       // per mesh: the rigid body that moves it, or -1
   std::vector<RigidBody> body_n_;    // the bodies at the start of the step
+  double body_time_ = 0;             // the time of the bodies' placement, s (their loads' anchors move)
   std::vector<Vec3> body_x0_;        // the bodies' initial centres (potential energy), m
   double body_power_old_ = 0;        // power of the bodies' loads at the start of the step, W
   double sweep_force_level2_ = 0;    // the particles' force level of the last sweep squared, N^2

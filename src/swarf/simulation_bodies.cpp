@@ -100,6 +100,7 @@ void Simulation::place_body_mesh(std::size_t b) {
 
 bool Simulation::advance_bodies(double h, double beta, double gamma) {
   bool within = true;
+  body_time_ = time_ + h;  // (the placement's time: the loads' anchors move with it)
   for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
     RigidBody& rb = m_.bodies[b];
     const BodyState& n = body_n_[b].state;
@@ -169,7 +170,7 @@ double Simulation::body_wrenches() {
     const MeshBody& mb = m_.meshes[rb.mesh];
     rb.contact_force = f.empty() ? Vec3::Zero() : f[rb.mesh];
     rb.contact_torque = t.empty() ? Vec3::Zero() : t[rb.mesh];
-    const Vec3 force = rb.contact_force + rb.load.force - rb.load.force_damping * s.velocity + rb.mass * m_.gravity;
+    const Vec3 force = rb.contact_force + rb.load.force_at(s.position, s.velocity, body_time_) + rb.mass * m_.gravity;
     const Vec3 torque = rb.contact_torque + rb.load.torque - rb.load.torque_damping * s.omega;
     // Convergence: the change of force, and of torque over the mesh's reach (a force at its
     // rim), against the particles' force level and the body's own; or, as for the particles,
@@ -212,6 +213,7 @@ void Simulation::init_body_accelerations() {
 
 void Simulation::restore_bodies() {
   m_.bodies = body_n_;
+  body_time_ = time_;
   for (std::size_t b = 0; b < m_.bodies.size(); ++b) place_body_mesh(b);
 }
 
@@ -219,7 +221,7 @@ double Simulation::body_load_power() const {
   double p = 0.0;
   for (const RigidBody& rb : m_.bodies) {
     const BodyState& s = rb.state;
-    p += (rb.load.force - rb.load.force_damping * s.velocity).dot(s.velocity) +
+    p += rb.load.force_at(s.position, s.velocity, body_time_).dot(s.velocity) +
          (rb.load.torque - rb.load.torque_damping * s.omega).dot(s.omega);
   }
   return p;

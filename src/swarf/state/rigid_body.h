@@ -32,12 +32,22 @@ namespace swarf {
 /// Free; about a fixed axis through the centre of mass; or at the initial angular velocity.
 enum class BodyRotation { Free, Hinge, Prescribed };
 
-/// External loads on a body: F = force - force_damping v, T = torque - torque_damping omega.
+/// External loads on a body: F = force - spring .* (x - a(t)) - force_damping (v - holder_velocity),
+/// T = torque - torque_damping omega, with the anchor a(t) = anchor + holder_velocity t: a mount
+/// on a spring and damper to a holder that moves at a constant velocity (a compliant tool:
+/// the holder moves at the cutting speed, the tool lags it by what the forces bend the spring).
 struct BodyLoad {
-  Vec3 force = Vec3::Zero();   ///< N, world frame
-  Vec3 torque = Vec3::Zero();  ///< N m, world frame, about the centre of mass
-  double force_damping = 0;    ///< N s/m
-  double torque_damping = 0;   ///< N m s/rad
+  Vec3 force = Vec3::Zero();            ///< N, world frame
+  Vec3 torque = Vec3::Zero();           ///< N m, world frame, about the centre of mass
+  double force_damping = 0;             ///< N s/m
+  double torque_damping = 0;            ///< N m s/rad
+  Vec3 spring = Vec3::Zero();           ///< stiffness along each world axis, N/m
+  Vec3 anchor = Vec3::Zero();           ///< the spring's rest position of the centre of mass at t = 0, m
+  Vec3 holder_velocity = Vec3::Zero();  ///< m/s
+  /// The load's force at the centre of mass at position x, velocity v and time t, N.
+  Vec3 force_at(const Vec3& x, const Vec3& v, double t) const {
+    return force - spring.cwiseProduct(x - anchor - t * holder_velocity) - force_damping * (v - holder_velocity);
+  }
 };
 
 /// What one body integrates: the pose and its rates.
