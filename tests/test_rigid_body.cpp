@@ -94,20 +94,27 @@ TEST(MassProperties, AnInsideOutOrOpenMeshIsRefused) {
 
 // ---- scenes -------------------------------------------------------------------------------
 
-// A body of mesh 'mesh' in a world, its principal moments given (an asymmetric top).
-World free_body_world(const Vec3& inertia, const Vec3& v, const Vec3& w) {
+// A world of one rigid body: the closed mesh 'mesh' (rigid) filled at 'density'; the caller
+// sets its constraints and loads in world.bodies[0] before the Simulation is made.
+World body_world(const char* name, const TriangleMesh& mesh, double density) {
   World world;
   MeshBody mb;
-  mb.name = "top";
-  mb.mesh = box_mesh(Vec3(0.1, 0.2, 0.3), Vec3(0.01, 0.02, 0.03));
+  mb.name = name;
+  mb.mesh = mesh;
   mb.youngs_modulus = HUGE_VAL;
   world.meshes.push_back(mb);
   world.mesh_motion.push_back(Motion{});
-  RigidBody rb = rigid_body_of(0, mb.mesh, 1000);
+  world.bodies.push_back(rigid_body_of(0, mb.mesh, density));
+  return world;
+}
+
+// A body of mesh 'mesh' in a world, its principal moments given (an asymmetric top).
+World free_body_world(const Vec3& inertia, const Vec3& v, const Vec3& w) {
+  World world = body_world("top", box_mesh(Vec3(0.1, 0.2, 0.3), Vec3(0.01, 0.02, 0.03)), 1000);
+  RigidBody& rb = world.bodies[0];
   rb.inertia = inertia;
   rb.state.velocity = v;
   rb.state.omega = w;
-  world.bodies.push_back(rb);
   return world;
 }
 
@@ -202,15 +209,9 @@ TEST(FreeBody, ATumblingTopKeepsEnergyAndAngularMomentumToSecondOrder) {
 // m g z, which the axle's reaction does not change, holds to the scheme's O((W h)^2) swing.
 TEST(Hinge, APendulumAboutAPivotSwingsWithItsPeriod) {
   for (const bool implicit : {false, true}) {
-    World world;
-    MeshBody mb;
-    mb.name = "bar";
     const double l = 0.1, a = 0.02, c = 0.1;
-    mb.mesh = box_mesh(Vec3(0.0, 0.0, -l), Vec3(a, a, c));
-    mb.youngs_modulus = HUGE_VAL;
-    world.meshes.push_back(mb);
-    world.mesh_motion.push_back(Motion{});
-    RigidBody rb = rigid_body_of(0, mb.mesh, 7800);
+    World world = body_world("bar", box_mesh(Vec3(0.0, 0.0, -l), Vec3(a, a, c)), 7800);
+    RigidBody& rb = world.bodies[0];
     rb.rotation = BodyRotation::Hinge;
     rb.axis = Vec3::UnitY();
     rb.pivoted = true;
@@ -218,7 +219,6 @@ TEST(Hinge, APendulumAboutAPivotSwingsWithItsPeriod) {
     const double g = 9.81, m = rb.mass, Ip = m * (a * a + c * c) / 12 + m * l * l;
     const double W = std::sqrt(m * g * l / Ip), theta0 = 0.01, T = 2 * std::numbers::pi / W;
     rb.state.omega = theta0 * W * Vec3::UnitY();
-    world.bodies.push_back(rb);
     world.gravity = Vec3(0, 0, -g);
     const RigidBody& b = world.bodies[0];
     const double h = T / 1000;
@@ -252,21 +252,14 @@ TEST(Hinge, APendulumAboutAPivotSwingsWithItsPeriod) {
 // whole lag. The other axes, without stiffness, keep their rest.
 TEST(Mount, ABodyOnASpringFollowsAMovingHolderAsTheDampedOscillatorSays) {
   for (const bool implicit : {false, true}) {
-    World world;
-    MeshBody mb;
-    mb.name = "tool";
-    mb.mesh = box_mesh(Vec3(0.0, 0.0, 0.0), Vec3(0.01, 0.01, 0.01));
-    mb.youngs_modulus = HUGE_VAL;
-    world.meshes.push_back(mb);
-    world.mesh_motion.push_back(Motion{});
-    RigidBody rb = rigid_body_of(0, mb.mesh, 7800);
+    World world = body_world("tool", box_mesh(Vec3(0.0, 0.0, 0.0), Vec3(0.01, 0.01, 0.01)), 7800);
+    RigidBody& rb = world.bodies[0];
     rb.rotation = BodyRotation::Prescribed;
     const double m = rb.mass, k = 1e6, zeta = 0.05, c = 2 * zeta * std::sqrt(k * m), V = 2.0;
     rb.load.spring = Vec3(k, 0, 0);
     rb.load.force_damping = c;
     rb.load.anchor = rb.state.position;
     rb.load.holder_velocity = Vec3(V, 0, 0);
-    world.bodies.push_back(rb);
     const double w = std::sqrt(k / m), wd = w * std::sqrt(1 - zeta * zeta), T = 2 * std::numbers::pi / w;
     const RigidBody& b = world.bodies[0];
     Simulation sim(world, implicit ? newmark(T / 400) : verlet(T / 400));
