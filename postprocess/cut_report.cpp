@@ -256,6 +256,11 @@ void write_cut_setup(H5File& f, const CutSetup& s) {
   f.describe("/cutting/workpiece_particles", "1", "the workpiece is particles 0 to this - 1");
   put("face_length", &s.face_length, 1, "m", "the tool's rake face length from the tip");
   f.write_attribute("cutting_tool_mesh", s.tool_mesh);
+  if (s.compliant()) {
+    const double m[4] = {s.mount.stiffness_x, s.mount.stiffness_z, s.mount.mass, s.mount.damping};
+    put("tool_mount", m, 4, "N/m/m, N/m/m, kg/m, N s/m/m",
+        "a compliant tool's mount per metre of width: stiffness along x and z, mass, damping");
+  }
 }
 
 bool read_cut_setup(const H5File& f, CutSetup& s) {
@@ -282,6 +287,15 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
     s.lattice_particles = static_cast<std::size_t>(n[0]);
     s.face_length = one("face_length", 1)[0];
     s.tool_mesh = f.has_attribute("cutting_tool_mesh") ? f.read_string_attribute("cutting_tool_mesh") : "";
+    if (f.has("/cutting/tool_mount")) {
+      const auto m = one("tool_mount", 4);
+      s.mount = ToolMount{m[0], m[1], m[2], m[3]};
+      if (!(s.mount.stiffness_x > 0 && s.mount.stiffness_z > 0 && s.mount.mass > 0 && s.mount.damping >= 0))
+        throw InputError(
+            fmt::format("'{}': /cutting/tool_mount [{}, {}, {}, {}] is not a mount (stiffnesses and mass "
+                        "> 0, damping >= 0)",
+                        f.path(), m[0], m[1], m[2], m[3]));
+    }
     return true;
   }
   if (!f.has("/cutting/setup")) return false;

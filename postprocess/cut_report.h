@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "postprocess/chip.h"
+#include "postprocess/tool_vibration.h"
 #include "swarf/core/vec3.h"
 
 namespace swarf {
@@ -39,6 +40,8 @@ struct CutSetup {
   double radius = 0;                  ///< particle radius, m
   std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
   double face_length = HUGE_VAL;      ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
+  ToolMount mount;                    ///< a compliant tool's mount per width; mass 0: the tool follows its path
+  bool compliant() const { return mount.mass > 0; }
 };
 
 /// The run's data the analysis reads.
@@ -49,6 +52,7 @@ struct CutData {
   std::vector<Vec3> position;           ///< workpiece particle centres at the end, m
   std::vector<double> broken_fraction;  ///< per workpiece particle: broken rods / rods, 1
   double broken_rod_fraction = 0;       ///< broken rods / all rods, 1
+  std::vector<double> tool_deflection_x, tool_deflection_z;  ///< series rows of a compliant tool, m (else empty)
 };
 
 struct CutResult {

@@ -70,6 +70,49 @@ def plot_cut(run, summary, s):
     print("wrote forces.png")
 
 
+def plot_tool(run, summary, s):
+    """A compliant tool: its deflection from the holder against time with the static F/k, and
+    the amplitude spectra of the deflection and the forces (tool_spectrum.csv) with the mount's
+    natural frequency."""
+    tool = summary.get("tool", {})
+    t = [v * 1e6 for v in s["time"]]
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 7), dpi=120)
+    for c, col in (("x", "C0"), ("z", "C3")):
+        ax.plot(t, [v * 1e6 for v in s["tool_deflection_" + c]], lw=0.8, color=col,
+                label="deflection %s (tool minus holder)" % c)
+        st = tool.get("static_deflection_%s_m" % c)
+        t0 = next((v * 1e6 for v in s["time"] if v >= summary.get("cutting", {}).get("steady_from_s", 0)), None)
+        if st is not None and t0 is not None:
+            ax.hlines(st * 1e6, t0, t[-1], colors=col, linestyles="--", lw=1.5,
+                      label="static %s = steady force / stiffness" % ("-Fc/k" if c == "x" else "Ft/k"))
+    ax.set_xlabel("time [us]")
+    ax.set_ylabel("deflection [um]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("Compliant tool (%s): f_n = %.4g kHz, zeta = %.3g" % (
+        os.path.basename(os.path.normpath(run)), tool.get("natural_frequency_x_Hz", float("nan")) / 1e3,
+        tool.get("damping_ratio_x") or float("nan")))
+    path = os.path.join(run, "tool_spectrum.csv")
+    if os.path.exists(path):
+        sp = read_series(path)
+        f = [v / 1e3 for v in sp["frequency_Hz"]]
+        bx.semilogy(f, [max(v * 1e6, 1e-12) for v in sp["deflection_x_m"]], lw=1.0, color="C0", label="deflection x")
+        bx.semilogy(f, [max(v * 1e6, 1e-12) for v in sp["deflection_z_m"]], lw=1.0, color="C3", label="deflection z")
+        fn = tool.get("natural_frequency_x_Hz")
+        if fn:
+            bx.axvline(fn / 1e3, color="k", ls="--", lw=1.0, label="f_n = sqrt(k/m) / 2 pi")
+        bx.set_xlim(0, min(f[-1], 5 * fn / 1e3) if fn else f[-1])
+        bx.set_xlabel("frequency [kHz]")
+        bx.set_ylabel("amplitude [um]")
+        bx.grid(alpha=0.3, which="both")
+        bx.legend(fontsize=8)
+        bx.set_title("Amplitude spectra from the first contact (Hann window), resolution %.3g kHz" %
+                     (tool.get("spectrum_resolution_Hz", float("nan")) / 1e3), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "tool_vibration.png"))
+    print("wrote tool_vibration.png")
+
+
 def main():
     run = sys.argv[1]
     summary = json.load(open(sys.argv[2] if len(sys.argv) > 2 else os.path.join(run, "summary.json")))
@@ -96,6 +139,8 @@ def main():
         print("wrote stress_strain.png")
     if "cutting_force_per_width" in s:
         plot_cut(run, summary, s)
+    if "tool_deflection_x" in s:
+        plot_tool(run, summary, s)
     fig, ax = plt.subplots(figsize=(7, 4.5), dpi=120)
     t = [v * 1e6 for v in s["time"]]
     for key, label in (("external_work", "external work"), ("kinetic_energy", "kinetic"),

@@ -188,6 +188,46 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
   refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "cells", "more than"});
 }
 
+// tool_stiffness makes the tool a rigid body on its holder's spring: per metre of width as
+// the forces are, so the model's spring is k b and its mass m b with b the width the cut's
+// forces are per (2 cells in plane strain); the damper is zeta of critical; the anchor starts
+// at the tip and moves with the holder at the cutting speed. The printed derivation reads back
+// as the same bodies; the mount's keys are refused without it, and a mount too stiff for the
+// particles' step is refused by name.
+TEST(CutTable, ACompliantToolIsARigidBodyOnItsHoldersSpring) {
+  const std::vector<std::string> mount{"cut.tool_stiffness=1e10", "cut.tool_mass=0.025", "cut.tool_damping_ratio=0.05"};
+  const CaseSettings cs = parse_case(kDefaultCutTableToml, "compliant", mount);
+  const MeshSettings& t = tool_of(cs);
+  EXPECT_EQ(t.dynamics, "rigid_body");
+  const double b = 2 * cs.workpiece.cells[1] * std::sqrt(2.0) * cs.workpiece.radius;  // m
+  EXPECT_DOUBLE_EQ(t.spring_stiffness[0], 1e10 * b);
+  EXPECT_EQ(t.spring_stiffness[1], 0.0);
+  EXPECT_DOUBLE_EQ(t.spring_stiffness[2], 1e10 * b);
+  EXPECT_DOUBLE_EQ(t.mass, 0.025 * b);
+  EXPECT_DOUBLE_EQ(t.damping, 2 * 0.05 * std::sqrt(1e10 * b * 0.025 * b));
+  EXPECT_EQ(t.holder_velocity[0], cs.cut.cutting_speed);
+  EXPECT_EQ(t.initial_velocity[0], cs.cut.cutting_speed);
+  EXPECT_EQ(t.fixed, "y");
+  EXPECT_EQ(t.rotation, "prescribed");
+  const Model a = build_model(cs), again = build_model(parse_case(cs.cut_derived, "printed", {}));
+  ASSERT_EQ(a.bodies.size(), 1u);
+  ASSERT_EQ(again.bodies.size(), 1u);
+  const RigidBody& rb = a.bodies[0];
+  EXPECT_EQ(rb.load.anchor, Vec3(t.origin[0], t.origin[1], t.origin[2]));  // the tip
+  EXPECT_EQ(rb.load.spring, again.bodies[0].load.spring);
+  EXPECT_EQ(rb.mass, again.bodies[0].mass);
+  EXPECT_EQ(rb.load.force_damping, again.bodies[0].load.force_damping);
+  const auto refused = [&](std::vector<std::string> set, std::initializer_list<std::string> words) {
+    test::expect_mentions(test::case_error(kDefaultCutTableToml, set, "c.toml"), words);
+  };
+  refused({"cut.tool_mass=0.025"}, {"cut.tool_mass", "tool_stiffness"});
+  refused({"cut.tool_damping_ratio=0.1"}, {"cut.tool_damping_ratio", "tool_stiffness"});
+  refused({"cut.tool_stiffness=1e10"}, {"cut.tool_stiffness", "tool_mass"});
+  // 1e12 N/m/m on 1e-4 kg/m: a period of 63 ns, 53 steps of 1.18 ns: accepted; 1e14: 5 steps.
+  EXPECT_EQ(test::case_error(kDefaultCutTableToml, {"cut.tool_stiffness=1e12", "cut.tool_mass=1e-4"}), "");
+  refused({"cut.tool_stiffness=1e14", "cut.tool_mass=1e-4"}, {"'tool'", "spring_stiffness", "fewer than 30 steps"});
+}
+
 // 'swarf run --check' builds and prints without running or writing; 'swarf case default'
 // prints the built-in case (and --cut the same cut as a [cut] table) as files that read back.
 TEST(CutTable, RunCheckAndCaseDefault) {

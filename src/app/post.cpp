@@ -107,6 +107,27 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
   const CutResult res = analyze_cut(setup, data);
   sum["cutting"] = res.cutting;
   sum["chip"] = res.chip;
+  std::string tool_line;
+  if (setup.compliant() && !data.tool_deflection_x.empty()) {
+    const ToolVibration tv = analyze_tool(
+        setup.mount, ToolSeries{data.time, data.tool_deflection_x, data.tool_deflection_z, data.fc, data.ft},
+        setup.steady_from);
+    sum["tool"] = tv.summary;
+    if (!tv.spectra.frequency.empty()) write_text_atomic(dir + "/tool_spectrum.csv", tool_spectrum_csv(tv.spectra));
+    const auto& t = tv.summary;
+    const auto um = [&](const char* key) {
+      return t[key].is_number() ? fmt::format("{:.3g}", 1e6 * t[key].get<double>()) : std::string("-");
+    };
+    const auto khz = [&](const char* key) {
+      return t[key].is_number() ? fmt::format("{:.4g}", 1e-3 * t[key].get<double>()) : std::string("-");
+    };
+    tool_line = fmt::format(
+        "  compliant tool: deflection x {} um (static -Fc/k {} um), z {} um (Ft/k {} um); f_n {} kHz, spectrum peaks "
+        "x {} kHz, z {} kHz (resolution {} kHz)\n",
+        um("deflection_x_mean_m"), um("static_deflection_x_m"), um("deflection_z_mean_m"), um("static_deflection_z_m"),
+        khz("natural_frequency_x_Hz"), khz("deflection_x_peak_frequency_Hz"), khz("deflection_z_peak_frequency_Hz"),
+        khz("spectrum_resolution_Hz"));
+  }
   // The chip's surface: the union of its particles' spheres (radius grown by R/10 to close
   // the necks between touching neighbours) as a level set, meshed (OpenVDB).
   std::vector<Vec3> centres;
@@ -144,7 +165,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
       eprint("swarf: warning: picture not rendered: {}\n", message);
     }
   }
-  say("{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction));
+  say("{}{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction), tool_line);
   std::fflush(stdout);
 }
 
@@ -181,6 +202,11 @@ void post_run(const std::string& dir) {
   // takes the last state's. From layout 2 on the column is required.
   if (results_format(f) >= 2 || has_column(dir + "/series.csv", "chip_thickness"))
     data.chip_thickness = read_columns(dir + "/series.csv", {"chip_thickness"})[0];
+  if (setup.compliant()) {
+    const auto d = read_columns(dir + "/series.csv", {"tool_deflection_x", "tool_deflection_z"});
+    data.tool_deflection_x = d[0];
+    data.tool_deflection_z = d[1];
+  }
   std::size_t r = 0, c = 0;
   const auto x = f.read_doubles("/particles/position", r, c);
   const auto bf = f.read_doubles("/particles/broken_fraction", r, c);
@@ -194,7 +220,7 @@ void post_run(const std::string& dir) {
   for (auto v : intact) broken += v ? 0 : 1;
   data.broken_rod_fraction = intact.empty() ? 0.0 : double(broken) / double(intact.size());
   const bool pictures = sum["case"].contains("output") ? sum["case"]["output"].value("plots", true) : true;
-  for (const char* stale : {"pictures", "picture_error", "plots", "plot_error"}) sum.erase(stale);
+  for (const char* stale : {"pictures", "picture_error", "plots", "plot_error", "tool"}) sum.erase(stale);
   finish_cut(dir, setup, data, sum, nullptr, pictures);
   if (pictures) {
     write_text_atomic(summary_path, sum.dump(2) + "\n");  // the plot script reads the new analysis

@@ -50,6 +50,10 @@ struct CutSettings {
   double workpiece_length = 0.0;      ///< extent of the block along x in multiples of h, 1; 0 = length_of_cut / h + 7.6
   double workpiece_height = 3.0;      ///< extent of the block along z in multiples of h, 1
   double steady_from = -1.0;          ///< tool travel from which forces are averaged, m; < 0 = half the length of cut
+  // A compliant tool: a rigid body on a spring and damper to its holder along x and z.
+  double tool_stiffness = 0.0;       ///< per metre of width, N/m per m; 0 = the tool follows its path rigidly
+  double tool_mass = 0.0;            ///< modal mass per metre of width, kg/m
+  double tool_damping_ratio = 0.05;  ///< of the mount's critical damping, 1
 };
 
 /// [membrane]: a sheet of bonded spheres on a triangular lattice (membrane_lattice.h), in place

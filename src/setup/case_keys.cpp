@@ -945,7 +945,7 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .field = &S::damping,
        .unit = "N s/m",
        .range = kNonNegative,
-       .rule = "only with `dynamics = \"rigid_body\"`",
+       .rule = "m / damping at least 5 steps; only with `dynamics = \"rigid_body\"`",
        .doc = "External force -damping (v - holder_velocity) on the centre of mass (a mount's damper; without a "
               "holder, a drag -damping v). Damping ratio zeta = damping / (2 sqrt(k m)) along an axis of "
               "stiffness k.",
@@ -953,7 +953,8 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
       {.name = "spring_stiffness",
        .field = &S::spring_stiffness,
        .unit = "N/m",
-       .rule = "each >= 0 and finite; only with `dynamics = \"rigid_body\"`",
+       .rule = "each >= 0 and finite; the period 2 pi sqrt(m/k) at least 30 steps (of dt, or of dt_max with "
+               "Newmark); only with `dynamics = \"rigid_body\"`",
        .doc = "Stiffness of a mount along x, y and z: the force -k_c (x_c - a_c(t)) on the centre of mass, where "
               "the anchor a(t) starts at the initial centre of mass and moves at `holder_velocity` (a compliant "
               "tool on its holder: natural frequency sqrt(k/m) / (2 pi), static deflection F/k).",

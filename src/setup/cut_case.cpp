@@ -43,15 +43,23 @@ std::string text_of(double v) {
   if (s.find_first_of(".eEni") == std::string::npos) s += ".0";
   return s;
 }
-std::string text_of(const std::array<double, 3>& v) {
-  return fmt::format("[{}, {}, {}]", text_of(v[0]), text_of(v[1]), text_of(v[2]));
+template <std::size_t N>
+std::string text_of(const std::array<double, N>& v) {
+  std::string s = "[";
+  for (std::size_t k = 0; k < N; ++k) s += (k ? ", " : "") + text_of(v[k]);
+  return s + "]";
 }
 std::string text_of(const std::array<int, 3>& v) { return fmt::format("[{}, {}, {}]", v[0], v[1], v[2]); }
 std::string text_of(const std::string& v) { return '"' + v + '"'; }
 std::string text_of(bool v) { return v ? "true" : "false"; }
 std::string text_of(int v) { return std::to_string(v); }
 
-toml::array node_of(const std::array<double, 3>& v) { return toml::array{v[0], v[1], v[2]}; }
+template <std::size_t N>
+toml::array node_of(const std::array<double, N>& v) {
+  toml::array a;
+  for (double x : v) a.push_back(x);
+  return a;
+}
 toml::array node_of(const std::array<int, 3>& v) { return toml::array{v[0], v[1], v[2]}; }
 template <class T>
 T node_of(const T& v) {
@@ -150,6 +158,12 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   if (!(steady_from < length))
     r.fail("steady_from", r.get("steady_from"),
            fmt::format("must be below the length of cut {} m (a tool travel, m)", length));
+  const bool compliant = c.tool_stiffness > 0.0;
+  if (compliant && !r.has("tool_mass"))
+    r.fail("tool_stiffness", r.get("tool_stiffness"), "a compliant tool needs tool_mass (kg/m) too");
+  for (const char* key : {"tool_mass", "tool_damping_ratio"})
+    if (!compliant && r.has(key))
+      r.fail(key, r.get(key), "is used only with tool_stiffness > 0 (N/m/m): a compliant tool");
   const MaterialPreset& preset = *find_material_preset(c.material);  // (the key's choices are the presets)
   const bool plane_strain = !(c.width > 0.0);
 
@@ -277,8 +291,29 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   tf.put("face_length", kFaceLength * h, fmt::format("m: {} h", kFaceLength));
   tf.put("origin", std::array<double, 3>{-kStartAhead * h, 0.5 * y_last, z_tip},
          fmt::format("m: sharp tip {} h before the block, h below its top centres ({} m)", kStartAhead, z_top));
-  tf.put("motion", std::string("velocity"), "");
-  tf.put("velocity", std::array<double, 3>{v, 0.0, 0.0}, "m/s: the cutting speed along +x");
+  if (compliant) {
+    // A rigid body that does not turn, pulled along the path by its mount: the spring's
+    // anchor starts at the tip (its centre of mass) and moves with the holder.
+    const double b = 2 * n[1] * s;  // m: the width the forces are per (as the cut's probe measures it)
+    const double k = c.tool_stiffness * b, mass = c.tool_mass * b;  // N/m, kg
+    tf.put("dynamics", std::string("rigid_body"),
+           fmt::format("a compliant tool: f_n = sqrt(k/m) / 2 pi = {:.4g} kHz", std::sqrt(k / mass) / (2e3 * M_PI)));
+    tf.put("mass", mass, fmt::format("kg: tool_mass x the width b = {} m", b));
+    tf.put("centre_of_mass", std::array<double, 3>{-kStartAhead * h, 0.5 * y_last, z_tip},
+           "m: at the sharp tip, where the mount's spring pulls");
+    const double I = mass * kFaceLength * h * kFaceLength * h / 6.0;  // kg m^2 (nominal: it does not turn)
+    tf.put("inertia", std::array<double, 6>{I, I, I, 0.0, 0.0, 0.0}, "kg m^2: nominal, the tool does not turn");
+    tf.put("rotation", std::string("prescribed"), "with no angular velocity: it does not turn");
+    tf.put("fixed", std::string("y"), "held across the width");
+    tf.put("initial_velocity", std::array<double, 3>{v, 0.0, 0.0}, "m/s: starts at the holder's speed");
+    tf.put("holder_velocity", std::array<double, 3>{v, 0.0, 0.0}, "m/s: the holder moves at the cutting speed");
+    tf.put("spring_stiffness", std::array<double, 3>{k, 0.0, k}, "N/m: tool_stiffness x b along x and z");
+    tf.put("damping", 2.0 * c.tool_damping_ratio * std::sqrt(k * mass),
+           fmt::format("N s/m: {} of critical, 2 sqrt(k m)", c.tool_damping_ratio));
+  } else {
+    tf.put("motion", std::string("velocity"), "");
+    tf.put("velocity", std::array<double, 3>{v, 0.0, 0.0}, "m/s: the cutting speed along +x");
+  }
 
   const double end_time = length / v;
   out.section("[integrator]");

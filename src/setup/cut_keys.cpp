@@ -99,6 +99,32 @@ const std::vector<Key<CutSettings>>& cut_keys() {
        .rule = "below the length of cut",
        .doc = "Tool travel from which the forces and chip figures are averaged (`output.steady_from` is this "
               "over the cutting speed)."},
+      {.name = "tool_stiffness",
+       .field = &S::tool_stiffness,
+       .unit = "N/m/m",
+       .range = kNonNegative,
+       .rule = "with tool_mass",
+       .doc = "k/b: stiffness of a compliant tool's mount per metre of the cut's width (N/m of the tool for each m "
+              "of width), the same along the cutting (x) and thrust (z) directions. Given: the tool is a rigid body "
+              "(`dynamics = \"rigid_body\"`, not turning, y held) pulled along its path by a spring and damper to "
+              "its holder, which moves at the cutting speed; its deflection and spectra are written "
+              "([outputs.md](outputs.md#a-compliant-tool)). A holder of 2e7 N/m (20 N/um) cutting a width of 2 mm "
+              "is 1e10 N/m/m. 0: the tool follows its path rigidly."},
+      {.name = "tool_mass",
+       .field = &S::tool_mass,
+       .unit = "kg/m",
+       .no_default = true,
+       .default_note = "required with tool_stiffness",
+       .range = kPositive,
+       .rule = "only with tool_stiffness",
+       .doc = "m/b: modal mass of the compliant tool per metre of width. Natural frequency f_n = sqrt(k/m) / (2 "
+              "pi), independent of the width."},
+      {.name = "tool_damping_ratio",
+       .field = &S::tool_damping_ratio,
+       .unit = "1",
+       .range = in(0.0, 10.0, "[]"),
+       .rule = "only with tool_stiffness",
+       .doc = "zeta: the mount's damping as a fraction of its critical damping 2 sqrt(k m), along x and z."},
   };
   return keys;
 }

@@ -304,7 +304,7 @@ static RigidBody rigid_body_from_mesh(const CaseSettings& cs, const MeshSettings
 
 // A [[mesh]] with dynamics = "rigid_body": mass properties given or from its closed mesh, then
 // the keys' initial state, constraints and loads.
-static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std::size_t index,
+static RigidBody rigid_body(const CaseSettings& cs, const Derived& d, const MeshSettings& ms, std::size_t index,
                             const TriangleMesh& mesh) {
   const auto where = [&] { return fmt::format("{}: [[mesh]] '{}'", cs.source, ms.name); };
   RigidBody rb;
@@ -336,6 +336,23 @@ static RigidBody rigid_body(const CaseSettings& cs, const MeshSettings& ms, std:
   rb.load.anchor = rb.state.position;  // (the initial centre of mass)
   rb.load.holder_velocity = to_vec(ms.holder_velocity);
   rb.load.torque_damping = ms.torque_damping;
+  // The mount is integrated with the particles' step, which knows nothing of it: its period
+  // and its damper's time m/c must span enough steps to be stable and resolved (30 steps a
+  // period puts Verlet's period error below 0.2 %), or the case is refused, not run wrong.
+  const double h = d.implicit ? d.dt_max : d.dt;  // s: the largest step taken
+  for (int c = 0; c < 3; ++c) {
+    const double omega = std::sqrt(rb.load.spring[c] / rb.mass);  // rad/s
+    if (omega * h > 2.0 * M_PI / 30.0)
+      throw InputError(fmt::format(
+          "{}: key 'spring_stiffness' = {} N/m along {}: the mount's period 2 pi sqrt(m/k) = {:.4g} s (mass {:.4g} kg) "
+          "spans fewer than 30 steps of {:.4g} s: lower the stiffness or raise the mass",
+          where(), rb.load.spring[c], char('x' + c), 2.0 * M_PI / omega, rb.mass, h));
+  }
+  if (rb.load.force_damping * h / rb.mass > 0.2)
+    throw InputError(
+        fmt::format("{}: key 'damping' = {} N s/m: the damper's time m/c = {:.4g} s spans fewer than 5 steps of "
+                    "{:.4g} s: lower it or raise the mass",
+                    where(), rb.load.force_damping, rb.mass / rb.load.force_damping, h));
   return rb;
 }
 
@@ -374,7 +391,8 @@ void build_meshes(const CaseSettings& cs, Model& model) {
       mb.mesh = rectangle_mesh(ms);
       mb.mesh.validate(cs.source + " [[mesh]] " + ms.name);
     }
-    if (ms.dynamics == "rigid_body") model.bodies.push_back(rigid_body(cs, ms, model.meshes.size(), mb.mesh));
+    if (ms.dynamics == "rigid_body")
+      model.bodies.push_back(rigid_body(cs, model.derived, ms, model.meshes.size(), mb.mesh));
     mb.youngs_modulus = ms.youngs_modulus;
     mb.poisson_ratio = ms.poisson_ratio;
     mb.parting.lead = ms.parting_lead;

@@ -41,7 +41,16 @@ std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
   int mesh = -1;
   for (std::size_t k = 0; k < model.meshes.size() && mesh < 0; ++k)
     if (model.meshes[k].name == cs.tool_mesh) mesh = static_cast<int>(k);
-  return std::make_unique<CutProbe>(model, cs, mesh);
+  // A compliant tool: a rigid body on a spring along x and z to its holder.
+  int body = -1;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const RigidBody& rb = model.bodies[b];
+    if (static_cast<int>(rb.mesh) != mesh || !(rb.load.spring[0] > 0 && rb.load.spring[2] > 0)) continue;
+    body = static_cast<int>(b);
+    cs.mount = ToolMount{rb.load.spring[0] / cs.width, rb.load.spring[2] / cs.width, rb.mass / cs.width,
+                         rb.load.force_damping / cs.width};
+  }
+  return std::make_unique<CutProbe>(model, cs, mesh, body);
 }
 
 Vec3 CutProbe::tool_tip() const { return setup_.tool_tip + model_.meshes[tool_mesh_].offset; }
@@ -58,6 +67,9 @@ void CutProbe::columns(std::vector<Column>& out) const {
               {"cutting_force_per_width", "N/m", "cutting force Fc = -force_<tool>_x over the workpiece width"},
               {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
               {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip reaches the section"}});
+  if (tool_body_ >= 0)
+    out.insert(out.end(), {{"tool_deflection_x", "m", "the compliant tool's centre minus its holder's anchor along x"},
+                           {"tool_deflection_z", "m", "the compliant tool's centre minus its holder's anchor along z"}});
 }
 
 void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
@@ -66,6 +78,11 @@ void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
   const std::vector<Vec3> workpiece(x.begin(), x.begin() + setup_.lattice_particles);
   values.insert(values.end(), {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width,
                                measure_chip(chip_input(setup_, workpiece, tool_tip())).thickness});
+  if (tool_body_ >= 0) {
+    const RigidBody& rb = model_.bodies[tool_body_];
+    const Vec3 d = rb.state.position - rb.load.anchor - sim.time() * rb.load.holder_velocity;
+    values.insert(values.end(), {d[0], d[2]});
+  }
 }
 
 void CutProbe::write_results(H5File& f) const { write_cut_setup(f, setup_now()); }
@@ -82,6 +99,10 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
   data.broken_fraction.assign(bf.begin(), bf.begin() + n);
   data.broken_rod_fraction = double(end.sim.broken_rods()) /
                              std::max<double>(1.0, double(model_.rods.original_count()));
+  if (tool_body_ >= 0) {
+    data.tool_deflection_x = end.series["tool_deflection_x"];
+    data.tool_deflection_z = end.series["tool_deflection_z"];
+  }
   finish_cut(end.dir, setup_now(), data, summary, end.vtk, end.pictures);
 }
 

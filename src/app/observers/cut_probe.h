@@ -4,10 +4,12 @@
 // Per row: the tool's travel along x (m), the cutting force Fc (against the cutting direction
 // +x of the tool frame) and the thrust force Ft (+z, away from the workpiece), both per unit
 // width of the workpiece (N/m), and the chip's thickness then (m; 0 while fewer than 10 chip
-// particles have left the edge region). At the end: the cut's setup in results.h5, and the
-// force statistics and chip metrics (finish_cut, from the series' columns read by name) in
-// summary.json "cutting" and "chip", the chip surface, the picture and the result table.
-// It keeps no state between rows: the tool's place is the mesh's offset, in the engine state.
+// particles have left the edge region); for a compliant tool (a rigid body on a spring to its
+// holder) also its deflection from the holder along x and z (m), and at the end its
+// vibration analysis (tool_vibration.h): summary.json "tool" and tool_spectrum.csv. At the end: the cut's setup in
+// results.h5, and the force statistics and chip metrics (finish_cut, from the series' columns read by name) in
+// summary.json "cutting" and "chip", the chip surface, the picture and the result table. It keeps no state between
+// rows: the tool's place is the mesh's offset, in the engine state.
 #pragma once
 
 #include "app/observers/observer.h"
@@ -21,8 +23,10 @@ class CutProbe final : public Observer {
  public:
   /// The cut of 'model' (held by reference), or null when it has no tool mesh or no workpiece.
   static std::unique_ptr<CutProbe> of(const Model& model);
-  CutProbe(const Model& model, const CutSetup& setup, int tool_mesh)
-      : model_(model), setup_(setup), tool_mesh_(tool_mesh) {}
+  /// 'tool_body': the index of the tool's rigid body in model.bodies when it is a compliant tool
+  /// (on a spring along x and z), else -1.
+  CutProbe(const Model& model, const CutSetup& setup, int tool_mesh, int tool_body = -1)
+      : model_(model), setup_(setup), tool_mesh_(tool_mesh), tool_body_(tool_body) {}
   std::string_view name() const override { return "cut"; }
   void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
@@ -40,6 +44,7 @@ class CutProbe final : public Observer {
   const Model& model_;
   CutSetup setup_;  ///< at the start of the run (tool_tip: the tip at t = 0)
   int tool_mesh_;
+  int tool_body_;
 };
 
 }  // namespace swarf
