@@ -14,6 +14,7 @@
 #include <numbers>
 #include <string>
 
+#include "body_worlds.h"
 #include "memory_archive.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
@@ -27,6 +28,8 @@
 
 namespace swarf {
 namespace {
+
+using test::spheres_and_box;
 
 // ---- mass properties ----------------------------------------------------------------------
 
@@ -365,42 +368,6 @@ TEST(Constraints, AFixedPointHoldsAndAPrescribedSpinKeepsItsRate) {
 }
 
 // ---- spheres against a body ---------------------------------------------------------------
-
-// Eight spheres fly at a free box (no gravity) and hit it off its centre, with friction: the
-// box is pushed and set turning.
-World spheres_and_box(FrictionLaw law) {
-  World world;
-  const double R = 1e-3, rho = 2500;
-  auto& p = world.particles;
-  const int n = 8;
-  p.resize(n);
-  for (int k = 0; k < n; ++k) {
-    p.position[k] = Vec3(-3e-3 + 1.1e-3 * (k % 4) * 2, 1e-3 * (k / 4 * 2 - 1) + 2e-4 * k, 1.02e-3 + 3e-4 * (k % 3));
-    p.initial_position[k] = p.position[k];
-    p.velocity[k] = Vec3(0.1 * (k % 2), 0.0, -1.0 - 0.05 * k);
-    p.radius[k] = R;
-    p.mass[k] = rho * 4.0 / 3.0 * std::numbers::pi * R * R * R;
-    p.inv_mass[k] = 1.0 / p.mass[k];
-    p.inertia[k] = Vec3::Constant(0.4 * p.mass[k] * R * R);
-    p.inv_inertia[k] = 1.0 / p.inertia[k][0];
-  }
-  world.rods.build_rows(n);  // (no rods: the gather's rows are empty)
-  MeshBody mb;
-  mb.name = "plate";
-  mb.mesh = box_mesh(Vec3(1e-3, 0.0, -1e-3), Vec3(1.2e-2, 6e-3, 2e-3));
-  mb.youngs_modulus = HUGE_VAL;
-  world.meshes.push_back(mb);
-  world.mesh_motion.push_back(Motion{});
-  world.bodies.push_back(rigid_body_of(0, mb.mesh, 500));  // ~1.5x the spheres' mass
-  world.contacts = true;
-  world.contact.youngs_modulus = 1e9;
-  world.contact.poisson_ratio = 0.3;
-  world.contact.alpha = restitution_to_alpha(0.7);
-  world.contact.friction = law == FrictionLaw::None ? 0.0 : 0.4;
-  world.contact.law = law;
-  world.contact.skin = 2e-4;
-  return world;
-}
 
 struct Momenta {
   Vec3 p, L;  // linear, and angular about the origin
