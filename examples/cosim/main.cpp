@@ -39,21 +39,21 @@ namespace {
 using swarf::Vec3;
 
 // The swing (the multibody side).
-constexpr double kLinkLength = 0.05;    // m
-constexpr double kBucketMass = 5e-3;    // kg
-constexpr double kTheta0 = -0.3;        // rad, released from rest
-constexpr double kPivotZ = 0.053;       // m: the bucket's centre passes 3 mm above the floor
-constexpr double kGravity = 9.81;       // m/s^2
+constexpr double kLinkLength = 0.05;  // m
+constexpr double kBucketMass = 5e-3;  // kg
+constexpr double kTheta0 = -0.3;      // rad, released from rest
+constexpr double kPivotZ = 0.053;     // m: the bucket's centre passes 3 mm above the floor
+constexpr double kGravity = 9.81;     // m/s^2
 // The bed (swarf's side): spheres in a simple cubic pack on a floor at z = 0.
-constexpr double kRadius = 1e-3;        // m
-constexpr int kBed[3] = {10, 4, 2};     // spheres along x, y, z
-constexpr double kDensity = 2500.0;     // kg/m^3
-constexpr double kYoungs = 1e8;         // Pa
-constexpr double kRestitution = 0.5;    // 1
-constexpr double kFriction = 0.3;       // 1
-constexpr double kDt = 5e-6;            // s: swarf's step (a fifth of the spheres' Rayleigh time is 1.1e-5 s)
-constexpr int kSubSteps = 10;           // swarf steps per exchange
-constexpr double kEndTime = 0.3;        // s
+constexpr double kRadius = 1e-3;      // m
+constexpr int kBed[3] = {10, 4, 2};   // spheres along x, y, z
+constexpr double kDensity = 2500.0;   // kg/m^3
+constexpr double kYoungs = 1e8;       // Pa
+constexpr double kRestitution = 0.5;  // 1
+constexpr double kFriction = 0.3;     // 1
+constexpr double kDt = 5e-6;          // s: swarf's step (a fifth of the spheres' Rayleigh time is 1.1e-5 s)
+constexpr int kSubSteps = 10;         // swarf steps per exchange
+constexpr double kEndTime = 0.3;      // s
 
 Vec3 bucket_at(double theta) {
   return Vec3(kLinkLength * std::sin(theta), 0.0, kPivotZ - kLinkLength * std::cos(theta));
@@ -69,8 +69,8 @@ swarf::World make_world() {
   for (int k = 0; k < kBed[2]; ++k)
     for (int j = 0; j < kBed[1]; ++j)
       for (int l = 0; l < kBed[0]; ++l, ++i) {
-        p.position[i] = p.initial_position[i] =
-            Vec3(-4e-3 + 2 * kRadius * l, -3e-3 + 2 * kRadius * j, kRadius + 2 * kRadius * k);
+        p.position[i] = p.initial_position[i] = Vec3(-4e-3 + 2 * kRadius * l, -3e-3 + 2 * kRadius * j,
+                                                     kRadius + 2 * kRadius * k);
         p.radius[i] = kRadius;
         p.mass[i] = m;
         p.inv_mass[i] = 1.0 / m;
