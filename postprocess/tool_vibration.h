@@ -14,6 +14,9 @@
 // apart up to the rows' Nyquist frequency, and scaled so that a sinusoid of amplitude A reads
 // A at its frequency (sum of the window's weights in the denominator). Rows need not be
 // equally spaced (the last row of a run may be closer): each weighs by its share of the time.
+// The reported peak is the highest between half and twice the natural frequency: one run's
+// spectrum is noisy, and a run-to-run comparison belongs to an ensemble
+// (validation/cutting/compliant_tool/).
 #pragma once
 
 #include <nlohmann/json.hpp>
