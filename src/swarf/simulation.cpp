@@ -49,6 +49,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   for (std::size_t g = 0; g < ng; ++g)
     for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
   setup_bodies();
+  setup_flows();
   if (m_.contacts) {
     contact_force_.assign(m_.particles.size(), Vec3::Zero());
     contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
@@ -115,6 +116,7 @@ void Simulation::set_rotations(bool on) {
 void Simulation::step(double max_dt) {
   for (StepListener* l : listeners_) l->before_step(*this);
   step_scheme(max_dt);
+  if (!m_.inflows.empty() || !m_.outflows.empty()) apply_flows(last_dt_);
   for (StepListener* l : listeners_) l->after_step(*this);
 }
 

@@ -48,6 +48,8 @@ struct EnergyLedger {
   double fracture_energy = 0;  ///< elastic energy lost with broken rods
   double contact_work = 0;     ///< taken up by the contacts: -integral of the contact forces' power on
                                ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
+  double flow_energy = 0;      ///< carried out by removed particles (kinetic, potential, their rods' elastic
+                               ///< energy) minus brought in by created ones (kinetic)
 };
 
 /// Counters of the step control.
@@ -78,6 +80,9 @@ class Simulation {
   // (Particles::id) stay with their particles.
   /// Reorders the particles: order[k] is the current index of the particle placed at k.
   void apply_permutation(const std::vector<std::int32_t>& order);
+  /// Inflow and outflow regions (particle_flows.h) act after every accepted step, before the
+  /// listeners' after_step: the outflows remove the particles whose centres lie in them, then
+  /// the inflows create theirs. The energy they carry is in EnergyLedger::flow_energy.
   /// Removes the particles with remove[i] != 0, their rods and their contacts; the others
   /// keep their order. Returns the number of rods removed with them.
   std::size_t remove_particles(const std::vector<std::uint8_t>& remove);
@@ -172,6 +177,8 @@ class Simulation {
   void account(double h);
 
   // Rigid bodies (simulation_bodies.cpp).
+  void setup_flows();                                        // checks the inflow and outflow regions
+  void apply_flows(double h);                                // outflows then inflows after a step of h
   void setup_bodies();                                       // checks, the mesh -> body map, the meshes placed
   void place_body_mesh(std::size_t b);                       // body b's mesh from its pose
   bool advance_bodies(double h, double beta, double gamma);  // from body_n_ and the latest wrench; false if too far

@@ -10,6 +10,7 @@
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 #include "swarf/neighbors/neighbor_pairs.h"
 #include "swarf/simulation.h"
 
@@ -168,6 +169,21 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("stats/max_iterations", stats_.max_iterations);
   ar.scalar("stats/last_iterations", stats_.last_iterations);
   if (contacts_.enabled()) contacts_.visit_state(ar, p);
+  if (!m_.inflows.empty() || !m_.outflows.empty()) {  // (only then: older checkpoints and hashes stay as they were)
+    ar.scalar("ledger/flow_energy", ledger_.flow_energy);
+    for (std::size_t k = 0; k < m_.inflows.size(); ++k) {
+      Inflow& f = m_.inflows[k];
+      const std::string at = fmt::format("flows/inflow_{}/", k);
+      ar.scalar(at + "owed", f.owed);
+      ar.scalar(at + "draws", f.draws);
+      ar.scalar(at + "created", f.created);
+      ar.scalar(at + "missed", f.missed);
+      if (load && !(finite_bits(f.owed) && f.owed >= 0.0 && f.owed < 1.0))
+        throw InputError(fmt::format("state field '{}owed' = {}: it must lie in [0, 1)", at, nan_safe(f.owed)));
+    }
+    for (std::size_t k = 0; k < m_.outflows.size(); ++k)
+      ar.scalar(fmt::format("flows/outflow_{}/removed", k), m_.outflows[k].removed);
+  }
   if (load) {
     // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
     if (!(std::isfinite(time_) && time_ >= 0.0) || !(std::isfinite(dt_) && dt_ > 0.0) || !std::isfinite(last_dt_))

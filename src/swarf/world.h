@@ -13,6 +13,7 @@
 #include "swarf/core/vec3.h"
 #include "swarf/state/bodies.h"
 #include "swarf/state/motion.h"
+#include "swarf/state/particle_flows.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rigid_body.h"
 #include "swarf/state/rods.h"
@@ -30,6 +31,8 @@ struct World {
   bool contacts = false;            ///< Hertz contacts and friction between unbonded particles and with meshes
   ContactParams contact;            ///< used when 'contacts'
   Vec3 gravity = Vec3::Zero();      ///< m/s^2
+  std::vector<Inflow> inflows;      ///< regions creating particles (particle_flows.h)
+  std::vector<Outflow> outflows;    ///< regions removing particles
 };
 
 }  // namespace swarf

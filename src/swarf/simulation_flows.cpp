@@ -1,0 +1,115 @@
+// simulation_flows.cpp: inflow and outflow regions after each accepted step (see
+// state/particle_flows.h and simulation.h).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "swarf/core/bounds.h"
+#include "swarf/core/errors.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+namespace {
+
+bool inside(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] && x[2] <= hi[2];
+}
+
+bool good_box(const Vec3& lo, const Vec3& hi) {
+  return all_finite(lo) && all_finite(hi) && lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2];
+}
+
+}  // namespace
+
+void Simulation::setup_flows() {
+  for (std::size_t k = 0; k < m_.inflows.size(); ++k) {
+    const Inflow& f = m_.inflows[k];
+    const auto bad = [&](const std::string& why) { throw InputError(fmt::format("inflow {}: {}", k, why)); };
+    if (!good_box(f.box_min, f.box_max)) bad("its box must be finite with box_min <= box_max (m)");
+    if (!(finite_bits(f.rate) && f.rate >= 0.0)) bad("its rate must be finite and >= 0 (particles per second)");
+    if (!(finite_bits(f.radius_min) && finite_bits(f.radius_max) && f.radius_min >= kMinRadius &&
+          f.radius_max >= f.radius_min && f.radius_max <= kMaxRadius))
+      bad(fmt::format("its radii must satisfy {:g} m <= radius_min <= radius_max <= {:g} m", kMinRadius, kMaxRadius));
+    if (!(finite_bits(f.density) && f.density > 0.0)) bad("its density must be finite and > 0 (kg/m^3)");
+    if (!all_finite(f.velocity)) bad("its velocity must be finite (m/s)");
+    if (!(finite_bits(f.overlap) && f.overlap >= 0.0 && f.overlap < 1.0)) bad("its overlap must lie in [0, 1)");
+    if (f.attempts < 1) bad("it needs at least 1 attempt per particle");
+  }
+  for (std::size_t k = 0; k < m_.outflows.size(); ++k)
+    if (!good_box(m_.outflows[k].box_min, m_.outflows[k].box_max))
+      throw InputError(fmt::format("outflow {}: its box must be finite with box_min <= box_max (m)", k));
+}
+
+void Simulation::apply_flows(double h) {
+  auto& p = m_.particles;
+  const Vec3 g = m_.gravity;
+  // Outflow: what leaves takes its kinetic and potential energy and its rods' elastic energy
+  // with it (a contact's stored energy is not tracked: it shows in the balance's error, so
+  // outflow regions belong where particles fly free).
+  if (!m_.outflows.empty()) {
+    std::vector<std::uint8_t> remove(p.size(), 0);
+    std::size_t count = 0;
+    double out = 0.0;  // J
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (Outflow& o : m_.outflows)
+        if (inside(p.position[i], o.box_min, o.box_max)) {
+          remove[i] = 1;
+          ++o.removed;
+          ++count;
+          out += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.inertia[i].dot(p.omega[i].cwiseAbs2()) -
+                 p.mass[i] * g.dot(p.position[i] - p.initial_position[i]);
+          break;
+        }
+    if (count > 0) {
+      const double elastic_before = m_.rods.size() > 0 ? elastic_energy() : 0.0;
+      remove_particles(remove);
+      const double elastic_after = m_.rods.size() > 0 ? elastic_energy() : 0.0;
+      ledger_.flow_energy += out + (elastic_before - elastic_after);
+    }
+  }
+  // Inflow: each region owes rate x h particles more; each due particle draws up to
+  // 'attempts' places (centre and radius) and takes the first that overlaps nothing beyond
+  // the tolerance, the ones created this step included.
+  Particles add;
+  for (Inflow& f : m_.inflows) {
+    f.owed += f.rate * h;
+    while (f.owed >= 1.0) {
+      f.owed -= 1.0;
+      bool placed = false;
+      for (int a = 0; a < f.attempts && !placed; ++a) {
+        Vec3 x;
+        for (int c = 0; c < 3; ++c)
+          x[c] = f.box_min[c] + (f.box_max[c] - f.box_min[c]) * flow_uniform(f.seed, f.draws++);
+        const double r = f.radius_min + (f.radius_max - f.radius_min) * flow_uniform(f.seed, f.draws++);
+        auto clear_of = [&](const Particles& q) {
+          for (std::size_t j = 0; j < q.position.size(); ++j) {
+            const double s = r + q.radius[j];
+            if ((q.position[j] - x).squaredNorm() < (1.0 - f.overlap) * (1.0 - f.overlap) * s * s) return false;
+          }
+          return true;
+        };
+        if (!clear_of(p) || !clear_of(add)) continue;
+        const std::size_t k = add.position.size();
+        add.resize(k + 1);
+        const double m = f.density * 4.0 / 3.0 * M_PI * r * r * r;
+        add.position[k] = add.initial_position[k] = x;
+        add.velocity[k] = f.velocity;
+        add.acceleration[k] = g;  // (force-free: the first half kick sees gravity)
+        add.force[k] = m * g;
+        add.radius[k] = r;
+        add.mass[k] = m;
+        add.inv_mass[k] = 1.0 / m;
+        add.inertia[k] = Vec3::Constant(0.4 * m * r * r);
+        add.inv_inertia[k] = 1.0 / add.inertia[k][0];
+        ledger_.flow_energy -= 0.5 * m * f.velocity.squaredNorm();
+        ++f.created;
+        placed = true;
+      }
+      if (!placed) ++f.missed;
+    }
+  }
+  if (!add.position.empty()) append_particles(add);
+}
+
+}  // namespace swarf
