@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-"""Writes the water wheel (issue 15 item 5, small version): wheel.obj, stream.txt, wheel.toml.
+"""Writes the water wheel (issue 15 item 5): wheel.obj and wheel.toml.
 
 A paddle wheel (hub + 6 paddles, axis y through the origin) on a hinge with a damping torque
--c omega, hit by a stream of spheres moving down (-z) at speed U, off the axis at x = X, with no
-gravity, so that the stream arrives at a constant speed and mass flow. There is no particle
-inflow in swarf yet (issue 15 item 4): the stream is laid out at the start as a long train of
-particles above the wheel, which lasts L / U.
+-c omega, fed by an inflow region above it that creates spheres moving down (-z) at speed U,
+off the axis at x = X, under gravity; an outflow region below the wheel removes them. The
+inflow's rate is RATE particles per second: the mass flow of a stream COLS x ROWS abreast with
+S between particles along it.
 
 Usage: /usr/bin/python3 make_case.py [OUTDIR]   (default: this directory)
 """
@@ -18,10 +18,13 @@ HUB_R, HUB_LEN, HUB_SEG = 2.5e-3, 6e-3, 24
 PADDLES, PADDLE_IN, PADDLE_OUT, PADDLE_W, PADDLE_T = 6, 2.6e-3, 10e-3, 6e-3, 0.8e-3
 # Stream: spheres of radius RP in a COLS x ROWS cross-section, spacing S, speed U, m/s
 RP, S, U = 0.5e-3, 1.25e-3, 2.0
-COLS, ROWS, LENGTH = 2, 3, 0.12  # across x, across y, along z (m): lasts LENGTH / U = 60 ms
+COLS, ROWS = 2, 3  # the stream's cross-section in particles (for its rate)
+RATE = COLS * ROWS * U / S  # particles per second: 9600
+END = 0.2  # s
 X = 6.0e-3  # stream centre's distance from the axis, m
 C = 1e-6  # damping torque per angular velocity, N m s/rad
-Z0 = 11e-3  # the train's lowest particle, m (just above the paddles' reach)
+Z0 = 11.5e-3  # the inflow box's bottom, m (just above the paddles' reach)
+OUT_Z = -12e-3  # everything below this is removed, m
 
 
 def box(verts, tris, centre, axes, half):
@@ -69,27 +72,25 @@ def main(out):
         for t in tris:
             f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
 
-    n_along = int(LENGTH / S)
-    with open(os.path.join(out, "stream.txt"), "w") as f:
-        i = 0
-        for k in range(n_along):
-            for c in range(COLS):
-                for r in range(ROWS):
-                    i += 1
-                    x = X + (c - 0.5 * (COLS - 1)) * S
-                    y = (r - 0.5 * (ROWS - 1)) * S
-                    z = Z0 + k * S
-                    f.write("%d %.9g %.9g %.9g 0 0 %.9g\n" % (i, x, y, z, -U))
-    print("stream: %d particles, %.1f ms" % (i, 1e3 * LENGTH / U))
-
     with open(os.path.join(out, "wheel.toml"), "w") as f:
         f.write("""# The water wheel, small version (validation/water_wheel/README.md); made by make_case.py.
 [material]
 density = 2500.0
 
-[particles]
-file = "stream.txt"
-radius = %(rp)g
+[[inflow]]
+box_min = [%(x0)g, %(y0)g, %(z0)g]
+box_max = [%(x1)g, %(y1)g, %(z1)g]
+rate = %(rate)g
+radius_min = %(rp)g
+velocity = [0.0, 0.0, %(mu)g]
+seed = 1
+
+[[outflow]]
+box_min = [-1.0, -1.0, -1.0]
+box_max = [1.0, 1.0, %(outz)g]
+
+[environment]
+gravity = [0.0, 0.0, -9.81]
 
 [contact]
 youngs_modulus = 1e8
@@ -109,13 +110,14 @@ torque_damping = %(c)g
 [integrator]
 scheme = "verlet"
 dt = 5e-7
-end_time = 0.06
+end_time = %(end)g
 
 [output]
 plots = false
-series_interval = 2e-5
-frame_interval = 2e-3
-""" % {"rp": RP, "c": C})
+series_interval = 5e-5
+frame_interval = 5e-3
+""" % {"rp": RP, "c": C, "x0": X - 1.2e-3, "x1": X + 1.2e-3, "y0": -1.8e-3, "y1": 1.8e-3, "z0": Z0,
+       "z1": Z0 + 2e-3, "rate": RATE, "mu": -U, "outz": OUT_Z, "end": END})
 
 
 if __name__ == "__main__":
