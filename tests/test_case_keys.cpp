@@ -83,6 +83,14 @@ radius = 1e-3
 [particles]
 file = "p.txt"
 radius = 1e-3
+[[inflow]]
+box_min = [0.0, 0.0, 0.02]
+box_max = [0.01, 0.01, 0.03]
+rate = 1000.0
+radius_min = 1e-3
+[[outflow]]
+box_min = [-1.0, -1.0, -1.0]
+box_max = [1.0, 1.0, -0.5]
 [output]
 )";
 
@@ -107,7 +115,8 @@ material = "C45"
 
 // kEveryTable (kMembraneCase for [membrane], kCutCase for [cut]) with 'line' added to 'table'.
 std::string every_table_with(const std::string& table, const std::string& line) {
-  const bool array = table == "group" || table == "mesh" || table == "particle";
+  const bool array = table == "group" || table == "mesh" || table == "particle" || table == "inflow" ||
+                     table == "outflow";
   const std::string header = (array ? "[[" : "[") + table + (array ? "]]\n" : "]\n");
   std::string text = table == "membrane" ? kMembraneCase : table == "cut" ? kCutCase : kEveryTable;
   const auto pos = text.find(header);
@@ -197,6 +206,8 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
                             &MeshSettings::hinge_at_point);
   expect_every_member_keyed("particle", particle_keys());
   expect_every_member_keyed("particles", particles_file_keys());
+  expect_every_member_keyed("inflow", inflow_keys());
+  expect_every_member_keyed("outflow", outflow_keys());
   expect_every_member_keyed("output", output_keys());
   // CaseSettings: [environment] gravity; the tables; what the run records about its input.
   expect_every_member_keyed(
@@ -204,7 +215,8 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
       &CaseSettings::membrane, &CaseSettings::material, &CaseSettings::rod, &CaseSettings::integrator,
       &CaseSettings::groups, &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::meshes,
       &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output, &CaseSettings::overrides,
-      &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::cut, &CaseSettings::cut_derived);
+      &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::cut, &CaseSettings::cut_derived,
+      &CaseSettings::inflows, &CaseSettings::outflows);
 }
 
 // Every key the case leaves out holds the default-constructed struct's value, which is the
@@ -239,6 +251,10 @@ TEST(CaseKeys, KeysLeftOutKeepTheStructDefaults) {
   expect_defaults("mesh", motion_keys(), cs.meshes[0].motion, {});
   expect_defaults("particle", particle_keys(), cs.particles.at(0), {"position", "radius"});
   expect_defaults("particles", particles_file_keys(), cs.particles_file, {"file", "radius"});
+  // (radius_max left out is radius_min, as its doc says: the reader sets it)
+  expect_defaults("inflow", inflow_keys(), cs.inflows.at(0), {"box_min", "box_max", "rate", "radius_min", "radius_max"});
+  EXPECT_EQ(cs.inflows[0].radius_max, cs.inflows[0].radius_min);
+  expect_defaults("outflow", outflow_keys(), cs.outflows.at(0), {"box_min", "box_max"});
   expect_defaults("output", output_keys(), cs.output, {});
   const CaseSettings ms = parse_case(kMembraneCase, "keys.toml", {}, dir.str());
   expect_defaults("membrane", membrane_keys(), ms.membrane, {"length", "width", "thickness", "youngs_modulus"});

@@ -10,7 +10,10 @@
 #include <map>
 #include <set>
 
+#include "case_errors.h"
 #include "memory_archive.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "swarf/geometry/shapes.h"
 #include "swarf/laws/hertz.h"
@@ -190,6 +193,36 @@ TEST(Flows, BadRegionsAreRefused) {
   refused([](World& w) { w.inflows[0].overlap = 1.0; });
   refused([](World& w) { w.inflows[0].box_max = Vec3(-1.0, 1.0, 1.0); });
   refused([](World& w) { w.outflows[0].box_min = Vec3(HUGE_VAL, 0.0, 0.0); });
+}
+
+// [[inflow]] and [[outflow]] in a case: an inflow alone is a case; its keys reach the World
+// (the density is the material's); the step and the skin take its radii into account; bad
+// keys are refused by name.
+TEST(FlowCase, InflowAndOutflowTablesBuildTheWorldsRegions) {
+  const std::string text =
+      "[material]\ndensity = 2500.0\n[contact]\nyoungs_modulus = 1e8\n"
+      "[[inflow]]\nbox_min = [0.0, 0.0, 0.0]\nbox_max = [0.01, 0.01, 0.002]\nrate = 2e4\nradius_min = 0.4e-3\n"
+      "radius_max = 0.6e-3\nvelocity = [0.0, 0.0, -2.0]\nseed = 7\n"
+      "[[outflow]]\nbox_min = [-1.0, -1.0, -1.0]\nbox_max = [1.0, 1.0, -0.01]\n"
+      "[integrator]\nscheme = \"verlet\"\nend_time = 1e-3\n";
+  const Model m = build_model(parse_case(text, "flows.toml", {}));
+  ASSERT_EQ(m.inflows.size(), 1u);
+  ASSERT_EQ(m.outflows.size(), 1u);
+  EXPECT_EQ(m.particles.size(), 0u);
+  EXPECT_EQ(m.inflows[0].density, 2500.0);
+  EXPECT_EQ(m.inflows[0].radius_max, 0.6e-3);
+  EXPECT_EQ(m.inflows[0].seed, 7u);
+  EXPECT_EQ(m.outflows[0].box_max, Vec3(1.0, 1.0, -0.01));
+  EXPECT_EQ(m.derived.radius, 0.4e-3);  // (the stable step's radius: the inflow's smallest)
+  EXPECT_GT(m.contact.skin, 0.0);       // (from the inflow's largest radius: no particle at the start)
+  const auto refused = [&](const std::vector<std::string>& set, std::initializer_list<std::string> words) {
+    test::expect_mentions(test::case_error(text, set, "flows.toml"), words);
+  };
+  refused({"inflow.0.radius_max=0.3e-3"}, {"inflow.radius_max", ">= radius_min"});
+  refused({"inflow.0.box_max=[0.01, -0.01, 0.002]"}, {"inflow.box_max", ">= box_min"});
+  refused({"inflow.0.rate=-1.0"}, {"inflow.rate"});
+  refused({"outflow.0.box_max=[1.0, -2.0, 1.0]"}, {"outflow.box_max"});
+  refused({"inflow.0.overlap=1.0"}, {"inflow.overlap"});
 }
 
 }  // namespace

@@ -76,6 +76,8 @@ nlohmann::json case_effective_json(const CaseSettings& cs) {
   }
   for (const auto& p : cs.particles) j["particle"].push_back(table(particle_keys(), p));
   if (!cs.particles_file.file.empty()) j["particles"] = table(particles_file_keys(), cs.particles_file);
+  for (const auto& f : cs.inflows) j["inflow"].push_back(table(inflow_keys(), f));
+  for (const auto& o : cs.outflows) j["outflow"].push_back(table(outflow_keys(), o));
   j["output"] = table(output_keys(), cs.output);
   return j;
 }

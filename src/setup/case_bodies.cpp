@@ -103,6 +103,14 @@ const toml::array* entries(const CaseInput& in, const char* name) {
   return arr;
 }
 
+// An inflow's or outflow's box: both corners given, the upper one above the lower.
+void check_box(const TableReader& r, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+  for (const char* key : {"box_min", "box_max"})
+    if (!r.has(key)) r.fail(key, nullptr, "is required");
+  for (int c = 0; c < 3; ++c)
+    if (!(hi[c] >= lo[c])) r.fail("box_max", r.get("box_max"), "must be >= box_min in x, y and z (m)");
+}
+
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
@@ -264,6 +272,28 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
       cs.particles.push_back(p);
     }
   }
+  if (const toml::array* arr = entries(in, "inflow"))
+    for (std::size_t k = 0; k < arr->size(); ++k) {
+      TableReader r = in.reader((*arr)[k].as_table(), "inflow");
+      InflowSettings f;
+      r.read(inflow_keys(), f);
+      r.finish();
+      for (const char* key : {"rate", "radius_min"})
+        if (!r.has(key)) r.fail(key, nullptr, "is required");
+      if (!r.has("radius_max")) f.radius_max = f.radius_min;
+      if (!(f.radius_max >= f.radius_min)) r.fail("radius_max", r.get("radius_max"), "must be >= radius_min (m)");
+      check_box(r, f.box_min, f.box_max);
+      cs.inflows.push_back(f);
+    }
+  if (const toml::array* arr = entries(in, "outflow"))
+    for (std::size_t k = 0; k < arr->size(); ++k) {
+      TableReader r = in.reader((*arr)[k].as_table(), "outflow");
+      OutflowSettings o;
+      r.read(outflow_keys(), o);
+      r.finish();
+      check_box(r, o.box_min, o.box_max);
+      cs.outflows.push_back(o);
+    }
   if (const toml::table* t = in.table("particles")) {
     TableReader r = in.reader(t, "particles");
     auto& f = cs.particles_file;

@@ -273,10 +273,10 @@ void read_output(const CaseInput& in, CaseSettings& cs) {
 
 // Top level: only known tables, and tables where a table is expected.
 void check_top_level(const toml::table& root, const std::string& source, const std::set<std::string>& ov) {
-  const std::set<std::string> tables{"cut",        "workpiece", "membrane",    "material", "rod",
-                                     "integrator", "group",     "uniaxial",    "contact",  "mesh",
-                                     "particle",   "particles", "environment", "output"};
-  const std::set<std::string> arrays_of_tables{"group", "mesh", "particle"};
+  const std::set<std::string> tables{"cut",    "workpiece", "membrane",    "material", "rod",      "integrator",
+                                     "group",  "uniaxial",  "contact",     "mesh",     "particle", "particles",
+                                     "inflow", "outflow",   "environment", "output"};
+  const std::set<std::string> arrays_of_tables{"group", "mesh", "particle", "inflow", "outflow"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
     if (!tables.count(key)) {
@@ -341,9 +341,11 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
         fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
                     "contacts: add a [contact] table",
                     source, cs.rod.bond_overlap));
-  if (!cs.workpiece.enabled && !cs.membrane.enabled && cs.particles.empty() && cs.particles_file.file.empty())
+  if (!cs.workpiece.enabled && !cs.membrane.enabled && cs.particles.empty() && cs.particles_file.file.empty() &&
+      cs.inflows.empty())
     throw InputError(fmt::format(
-        "{}: no particles: give a [workpiece], a [membrane], [[particle]] tables or [particles] file", source));
+        "{}: no particles: give a [workpiece], a [membrane], [[particle]] tables, a [particles] file or an [[inflow]]",
+        source));
   read_output(in, cs);
   if (!cs.uniaxial.enabled && !(cs.integrator.end_time > 0.0))
     throw InputError(

@@ -264,6 +264,26 @@ struct ParticleSettings {
   double radius = 0.0;                              ///< m
 };
 
+/// [[inflow]]: a box that creates free spheres during the run (swarf/state/particle_flows.h);
+/// they are made of the [material] density, as [[particle]]s are.
+struct InflowSettings {
+  std::array<double, 3> box_min{0, 0, 0};   ///< m
+  std::array<double, 3> box_max{0, 0, 0};   ///< m
+  double rate = 0.0;                        ///< particles per second
+  double radius_min = 0.0;                  ///< m
+  double radius_max = 0.0;                  ///< m; 0 = radius_min
+  std::array<double, 3> velocity{0, 0, 0};  ///< m/s
+  int seed = 1;                             ///< 1
+  double overlap = 0.0;                     ///< largest relative overlap with any particle at creation, 1
+  int attempts = 20;                        ///< placement draws per particle, 1
+};
+
+/// [[outflow]]: a box that removes the particles whose centres enter it.
+struct OutflowSettings {
+  std::array<double, 3> box_min{0, 0, 0};  ///< m
+  std::array<double, 3> box_max{0, 0, 0};  ///< m
+};
+
 /// [particles]: free particles from a text file (columns id x y z vx vy vz, SI units).
 struct ParticlesFileSettings {
   std::string file;
@@ -286,6 +306,8 @@ struct CaseSettings {
   std::vector<MeshSettings> meshes;
   std::vector<ParticleSettings> particles;
   ParticlesFileSettings particles_file;
+  std::vector<InflowSettings> inflows;
+  std::vector<OutflowSettings> outflows;
   std::array<double, 3> gravity{0, 0, 0};  ///< [environment] gravity, m/s^2
   OutputSettings output;
   std::vector<std::string> overrides;  ///< the --set arguments, in order

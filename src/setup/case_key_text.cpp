@@ -188,6 +188,8 @@ std::vector<KeyRow> case_key_rows() {
   rows.insert(rows.end(), mesh.begin(), mesh.end());
   append(rows, "particle", particle_keys());
   append(rows, "particles", particles_file_keys());
+  append(rows, "inflow", inflow_keys());
+  append(rows, "outflow", outflow_keys());
   append(rows, "environment", environment_keys());
   append(rows, "output", output_keys());
   return rows;

@@ -1003,6 +1003,91 @@ const std::vector<Key<ParticleSettings>>& particle_keys() {
   return keys;
 }
 
+const std::vector<Key<InflowSettings>>& inflow_keys() {
+  using S = InflowSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "box_min",
+       .field = &S::box_min,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .doc = "Lower corner of the box in which the new particles' centres are drawn (uniformly)."},
+      {.name = "box_max",
+       .field = &S::box_max,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .rule = ">= box_min",
+       .doc = "Upper corner of that box."},
+      {.name = "rate",
+       .field = &S::rate,
+       .unit = "1/s",
+       .no_default = true,
+       .default_note = "required",
+       .range = kNonNegative,
+       .doc = "Particles created per second. Each step owes rate x dt more; the fraction left over carries to "
+              "the next step, so created + missed = floor(rate t)."},
+      {.name = "radius_min",
+       .field = &S::radius_min,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .range = kRadius,
+       .doc = "Smallest radius; the radii are drawn uniformly in [radius_min, radius_max]. The stable step takes "
+              "it into account as it does the smallest initial particle."},
+      {.name = "radius_max",
+       .field = &S::radius_max,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "radius_min",
+       .range = kRadius,
+       .rule = ">= radius_min",
+       .doc = "Largest radius."},
+      {.name = "velocity", .field = &S::velocity, .unit = "m/s", .doc = "Velocity of every new particle."},
+      {.name = "seed",
+       .field = &S::seed,
+       .unit = "1",
+       .range = in(0, 2147483647, "[]"),
+       .doc = "Seed of the placement's random numbers: the same seed, the same particles at the same places, on "
+              "any number of threads and across a restart."},
+      {.name = "overlap",
+       .field = &S::overlap,
+       .unit = "1",
+       .range = in(0.0, 1.0, "[)"),
+       .doc = "Largest relative overlap (r_i + r_j - d) / (r_i + r_j) of a new particle with any particle "
+              "(those created in the same step too). 0: never overlapping. Meshes are not checked: keep the box "
+              "clear of them."},
+      {.name = "attempts",
+       .field = &S::attempts,
+       .unit = "1",
+       .range = in(1, 100000, "[]"),
+       .doc = "Places drawn for a due particle before it is counted as missed (`inflow_missed` in series.csv): "
+              "a crowded box misses particles instead of overlapping them."},
+  };
+  return keys;
+}
+
+const std::vector<Key<OutflowSettings>>& outflow_keys() {
+  using S = OutflowSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "box_min",
+       .field = &S::box_min,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .doc = "Lower corner of the box; every particle whose centre lies in it after a step is removed, with its "
+              "rods and contacts."},
+      {.name = "box_max",
+       .field = &S::box_max,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "required",
+       .rule = ">= box_min",
+       .doc = "Upper corner of the box."},
+  };
+  return keys;
+}
+
 const std::vector<Key<ParticlesFileSettings>>& particles_file_keys() {
   using S = ParticlesFileSettings;
   static const std::vector<Key<S>> keys{

@@ -90,6 +90,8 @@ const std::vector<Key<ContactSettings>>& contact_keys();
 const std::vector<Key<CaseSettings>>& environment_keys();
 const std::vector<Key<MeshSettings>>& mesh_keys();
 const std::vector<Key<ParticleSettings>>& particle_keys();
+const std::vector<Key<InflowSettings>>& inflow_keys();
+const std::vector<Key<OutflowSettings>>& outflow_keys();
 const std::vector<Key<ParticlesFileSettings>>& particles_file_keys();
 const std::vector<Key<OutputSettings>>& output_keys();
 

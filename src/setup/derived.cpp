@@ -148,13 +148,16 @@ static Derived membrane_derived(const CaseSettings& cs, const Lattice& lat, Deri
 
 Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   Derived d;
-  if (lat.position.empty()) throw InputError(cs.source + ": the workpiece has no particles");
+  if (lat.position.empty() && cs.inflows.empty())
+    throw InputError(cs.source + ": the case has no particles (no workpiece, [[particle]], [particles] or [[inflow]])");
   if (cs.membrane.enabled) {
     d.radius = *std::min_element(lat.radius.begin(), lat.radius.end());
     d.nn_distance = 2.0 * d.radius;
     return membrane_derived(cs, lat, d);
   }
-  d.radius = *std::min_element(lat.radius.begin(), lat.radius.end());
+  // The smallest particle sets the contacts' step: an inflow's smallest too.
+  d.radius = lat.radius.empty() ? HUGE_VAL : *std::min_element(lat.radius.begin(), lat.radius.end());
+  for (const auto& f : cs.inflows) d.radius = std::min(d.radius, f.radius_min);
   d.nn_distance = 2.0 * d.radius;
   d.cell_edge = lat.cell_edge > 0 ? lat.cell_edge : std::sqrt(2.0) * d.nn_distance;
   const double R = d.radius, rho = cs.material.density;

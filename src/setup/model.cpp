@@ -416,6 +416,7 @@ ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
   c.tangential_damping = cs.contact.tangential_damping;
   double rmax = 0;
   for (double rr : p.radius) rmax = std::max(rmax, rr);
+  for (const auto& f : cs.inflows) rmax = std::max(rmax, f.radius_max);
   c.skin = cs.contact.skin * rmax;
   return c;
 }
@@ -451,7 +452,7 @@ Model build_model(const CaseSettings& cs) {
   std::vector<Vec3> free_velocity, free_spin;
   append_free_particles(cs, lat, free_velocity, free_spin);
   // (two particles at one place have no contact normal: 0/0 in the first contact evaluation)
-  const double near = 1e-6 * *std::min_element(lat.radius.begin(), lat.radius.end());
+  const double near = lat.radius.empty() ? 0.0 : 1e-6 * *std::min_element(lat.radius.begin(), lat.radius.end());
   if (const auto c = find_coincident(lat.position, near); c[0] >= 0)
     throw InputError(fmt::format(
         "{}: particles {} and {} lie within {:g} m of each other (a millionth of the smallest radius), at ({}, {}, "
@@ -483,6 +484,21 @@ Model build_model(const CaseSettings& cs) {
   build_groups(cs, model.sites, h, model);
   if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);
+  for (const auto& f : cs.inflows) {
+    Inflow in;
+    in.box_min = to_vec(f.box_min);
+    in.box_max = to_vec(f.box_max);
+    in.rate = f.rate;
+    in.radius_min = f.radius_min;
+    in.radius_max = f.radius_max;
+    in.density = cs.material.density;  // (as [[particle]]s: solid spheres of the material)
+    in.velocity = to_vec(f.velocity);
+    in.seed = static_cast<std::uint64_t>(f.seed);
+    in.overlap = f.overlap;
+    in.attempts = f.attempts;
+    model.inflows.push_back(in);
+  }
+  for (const auto& o : cs.outflows) model.outflows.push_back(Outflow{to_vec(o.box_min), to_vec(o.box_max)});
   if (cs.contact.enabled) model.contact = contact_params(cs, model.particles);
   model.contacts = cs.contact.enabled;
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);

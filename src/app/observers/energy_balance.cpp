@@ -27,7 +27,7 @@ EnergyBalanceNow EnergyBalance::measure(const Simulation& sim) const {
   b.viscous_work = L.viscous_work;
   b.fracture_energy = L.fracture_energy;
   b.error = L.external_work - (b.kinetic + b.elastic + b.potential - initial_ + L.plastic_work + L.viscous_work +
-                               L.fracture_energy + L.contact_work);
+                               L.fracture_energy + L.contact_work + L.flow_energy);
   return b;
 }
 

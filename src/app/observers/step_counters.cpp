@@ -25,7 +25,14 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
   const StepStats& st = sim.stats();
   const double sweeps_mean = double(st.iterations) / double(std::max<std::int64_t>(1, st.accepted));
   const double evaluations_per_us = double(st.force_evaluations) / (sim.time() * 1e6);
-  const double ns_per_particle_step = end.step_wall_s * 1e9 / (double(sim.steps()) * double(particles_));
+  // With inflows and outflows the count changes: the mean over the series' rows.
+  double particles = double(particles_);
+  if (!sim.world().inflows.empty() || !sim.world().outflows.empty()) {
+    const std::vector<double> n = end.series["particles"];
+    particles = 0.0;
+    for (double v : n) particles += v / double(n.size());
+  }
+  const double ns_per_particle_step = end.step_wall_s * 1e9 / (double(sim.steps()) * particles);
   summary["run"] = {{"threads", end.threads},
                     {"scheme", sim.implicit() ? "newmark" : "verlet"},
                     {"steps", sim.steps()},

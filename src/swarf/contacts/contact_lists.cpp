@@ -90,7 +90,8 @@ void ContactSystem::setup(const ContactParams& params, std::size_t n_particles, 
 
 void ContactSystem::update_lists(const Particles& p, const Rods& rods, bool force, double moved2) {
   if (!enabled_) return;
-  bool rebuild = force || x_build_.size() != p.size();
+  // (also when the meshes were never built: a run may start without particles, an inflow's)
+  bool rebuild = force || x_build_.size() != p.size() || mesh_build_.size() != meshes_->size();
   if (!rebuild) {
     const double half = 0.5 * prm_.skin;
     double mesh_move = 0.0;
@@ -125,9 +126,10 @@ void ContactSystem::build(const Particles& p, const Rods& rods) {
     lo = lo.cwiseMin(p.position[i]);
     hi = hi.cwiseMax(p.position[i]);
   }
+  if (n == 0) lo = hi = Vec3::Zero();  // (no particles yet: one cell; an inflow adds them later)
   const double skin = prm_.skin;
   Grid g;
-  g.cell = 2.0 * max_radius_ + skin;
+  g.cell = n == 0 ? 1.0 : 2.0 * max_radius_ + skin;
   // Keep the grid to about a few cells per particle even if particles fly far apart.
   for (;;) {
     // (counted in double and capped: particles restored 1e21 m apart made a count beyond
