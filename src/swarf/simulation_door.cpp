@@ -74,6 +74,15 @@ void Simulation::append_particles(const Particles& extra) {
     dst.insert(dst.end(), v.begin(), v.end());
   });
   m_.rods.build_rows(p.size());
+  // The contact lists keep their pairs (the old particles keep their indices) and grow their
+  // rows to the new count, so that the rebuild at the next evaluation carries the committed
+  // friction histories over (it does when the rows match the particles) and a checkpoint
+  // written before it holds lists of the particles' size.
+  if (contacts_.enabled()) {
+    std::vector<std::int32_t> same(p.size() - k);
+    for (std::size_t i = 0; i < same.size(); ++i) same[i] = static_cast<std::int32_t>(i);
+    contacts_.reindex(same, p.size(), p);
+  }
   rebuild_lists_ = true;  // (the lists' build reference no longer matches the particles)
   resize_scratch();
 }
