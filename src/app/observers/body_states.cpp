@@ -24,6 +24,7 @@ void BodyStates::columns(std::vector<Column>& out) const {
                                  c, n)});
     add3("omega", "rad/s", "angular velocity (world frame)");
     add3("torque", "N m", "torque the particles exert about the centre of mass");
+    add3("reaction", "N", "force the constraints (held components, the hinge's axle) exert");
   }
 }
 
@@ -33,7 +34,8 @@ void BodyStates::row(const Simulation&, std::vector<double>& values) {
     for (const Vec3* v : {&s.position, &s.velocity})
       for (int c = 0; c < 3; ++c) values.push_back((*v)[c]);
     for (int c = 0; c < 4; ++c) values.push_back(s.orientation[c]);
-    for (const Vec3* v : {&s.omega, &rb.contact_torque})
+    const Vec3 reaction = rb.constraint_force();
+    for (const Vec3* v : {&s.omega, &rb.contact_torque, &reaction})
       for (int c = 0; c < 3; ++c) values.push_back((*v)[c]);
   }
 }

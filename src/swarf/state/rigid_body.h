@@ -95,6 +95,20 @@ struct RigidBody {
     const Vec3 across = r - r.dot(axis) * axis;
     return (torque + r.cross(force)).dot(axis) / (axis_inertia() + mass * across.squaredNorm());
   }
+  /// Force the constraints exert on the body, N, from the latest wrench and state: the held
+  /// components' (minus the applied force along them: they do not accelerate) or, on a pivoted
+  /// hinge, the axle's, m a_c - force with the centre's circular acceleration a_c = omega_dot x r
+  /// + omega x (omega x r). Zero for a free centre of mass.
+  Vec3 constraint_force() const {
+    if (pivoted) {
+      const Vec3 r = state.position - pivot;
+      return mass * (state.omega_dot.cross(r) + state.omega.cross(state.omega.cross(r))) - force;
+    }
+    Vec3 f = Vec3::Zero();
+    for (int c = 0; c < 3; ++c)
+      if (fixed & (1u << c)) f[c] = -force[c];
+    return f;
+  }
   /// Kinetic energy, J.
   double kinetic_energy() const {
     const Vec3 wb = to_body(state.orientation, state.omega);
