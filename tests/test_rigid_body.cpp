@@ -202,6 +202,18 @@ TEST(FreeBody, ATumblingTopKeepsEnergyAndAngularMomentumToSecondOrder) {
 
 // ---- a hinge ------------------------------------------------------------------------------
 
+// A bar a x a x c (m) of steel hanging from a hinge along y through the origin, its centre of
+// mass l below it: a physical pendulum (I_p = m (a^2 + c^2) / 12 + m l^2 about the axle).
+World pendulum_world(double l, double a, double c) {
+  World world = body_world("bar", box_mesh(Vec3(0.0, 0.0, -l), Vec3(a, a, c)), 7800);
+  RigidBody& rb = world.bodies[0];
+  rb.rotation = BodyRotation::Hinge;
+  rb.axis = Vec3::UnitY();
+  rb.pivoted = true;
+  rb.pivot = Vec3::Zero();
+  return world;
+}
+
 // A physical pendulum: a bar (20 x 20 x 100 mm) hanging from a hinge 100 mm above its centre
 // of mass (issue 15: a hinge away from the centre of mass), pushed at the bottom to swing
 // 0.01 rad. Its period is T = 2 pi sqrt(I_p / (m g l)), I_p = I_yy + m l^2 (parallel axes), up
@@ -213,12 +225,8 @@ TEST(FreeBody, ATumblingTopKeepsEnergyAndAngularMomentumToSecondOrder) {
 TEST(Hinge, APendulumAboutAPivotSwingsWithItsPeriod) {
   for (const bool implicit : {false, true}) {
     const double l = 0.1, a = 0.02, c = 0.1;
-    World world = body_world("bar", box_mesh(Vec3(0.0, 0.0, -l), Vec3(a, a, c)), 7800);
+    World world = pendulum_world(l, a, c);
     RigidBody& rb = world.bodies[0];
-    rb.rotation = BodyRotation::Hinge;
-    rb.axis = Vec3::UnitY();
-    rb.pivoted = true;
-    rb.pivot = Vec3::Zero();
     const double g = 9.81, m = rb.mass, Ip = m * (a * a + c * c) / 12 + m * l * l;
     const double W = std::sqrt(m * g * l / Ip), theta0 = 0.01, T = 2 * std::numbers::pi / W;
     rb.state.omega = theta0 * W * Vec3::UnitY();
@@ -257,12 +265,8 @@ TEST(Hinge, APendulumAboutAPivotSwingsWithItsPeriod) {
 TEST(Hinge, TheAxlesReactionIsTheSwingsClosedForm) {
   for (const bool implicit : {false, true}) {
     const double l = 0.1, a = 0.02, c = 0.1;
-    World world = body_world("bar", box_mesh(Vec3(0.0, 0.0, -l), Vec3(a, a, c)), 7800);
+    World world = pendulum_world(l, a, c);
     RigidBody& rb = world.bodies[0];
-    rb.rotation = BodyRotation::Hinge;
-    rb.axis = Vec3::UnitY();
-    rb.pivoted = true;
-    rb.pivot = Vec3::Zero();
     const double g = 9.81, m = rb.mass, Ip = m * (a * a + c * c) / 12 + m * l * l;
     const double amplitude = 0.5, w0 = std::sqrt(2 * m * g * l * (1 - std::cos(amplitude)) / Ip);
     const double T = 2 * std::numbers::pi * std::sqrt(Ip / (m * g * l));
