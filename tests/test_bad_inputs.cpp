@@ -7,9 +7,12 @@
 #include <unistd.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,7 @@
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 #include "swarf/neighbors/neighbor_pairs.h"
 #include "test_helpers.h"
 
@@ -139,26 +143,46 @@ TEST(BadInput, ALatticeFileListingABondTwiceIsRefused) {
   EXPECT_NE(message_of([&] { read_lattice(dir / "twice.h5"); }).find("each pair once"), std::string::npos);
 }
 
+// The message with which read_lattice refuses a one-cell lattice spoiled by 'spoil', written
+// to DIR/l.h5.
+std::string lattice_refusal(const TempDir& dir, const std::function<void(Lattice&)>& spoil) {
+  FccSpec spec;
+  spec.radius = 0.5e-3;
+  spec.cells = {1, 1, 1};
+  Lattice lat = generate_fcc(spec);
+  spoil(lat);
+  write_lattice(dir / "l.h5", lat);
+  return message_of([&] { read_lattice(dir / "l.h5"); });
+}
+
 // Found by the lattice-file fuzzer: values a lattice file accepted as positive and finite
 // overflowed (SIGFPE under the traps) or divided by zero when the model was built from them.
 TEST(BadInput, ALatticeFileWithAbsurdRadiiLengthsOrPositionsOrNoParticlesIsRefused) {
   TempDir dir("absurd_lattice");
-  FccSpec spec;
-  spec.radius = 0.5e-3;
-  spec.cells = {1, 1, 1};
-  const Lattice good = generate_fcc(spec);
-  auto refusal = [&](const std::function<void(Lattice&)>& spoil) {
-    Lattice lat = good;
-    spoil(lat);
-    write_lattice(dir / "l.h5", lat);
-    return message_of([&] { read_lattice(dir / "l.h5"); });
-  };
+  auto refusal = [&](const std::function<void(Lattice&)>& spoil) { return lattice_refusal(dir, spoil); };
   EXPECT_NE(refusal([](Lattice& l) { l.radius[1] = 1e300; }).find("/particles/radius[1] = 1e+300"), std::string::npos);
   EXPECT_NE(refusal([](Lattice& l) { l.radius[1] = 1e-300; }).find("from 1e-09 to 1 m"), std::string::npos);
   EXPECT_NE(refusal([](Lattice& l) { l.rest_length[2] = 1e-300; }).find("/bonds/rest_length[2]"), std::string::npos);
   EXPECT_NE(refusal([](Lattice& l) { l.position[0][2] = 1e300; }).find("lies beyond"), std::string::npos);
   EXPECT_NE(refusal([](Lattice& l) { l.cell_edge = NAN; }).find("cell_edge = nan"), std::string::npos);
   EXPECT_NE(refusal([](Lattice& l) { l = Lattice{}; }).find("no particles"), std::string::npos);
+}
+
+// Found by the lattice-file fuzzer: a radius holding a signalling NaN (0xfff4fb0000e1e100)
+// failed the bit test and was refused, but the message that named it handed the NaN to fmt,
+// which raised FE_INVALID (SIGFPE under the traps; fmt signals on a signalling NaN even
+// without a precision, and std::isnan does too). The values are named through nan_safe, which
+// tests a NaN on its bits.
+TEST(BadInput, ASignallingNaNInALatticeFileIsNamedNotTrapped) {
+  TempDir dir("snan_lattice");
+  const double snan = std::bit_cast<double>(std::uint64_t(0xfff4fb0000e1e100));
+  std::string m = lattice_refusal(dir, [&](Lattice& l) { l.radius[1] = snan; });
+  EXPECT_NE(m.find("/particles/radius[1] = nan is not a radius"), std::string::npos) << m;
+  m = lattice_refusal(dir, [&](Lattice& l) { l.rest_length[2] = snan; });
+  EXPECT_NE(m.find("/bonds/rest_length[2] = nan is not a length"), std::string::npos) << m;
+  m = lattice_refusal(dir, [&](Lattice& l) { l.cell_edge = std::numeric_limits<double>::signaling_NaN(); });
+  EXPECT_NE(m.find("cell_edge = nan is neither"), std::string::npos) << m;
+  EXPECT_EQ(fmt::format("{:>5.3g}|{}|{}", nan_safe(snan), nan_safe(2.5), nan_safe(HUGE_VAL)), "  nan|2.5|inf");
 }
 
 // Found by the study-file fuzzer: toml++ converts a float with strtod, which raised
