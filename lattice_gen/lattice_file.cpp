@@ -11,6 +11,7 @@
 #include "io/h5file.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -58,7 +59,7 @@ Lattice read_lattice(const std::string& path) {
   for (std::size_t i = 0; i < n; ++i)
     if (!finite_bits(lat.radius[i]) || !(lat.radius[i] >= kMinRadius && lat.radius[i] <= kMaxRadius))
       throw InputError(fmt::format("'{}': /particles/radius[{}] = {} is not a radius from {:g} to {:g} m", path, i,
-                                   lat.radius[i], kMinRadius, kMaxRadius));
+                                   nan_safe(lat.radius[i]), kMinRadius, kMaxRadius));
   auto pairs = f.read_ints("/bonds/pairs", rows, cols);
   if (cols != 2 && rows > 0) throw InputError(fmt::format("'{}': /bonds/pairs must be M x 2", path));
   const std::size_t m = rows;
@@ -86,14 +87,14 @@ Lattice read_lattice(const std::string& path) {
   for (std::size_t b = 0; b < m; ++b)
     if (!finite_bits(lat.rest_length[b]) || !(lat.rest_length[b] >= kMinRadius && lat.rest_length[b] <= 4 * kMaxRadius))
       throw InputError(fmt::format("'{}': /bonds/rest_length[{}] = {} is not a length from {:g} to {:g} m", path, b,
-                                   lat.rest_length[b], kMinRadius, 4 * kMaxRadius));
+                                   nan_safe(lat.rest_length[b]), kMinRadius, 4 * kMaxRadius));
   // (0: not known; the derived quantities then take the FCC cell of the smallest radius)
   if (f.has_attribute("cell_edge")) lat.cell_edge = f.read_double_attribute("cell_edge");
   if (!finite_bits(lat.cell_edge) ||
       !(lat.cell_edge == 0.0 || (lat.cell_edge >= kMinRadius && lat.cell_edge <= 4 * kMaxRadius)))
     throw InputError(
         fmt::format("'{}': attribute cell_edge = {} is neither 0 (unknown) nor a length from {:g} to {:g} m", path,
-                    lat.cell_edge, kMinRadius, 4 * kMaxRadius));
+                    nan_safe(lat.cell_edge), kMinRadius, 4 * kMaxRadius));
   return lat;
 }
 

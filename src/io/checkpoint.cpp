@@ -29,6 +29,14 @@ namespace {
 // position).
 constexpr double kFormat = 3.0;
 
+// The largest magnitude of any number of the step's state (/sim/; SI units: positions,
+// velocities, accelerations, rates, forces, torques, inverse masses and inertias, rod and
+// contact state, times): far beyond what a run reaches (1/inertia of the smallest particle
+// allowed, kMinRadius, is about 1e41 1/(kg m^2)), and low enough that a step's products of two
+// such numbers and their squares stay finite. A checkpoint's angular acceleration of -1e300
+// overflowed the first rotation update (the checkpoint fuzzer).
+constexpr double kMaxStateValue = 1e50;
+
 void put(H5File& f, const std::string& name, const std::vector<Vec3>& v) {
   f.write(name, v.empty() ? nullptr : v[0].data(), v.size(), 3);
 }
@@ -130,11 +138,14 @@ class H5StateReader final : public StateArchive {
           "checkpoint '{}': dataset '{}' has shape {} x {}, expected {} x {} "
           "(the checkpoint belongs to another case or version)",
           f_.path(), key(name), r, c, expected == kAnySize ? std::string("N") : std::to_string(expected), cols));
+    // The step's state (/sim/): finite, and within kMaxStateValue (finite values such as
+    // 1e300 overflowed the first step's products and squares); the run's part may hold infinities.
     if (finite_)
       for (std::size_t k = 0; k < v.size(); ++k)
-        if (!finite_bits(v[k]))
-          throw InputError(fmt::format("checkpoint '{}': dataset '{}' entry {} = {} is not finite (a corrupt file)",
-                                       f_.path(), key(name), k, nan_safe(v[k])));
+        if (!finite_bits(v[k]) || !(std::abs(v[k]) <= kMaxStateValue))
+          throw InputError(fmt::format(
+              "checkpoint '{}': dataset '{}' entry {} = {} is not a finite number within +-{:g} (a corrupt file)",
+              f_.path(), key(name), k, nan_safe(v[k]), kMaxStateValue));
     return v;
   }
   std::vector<std::int64_t> ints(std::string_view name, std::size_t expected) const {

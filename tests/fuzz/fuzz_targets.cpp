@@ -30,6 +30,7 @@
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "study/sweep.h"
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
 
@@ -327,9 +328,12 @@ void edit(H5Image& img, Bytes& in) {
         if (n == 0) break;
         const std::size_t k = in.u64(3) % n;
         const int delta = int(in.byte() % 5) - 2;
+        // (The edit itself must not fault: an integer wraps, where -2^63 nudged down was a
+        // signed overflow of the harness's own, input int64_min_nudged; a NaN, or a value the
+        // nudge would overflow, is left as it is.)
         if (s.integer)
-          s.i[k] += delta;
-        else
+          s.i[k] = std::int64_t(std::uint64_t(s.i[k]) + std::uint64_t(std::int64_t(delta)));
+        else if (finite_bits(s.d[k]) && std::abs(s.d[k]) <= 1e300)
           s.d[k] *= 1.0 + 0.25 * delta;
         break;
       }

@@ -3,14 +3,19 @@
 // fmt's formatting of a double with a precision ("{:.3g}") compares the value with itself, an
 // ordered comparison that raises FE_INVALID on a NaN: with the floating-point traps of the test
 // build (app/fp_traps.h) a table or message that names an unavailable number ends in SIGFPE.
-// nan_safe(x) writes "nan" itself (a bit test, which raises nothing) and hands fmt only the
-// other values, with the format spec as given: fmt::format("{:.3g}", nan_safe(x)).
+// A signalling NaN (which an HDF5 file can hold: a lattice file's radius, found by the lattice
+// fuzzer) raises FE_INVALID in fmt even without a precision, and so does std::isnan (an
+// unordered comparison signals on it). nan_safe(x) writes "nan" itself after a test of the bits,
+// which raises nothing, and hands fmt only the other values, with the format spec as given:
+// fmt::format("{:.3g}", nan_safe(x)). Every message that names a value read from a file which
+// may be NaN prints it through nan_safe.
 #pragma once
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace swarf {
@@ -42,7 +47,7 @@ struct fmt::formatter<swarf::NanSafe> : fmt::formatter<double> {
 
   template <class Context>
   auto format(swarf::NanSafe n, Context& ctx) const -> decltype(ctx.out()) {
-    if (std::isnan(n.value))
+    if ((std::bit_cast<std::uint64_t>(n.value) & 0x7fffffffffffffffull) > 0x7ff0000000000000ull)  // (NaN)
       return fmt::format_to(ctx.out(), fmt::runtime(std::string("{:") + text_spec_ + "}"), "nan");
     return fmt::formatter<double>::format(n.value, ctx);
   }
