@@ -223,6 +223,11 @@ TEST(FlowCase, InflowAndOutflowTablesBuildTheWorldsRegions) {
   refused({"inflow.0.rate=-1.0"}, {"inflow.rate"});
   refused({"outflow.0.box_max=[1.0, -2.0, 1.0]"}, {"outflow.box_max"});
   refused({"inflow.0.overlap=1.0"}, {"inflow.overlap"});
+  // A cut's analysis takes the workpiece as the first particles: removals are refused there.
+  test::expect_mentions(test::case_error(std::string(kDefaultCutTableToml) +
+                                             "[[outflow]]\nbox_min = [-1.0, -1.0, -1.0]\nbox_max = [1.0, 1.0, -0.5]\n",
+                                         {}, "cut.toml"),
+                        {"cut.toml", "[[outflow]]", "cutting run"});
 }
 
 }  // namespace

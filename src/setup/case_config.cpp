@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -329,6 +330,15 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   read_contact_and_environment(in, cs);
   read_meshes(in, cs);
   read_free_particles(in, cs);
+  // A cutting run's analysis takes the workpiece as the first particles (Model::lattice_particles):
+  // an outflow's removals would renumber them under it. (An inflow appends after them.)
+  const bool cutting = cs.workpiece.enabled &&
+                       std::any_of(cs.meshes.begin(), cs.meshes.end(), [](const MeshSettings& m) { return m.tool; });
+  if (cutting && !cs.outflows.empty())
+    throw InputError(fmt::format(
+        "{}: [[outflow]] cannot go with a cutting run (a workpiece and a tool) yet: the chip analysis takes the "
+        "workpiece as the first particles, and removals would renumber them",
+        source));
   if ((!cs.meshes.empty() || !cs.particles.empty() || !cs.particles_file.file.empty()) && !cs.contact.enabled)
     throw InputError(
         fmt::format("{}: meshes and free particles interact only through contacts: add a [contact] "
