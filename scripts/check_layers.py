@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Fails when a source file includes across a forbidden arrow of the layers.
 
-    app -> study -> setup -> { postprocess, lattice_gen, tool_paths } -> io -> swarf (engine)
+    python -> app -> study -> setup -> { postprocess, lattice_gen, tool_paths } -> io -> swarf (engine)
 
 Each folder may include its own headers and those of the layers below it; includes are spelled
 from their root ("swarf/...", "io/...", "lattice_gen/..."), so the first path component names
@@ -21,11 +21,12 @@ BELOW = {
     "setup": {"postprocess", "lattice_gen", "tool_paths", "io", "swarf"},
     "study": {"setup", "postprocess", "lattice_gen", "tool_paths", "io", "swarf"},
     "app": {"study", "setup", "postprocess", "lattice_gen", "tool_paths", "io", "swarf"},
+    "python": {"app", "study", "setup", "postprocess", "lattice_gen", "tool_paths", "io", "swarf"},
 }
 # Folders above every layer: they may include any layer's headers (and their own by bare name).
 TOP = {"tests", "validation", "examples"}
 ROOTS = {"swarf": "src/swarf", "io": "src/io", "setup": "src/setup", "study": "src/study",
-         "app": "src/app", "lattice_gen": "lattice_gen", "tool_paths": "tool_paths",
+         "app": "src/app", "python": "src/python", "lattice_gen": "lattice_gen", "tool_paths": "tool_paths",
          "postprocess": "postprocess"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SYSTEM = re.compile(r'^\s*#\s*include\s*<([^>]+)>')

@@ -13,6 +13,8 @@ PKGS=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   # tests
   libgtest-dev
+  # the Python module (src/python)
+  pybind11-dev python3-dev
   # MPI (parameter studies)
   libopenmpi-dev openmpi-bin
   # plots (PNG) and headless rendering

@@ -692,5 +692,40 @@ TEST(BodyCase, GivenMassPropertiesBuildTheBodyTheMeshWould) {
   EXPECT_NE(five.find("give 6 numbers"), std::string::npos) << five;
 }
 
+// ---- setting a body's pose between steps (Simulation::set_body_pose; the Python bindings) -----
+
+// The box of spheres_and_box is moved 20 mm along x between two steps: its mesh follows at once
+// (every vertex by the same shift, to rounding), and the spheres, which would have hit it, now
+// fly past: their velocities stay exactly what free flight gives (no gravity, no force). A
+// hinged body's orientation follows its angle, so setting it is refused, as is a NaN.
+TEST(BodyPose, ASetPoseMovesTheMeshAndTheContactsFollow) {
+  const double h = 2e-7;
+  World hit = test::spheres_and_box(FrictionLaw::None);
+  World moved = test::spheres_and_box(FrictionLaw::None);
+  Simulation a(hit, verlet(h)), b(moved, verlet(h));
+  a.step();
+  b.step();
+  const Vec3 shift(0.02, 0.0, 0.0);
+  const Vec3 v0 = moved.meshes[0].vertex(0);
+  b.set_body_pose(0, moved.bodies[0].state.position + shift, moved.bodies[0].state.orientation);
+  EXPECT_NEAR((moved.meshes[0].vertex(0) - v0 - shift).norm(), 0.0, 1e-15);
+  const std::vector<Vec3> v_start = moved.particles.velocity;
+  for (int k = 0; k < 2000; ++k) {  // 0.4 ms: the spheres travel about 0.4 mm, enough to reach the box
+    a.step();
+    b.step();
+  }
+  double changed_hit = 0.0;
+  for (std::size_t i = 0; i < hit.particles.size(); ++i) {
+    changed_hit = std::max(changed_hit, (hit.particles.velocity[i] - v_start[i]).norm());
+    EXPECT_EQ(moved.particles.velocity[i], v_start[i]) << "sphere " << i;
+  }
+  EXPECT_GT(changed_hit, 0.1) << "without the move the spheres should hit the box";
+
+  World pendulum = pendulum_world(0.1, 0.02, 0.1);
+  Simulation p(pendulum, verlet(1e-5));
+  const Quat turned(std::cos(0.1), 0.0, std::sin(0.1), 0.0);
+  EXPECT_THROW(p.set_body_pose(0, pendulum.bodies[0].state.position, turned), InputError);
+  EXPECT_THROW(b.set_body_pose(0, Vec3(std::nan(""), 0, 0), moved.bodies[0].state.orientation), InputError);
+}
 }  // namespace
 }  // namespace swarf

@@ -11,7 +11,7 @@
 
 namespace swarf {
 
-/// Installs the handlers (once per process).
+/// Installs the handlers and forgets an earlier signal (each run in one process calls it).
 void install_interrupt_handlers();
 /// The signal received since the handlers were installed, or 0.
 int interrupt_signal();

@@ -90,6 +90,11 @@ class Simulation {
   /// ignored: new ones are given). The new particles have no rods; the contact lists are
   /// rebuilt at the next evaluation so that they take part.
   void append_particles(const Particles& extra);
+  /// Places rigid body b at 'position' (centre of mass, m) and 'orientation' (principal frame
+  /// -> world, normalised here) between steps, its mesh with it. A hinge's orientation follows its
+  /// angle, so it is refused for a hinged body unless unchanged. Throws InputError on a
+  /// non-finite value.
+  void set_body_pose(std::size_t b, const Vec3& position, const Quat& orientation);
 
   double time() const { return time_; }
   std::int64_t steps() const { return stats_.accepted; }

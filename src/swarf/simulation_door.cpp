@@ -1,7 +1,11 @@
 // simulation_door.cpp: reordering, removing and appending particles between steps (see
 // simulation.h and state/reindex.h).
+#include <fmt/format.h>
+
+#include <cmath>
 #include <stdexcept>
 
+#include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/parallel.h"
 #include "swarf/simulation.h"
@@ -85,6 +89,32 @@ void Simulation::append_particles(const Particles& extra) {
   }
   rebuild_lists_ = true;  // (the lists' build reference no longer matches the particles)
   resize_scratch();
+}
+
+void Simulation::set_body_pose(std::size_t b, const Vec3& position, const Quat& orientation) {
+  if (b >= m_.bodies.size()) throw InputError(fmt::format("set_body_pose: body {} of {}", b, m_.bodies.size()));
+  RigidBody& rb = m_.bodies[b];
+  const std::string& name = m_.meshes[rb.mesh].name;
+  const double norm = orientation.norm();
+  if (!all_finite(position) || !(norm > 0.0) || !std::isfinite(norm))
+    throw InputError(fmt::format(
+        "set_body_pose: body '{}': position ({}, {}, {}) m and orientation ({}, {}, {}, {}) "
+        "must be finite, the orientation non-zero",
+        name, position[0], position[1], position[2], orientation[0], orientation[1], orientation[2], orientation[3]));
+  const Quat q = orientation / norm;
+  if (rb.rotation == BodyRotation::Hinge && q != rb.state.orientation)
+    throw InputError(
+        fmt::format("set_body_pose: body '{}' turns on a hinge: its orientation follows the hinge's "
+                    "angle and cannot be set",
+                    name));
+  if (rb.rotation == BodyRotation::Hinge && rb.pivoted && position != rb.state.position)
+    throw InputError(
+        fmt::format("set_body_pose: body '{}' turns about a pivot: its centre follows the hinge's "
+                    "angle and cannot be set",
+                    name));
+  rb.state.position = position;
+  rb.state.orientation = q;
+  place_body_mesh(b);  // (the contact lists see the jump: they measure the meshes' moves from their build)
 }
 
 }  // namespace swarf

@@ -1,0 +1,32 @@
+"""swarf: discrete element simulation of orthogonal metal cutting, from Python.
+
+Build a case and step it, read and set the particles' and bodies' states as NumPy arrays
+(views of the engine's storage, no copies), and call Python functions around every step:
+
+    import swarf
+    sim = swarf.Simulation("case.toml", set=["integrator.end_time=1e-5"])  # or text=..., or the default case
+    forces = []
+    sim.add_listener(after=lambda s: forces.append((s.time, *s.mesh_force("tool"))))
+    sim.run()                                  # to the case's end time, as 'swarf run' steps it
+    x = sim.particles.position                 # (n, 3) m, a read-only view
+    swarf.run("case.toml", out="results/a")    # 'swarf run' with every output file
+
+Units are SI (m, kg, s, N, Pa, J). Errors: InputError (a ValueError) names the file, key and
+value; SimulationError (a RuntimeError) says where a run blew up. docs/python.md has the rest.
+"""
+from ._swarf import (  # noqa: F401
+    Body,
+    InputError,
+    OutputError,
+    Particles,
+    Rods,
+    Simulation,
+    SimulationError,
+    __version__,
+    default_case_text,
+    run,
+    set_threads,
+)
+
+__all__ = ["Body", "InputError", "OutputError", "Particles", "Rods", "Simulation", "SimulationError",
+           "__version__", "default_case_text", "run", "set_threads"]
