@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "case_errors.h"
@@ -90,8 +92,10 @@ TEST(Flows, TheInflowCreatesAtItsRateAndNeverOverlaps) {
 // Without contacts or gravity each particle moves by the scheme's x+ = x + h v: the outflow
 // removes exactly the particles whose recurrence puts their centre in its box at a step's end,
 // and no other.
-TEST(Flows, TheOutflowRemovesExactlyWhatEntersIt) {
-  World w = stream(false, false);
+// The stream without contacts falls at constant velocity; each particle's track by the scheme's
+// own recurrence x+ = x + h v says when it enters the outflow region, and the particles the
+// outflow removed must be exactly those (by id), whatever the region's form.
+void expect_outflow_removes_what_enters(World w, const std::function<bool(const Vec3&)>& region) {
   w.inflows[0].rate = 5e4;
   w.inflows[0].velocity = Vec3(0.1, 0.0, -4.0);
   const double h = 1e-6;
@@ -107,7 +111,7 @@ TEST(Flows, TheOutflowRemovesExactlyWhatEntersIt) {
     for (auto& [id, t] : tracks)
       if (!t.gone) {
         t.x = t.x + h * t.v;
-        if (t.x.z() <= -10e-3) {
+        if (region(t.x)) {
           t.gone = true;
           expected_gone.insert(id);
         }
@@ -124,6 +128,20 @@ TEST(Flows, TheOutflowRemovesExactlyWhatEntersIt) {
   }
   EXPECT_GT(gone, 50);  // (6 ms at 4 m/s: the first ones fell 24 mm)
   EXPECT_EQ(w.outflows[0].removed, gone);
+}
+
+TEST(Flows, TheOutflowRemovesExactlyWhatEntersIt) {
+  expect_outflow_removes_what_enters(stream(false, false), [](const Vec3& x) { return x.z() <= -10e-3; });
+}
+
+// A plane outflow (a tilted floor, its normal of length 2: only the direction counts) removes
+// what crosses it, wherever it crosses.
+TEST(Flows, APlaneOutflowRemovesExactlyWhatCrossesIt) {
+  World w = stream(false, false);
+  const Vec3 point(0.0, 0.0, -8e-3), normal = 2.0 * Vec3(0.2, 0.0, -1.0).normalized();
+  w.outflows[0].plane_point = point;
+  w.outflows[0].plane_normal = normal;
+  expect_outflow_removes_what_enters(w, [&](const Vec3& x) { return (x - point).dot(normal) > 0.0; });
 }
 
 // Falling spheres in and out: with no contacts and constant gravity velocity Verlet is exact,
@@ -193,6 +211,10 @@ TEST(Flows, BadRegionsAreRefused) {
   refused([](World& w) { w.inflows[0].overlap = 1.0; });
   refused([](World& w) { w.inflows[0].box_max = Vec3(-1.0, 1.0, 1.0); });
   refused([](World& w) { w.outflows[0].box_min = Vec3(HUGE_VAL, 0.0, 0.0); });
+  refused([](World& w) {
+    w.outflows[0].plane_normal = Vec3(0.0, 0.0, -1.0);
+    w.outflows[0].plane_point = Vec3(NAN, 0.0, 0.0);
+  });
 }
 
 // [[inflow]] and [[outflow]] in a case: an inflow alone is a case; its keys reach the World
@@ -223,6 +245,27 @@ TEST(FlowCase, InflowAndOutflowTablesBuildTheWorldsRegions) {
   refused({"inflow.0.rate=-1.0"}, {"inflow.rate"});
   refused({"outflow.0.box_max=[1.0, -2.0, 1.0]"}, {"outflow.box_max"});
   refused({"inflow.0.overlap=1.0"}, {"inflow.overlap"});
+  refused({"inflow.0.mass_rate=0.1"}, {"inflow.rate", "mass_rate both given"});
+  refused({"outflow.0.plane_normal=[0.0, 0.0, -1.0]"}, {"outflow.box_min", "not with a plane"});
+
+  // A mass rate: rate = mass_rate / (4/3 pi rho E[R^3]), E[R^3] = (b^4 - a^4) / (4 (b - a)) for radii
+  // uniform in [a, b] (to rounding, 1e-14).
+  std::string by_mass = text;
+  by_mass.replace(by_mass.find("rate = 2e4"), 10, "mass_rate = 0.05");
+  const std::string box = "box_min = [-1.0, -1.0, -1.0]\nbox_max = [1.0, 1.0, -0.01]";
+  by_mass.replace(by_mass.find(box), box.size(), "plane_point = [0.0, 0.0, -0.01]\nplane_normal = [0.0, 0.0, -3.0]");
+  const Model mm = build_model(parse_case(by_mass, "flows.toml", {}));
+  const double a = 0.4e-3, b = 0.6e-3, r3 = (std::pow(b, 4) - std::pow(a, 4)) / (4 * (b - a));
+  EXPECT_NEAR(mm.inflows[0].rate / (0.05 / (4.0 / 3.0 * std::numbers::pi * 2500 * r3)), 1.0, 1e-14);
+  EXPECT_EQ(mm.outflows[0].plane_normal, Vec3(0.0, 0.0, -1.0));  // (normalised)
+  EXPECT_EQ(mm.outflows[0].plane_point, Vec3(0.0, 0.0, -0.01));
+  EXPECT_FALSE(mm.outflows[0].contains(Vec3(5.0, 5.0, -0.0099)));
+  EXPECT_TRUE(mm.outflows[0].contains(Vec3(5.0, 5.0, -0.0101)));
+  const auto refused_by_mass = [&](const std::vector<std::string>& set, std::initializer_list<std::string> words) {
+    test::expect_mentions(test::case_error(by_mass, set, "flows.toml"), words);
+  };
+  refused_by_mass({"outflow.0.plane_normal=[0.0, 0.0, 0.0]"}, {"outflow.plane_normal", "not be zero"});
+  refused_by_mass({"inflow.0.mass_rate=-1.0"}, {"inflow.mass_rate"});
   // A cut's analysis takes the workpiece as the first particles: removals are refused there.
   test::expect_mentions(test::case_error(std::string(kDefaultCutTableToml) +
                                              "[[outflow]]\nbox_min = [-1.0, -1.0, -1.0]\nbox_max = [1.0, 1.0, -0.5]\n",

@@ -278,8 +278,11 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
       InflowSettings f;
       r.read(inflow_keys(), f);
       r.finish();
-      for (const char* key : {"rate", "radius_min"})
-        if (!r.has(key)) r.fail(key, nullptr, "is required");
+      if (!r.has("radius_min")) r.fail("radius_min", nullptr, "is required");
+      if (r.has("rate") == r.has("mass_rate"))
+        r.fail("rate", r.get("rate"),
+               r.has("rate") ? "and mass_rate both given: give one (particles per second, or kg/s)"
+                             : "is required (particles per second), or mass_rate (kg/s)");
       if (!r.has("radius_max")) f.radius_max = f.radius_min;
       if (!(f.radius_max >= f.radius_min)) r.fail("radius_max", r.get("radius_max"), "must be >= radius_min (m)");
       check_box(r, f.box_min, f.box_max);
@@ -291,7 +294,16 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
       OutflowSettings o;
       r.read(outflow_keys(), o);
       r.finish();
-      check_box(r, o.box_min, o.box_max);
+      if (r.has("plane_point") || r.has("plane_normal")) {
+        for (const char* key : {"box_min", "box_max"})
+          if (r.has(key)) r.fail(key, r.get(key), "goes with a box, not with a plane (plane_point, plane_normal)");
+        for (const char* key : {"plane_point", "plane_normal"})
+          if (!r.has(key)) r.fail(key, nullptr, "is required for a plane");
+        if (o.plane_normal == std::array<double, 3>{0, 0, 0})
+          r.fail("plane_normal", r.get("plane_normal"), "must not be zero");
+      } else {
+        check_box(r, o.box_min, o.box_max);
+      }
       cs.outflows.push_back(o);
     }
   if (const toml::table* t = in.table("particles")) {

@@ -270,6 +270,7 @@ struct InflowSettings {
   std::array<double, 3> box_min{0, 0, 0};   ///< m
   std::array<double, 3> box_max{0, 0, 0};   ///< m
   double rate = 0.0;                        ///< particles per second
+  double mass_rate = 0.0;                   ///< kg/s (instead of rate)
   double radius_min = 0.0;                  ///< m
   double radius_max = 0.0;                  ///< m; 0 = radius_min
   std::array<double, 3> velocity{0, 0, 0};  ///< m/s
@@ -280,8 +281,10 @@ struct InflowSettings {
 
 /// [[outflow]]: a box that removes the particles whose centres enter it.
 struct OutflowSettings {
-  std::array<double, 3> box_min{0, 0, 0};  ///< m
-  std::array<double, 3> box_max{0, 0, 0};  ///< m
+  std::array<double, 3> box_min{0, 0, 0};       ///< m
+  std::array<double, 3> box_max{0, 0, 0};       ///< m
+  std::array<double, 3> plane_point{0, 0, 0};   ///< m (a plane instead of a box)
+  std::array<double, 3> plane_normal{0, 0, 0};  ///< 1, towards the side removed
 };
 
 /// [particles]: free particles from a text file (columns id x y z vx vy vz, SI units).

@@ -1023,10 +1023,21 @@ const std::vector<Key<InflowSettings>>& inflow_keys() {
        .field = &S::rate,
        .unit = "1/s",
        .no_default = true,
-       .default_note = "required",
+       .default_note = "required unless mass_rate is given",
        .range = kNonNegative,
        .doc = "Particles created per second. Each step owes rate x dt more; the fraction left over carries to "
               "the next step, so created + missed = floor(rate t)."},
+      {.name = "mass_rate",
+       .field = &S::mass_rate,
+       .unit = "kg/s",
+       .no_default = true,
+       .default_note = "none (give rate)",
+       .range = kNonNegative,
+       .rule = "instead of rate",
+       .doc = "Mass created per second instead of a particle rate: rate = mass_rate / the mean mass of a particle, "
+              "4/3 pi density E[R^3] with the radii uniform in [radius_min, radius_max] (E[R^3] = (radius_max^4 - "
+              "radius_min^4) / (4 (radius_max - radius_min))). Missed particles (inflow_missed) are mass not "
+              "delivered."},
       {.name = "radius_min",
        .field = &S::radius_min,
        .unit = "m",
@@ -1074,16 +1085,33 @@ const std::vector<Key<OutflowSettings>>& outflow_keys() {
        .field = &S::box_min,
        .unit = "m",
        .no_default = true,
-       .default_note = "required",
+       .default_note = "required unless a plane is given",
        .doc = "Lower corner of the box; every particle whose centre lies in it after a step is removed, with its "
               "rods and contacts."},
       {.name = "box_max",
        .field = &S::box_max,
        .unit = "m",
        .no_default = true,
-       .default_note = "required",
+       .default_note = "required unless a plane is given",
        .rule = ">= box_min",
        .doc = "Upper corner of the box."},
+      {.name = "plane_point",
+       .field = &S::plane_point,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "none (a box)",
+       .rule = "with plane_normal, instead of box_min and box_max",
+       .doc = "A point of a plane: instead of a box, the outflow is the half-space beyond it, and every particle "
+              "whose centre has crossed it after a step is removed (a floor or a wall the stream leaves through, "
+              "however far it flies)."},
+      {.name = "plane_normal",
+       .field = &S::plane_normal,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "none (a box)",
+       .rule = "not zero; with plane_point",
+       .doc = "Direction out of the domain (any length): the particles with (x - plane_point) . plane_normal > 0 "
+              "are removed. [0, 0, -1] with a plane_point on the floor takes what falls below it."},
   };
   return keys;
 }

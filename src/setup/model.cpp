@@ -488,17 +488,22 @@ Model build_model(const CaseSettings& cs) {
     Inflow in;
     in.box_min = to_vec(f.box_min);
     in.box_max = to_vec(f.box_max);
-    in.rate = f.rate;
     in.radius_min = f.radius_min;
     in.radius_max = f.radius_max;
     in.density = cs.material.density;  // (as [[particle]]s: solid spheres of the material)
+    in.rate = f.mass_rate > 0.0 ? f.mass_rate / inflow_mean_mass(in) : f.rate;
     in.velocity = to_vec(f.velocity);
     in.seed = static_cast<std::uint64_t>(f.seed);
     in.overlap = f.overlap;
     in.attempts = f.attempts;
     model.inflows.push_back(in);
   }
-  for (const auto& o : cs.outflows) model.outflows.push_back(Outflow{to_vec(o.box_min), to_vec(o.box_max)});
+  for (const auto& o : cs.outflows) {
+    Outflow out{to_vec(o.box_min), to_vec(o.box_max)};
+    out.plane_point = to_vec(o.plane_point);
+    out.plane_normal = to_vec(o.plane_normal).normalized();  // (zero stays zero: a box)
+    model.outflows.push_back(out);
+  }
   if (cs.contact.enabled) model.contact = contact_params(cs, model.particles);
   model.contacts = cs.contact.enabled;
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);

@@ -12,10 +12,6 @@ namespace swarf {
 
 namespace {
 
-bool inside(const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] && x[2] <= hi[2];
-}
-
 bool good_box(const Vec3& lo, const Vec3& hi) {
   return all_finite(lo) && all_finite(hi) && lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2];
 }
@@ -36,9 +32,13 @@ void Simulation::setup_flows() {
     if (!(finite_bits(f.overlap) && f.overlap >= 0.0 && f.overlap < 1.0)) bad("its overlap must lie in [0, 1)");
     if (f.attempts < 1) bad("it needs at least 1 attempt per particle");
   }
-  for (std::size_t k = 0; k < m_.outflows.size(); ++k)
-    if (!good_box(m_.outflows[k].box_min, m_.outflows[k].box_max))
+  for (std::size_t k = 0; k < m_.outflows.size(); ++k) {
+    const Outflow& o = m_.outflows[k];
+    if (o.is_plane() && !(all_finite(o.plane_point) && all_finite(o.plane_normal)))
+      throw InputError(fmt::format("outflow {}: its plane's point (m) and normal must be finite", k));
+    if (!o.is_plane() && !good_box(o.box_min, o.box_max))
       throw InputError(fmt::format("outflow {}: its box must be finite with box_min <= box_max (m)", k));
+  }
 }
 
 void Simulation::apply_flows(double h) {
@@ -53,7 +53,7 @@ void Simulation::apply_flows(double h) {
     double out = 0.0;  // J
     for (std::size_t i = 0; i < p.size(); ++i)
       for (Outflow& o : m_.outflows)
-        if (inside(p.position[i], o.box_min, o.box_max)) {
+        if (o.contains(p.position[i])) {
           remove[i] = 1;
           ++o.removed;
           ++count;
