@@ -102,6 +102,24 @@ void Simulation::update_free_to_rotate() {
     if (free_to_rotate_[i]) free_list_.push_back(static_cast<std::int32_t>(i));
 }
 
+void Simulation::update_free_to_rotate(const std::vector<std::array<std::int32_t, 2>>& pairs) {
+  // The same flags as the whole pass gives, from the rows of the particles whose rods changed.
+  const auto& r = m_.rods;
+  bool changed = false;
+  for (const auto& e : pairs)
+    for (const std::int32_t i : e) {
+      std::uint8_t free = 1;
+      for (std::int32_t q = r.row_start[i]; q < r.row_start[i + 1] && free; ++q)
+        if (r.intact[r.entries[q].rod]) free = 0;
+      changed = changed || free != free_to_rotate_[i];
+      free_to_rotate_[i] = free;
+    }
+  if (!changed) return;
+  free_list_.clear();
+  for (std::size_t i = 0; i < free_to_rotate_.size(); ++i)
+    if (free_to_rotate_[i]) free_list_.push_back(static_cast<std::int32_t>(i));
+}
+
 void Simulation::set_rotations(bool on) {
   rotations_ = on;
   if (!on) return;

@@ -196,7 +196,8 @@ class Simulation {
   double body_load_power() const;  // power of the bodies' external loads, W
 
   void update_free_to_rotate();
-  void reindex_all(const Reindex& r);  // the door's common part
+  void update_free_to_rotate(const std::vector<std::array<std::int32_t, 2>>& pairs);  // only these particles
+  void reindex_all(const Reindex& r);                                                 // the door's common part
   void resize_scratch();
   void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows // per-particle,
                                                                    // per-rod-block and per-group scratch after a change

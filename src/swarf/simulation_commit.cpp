@@ -56,7 +56,11 @@ void Simulation::commit() {
     for (const auto& v : broken_pairs) fresh.insert(fresh.end(), v.begin(), v.end());
     contacts_.add_pairs(m_.particles, std::move(fresh));
   }
-  if (any_broke && rotations_) update_free_to_rotate();
+  if (any_broke && rotations_) {
+    std::vector<std::array<std::int32_t, 2>> pairs;
+    for (const auto& v : broken_pairs) pairs.insert(pairs.end(), v.begin(), v.end());
+    update_free_to_rotate(pairs);
+  }
   if (contacts && r.formation.enabled()) form_rods();
 }
 
@@ -127,7 +131,7 @@ void Simulation::form_rods() {
     formed.push_back(e);
   }
   if (formed.empty()) return;
-  std::size_t revived = 0;
+  std::size_t revived = 0, appended = 0;
   for (const auto& e : formed) {
     Vec3 d = p.position[e[1]] - p.position[e[0]];
     m_.periodic.wrap(d);
@@ -138,6 +142,7 @@ void Simulation::form_rods() {
       if (r.entries[q].other == e[1]) rod = r.entries[q].rod;
     if (rod < 0) {
       r.append_formed(e[0], e[1], length);
+      ++appended;
       continue;
     }
     r.rest_length[rod] = length;
@@ -150,13 +155,20 @@ void Simulation::form_rods() {
   }
   formed_ += formed.size();
   broken_ -= revived;
-  r.remove_broken_formed();
-  r.build_rows(p.size());
-  block_viscous_.resize(block_count(r.size()), 0.0);
-  block_changed_.resize(block_count(r.size()), 0);
+  // The rows change only when rods were appended or removed (a revived or exchanged rod keeps
+  // its index); rebuilding them, serial and O(rods), at every formation was most of its cost.
+  if (r.remove_broken_formed() > 0 || appended > 0) {
+    r.build_rows(p.size());
+    block_viscous_.resize(block_count(r.size()), 0.0);
+    block_changed_.resize(block_count(r.size()), 0);
+  }
+  if (rotations_) {  // (only the pairs' particles gained or lost a rod)
+    std::vector<std::array<std::int32_t, 2>> touched = formed;
+    touched.insert(touched.end(), exchanged.begin(), exchanged.end());
+    update_free_to_rotate(touched);
+  }
   contacts_.remove_pairs(p, formed);
   contacts_.add_pairs(p, std::move(exchanged));
-  if (rotations_) update_free_to_rotate();
 }
 
 void Simulation::compute_reactions(std::vector<Vec3>& out) const {
