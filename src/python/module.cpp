@@ -21,6 +21,7 @@
 #include "app/run.h"
 #include "app/threads.h"
 #include "python/py_simulation.h"
+#include "swarf/body_coupling.h"
 #include "swarf/core/errors.h"
 #include "swarf/version.h"
 
@@ -66,6 +67,11 @@ struct ParticlesView {
 struct RodsView {
   PySimulation* owner;
   Rods& r() const { return owner->model().rods; }
+};
+// A held body coupled to an outside code (swarf/body_coupling.h); keeps its Simulation alive.
+struct CouplingView {
+  PySimulation* owner;
+  BodyCoupling coupling;
 };
 struct BodyView {
   PySimulation* owner;
@@ -260,6 +266,32 @@ PYBIND11_MODULE(_swarf, m) {
       .def_property_readonly(
           "kinetic_energy", [](const BodyView& v) { return v.b().kinetic_energy(); }, "J");
 
+  py::class_<CouplingView>(m, "BodyCoupling",
+                           "A held rigid body whose motion an outside (multibody) code owns: Simulation.couple_body.")
+      .def(
+          "advance",
+          [](CouplingView& c, const py::object& position_end, double duration) {
+            const Vec3 x = to_vec3(position_end, "advance: position_end");
+            BodyExchange ex;
+            {
+              py::gil_scoped_release free;
+              ex = c.coupling.advance(x, duration);
+            }
+            py::dict d;
+            d["duration"] = ex.duration;
+            d["steps"] = ex.steps;
+            d["impulse"] = vec3_copy(ex.impulse);
+            d["angular_impulse"] = vec3_copy(ex.angular_impulse);
+            d["work"] = vec3_copy(ex.work);
+            d["mean_force"] = vec3_copy(ex.mean_force());
+            return d;
+          },
+          py::arg("position_end"), py::arg("duration"),
+          "Moves the body's centre of mass to position_end (m) over duration (s) at the secant velocity, "
+          "stepping the particles with it; returns the exchange: duration s, steps, impulse N s, "
+          "angular_impulse N m s (about the centre of mass), work J (per component), mean_force N (to hold "
+          "over the outside code's next step). docs/embedding.md says what holding costs.");
+
   py::class_<PySimulation>(m, "Simulation",
                            "A case built and ready to step: Simulation(case=None, text=None, set=[]). case: a "
                            "case file; text: TOML text; neither: the built-in default case.")
@@ -317,6 +349,16 @@ PYBIND11_MODULE(_swarf, m) {
           },
           py::arg("body"), py::arg("position") = py::none(), py::arg("orientation") = py::none(),
           "Places body 'body' (index) at a centre of mass (m) and orientation (w, x, y, z).")
+      .def(
+          "couple_body",
+          [](PySimulation& s, std::size_t b) {
+            if (b >= s.model().bodies.size())
+              throw py::index_error("body " + std::to_string(b) + " of " + std::to_string(s.model().bodies.size()));
+            return CouplingView{&s, BodyCoupling(s.sim(), b)};
+          },
+          py::arg("body"), py::keep_alive<0, 1>(),
+          "Couples held body 'body' (fixed = \"xyz\", rotation = \"prescribed\", not turning) to an outside code: "
+          "returns a BodyCoupling.")
       .def("write_checkpoint", &PySimulation::write_checkpoint, py::arg("path"),
            "Writes the case and the step's state (Simulation.from_checkpoint continues it bit-identically).")
       .def_property_readonly(

@@ -16,6 +16,7 @@ value; SimulationError (a RuntimeError) says where a run blew up. docs/python.md
 """
 from ._swarf import (  # noqa: F401
     Body,
+    BodyCoupling,
     InputError,
     OutputError,
     Particles,
@@ -28,5 +29,5 @@ from ._swarf import (  # noqa: F401
     set_threads,
 )
 
-__all__ = ["Body", "InputError", "OutputError", "Particles", "Rods", "Simulation", "SimulationError",
+__all__ = ["Body", "BodyCoupling", "InputError", "OutputError", "Particles", "Rods", "Simulation", "SimulationError",
            "__version__", "default_case_text", "run", "set_threads"]
