@@ -313,6 +313,9 @@ TEST(Mount, ABodyOnASpringFollowsAMovingHolderAsTheDampedOscillatorSays) {
     rb.load.force_damping = c;
     rb.load.anchor = rb.state.position;
     rb.load.holder_velocity = Vec3(V, 0, 0);
+    // (the rest is the centre of mass computed from the mesh, zero only to rounding: 6e-21 m in y
+    // and z in the ASan+UBSan build, where the instrumentation rounds the volume integral otherwise)
+    const Vec3 rest = rb.state.position;
     const double w = std::sqrt(k / m), wd = w * std::sqrt(1 - zeta * zeta), T = 2 * std::numbers::pi / w;
     const RigidBody& b = world.bodies[0];
     Simulation sim(world, implicit ? newmark(T / 400) : verlet(T / 400));
@@ -325,8 +328,8 @@ TEST(Mount, ABodyOnASpringFollowsAMovingHolderAsTheDampedOscillatorSays) {
     }
     EXPECT_LT(worst, 1e-3 * V / w) << implicit;
     EXPECT_GT(worst, 0.0) << implicit;
-    EXPECT_EQ(b.state.position[1], 0.0);
-    EXPECT_EQ(b.state.position[2], 0.0);
+    EXPECT_EQ(b.state.position[1], rest[1]);
+    EXPECT_EQ(b.state.position[2], rest[2]);
   }
 }
 
