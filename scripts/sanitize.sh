@@ -31,7 +31,8 @@ tsan_filter+=':Sweep.JobsTwoFailureResumeRefusalAndReport'
 if [ "$what" = asan ] || [ "$what" = all ]; then
   echo "== ASan + UBSan: build-asan/"
   cmake -S . -B build-asan -DSWARF_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-  nice -n 15 cmake --build build-asan -j"$jobs" --target swarf swarf_tests
+  # (every executable ctest runs: without swarf_cosim_example, the test cosim_example is 'Not Run')
+  nice -n 15 cmake --build build-asan -j"$jobs" --target swarf swarf_tests swarf_cosim_example
   (cd build-asan &&
     ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
       UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
