@@ -15,7 +15,7 @@ if [ "$name" = all ]; then names=("${all[@]}"); else names=("$name"); fi
 
 # -O1 with assertions on: fast enough to fuzz, and an assert is a finding too.
 mkdir -p build-fuzz
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSWARF_FUZZ=ON -DSWARF_BUILD_TESTS=OFF \
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSWARF_FUZZ=ON -DSWARF_BUILD_TESTS=OFF -DSWARF_PYTHON=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" \
   > build-fuzz/configure.log
 targets=()

@@ -30,7 +30,8 @@ tsan_filter+=':Sweep.JobsTwoFailureResumeRefusalAndReport'
 
 if [ "$what" = asan ] || [ "$what" = all ]; then
   echo "== ASan + UBSan: build-asan/"
-  cmake -S . -B build-asan -DSWARF_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+  # (no Python module: python3 would need the sanitizer runtime preloaded)
+  cmake -S . -B build-asan -DSWARF_SANITIZE=ON -DSWARF_PYTHON=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
   # (every executable ctest runs: without swarf_cosim_example, the test cosim_example is 'Not Run')
   nice -n 15 cmake --build build-asan -j"$jobs" --target swarf swarf_tests swarf_cosim_example
   (cd build-asan &&
@@ -46,7 +47,7 @@ if [ "$what" = tsan ] || [ "$what" = all ]; then
     echo "sanitize.sh: libarcher.so (LLVM's OpenMP TSan tool) not found: apt-get install libomp-dev" >&2
     exit 1
   fi
-  CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  CC=clang CXX=clang++ cmake -S . -B build-tsan -DSWARF_PYTHON=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS="-fsanitize=thread" -DCMAKE_C_FLAGS="-fsanitize=thread" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
     -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" > /dev/null
