@@ -97,8 +97,12 @@ void Simulation::update_free_to_rotate() {
   free_to_rotate_.assign(p.size(), 1);
   for (std::size_t k = 0; k < r.size(); ++k)
     if (r.intact[k]) free_to_rotate_[r.ends[k][0]] = free_to_rotate_[r.ends[k][1]] = 0;
+  rebuild_free_list();
+}
+
+void Simulation::rebuild_free_list() {
   free_list_.clear();
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < free_to_rotate_.size(); ++i)
     if (free_to_rotate_[i]) free_list_.push_back(static_cast<std::int32_t>(i));
 }
 
@@ -114,10 +118,7 @@ void Simulation::update_free_to_rotate(const std::vector<std::array<std::int32_t
       changed = changed || free != free_to_rotate_[i];
       free_to_rotate_[i] = free;
     }
-  if (!changed) return;
-  free_list_.clear();
-  for (std::size_t i = 0; i < free_to_rotate_.size(); ++i)
-    if (free_to_rotate_[i]) free_list_.push_back(static_cast<std::int32_t>(i));
+  if (changed) rebuild_free_list();
 }
 
 void Simulation::set_rotations(bool on) {

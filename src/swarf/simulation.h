@@ -197,6 +197,7 @@ class Simulation {
 
   void update_free_to_rotate();
   void update_free_to_rotate(const std::vector<std::array<std::int32_t, 2>>& pairs);  // only these particles
+  void rebuild_free_list();                                                           // from the flags
   void reindex_all(const Reindex& r);                                                 // the door's common part
   void resize_scratch();
   void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows // per-particle,

@@ -82,14 +82,10 @@ void Simulation::apply_flows(double h) {
     if (f.owed >= 1.0) {
       // Only particles within radius_max + the largest radius of the box can overlap a new one:
       // found once per step instead of at every draw (the same answer, far fewer distances).
-      const double reach = f.radius_max + largest;
+      const Vec3 reach = Vec3::Constant(f.radius_max + largest);
       near.clear();
-      for (std::size_t j = 0; j < p.size(); ++j) {
-        bool in = true;
-        for (int c = 0; c < 3 && in; ++c)
-          in = p.position[j][c] >= f.box_min[c] - reach && p.position[j][c] <= f.box_max[c] + reach;
-        if (in) near.push_back(static_cast<std::int32_t>(j));
-      }
+      for (std::size_t j = 0; j < p.size(); ++j)
+        if (in_box(p.position[j], f.box_min - reach, f.box_max + reach)) near.push_back(static_cast<std::int32_t>(j));
     }
     while (f.owed >= 1.0) {
       f.owed -= 1.0;

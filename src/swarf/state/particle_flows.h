@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <numbers>
 
 #include "swarf/core/vec3.h"
 
@@ -34,12 +35,16 @@ struct Inflow {
   std::int64_t missed = 0;   ///< particles due that found no free place
 };
 
+/// Whether x lies in the box [lo, hi] (faces included), m.
+inline bool in_box(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
+}
 /// The mean mass of an inflow's particles, kg: 4/3 pi density E[R^3] with R uniform in
 /// [radius_min, radius_max], E[R^3] = (b^4 - a^4) / (4 (b - a)) (a^3 when a = b).
 inline double inflow_mean_mass(const Inflow& f) {
   const double a = f.radius_min, b = f.radius_max;
   const double r3 = b > a ? (b * b * b * b - a * a * a * a) / (4.0 * (b - a)) : a * a * a;
-  return 4.0 / 3.0 * 3.14159265358979323846 * f.density * r3;
+  return 4.0 / 3.0 * std::numbers::pi * f.density * r3;
 }
 /// A region whose contents are removed: every particle whose centre lies in it after a step.
 /// A box, or (when plane_normal is not zero) the half-space beyond a plane, where
@@ -52,10 +57,7 @@ struct Outflow {
   std::int64_t removed = 0;                             ///< particles removed (state)
   bool is_plane() const { return plane_normal != Vec3::Zero(); }
   bool contains(const Vec3& x) const {
-    if (is_plane()) return (x - plane_point).dot(plane_normal) > 0.0;
-    for (int c = 0; c < 3; ++c)
-      if (!(x[c] >= box_min[c] && x[c] <= box_max[c])) return false;
-    return true;
+    return is_plane() ? (x - plane_point).dot(plane_normal) > 0.0 : in_box(x, box_min, box_max);
   }
 };
 
