@@ -151,6 +151,57 @@ TEST(BondFormation, ABrokenFormedRodIsRemovedAtTheNextFormationAndIsNotCountedBr
   EXPECT_EQ(w.rods.row_start[w.particles.size()], 6);
 }
 
+TEST(BondFormation, RowsUpdatedFromTheFirstChangedRodEqualAFullBuild) {
+  // The incremental update of the rows (Rods::update_rows) after what form_rods does: formed
+  // rods appended at the end, broken formed ones removed from the tail (shifting the rest),
+  // over many rounds on random pairs. Exact equality with a full build: the gather sums in row
+  // order, so any difference would change results.
+  constexpr std::size_t n = 50;
+  Rods r;
+  std::uint64_t s = 12345;
+  auto next = [&](std::uint64_t mod) {
+    s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<std::int32_t>((s >> 33) % mod);
+  };
+  auto pair = [&] {
+    std::int32_t i = next(n), j = next(n - 1);
+    if (j >= i) ++j;
+    return std::array<std::int32_t, 2>{std::min(i, j), std::max(i, j)};
+  };
+  for (int k = 0; k < 120; ++k) {
+    r.ends.push_back(pair());
+    r.rest_length.push_back(1.0);
+  }
+  r.reset_state();
+  r.build_rows(n);
+  Rods full;
+  for (int round = 0; round < 200; ++round) {
+    const std::size_t before_appends = r.size();
+    for (int a = next(4); a > 0; --a) {
+      const auto e = pair();
+      r.append_formed(e[0], e[1], 1.0);
+    }
+    for (std::size_t k = r.original_count(); k < r.size(); ++k)
+      if (next(5) == 0) r.intact[k] = 0;
+    const std::size_t first = r.remove_broken_formed();
+    for (std::size_t k = 0; k < r.size(); ++k) ASSERT_TRUE(r.intact[k] || !r.formed[k]) << k;
+    // As form_rods: from the first rod that moved or was appended on (every few rounds from an
+    // earlier rod, which must give the same rows).
+    std::size_t from = std::min(first, before_appends);
+    if (round % 7 == 3) from = std::size_t(next(static_cast<std::uint64_t>(from) + 1));
+    r.update_rows(from, n);
+    full.ends = r.ends;
+    full.build_rows(n);
+    ASSERT_EQ(r.row_start, full.row_start) << round;
+    ASSERT_EQ(r.entries.size(), full.entries.size()) << round;
+    for (std::size_t q = 0; q < r.entries.size(); ++q) {
+      ASSERT_EQ(r.entries[q].rod, full.entries[q].rod) << round << " " << q;
+      ASSERT_EQ(r.entries[q].other, full.entries[q].other) << round << " " << q;
+    }
+  }
+  EXPECT_GT(r.size(), 120u);  // (formed rods survived some rounds)
+}
+
 TEST(BondFormation, NoParticleGetsMoreIntactRodsThanTheCoordination) {
   Scene w = scene(1.5 * kOverlap, false);
   w.rods.formation.coordination = 1;  // particles 1 and 2 have one rod each already

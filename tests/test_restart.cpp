@@ -142,6 +142,33 @@ TEST(Restart, ACutThatFormsAndExchangesRodsContinuesBitIdentically) {
   EXPECT_EQ(sa["results"], sb["results"]);
 }
 
+// 'swarf bench' takes a checkpoint as its scene: the stored case, continued from the stored
+// state, and only the steps after it are counted (a late part of a cut timed alone).
+TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
+  test::TempDir dir("bench_checkpoint");
+  test::write_file(dir / "c.toml", std::string(kTinyCut) + "vtk = false\n");
+  auto a = run_and_keep_checkpoint(dir, "c.toml", 300, 1);
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  auto b = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
+                             " --steps 7 --threads 1 --repeats 1 --stages");
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  // The row: | CHECKPOINT | scheme | particles | rods | steps | force evaluations | ...
+  const auto row = b.output.find("| CHECKPOINT | ");
+  ASSERT_NE(row, std::string::npos) << b.output;
+  std::vector<std::string> cells;
+  std::size_t at = row + 1;
+  for (int c = 0; c < 6; ++c) {
+    const auto bar = b.output.find('|', at);
+    cells.push_back(b.output.substr(at, bar - at));
+    at = bar + 1;
+  }
+  EXPECT_EQ(cells[4], " 7 ") << b.output;
+  EXPECT_GE(std::stoll(cells[5]), 7) << b.output;  // (one evaluation per step at least)
+  auto bad = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "missing.h5") + " --steps 1");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("missing.h5"), std::string::npos) << bad.output;
+}
+
 // A restart into another directory (--out) brings the frames written before the checkpoint
 // along: every file particles.pvd lists is there, the earlier frames are copies and the later
 // ones are computed again, bit for bit as the uninterrupted run wrote them.

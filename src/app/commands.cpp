@@ -201,7 +201,10 @@ struct BenchCommand final : Command {
   std::string threads_s = "1,2";
   explicit BenchCommand(CLI::App& app) {
     sub = app.add_subcommand("bench", "Time named scenes (case files) for several thread counts");
-    sub->add_option("cases", bo.cases, "Scene case files, e.g. validation/bench/w1.toml")->required();
+    sub->add_option("cases", bo.cases,
+                    "Scene case files, e.g. validation/bench/w1.toml, or checkpoints (.h5: the stored case, continued "
+                    "from its state)")
+        ->required();
     sub->add_option("--threads", threads_s, "Thread counts, comma separated (default 1,2)");
     sub->add_option("--steps", bo.steps, "Steps (default: run to the case's end_time)");
     sub->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");

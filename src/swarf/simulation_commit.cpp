@@ -1,6 +1,7 @@
 // simulation_commit.cpp: the commit stage (plastic shifts and breakage of the final
 // evaluation written back, broken rods' pairs handed to the contact lists) and the account
 // stage (energy ledger, reactions, time and counters); see simulation.h.
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -20,26 +21,41 @@ void Simulation::commit() {
   // The rods that break now, per block: their pairs become contact candidates.
   const bool contacts = contacts_.enabled();
   std::vector<std::vector<std::array<std::int32_t, 2>>> broken_pairs(contacts ? nb : 0);
+  // Raw pointers and a local law: through 'r' the compiler reloads every array's base after each
+  // uint8_t store (which may alias anything), and this loop visits every rod of a changed block.
+  const RodLaw law = r.law;
+  std::uint8_t* intact = r.intact.data();
+  const std::uint8_t* trial_broken = r.trial_broken.data();
+  const std::uint8_t* formed = r.formed.data();
+  const double* trial_shift = r.trial_shift.data();
+  const double* rest_length = r.rest_length.data();
+  double* shift = r.shift.data();
+  double* stress = r.stress.data();
+  const auto* ends = r.ends.data();
+  const int* changed = block_changed_.data();
 #pragma omp parallel for schedule(static) if (nb > 0)
   for (std::size_t b = 0; b < nb; ++b) {
-    if (!block_changed_[b]) continue;  // no rod of the block yielded or broke
+    if (!changed[b]) continue;  // no rod of the block yielded or broke
     const std::size_t end = std::min(m, (b + 1) * kBlock);
+    double plastic_b = 0.0, fracture_b = 0.0;
     for (std::size_t k = b * kBlock; k < end; ++k) {
-      if (!r.intact[k]) continue;
-      const double dshift = r.trial_shift[k] - r.shift[k];
+      if (!intact[k]) continue;
+      const double dshift = trial_shift[k] - shift[k];
       if (dshift != 0.0) {
-        plastic[b] += plastic_work_density(r.law, r.stress[k], dshift) * A * r.rest_length[k];
-        r.shift[k] = r.trial_shift[k];
+        plastic_b += plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
+        shift[k] = trial_shift[k];
       }
-      if (r.trial_broken[k]) {
-        r.intact[k] = 0;
-        fracture[b] += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
-        r.stress[k] = 0.0;
+      if (trial_broken[k]) {
+        intact[k] = 0;
+        fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
+        stress[k] = 0.0;
         ++broke[b];
-        broke_original[b] += !r.formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
-        if (contacts) broken_pairs[b].push_back(r.ends[k]);
+        broke_original[b] += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
+        if (contacts) broken_pairs[b].push_back(ends[k]);
       }
     }
+    plastic[b] = plastic_b;
+    fracture[b] = fracture_b;
   }
   bool any_broke = false;
   for (std::size_t b = 0; b < nb; ++b) {
@@ -131,7 +147,8 @@ void Simulation::form_rods() {
     formed.push_back(e);
   }
   if (formed.empty()) return;
-  std::size_t revived = 0, appended = 0;
+  std::size_t revived = 0;
+  const std::size_t m_before = r.size();
   for (const auto& e : formed) {
     Vec3 d = p.position[e[1]] - p.position[e[0]];
     m_.periodic.wrap(d);
@@ -142,7 +159,6 @@ void Simulation::form_rods() {
       if (r.entries[q].other == e[1]) rod = r.entries[q].rod;
     if (rod < 0) {
       r.append_formed(e[0], e[1], length);
-      ++appended;
       continue;
     }
     r.rest_length[rod] = length;
@@ -156,9 +172,11 @@ void Simulation::form_rods() {
   formed_ += formed.size();
   broken_ -= revived;
   // The rows change only when rods were appended or removed (a revived or exchanged rod keeps
-  // its index); rebuilding them, serial and O(rods), at every formation was most of its cost.
-  if (r.remove_broken_formed() > 0 || appended > 0) {
-    r.build_rows(p.size());
+  // its index), and then only from the first rod that moved or was appended on: rebuilding them
+  // all, serial and O(rods), at every formation was most of its cost.
+  const std::size_t first_changed = std::min(r.remove_broken_formed(), m_before);
+  if (first_changed < r.size() || r.size() != m_before) {
+    r.update_rows(first_changed, p.size());
     block_viscous_.resize(block_count(r.size()), 0.0);
     block_changed_.resize(block_count(r.size()), 0);
   }

@@ -2,6 +2,7 @@
 #include "swarf/state/rods.h"
 
 #include <algorithm>
+#include <string_view>
 
 namespace swarf {
 
@@ -60,20 +61,57 @@ std::size_t Rods::original_count() const {
 }
 
 std::size_t Rods::remove_broken_formed() {
-  if (formed.size() != size()) return 0;
-  std::vector<std::uint8_t> keep(size());
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < size(); ++k) kept += keep[k] = intact[k] || !formed[k];
-  if (kept == size()) return 0;
+  const std::size_t m = size();
+  if (formed.size() != m) return m;
+  std::size_t tail = m;  // the formed rods at the end
+  while (tail > 0 && formed[tail - 1]) --tail;
+  std::size_t first = tail;
+  while (first < m && intact[first]) ++first;
+  if (first == m) return m;
   auto compact = [&](auto& v) {
-    std::size_t out = 0;
-    for (std::size_t k = 0; k < keep.size(); ++k)
-      if (keep[k]) v[out++] = v[k];
+    std::size_t out = first;
+    for (std::size_t k = first; k < m; ++k)
+      if (intact[k]) v[out++] = v[k];
     v.resize(out);
   };
+  // 'intact' decides what is kept, so it is compacted last.
   compact(ends);
-  for_each_field([&](const char*, auto& v) { compact(v); });
-  return keep.size() - kept;
+  for_each_field([&](const char* name, auto& v) {
+    if (std::string_view(name) != "intact") compact(v);
+  });
+  compact(intact);
+  return first;
+}
+
+void Rods::update_rows(std::size_t first_changed, std::size_t n_particles) {
+  if (row_start.size() != n_particles + 1 || first_changed == 0) return build_rows(n_particles);
+  const auto t = static_cast<std::int32_t>(first_changed);
+  // Per particle: how many of its old entries stay (the prefix below t), then the changed rods.
+  std::vector<std::int32_t> start(n_particles + 1, 0);
+  for (std::size_t p = 0; p < n_particles; ++p) {
+    std::int32_t e = row_start[p + 1];
+    while (e > row_start[p] && entries[e - 1].rod >= t) --e;
+    start[p + 1] = e - row_start[p];
+  }
+  for (std::size_t r = first_changed; r < ends.size(); ++r) {
+    ++start[ends[r][0] + 1];
+    ++start[ends[r][1] + 1];
+  }
+  for (std::size_t p = 0; p < n_particles; ++p) start[p + 1] += start[p];
+  std::vector<Entry> fresh(start.back());
+  std::vector<std::int32_t> fill(n_particles);
+  for (std::size_t p = 0; p < n_particles; ++p) {
+    std::int32_t out = start[p];
+    for (std::int32_t e = row_start[p]; e < row_start[p + 1] && entries[e].rod < t; ++e) fresh[out++] = entries[e];
+    fill[p] = out;
+  }
+  // Changed rods in ascending order after the kept prefix: every row stays sorted.
+  for (std::size_t r = first_changed; r < ends.size(); ++r) {
+    fresh[fill[ends[r][0]]++] = Entry{static_cast<std::int32_t>(r), ends[r][1]};
+    fresh[fill[ends[r][1]]++] = Entry{static_cast<std::int32_t>(r), ends[r][0]};
+  }
+  row_start.swap(start);
+  entries.swap(fresh);
 }
 
 }  // namespace swarf

@@ -71,10 +71,19 @@ struct Rods {
   std::size_t broken_count() const;
   /// Number of the lattice's own rods (those not formed during the run).
   std::size_t original_count() const;
-  /// Removes the formed rods that are broken and returns how many. They carry no force, and a
-  /// pair that forms again gets a new rod, as a virgin as a revived one would be, so nothing is
-  /// lost; without this, every neighbour exchange would leave a dead rod that the kernels visit
-  /// for the rest of the run. The others keep their order; the rows are stale until build_rows.
+  /// Brings the rows up to date after the rods from index 'first_changed' on were appended,
+  /// removed or moved, while those before it kept their index and ends. Each row is sorted, so
+  /// its rods below 'first_changed' are a prefix that is copied; only the changed rods are
+  /// placed. The result equals build_rows(n_particles), at a cost in the changed rods and the
+  /// particles instead of all the rods (bond formation changes a few rods at the end at most
+  /// steps of a cut).
+  void update_rows(std::size_t first_changed, std::size_t n_particles);
+  /// Removes the formed rods that are broken and returns the index of the first rod that moved
+  /// (size() when none was removed). They carry no force, and a pair that forms again gets a new
+  /// rod, as a virgin as a revived one would be, so nothing is lost; without this, every
+  /// neighbour exchange would leave a dead rod that the kernels visit for the rest of the run.
+  /// The others keep their order. Formed rods are appended, so they sit after the lattice's
+  /// rods, and only that tail is searched. The rows are stale until update_rows.
   std::size_t remove_broken_formed();
   /// Appends an intact, stress-free rod of rest length 'length' (m) between i and j, marked
   /// 'formed'; the rows are stale until build_rows.
