@@ -192,6 +192,9 @@ void run_case(const RunOptions& opt) {
   Simulation sim(model, model.step);
   ObserverSet observers(sim, observers_for(model, opt.energy_check));
   RunOutputs outputs(dir, model, sim, observers, stored);
+  // The ordered sites served the selections and the observers' setup, all done now; the
+  // step and the outputs do not read them, and they are the size of the positions.
+  std::vector<Vec3>().swap(model.sites);
   if (opt.restart.empty())
     outputs.begin();
   else
