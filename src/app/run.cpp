@@ -143,7 +143,8 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
 }
 
 // The memory a generated workpiece needs, estimated before it is built: the lattice, the rods
-// and the step's arrays take about 1 kB per particle (890 B measured on a 63^3-cell block);
+// and the step's arrays take about 1 kB per particle (validation/bench/README.md, "Memory at a
+// million particles");
 // a case beyond the machine's memory is refused with the key named, instead of a bare
 // std::bad_alloc after seconds of allocation.
 void check_memory(const CaseSettings& cs, bool force) {
