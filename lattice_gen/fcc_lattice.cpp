@@ -75,6 +75,7 @@ void bond_nearest_neighbours(Lattice& lat, double nominal_distance, double toler
     throw InputError(fmt::format("lattice: bond tolerance must lie in [0, 0.2), got {}", tolerance));
   lat.rods = find_pairs_in_range(lat.position, nominal_distance * (1.0 - tolerance),
                                  nominal_distance * (1.0 + tolerance));
+  lat.rods.shrink_to_fit();  // (found one by one: up to twice the room; the rods take it over)
   lat.rest_length.resize(lat.rods.size());
   for (std::size_t b = 0; b < lat.rods.size(); ++b)
     lat.rest_length[b] = (lat.position[lat.rods[b][1]] - lat.position[lat.rods[b][0]]).norm();

@@ -143,7 +143,8 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
 }
 
 // The memory a generated workpiece needs, estimated before it is built: the lattice, the rods
-// and the step's arrays take about 1 kB per particle (890 B measured on a 63^3-cell block);
+// and the step's arrays take about 1 kB per particle (validation/bench/README.md, "Memory at a
+// million particles");
 // a case beyond the machine's memory is refused with the key named, instead of a bare
 // std::bad_alloc after seconds of allocation.
 void check_memory(const CaseSettings& cs, bool force) {
@@ -192,6 +193,9 @@ void run_case(const RunOptions& opt) {
   Simulation sim(model, model.step);
   ObserverSet observers(sim, observers_for(model, opt.energy_check));
   RunOutputs outputs(dir, model, sim, observers, stored);
+  // The ordered sites served the selections and the observers' setup, all done now; the
+  // step and the outputs do not read them, and they are the size of the positions.
+  std::vector<Vec3>().swap(model.sites);
   if (opt.restart.empty())
     outputs.begin();
   else

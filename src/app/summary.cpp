@@ -180,20 +180,14 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
       put("/particles/angular_velocity", n ? p.omega[0].data() : nullptr, n, 3, "rad/s",
           "angular velocity, world frame");
     }
-    std::vector<std::int64_t> pairs(2 * m), group(n);
-    for (std::size_t b = 0; b < m; ++b) {
-      pairs[2 * b] = r.ends[b][0];
-      pairs[2 * b + 1] = r.ends[b][1];
-    }
-    for (std::size_t i = 0; i < n; ++i) group[i] = p.group[i];
-    put("/particles/group", group.data(), n, 1, "1",
+    put("/particles/group", p.group.data(), n, 1, "1",
         "index into /groups/name of the particle's prescribed group, -1 for none");
     put("/particles/id", p.id.data(), n, 1, "1", "the particle's stable id (its index when the run started)");
     std::vector<std::string> group_names;
     for (const auto& g : sim.world().groups) group_names.push_back(g.name);
     f.write_strings("/groups/name", group_names);
     f.describe("/groups/name", "", "group names; /particles/group indexes this list");
-    put("/bonds/pairs", pairs.data(), m, 2, "1", "the rod's two particles, rows of /particles");
+    put("/bonds/pairs", m ? r.ends[0].data() : nullptr, m, 2, "1", "the rod's two particles, rows of /particles");
     put("/bonds/rest_length", r.rest_length.data(), m, 1, "m", "the rod's length at rest");
     put("/bonds/plastic_shift", r.shift.data(), m, 1, "1",
         "shift eps0 of the rod's elastic range (kinematic hardening); plastic strain (E - k)/E eps0");

@@ -79,8 +79,7 @@ class H5StateWriter final : public StateArchive {
     f_.write(key(name), v.data(), v.size());
   }
   void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t) override {
-    const std::vector<std::int64_t> w(v.begin(), v.end());
-    f_.write(key(name), w.data(), w.size(), 1);
+    f_.write(key(name), v.data(), v.size(), 1);
   }
   void array(std::string_view name, std::vector<std::int64_t>& v, std::size_t) override {
     f_.write(key(name), v.data(), v.size(), 1);

@@ -49,12 +49,15 @@ void H5File::close() {
 }
 
 static void write_any(hid_t file, const std::string& path, const std::string& name, hid_t type, const void* data,
-                      std::size_t rows, std::size_t cols) {
+                      std::size_t rows, std::size_t cols, hid_t memory_type = -1) {
   hsize_t dims[2] = {rows, cols};
   hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
   hid_t lcpl = link_props();
   hid_t set = H5Dcreate2(file, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  herr_t st = set < 0 ? -1 : rows * cols == 0 ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  herr_t st = set < 0 ? -1
+              : rows * cols == 0
+                  ? 0
+                  : H5Dwrite(set, memory_type < 0 ? type : memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   if (set >= 0) H5Dclose(set);
   H5Pclose(lcpl);
   H5Sclose(space);
@@ -66,6 +69,9 @@ void H5File::write(const std::string& name, const double* data, std::size_t rows
 }
 void H5File::write(const std::string& name, const std::int64_t* data, std::size_t rows, std::size_t cols) {
   write_any(id_, path_, name, H5T_NATIVE_INT64, data, rows, cols);
+}
+void H5File::write(const std::string& name, const std::int32_t* data, std::size_t rows, std::size_t cols) {
+  write_any(id_, path_, name, H5T_NATIVE_INT64, data, rows, cols, H5T_NATIVE_INT32);
 }
 void H5File::write(const std::string& name, const std::uint8_t* data, std::size_t rows) {
   write_any(id_, path_, name, H5T_NATIVE_UINT8, data, rows, 1);

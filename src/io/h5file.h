@@ -28,6 +28,9 @@ class H5File {
   /// Writes a rows x cols dataset (cols = 1 writes a 1-D dataset). Intermediate groups are created.
   void write(const std::string& name, const double* data, std::size_t rows, std::size_t cols = 1);
   void write(const std::string& name, const std::int64_t* data, std::size_t rows, std::size_t cols = 1);
+  /// Stored as 64-bit integers, as the int64_t overload stores them: HDF5 widens the values in
+  /// strips, so that no 64-bit copy of a large index array (the rods' ends) is made.
+  void write(const std::string& name, const std::int32_t* data, std::size_t rows, std::size_t cols = 1);
   void write(const std::string& name, const std::uint8_t* data, std::size_t rows);
   /// Writes a 1-D dataset of variable-length strings (group names, ...).
   void write_strings(const std::string& name, const std::vector<std::string>& values);

@@ -463,24 +463,31 @@ Model build_model(const CaseSettings& cs) {
   jitter_lattice(lat, static_cast<std::uint64_t>(cs.workpiece.disorder_seed), model.derived.position_jitter,
                  model.lattice_particles, model.periodic);
   fill_particles(cs, lat, free_velocity, free_spin, model);
+  // The sheet's edge only: the free particles appended after its sites have no rods either.
+  std::vector<std::int32_t> membrane_edges;
+  if (cs.membrane.enabled && cs.membrane.clamp_edges) {
+    membrane_edges = membrane_edge(lat);
+    std::erase_if(membrane_edges, [&](std::int32_t i) { return std::size_t(i) >= model.lattice_particles; });
+  }
+  // The lattice's sites and radii are in the particles now: freed before the rods are built.
+  lat.position = {};
+  lat.radius = {};
   auto& r = model.rods;
   r.law = model.derived.law;
   r.area = model.derived.rod_area;
   r.formation.overlap = cs.rod.bond_overlap;
   r.formation.exchange = cs.rod.neighbour_exchange;
-  r.ends = lat.rods;
-  r.rest_length = lat.rest_length;
+  // Moved, not copied: the lattice's arrays are not needed after this, and a copy would hold
+  // the largest arrays of the build twice.
+  r.ends = std::move(lat.rods);
+  r.rest_length = std::move(lat.rest_length);
   r.reset_state();
   r.build_rows(model.particles.size());
   // Spacing of lattice layers along a cube axis; a membrane's sites are d/2 apart in x on
   // alternate rows.
   const double h = cs.membrane.enabled ? 0.5 * model.derived.nn_distance : 0.5 * model.derived.cell_edge;
-  if (cs.membrane.enabled && cs.membrane.clamp_edges) {
-    // The sheet's edge only: the free particles appended after its sites have no rods either.
-    auto edge = membrane_edge(lat);
-    std::erase_if(edge, [&](std::int32_t i) { return std::size_t(i) >= model.lattice_particles; });
-    add_group(model, cs.source, "membrane_edges", edge, 7, Motion{});
-  }
+  if (cs.membrane.enabled && cs.membrane.clamp_edges)
+    add_group(model, cs.source, "membrane_edges", std::move(membrane_edges), 7, Motion{});
   build_groups(cs, model.sites, h, model);
   if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);

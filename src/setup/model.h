@@ -42,7 +42,7 @@ struct Model : World {
   /// Every particle's position before the workpiece's disorder (the ordered lattice's sites,
   /// then the free particles), m. Groups, grips and the cut's geometry are selected on these,
   /// so they are the same for every disorder_seed; without disorder they are the initial
-  /// positions.
+  /// positions. Needed only while a run is set up: 'swarf run' frees it before the first step.
   std::vector<Vec3> sites;
 };
 

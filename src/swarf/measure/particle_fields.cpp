@@ -33,37 +33,39 @@ Eigen::Matrix<double, 6, 1> normal_strain_row(const Vec3& n) {
 ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic& periodic,
                                const ContactSystem* contacts) {
   const std::size_t n = p.size();
-  std::vector<SymTensor> moment(n, SymTensor{});
-  std::vector<Eigen::Matrix<double, 6, 6>> normal(n, Eigen::Matrix<double, 6, 6>::Zero());
-  std::vector<Eigen::Matrix<double, 6, 1>> rhs(n, Eigen::Matrix<double, 6, 1>::Zero());
+  // The moments are summed into the output's stress and scaled there; the plastic fit's
+  // normal equations are built one particle at a time from its rod list (ascending rods, as
+  // one pass over the rods adds them): per-particle 6 x 6 matrices for the whole body would
+  // be the largest arrays of the run.
+  ParticleFields out;
+  out.stress.assign(n, SymTensor{});
+  auto& moment = out.stress;
   // eps_p = (E - k)/E eps0, the relation plastic_work_density books (laws/rod_law.h).
   const double to_plastic = r.law.youngs_modulus > 0 ? (r.law.youngs_modulus - r.law.hardening) / r.law.youngs_modulus
                                                      : 0.0;
   const bool have_coef = r.force_coef.size() == r.size();
-  for (std::size_t k = 0; k < r.size(); ++k) {
-    if (!r.intact[k]) continue;
+  auto axis = [&](std::size_t k) {
     const auto [i, j] = r.ends[k];
     Vec3 d = p.position[j] - p.position[i];
     periodic.wrap(d);
-    if (have_coef) {
+    return d;
+  };
+  if (have_coef)
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      if (!r.intact[k]) continue;
       // Force on i = coef d at the midpoint d/2; on j = -coef d at -d/2: the same moment.
-      const Vec3 half = 0.5 * d, f = r.force_coef[k] * d;
-      add_moment(moment[i], half, f);
-      add_moment(moment[j], half, f);
+      const Vec3 d = axis(k), half = 0.5 * d, f = r.force_coef[k] * d;
+      add_moment(moment[r.ends[k][0]], half, f);
+      add_moment(moment[r.ends[k][1]], half, f);
     }
-    const double len = d.norm();
-    if (len <= 0) continue;
-    const auto g = normal_strain_row(d / len);
-    const double eps_p = to_plastic * r.shift[k];
-    for (const std::int32_t e : {i, j}) {
-      normal[e] += g * g.transpose();
-      rhs[e] += g * eps_p;
-    }
-  }
   if (contacts && contacts->enabled()) contacts->add_virial(p, moment);
+  // The rod lists: the rods' own when they are current, else built here.
+  RodRows rows;
+  const bool current = r.row_start.size() == n + 1 && r.entries.size() == 2 * r.size();
+  if (!current) build_rod_rows(r.ends, n, rows);
+  const std::vector<std::int32_t>& row_start = current ? r.row_start : rows.row_start;
+  const std::vector<Rods::Entry>& entries = current ? r.entries : rows.entries;
 
-  ParticleFields out;
-  out.stress.resize(n);
   out.von_mises.resize(n);
   out.hydrostatic.resize(n);
   out.plastic_strain.assign(n, 0.0);
@@ -72,19 +74,31 @@ ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic
     for (int c = 0; c < 6; ++c) out.stress[i][c] = moment[i][c] * inv_v;
     out.von_mises[i] = von_mises(out.stress[i]);
     out.hydrostatic[i] = (out.stress[i][0] + out.stress[i][1] + out.stress[i][2]) / 3.0;
-    if (rhs[i].isZero(0.0)) continue;  // (no plastic strain in any rod: 0 without a solve)
+    Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+    for (std::int32_t q = row_start[i]; q < row_start[i + 1]; ++q) {
+      const std::int32_t k = entries[q].rod;
+      if (!r.intact[k]) continue;
+      const Vec3 d = axis(k);
+      const double len = d.norm();
+      if (len <= 0) continue;
+      const auto g = normal_strain_row(d / len);
+      normal += g * g.transpose();
+      rhs += g * (to_plastic * r.shift[k]);
+    }
+    if (rhs.isZero(0.0)) continue;  // (no plastic strain in any rod: 0 without a solve)
     // Least squares through the normal matrix's eigenvectors, keeping those it determines
     // well: an eigenvalue below kWellDetermined of the largest (rods nearly parallel, or
     // fewer than 6 directions) is dropped rather than inverted, which bounds each kept
     // component by the rods' rms plastic strain / sqrt(kWellDetermined). An interior FCC
     // particle's smallest ratio is 1/4, so it keeps all six (the fit is exact there).
     constexpr double kWellDetermined = 0.05;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(normal[i]);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(normal);
     const double top = eig.eigenvalues().maxCoeff();
     Eigen::Matrix<double, 6, 1> e = Eigen::Matrix<double, 6, 1>::Zero();
     for (int q = 0; q < 6; ++q)
       if (eig.eigenvalues()[q] > kWellDetermined * top)
-        e += (eig.eigenvectors().col(q).dot(rhs[i]) / eig.eigenvalues()[q]) * eig.eigenvectors().col(q);
+        e += (eig.eigenvectors().col(q).dot(rhs) / eig.eigenvalues()[q]) * eig.eigenvectors().col(q);
     // von Mises equivalent strain of the fitted tensor: sqrt(2/3 dev:dev), off-diagonals twice.
     out.plastic_strain[i] = std::sqrt(2.0 / 3.0) * von_mises(SymTensor{e[0], e[1], e[2], e[3], e[4], e[5]}) /
                             std::sqrt(1.5);

@@ -60,7 +60,9 @@ double particle_volume(double radius);
 
 /// The fields for the state now. The rods' forces are those of the last evaluation
 /// (Rods::force_coef: elastic-plastic and viscous); 'contacts' may be null (no contacts), else
-/// its last evaluation's results are used. 'periodic': the nearest image for the rods.
+/// its last evaluation's results are used. 'periodic': the nearest image for the rods. The
+/// rods' per-particle lists (Rods::build_rows) are used when they match the rods' count, else
+/// built here.
 ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic& periodic,
                                const ContactSystem* contacts);
 

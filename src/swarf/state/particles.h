@@ -82,6 +82,7 @@ struct Particles {
     inertia.resize(n, Vec3::Zero());
     inv_inertia.resize(n, 0.0);
     torque.resize(n, Vec3::Zero());
+    if (id.size() < n) id.reserve(n);  // (not one by one: that could leave twice the room)
     while (id.size() < n) id.push_back(next_id++);
     id.resize(n);
   }

@@ -19,20 +19,28 @@ void Rods::reset_state() {
   for (std::size_t k = 0; k < m; ++k) inv_rest_length[k] = 1.0 / rest_length[k];
 }
 
-void Rods::build_rows(std::size_t n_particles) {
+void build_rod_rows(const std::vector<std::array<std::int32_t, 2>>& ends, std::size_t n_particles, RodRows& out) {
+  auto& row_start = out.row_start;
   row_start.assign(n_particles + 1, 0);
   for (const auto& e : ends) {
     ++row_start[e[0] + 1];
     ++row_start[e[1] + 1];
   }
   for (std::size_t p = 0; p < n_particles; ++p) row_start[p + 1] += row_start[p];
-  entries.assign(row_start.back(), Entry{0, 0});
+  out.entries.assign(row_start.back(), Rods::Entry{0, 0});
   std::vector<std::int32_t> fill(row_start.begin(), row_start.end() - 1);
   // Rods are visited in ascending order, so every row comes out sorted.
   for (std::size_t r = 0; r < ends.size(); ++r) {
-    entries[fill[ends[r][0]]++] = Entry{static_cast<std::int32_t>(r), ends[r][1]};
-    entries[fill[ends[r][1]]++] = Entry{static_cast<std::int32_t>(r), ends[r][0]};
+    out.entries[fill[ends[r][0]]++] = Rods::Entry{static_cast<std::int32_t>(r), ends[r][1]};
+    out.entries[fill[ends[r][1]]++] = Rods::Entry{static_cast<std::int32_t>(r), ends[r][0]};
   }
+}
+
+void Rods::build_rows(std::size_t n_particles) {
+  RodRows rows{std::move(row_start), std::move(entries)};
+  build_rod_rows(ends, n_particles, rows);
+  row_start = std::move(rows.row_start);
+  entries = std::move(rows.entries);
 }
 
 void Rods::append_formed(std::int32_t i, std::int32_t j, double length) {

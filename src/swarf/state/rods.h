@@ -90,4 +90,13 @@ struct Rods {
   void append_formed(std::int32_t i, std::int32_t j, double length);
 };
 
+/// Per-particle rod lists built apart from a Rods (what Rods::build_rows fills in place).
+struct RodRows {
+  std::vector<std::int32_t> row_start;  ///< size particles + 1
+  std::vector<Rods::Entry> entries;
+};
+
+/// The per-particle rod lists of 'ends' for n particles, each in ascending rod order.
+void build_rod_rows(const std::vector<std::array<std::int32_t, 2>>& ends, std::size_t n_particles, RodRows& out);
+
 }  // namespace swarf
