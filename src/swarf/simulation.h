@@ -223,6 +223,7 @@ class Simulation {
   std::size_t formed_ = 0;             // rods formed by bond formation (state: 'formed_rods')
   std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m
   std::vector<std::uint8_t> lattice_;  // per particle: 1 if built with a rod (bond formation's candidates)
+  std::vector<int> intact_count_;      // form_rods' scratch: a particle's intact rods, -1 = not counted yet
   EnergyLedger ledger_;
   StepStats stats_;
   std::vector<double> block_viscous_;            // per rod block, W

@@ -3,7 +3,6 @@
 // stage (energy ledger, reactions, time and counters); see simulation.h.
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "swarf/core/parallel.h"
 #include "swarf/simulation.h"
@@ -98,7 +97,11 @@ void Simulation::form_rods() {
     for (std::int32_t q = r.row_start[i]; q < r.row_start[i + 1]; ++q) c += r.intact[r.entries[q].rod];
     return c;
   };
-  std::unordered_map<std::int32_t, int> count;
+  // Counted once per particle and step, in a scratch array that is reset for the particles
+  // touched (the same pressed pairs come back at every step of a cut).
+  std::vector<int>& count = intact_count_;
+  if (count.size() != p.size()) count.assign(p.size(), -1);
+  std::vector<std::int32_t> counted;
   std::vector<std::array<std::int32_t, 2>> formed, exchanged;
   const double A = r.area;
   // Neighbour exchange: a particle at the coordination gives up its most stretched rod for
@@ -121,7 +124,10 @@ void Simulation::form_rods() {
   };
   for (const auto& e : pressed) {
     for (auto i : e)
-      if (!count.count(i)) count[i] = intact_rods(i);
+      if (count[i] < 0) {
+        count[i] = intact_rods(i);
+        counted.push_back(i);
+      }
     std::int32_t give[2] = {-1, -1};
     bool ok = true;
     for (int s = 0; s < 2 && ok; ++s) {
@@ -141,11 +147,12 @@ void Simulation::form_rods() {
       r.stress[k] = r.force_coef[k] = 0.0;
       broken_ += !r.formed[k];
       const std::int32_t other = r.ends[k][0] == e[s] ? r.ends[k][1] : r.ends[k][0];
-      if (count.count(other)) --count[other];
+      if (count[other] >= 0) --count[other];
       exchanged.push_back(r.ends[k]);
     }
     formed.push_back(e);
   }
+  for (auto i : counted) count[i] = -1;
   if (formed.empty()) return;
   std::size_t revived = 0;
   const std::size_t m_before = r.size();

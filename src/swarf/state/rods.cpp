@@ -95,7 +95,10 @@ void Rods::update_rows(std::size_t first_changed, std::size_t n_particles) {
   if (row_start.size() != n_particles + 1 || first_changed == 0) return build_rows(n_particles);
   const auto t = static_cast<std::int32_t>(first_changed);
   // Per particle: how many of its old entries stay (the prefix below t), then the changed rods.
+  // (The per-particle loops are independent: parallel, with the same result for any number
+  // of threads; this runs at most steps of a cut, and serial it held back the second thread.)
   std::vector<std::int32_t> start(n_particles + 1, 0);
+#pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n_particles; ++p) {
     std::int32_t e = row_start[p + 1];
     while (e > row_start[p] && entries[e - 1].rod >= t) --e;
@@ -108,6 +111,7 @@ void Rods::update_rows(std::size_t first_changed, std::size_t n_particles) {
   for (std::size_t p = 0; p < n_particles; ++p) start[p + 1] += start[p];
   std::vector<Entry> fresh(start.back());
   std::vector<std::int32_t> fill(n_particles);
+#pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n_particles; ++p) {
     std::int32_t out = start[p];
     for (std::int32_t e = row_start[p]; e < row_start[p + 1] && entries[e].rod < t; ++e) fresh[out++] = entries[e];
