@@ -485,6 +485,10 @@ TEST(BadInput, MessagesNameWhatIsActuallyWrong) {
   expect_refused(run("run " + dir / "d.toml"), "is a directory");
   expect_refused(run("run " + dir / "md.toml"), "is a directory, not a mesh file");  // (was basic_filebuf::underflow)
   expect_refused(run("run --set workpiece.cells=[1000,1000,400]"), "workpiece.cells");
+  // (the Newton solver's vectors and tangents are counted: the estimate says which solver)
+  expect_refused(run("run --set workpiece.cells=[1000,1000,400] --set integrator.scheme='\"newmark\"' "
+                     "--set integrator.solver='\"newton\"'"),
+                 "with integrator.solver = \"newton\"");
   const auto r = run_command(fmt::format("{} frob", SWARF_BINARY));
   expect_refused(r, "unknown command 'frob'");
 }

@@ -154,13 +154,19 @@ void check_memory(const CaseSettings& cs, bool force) {
   const bool by_cells = w.cells[0] > 0;
   for (int c = 0; c < 3; ++c)
     cells *= by_cells ? double(w.cells[c]) : std::floor(w.size[c] / (2.0 * std::sqrt(2.0) * w.radius)) + 1.0;
-  const double particles = 4.0 * cells, bytes = 1000.0 * particles;
+  // The peak resident memory of a bonded block, rounded up from the measurements in
+  // validation/bench/README.md ("Memory at a million particles"): the process itself, and per
+  // particle the explicit or fixed-point step's data, or the Newton solver's, which adds its
+  // vectors and tangents.
+  const bool newton = cs.integrator.solver == "newton" && cs.integrator.scheme != "verlet";
+  const double particles = 4.0 * cells, bytes = 60e6 + (newton ? 1700.0 : 1000.0) * particles;
   const double machine = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
   if (machine > 0 && bytes > machine)
     throw InputError(
-        fmt::format("{}: key 'workpiece.{}' makes about {:.3g} particles, which need about {:.3g} GB; "
+        fmt::format("{}: key 'workpiece.{}' makes about {:.3g} particles, which need about {:.3g} GB{}; "
                     "this machine has {:.3g} GB (give --force to run anyway)",
-                    cs.source, by_cells ? "cells" : "size", particles, bytes * 1e-9, machine * 1e-9));
+                    cs.source, by_cells ? "cells" : "size", particles, bytes * 1e-9,
+                    newton ? " with integrator.solver = \"newton\"" : "", machine * 1e-9));
 }
 
 }  // namespace
