@@ -109,7 +109,8 @@ void Rods::update_rows(std::size_t first_changed, std::size_t n_particles) {
     ++start[ends[r][1] + 1];
   }
   for (std::size_t p = 0; p < n_particles; ++p) start[p + 1] += start[p];
-  std::vector<Entry> fresh(start.back());
+  std::vector<Entry>& fresh = spare_entries;
+  fresh.resize(start.back());
   std::vector<std::int32_t> fill(n_particles);
 #pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n_particles; ++p) {

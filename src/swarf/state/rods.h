@@ -44,6 +44,8 @@ struct Rods {
   // Per-particle rod lists (compressed rows), in ascending rod order.
   std::vector<std::int32_t> row_start;  ///< size particles + 1
   std::vector<Entry> entries;
+  std::vector<Entry> spare_entries;  ///< update_rows' scratch (its last rows), kept so that a cut's many
+                                     ///< updates reuse its memory instead of faulting in fresh pages
 
   std::size_t size() const { return ends.size(); }
 
