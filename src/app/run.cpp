@@ -142,11 +142,9 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
   throw Interrupted(signal, fmt::format("interrupted by {} {}", name, where));
 }
 
-// The memory a generated workpiece needs, estimated before it is built: the lattice, the rods
-// and the step's arrays take about 1 kB per particle (validation/bench/README.md, "Memory at a
-// million particles");
-// a case beyond the machine's memory is refused with the key named, instead of a bare
-// std::bad_alloc after seconds of allocation.
+// The memory a generated workpiece needs, estimated before it is built; a case beyond the
+// machine's memory is refused with the key named, instead of a bare std::bad_alloc after
+// seconds of allocation.
 void check_memory(const CaseSettings& cs, bool force) {
   if (force || !cs.workpiece.enabled || !cs.workpiece.lattice_file.empty()) return;
   const auto& w = cs.workpiece;

@@ -2,7 +2,6 @@
 #include "swarf/state/rods.h"
 
 #include <algorithm>
-#include <string_view>
 
 namespace swarf {
 
@@ -76,18 +75,15 @@ std::size_t Rods::remove_broken_formed() {
   std::size_t first = tail;
   while (first < m && intact[first]) ++first;
   if (first == m) return m;
+  const std::vector<std::uint8_t> keep(intact.begin() + first, intact.end());  // (intact is compacted too)
   auto compact = [&](auto& v) {
     std::size_t out = first;
     for (std::size_t k = first; k < m; ++k)
-      if (intact[k]) v[out++] = v[k];
+      if (keep[k - first]) v[out++] = v[k];
     v.resize(out);
   };
-  // 'intact' decides what is kept, so it is compacted last.
   compact(ends);
-  for_each_field([&](const char* name, auto& v) {
-    if (std::string_view(name) != "intact") compact(v);
-  });
-  compact(intact);
+  for_each_field([&](const char*, auto& v) { compact(v); });
   return first;
 }
 
