@@ -152,18 +152,38 @@ TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
   auto b = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
                              " --steps 7 --threads 1 --repeats 1 --stages");
   ASSERT_EQ(b.exit_code, 0) << b.output;
-  // The row: | CHECKPOINT | scheme | particles | rods | steps | force evaluations | ...
-  const auto row = b.output.find("| CHECKPOINT | ");
-  ASSERT_NE(row, std::string::npos) << b.output;
-  std::vector<std::string> cells;
-  std::size_t at = row + 1;
-  for (int c = 0; c < 6; ++c) {
-    const auto bar = b.output.find('|', at);
-    cells.push_back(b.output.substr(at, bar - at));
-    at = bar + 1;
-  }
+  // The row: | CHECKPOINT | scheme | particles | rods | steps | force evaluations | Newton
+  // iterations | CG iterations | ...
+  auto row_cells = [](const std::string& out) {
+    std::vector<std::string> cells;
+    const auto row = out.find("| CHECKPOINT | ");
+    if (row == std::string::npos) return cells;
+    std::size_t at = row + 1;
+    for (int c = 0; c < 8; ++c) {
+      const auto bar = out.find('|', at);
+      cells.push_back(out.substr(at, bar - at));
+      at = bar + 1;
+    }
+    return cells;
+  };
+  const auto cells = row_cells(b.output);
+  ASSERT_EQ(cells.size(), 8u) << b.output;
   EXPECT_EQ(cells[4], " 7 ") << b.output;
   EXPECT_GE(std::stoll(cells[5]), 7) << b.output;  // (one evaluation per step at least)
+  EXPECT_EQ(cells[6], " - ") << b.output;          // (no Newton iterations with this scheme)
+  // The same state continued by the Newton solver: its iterations are counted from the
+  // stored state on (at least one per step, and one CG iteration per Newton iteration).
+  auto nb = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
+                              " --steps 3 --threads 1 --repeats 1 --set integrator.scheme='\"newmark\"'"
+                              " --set integrator.solver='\"newton\"'");
+  ASSERT_EQ(nb.exit_code, 0) << nb.output;
+  const auto ncells = row_cells(nb.output);
+  ASSERT_EQ(ncells.size(), 8u) << nb.output;
+  EXPECT_EQ(ncells[1], " newmark ") << nb.output;
+  const long long newton = std::stoll(ncells[6]), cg = std::stoll(ncells[7]);
+  EXPECT_GE(newton, 3) << nb.output;
+  EXPECT_GE(cg, newton) << nb.output;
+  EXPECT_LT(newton, 3 * 25) << nb.output;  // (at most max_iterations per try)
   auto bad = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "missing.h5") + " --steps 1");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("missing.h5"), std::string::npos) << bad.output;

@@ -47,9 +47,9 @@ CaseSettings scene_case(const std::string& path, const std::vector<std::string>&
 
 void run_bench(const BenchOptions& opt) {
   fmt::print(
-      "| scene | scheme | particles | rods | steps | force evaluations | threads | median s (min-max) | "
-      "ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
-  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "| scene | scheme | particles | rods | steps | force evaluations | Newton iterations | CG iterations | threads | "
+      "median s (min-max) | ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
+  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::fflush(stdout);
   std::vector<std::string> stage_rows;
   for (const auto& path : opt.cases) {
@@ -62,7 +62,8 @@ void run_bench(const BenchOptions& opt) {
       std::size_t broken = 0, np = 0, nr = 0;
       double ke = 0;
       bool implicit = false;
-      long long n = 0, evals = 0;
+      long long n = 0, evals = 0, solves = 0, cg = 0;
+      bool newton = false;
       std::size_t builds = 0;
       StageClock stages;
       for (int rep = 0; rep < std::max(1, opt.repeats); ++rep) {
@@ -70,13 +71,15 @@ void run_bench(const BenchOptions& opt) {
         Simulation sim(model, model.step);
         // From a checkpoint, the counters restart at the stored state: only this repeat's
         // steps, evaluations and list builds are counted.
-        long long steps0 = 0, evals0 = 0;
+        long long steps0 = 0, evals0 = 0, solves0 = 0, cg0 = 0;
         std::size_t builds0 = 0;
         if (is_checkpoint(path)) {
           RunRecord rec;
           read_checkpoint(path, sim, rec, {});
           steps0 = sim.steps();
           evals0 = sim.stats().force_evaluations;
+          solves0 = sim.newton_stats().solves;
+          cg0 = sim.newton_stats().krylov_iterations;
           builds0 = sim.contacts().list_builds();
         }
         sim.stage_clock().enable(opt.stages);
@@ -88,6 +91,9 @@ void run_bench(const BenchOptions& opt) {
           while (sim.time() < end * (1 - 1e-12)) sim.step(end - sim.time());
         n = sim.steps() - steps0;
         evals = sim.stats().force_evaluations - evals0;
+        solves = sim.newton_stats().solves - solves0;
+        cg = sim.newton_stats().krylov_iterations - cg0;
+        newton = model.step.solver == Solver::Newton && model.step.implicit();
         secs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         broken = sim.broken_rods();
         ke = sim.kinetic_energy();
@@ -99,8 +105,9 @@ void run_bench(const BenchOptions& opt) {
       }
       std::sort(secs.begin(), secs.end());
       const double med = secs[secs.size() / 2];
-      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n",
-                 scene, implicit ? "newmark" : "verlet", np, nr, n, evals, used, med, secs.front(), secs.back(),
+      const std::string iters = newton ? fmt::format("{} | {}", solves, cg) : std::string("- | -");
+      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n",
+                 scene, implicit ? "newmark" : "verlet", np, nr, n, evals, iters, used, med, secs.front(), secs.back(),
                  med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke);
       if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n), builds));
       std::fflush(stdout);
