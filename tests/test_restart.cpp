@@ -183,7 +183,7 @@ TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
   const long long newton = std::stoll(ncells[6]), cg = std::stoll(ncells[7]);
   EXPECT_GE(newton, 3) << nb.output;
   EXPECT_GE(cg, newton) << nb.output;
-  EXPECT_LT(newton, 3 * 25) << nb.output;  // (at most max_iterations per try)
+  EXPECT_LT(newton, 3 * 25) << nb.output;  // (a sanity bound: max_iterations = 25 per try, one try per step)
   auto bad = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "missing.h5") + " --steps 1");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("missing.h5"), std::string::npos) << bad.output;
