@@ -6,7 +6,16 @@
 Each folder may include its own headers and those of the layers below it; includes are spelled
 from their root ("swarf/...", "io/...", "lattice_gen/..."), so the first path component names
 the layer. An include of a project header spelled any other way (a bare "model.h", "../x.h")
-is an error too. Usage: check_layers.py REPOSITORY_ROOT; exit 1 with the offending lines.
+is an error too.
+
+Inside the engine (src/swarf/) the sub-folders are floors too, each including only its own
+folder and those below it (docs/architecture.md):
+
+    core < laws < state < geometry < neighbors < {contacts, forces} < measure < systems
+         < integrate < the engine's top files (simulation*, step_settings.h, step_listener.h, ...)
+
+Folders on one floor (contacts, forces) may not include each other. Usage: check_layers.py
+REPOSITORY_ROOT; exit 1 with the offending lines.
 """
 import pathlib
 import re
@@ -28,6 +37,10 @@ TOP = {"tests", "validation", "examples"}
 ROOTS = {"swarf": "src/swarf", "io": "src/io", "setup": "src/setup", "study": "src/study",
          "app": "src/app", "python": "src/python", "lattice_gen": "lattice_gen", "tool_paths": "tool_paths",
          "postprocess": "postprocess"}
+# The engine's floors: a file may include its own folder's headers and those of lower floors.
+# "" is the engine's top (src/swarf/*.h, *.cpp): the step, the World, the state archive.
+ENGINE_FLOOR = {"core": 0, "laws": 1, "state": 2, "geometry": 3, "neighbors": 4, "contacts": 5, "forces": 5,
+                "measure": 6, "systems": 7, "integrate": 8, "": 9}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SYSTEM = re.compile(r'^\s*#\s*include\s*<([^>]+)>')
 # Libraries the engine must not see (it uses Eigen, OpenMP, fmt and the standard library).
@@ -40,6 +53,28 @@ def layer_of(rel: pathlib.PurePosixPath):
         if s.startswith(root + "/"):
             return name
     return None
+
+
+def engine_folder(rel_in_engine: str):
+    """The engine sub-folder of a path below src/swarf/ ("" for the top), or None if unknown."""
+    parts = rel_in_engine.split("/")
+    folder = parts[0] if len(parts) > 1 else ""
+    return folder if folder in ENGINE_FLOOR else None
+
+
+def engine_error(rel: pathlib.PurePosixPath, target: str):
+    """Why an engine file may not include 'target' (spelled "swarf/..."), or None."""
+    own = engine_folder(rel.as_posix()[len("src/swarf/"):])
+    to = engine_folder(target[len("swarf/"):])
+    if own is None:
+        return f"{rel.parent.as_posix()}/ is not one of the engine's floors ({', '.join(k for k in ENGINE_FLOOR if k)})"
+    if to is None:
+        return f"\"{target}\" is not in one of the engine's floors"
+    if own == to or ENGINE_FLOOR[to] < ENGINE_FLOOR[own]:
+        return None
+    name = lambda f: f + "/" if f else "the engine's top"
+    return (f"engine {name(own)} may not include {name(to)} (\"{target}\"): the floors are "
+            "core < laws < state < geometry < neighbors < {contacts, forces} < measure < systems < integrate < top")
 
 
 def main(root: pathlib.Path) -> int:
@@ -73,6 +108,8 @@ def main(root: pathlib.Path) -> int:
             elif first != own and first not in BELOW[own]:
                 errors.append(f"{rel}:{n}: {own}/ may not include {first}/ (\"{target}\"): "
                               f"{own} may include only {', '.join(sorted(BELOW[own]) + [own])}")
+            elif own == "swarf" and first == "swarf" and (why := engine_error(rel, target)):
+                errors.append(f"{rel}:{n}: {why}")
     for e in errors:
         print(e)
     print(f"check_layers: {len(files)} files, {len(errors)} forbidden includes")

@@ -8,7 +8,7 @@
 #include "swarf/geometry/mass_properties.h"
 #include "swarf/geometry/shapes.h"
 #include "swarf/laws/hertz.h"
-#include "swarf/world.h"
+#include "swarf/state/world.h"
 
 namespace swarf::test {
 

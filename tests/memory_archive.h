@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "swarf/state_archive.h"
+#include "swarf/core/state_archive.h"
 
 namespace swarf::test {
 

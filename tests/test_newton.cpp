@@ -1,4 +1,4 @@
-// test_newton.cpp: the Newton-Krylov solve of the Newmark step (integrate/newton_newmark.cpp)
+// test_newton.cpp: the Newton-Krylov solve of the Newmark step (simulation_newton.cpp)
 // against the discrete Newmark recurrence, the fixed-point solver, and its own guarantees:
 // rejection without a trace, the same bits for any thread count, steps beyond the explicit
 // limit.
@@ -17,8 +17,8 @@
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/state_archive.h"
 #include "swarf/simulation.h"
-#include "swarf/state_archive.h"
 #include "test_helpers.h"
 
 namespace swarf {

@@ -142,7 +142,7 @@ StepSettings newmark(double dt) {
 TEST(FreeBody, FollowsItsSchemesRecurrenceAndKeepsMomentum) {
   // No contacts, no loads: the step must be the scheme's update of one rigid body:
   // x+ = x + h v (no force: the velocity bit for bit), and the quaternion Newmark update of
-  // integrate/rotation.h (beta 1/4 for Newmark, beta 0 for Verlet) with zero torque.
+  // laws/rotation.h (beta 1/4 for Newmark, beta 0 for Verlet) with zero torque.
   const Vec3 I(1e-3, 2e-3, 3.5e-3), v(0.3, -0.1, 0.2), w(2.0, 30.0, -1.0);  // near the middle axis: tumbles
   for (const bool implicit : {false, true}) {
     const double h = 1e-3;

@@ -8,7 +8,7 @@
 
 #include "setup/case_config.h"
 #include "setup/model.h"
-#include "swarf/integrate/rotation.h"
+#include "swarf/laws/rotation.h"
 #include "swarf/simulation.h"
 
 namespace swarf {

@@ -16,8 +16,8 @@
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
+#include "swarf/core/state_archive.h"
 #include "swarf/simulation.h"
-#include "swarf/state_archive.h"
 #include "swarf/version.h"
 
 namespace swarf {

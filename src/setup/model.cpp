@@ -15,6 +15,7 @@
 #include "swarf/core/errors.h"
 #include "swarf/geometry/mass_properties.h"
 #include "swarf/geometry/shapes.h"
+#include "swarf/laws/hertz.h"
 #include "swarf/neighbors/neighbor_pairs.h"
 #include "tool_paths/tool_geometry.h"
 

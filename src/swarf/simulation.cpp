@@ -40,16 +40,9 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   }
   block_viscous_.assign(block_count(m_.rods.size()), 0.0);
   block_changed_.assign(block_count(m_.rods.size()), 0);
-  const std::size_t ng = m_.groups.size();
-  group_u_old_.assign(ng, Vec3::Zero());
-  group_u_new_.assign(ng, Vec3::Zero());
-  reaction_.assign(ng, Vec3::Zero());
-  group_v_.assign(ng, Vec3::Zero());
-  group_mass_.assign(ng, 0.0);
-  for (std::size_t g = 0; g < ng; ++g)
-    for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
-  setup_bodies();
-  setup_flows();
+  groups_.setup(m_.groups, m_.particles);
+  bodies_.setup(m_, set_.solver == Solver::Newton);
+  FlowSystem::setup(m_);
   if (m_.contacts) {
     contact_force_.assign(m_.particles.size(), Vec3::Zero());
     contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
@@ -59,15 +52,27 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   rod_forces();
   contact_forces(dt_);
   gather();
-  init_body_accelerations();
-  body_power_old_ = body_load_power();
+  bodies_.init_accelerations(m_);
+  bodies_.init_power(m_);
   if (rotations_) set_rotations(true);
-  compute_reactions(reaction_);
+  groups_.init_reactions(m_.groups, m_.particles);
   broken_ = m_.rods.broken_count();
   if (contacts_.enabled()) {
     contacts_.mesh_forces(mesh_force_);
     contact_power_old_ = contact_power();
   }
+}
+
+void Simulation::apply_flows(double h) {
+  double out = 0.0;  // J
+  if (const auto remove = FlowSystem::outflow(m_, out); !remove.empty()) {
+    // (their rods' elastic energy leaves with them)
+    const double elastic_before = m_.rods.size() > 0 ? elastic_energy() : 0.0;
+    remove_particles(remove);
+    const double elastic_after = m_.rods.size() > 0 ? elastic_energy() : 0.0;
+    ledger_.flow_energy += out + (elastic_before - elastic_after);
+  }
+  if (const Particles add = FlowSystem::inflow(m_, h, ledger_); !add.position.empty()) append_particles(add);
 }
 
 double Simulation::contact_power(bool from_kick) const {
@@ -78,8 +83,8 @@ double Simulation::contact_power(bool from_kick) const {
     return contact_force_[i].dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
   });
   for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-    if (mesh_body_[k] >= 0) {  // (a body's: its force and torque, from the same evaluation)
-      const RigidBody& rb = m_.bodies[mesh_body_[k]];
+    if (const int b = bodies_.mesh_body(k); b >= 0) {  // (a body's: its force and torque, from the same evaluation)
+      const RigidBody& rb = m_.bodies[b];
       power += rb.contact_force.dot(rb.state.velocity) + rb.contact_torque.dot(rb.state.omega);
     } else {
       power += mesh_force_[k].dot(m_.meshes[k].velocity);
@@ -169,7 +174,8 @@ void Simulation::step_scheme(double max_dt) {
     restore_state();
     ++stats_.rejected;
     dt_ = h * g.reject_factor;
-    if (!(dt_ >= g.dt_min) && mesh_rejected_) throw_mesh_too_far(h);
+    if (!(dt_ >= g.dt_min) && mesh_rejected_)
+      bodies_.throw_mesh_too_far(m_, time_, h, stats_.accepted + 1, set_.max_step_displacement);
     if (!(dt_ >= g.dt_min))  // (a NaN step too: it is never below dt_min)
       throw SimulationError(fmt::format(
           "the Newmark step did not converge at t = {:.6g} s with dt = {:.4g} s, and the next try ({:.4g} s) "
@@ -182,8 +188,8 @@ void Simulation::step_scheme(double max_dt) {
 void Simulation::step_explicit() {
   const double h = dt_;
   clock_.start();
-  if (!prescribe(h)) throw_mesh_too_far(h);
-  if (!m_.bodies.empty() && !drift_bodies(h))
+  if (!prescribe(h)) bodies_.throw_mesh_too_far(m_, time_, h, stats_.accepted + 1, set_.max_step_displacement);
+  if (!m_.bodies.empty() && !bodies_.drift(m_, time_, h))
     throw SimulationError(fmt::format(
         "a rigid body moves more than integrator.max_step_displacement = {} radii of the smallest particle in "
         "step {} at t = {:.6g} s (dt = {:.4g} s): lower the step",
@@ -269,51 +275,13 @@ void Simulation::contact_forces(double h, bool final) {
 void Simulation::update_mesh_step_limit() {
   double rmin = HUGE_VAL;
   for (double r : m_.particles.radius) rmin = std::min(rmin, r);
-  mesh_step_limit_ = set_.max_step_displacement * rmin;
+  bodies_.set_step_limit(set_.max_step_displacement * rmin);
 }
 
 bool Simulation::prescribe(double h) {
-  auto& p = m_.particles;
-  const double t_new = time_ + h;
-  // A mesh may move in a step no further than a particle may (mesh_step_limit_): a tool that
-  // jumps past the block would cut nothing.
-  const double limit = mesh_step_limit_;
-  bool within = true;
-  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-    if (mesh_body_[k] >= 0) continue;  // (placed from its body's pose)
-    const Vec3 u_old = m_.mesh_motion[k].displacement_at(time_), u_new = m_.mesh_motion[k].displacement_at(t_new);
-    m_.meshes[k].offset = u_new;
-    m_.meshes[k].velocity = (u_new - u_old) / h;
-    if (!((u_new - u_old).norm() <= limit)) within = false;  // (no particles: the limit is inf)
-  }
-  for (std::size_t g = 0; g < m_.groups.size(); ++g) {
-    group_u_old_[g] = m_.groups[g].motion.displacement_at(time_);
-    group_u_new_[g] = m_.groups[g].motion.displacement_at(t_new);
-  }
-  for (std::size_t g = 0; g < m_.groups.size(); ++g) {
-    const Vec3 v = (group_u_new_[g] - group_u_old_[g]) / h;
-    const std::uint8_t mask = m_.groups[g].dofs;
-    for (auto i : m_.groups[g].members)
-      for (int c = 0; c < 3; ++c)
-        if (mask & (1u << c)) {
-          p.position[i][c] = p.initial_position[i][c] + group_u_new_[g][c];
-          p.velocity[i][c] = v[c];
-        }
-  }
+  const bool within = bodies_.prescribe_meshes(m_, time_, h);
+  groups_.prescribe(m_.groups, m_.particles, time_, h);
   return within;
-}
-
-void Simulation::throw_mesh_too_far(double h) const {
-  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-    if (mesh_body_[k] >= 0) continue;
-    const Vec3 du = m_.mesh_motion[k].displacement_at(time_ + h) - m_.mesh_motion[k].displacement_at(time_);
-    if (du.norm() <= mesh_step_limit_) continue;
-    throw SimulationError(fmt::format(
-        "mesh '{}' moves {:.4g} m in step {} at t = {:.6g} s (dt = {:.4g} s, speed {:.4g} m/s), more than "
-        "integrator.max_step_displacement = {} radii of the smallest particle: lower the step or the mesh's speed",
-        m_.meshes[k].name, du.norm(), stats_.accepted + 1, time_, h, du.norm() / h, set_.max_step_displacement));
-  }
-  throw SimulationError("a mesh moves too far in one step");
 }
 
 bool Simulation::kick_drift(double h) {
@@ -427,7 +395,7 @@ bool Simulation::place(double h) {
   }
   step_disp2_ = disp2;
   moved2_ = xb ? moved2 : -1.0;
-  const bool bodies_within = m_.bodies.empty() || place_bodies(h);
+  const bool bodies_within = m_.bodies.empty() || bodies_.place(m_, time_, h, g.beta, g.gamma);
   return bad == 0 && bodies_within;
 }
 
@@ -491,7 +459,7 @@ void Simulation::save_state() {
     f_n_[i] = p.force[i];
     if (rot) rot_n_[i] = RotState{p.orientation[i], p.omega[i], p.omega_dot[i]};
   }
-  if (!m_.bodies.empty()) body_n_ = m_.bodies;
+  if (!m_.bodies.empty()) bodies_.save(m_);
   if (set_.solver == Solver::Newton) {
     // The rods' trial fields too: a rejected Newton try then leaves the state hash as it was
     // (the fixed-point solver leaves the failed try's trial values, which no step reads).
@@ -509,7 +477,7 @@ void Simulation::restore_state() {
   p.velocity = v_n_;
   p.acceleration = a_n_;
   p.force = f_n_;
-  if (!m_.bodies.empty()) restore_bodies();
+  if (!m_.bodies.empty()) bodies_.restore(m_, time_);
   if (set_.solver == Solver::Newton) {
     auto& r = m_.rods;
     r.trial_shift = nk_.trial_shift;
@@ -550,12 +518,6 @@ double Simulation::kinetic_energy() const {
          (rot ? rotational_energy() : 0.0) + body_kinetic_energy();
 }
 
-double Simulation::body_kinetic_energy() const {
-  double e = 0.0;
-  for (const RigidBody& rb : m_.bodies) e += rb.kinetic_energy();
-  return e;
-}
-
 double Simulation::rotational_energy() const {
   if (!rotations_) return 0.0;
   const auto& p = m_.particles;
@@ -577,9 +539,7 @@ double Simulation::potential_energy() const {
   const auto& p = m_.particles;
   const Vec3 g = m_.gravity;
   if (g.squaredNorm() == 0.0) return 0.0;
-  double bodies = 0.0;
-  for (std::size_t b = 0; b < m_.bodies.size(); ++b)
-    bodies -= m_.bodies[b].mass * g.dot(m_.bodies[b].state.position - body_x0_[b]);
+  const double bodies = bodies_.potential_energy(m_);
   return deterministic_sum(p.size(),
                            [&](std::size_t i) { return -p.mass[i] * g.dot(p.position[i] - p.initial_position[i]); }) +
          bodies;

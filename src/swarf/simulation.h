@@ -3,7 +3,7 @@
 // Both schemes are Newmark's family, x+ = x + dt v + dt^2 ((1/2 - beta) a + beta a+),
 // v+ = v + dt ((1 - gamma) a + gamma a+), and share the stages:
 //   prescribe     group and mesh motions at t + dt (displacements and step velocities); rigid
-//                 bodies are placed with the particles (simulation_bodies.cpp)
+//                 bodies are placed with the particles (systems/body_system.cpp)
 //   rod_forces    every intact rod evaluated from its COMMITTED state: trial shift, trial
 //                 break flag, force coefficient
 //   contact_forces  Verlet lists updated if needed; every contact evaluated from its
@@ -22,7 +22,7 @@
 //   rejected: everything is restored from the saved state, bit for bit, and retried with a smaller step. The number of
 //   sweeps drives the next step size (paper section 3.4).
 // Or, with StepSettings::solver = Solver::Newton, by Newton-Krylov on the same step's residual (try_newton,
-// integrate/newton_newmark.cpp): the same prescribe, place, rod_forces and contact_forces stages, a CG solve with
+// simulation_newton.cpp): the same prescribe, place, rod_forces and contact_forces stages, a CG solve with
 // the rods' and contacts' tangent between evaluations, the same commit; converges beyond the explicit stable step.
 #pragma once
 
@@ -30,27 +30,21 @@
 #include <limits>
 #include <vector>
 
+#include "swarf/contacts/contacts.h"
 #include "swarf/core/stage_clock.h"
+#include "swarf/core/state_archive.h"
 #include "swarf/integrate/newton_newmark.h"
+#include "swarf/laws/rotation.h"
 #include "swarf/state/reindex.h"
-#include "swarf/state_archive.h"
+#include "swarf/state/world.h"
 #include "swarf/step_listener.h"
 #include "swarf/step_settings.h"
-#include "swarf/world.h"
+#include "swarf/systems/body_system.h"
+#include "swarf/systems/energy_ledger.h"
+#include "swarf/systems/flow_system.h"
+#include "swarf/systems/group_system.h"
 
 namespace swarf {
-
-/// Energy bookkeeping, J. external = kinetic + elastic + plastic + viscous + fracture (+ error).
-struct EnergyLedger {
-  double external_work = 0;    ///< work done by the prescribed motions
-  double plastic_work = 0;     ///< sum of sigma d(eps_p) A L0 over commits
-  double viscous_work = 0;     ///< dissipated by the rods' viscous part
-  double fracture_energy = 0;  ///< elastic energy lost with broken rods
-  double contact_work = 0;     ///< taken up by the contacts: -integral of the contact forces' power on
-                               ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
-  double flow_energy = 0;      ///< carried out by removed particles (kinetic, potential, their rods' elastic
-                               ///< energy) minus brought in by created ones (kinetic)
-};
 
 /// Counters of the step control.
 struct StepStats {
@@ -128,14 +122,14 @@ class Simulation {
   /// Force the particles exert on mesh m in the last evaluation of an accepted step, N.
   Vec3 mesh_force(std::size_t m) const { return mesh_force_[m]; }
   /// Kinetic energy of the rigid bodies, J (part of kinetic_energy()).
-  double body_kinetic_energy() const;
+  double body_kinetic_energy() const { return bodies_.kinetic_energy(m_); }
   const ContactSystem& contacts() const { return contacts_; }
   /// Per-stage wall time of the steps taken while enabled (swarf bench --stages).
   StageClock& stage_clock() { return clock_; }
   const StageClock& stage_clock() const { return clock_; }
   /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum
   /// of the internal forces on its particles).
-  Vec3 group_reaction(std::size_t g) const { return reaction_[g]; }
+  Vec3 group_reaction(std::size_t g) const { return groups_.reaction(g); }
 
   World& world() { return m_; }
   const World& world() const { return m_; }
@@ -152,7 +146,7 @@ class Simulation {
   void step_scheme(double max_dt);
   void step_explicit();
   bool try_newmark(double h);  // true if converged (state advanced, not yet committed)
-  // The Newton-Krylov solve of the same step (integrate/newton_newmark.cpp).
+  // The Newton-Krylov solve of the same step (simulation_newton.cpp).
   bool try_newton(double h);
   double newton_residual(double h);  // forces at the placed state, R = M a - F; returns |R| / force level
   void newton_tangent(double h);     // per-rod blocks of J and the particles' block-Jacobi inverses
@@ -181,19 +175,7 @@ class Simulation {
   void form_rods();
   void account(double h);
 
-  // Rigid bodies (simulation_bodies.cpp).
-  void setup_flows();                                        // checks the inflow and outflow regions
-  void apply_flows(double h);                                // outflows then inflows after a step of h
-  void setup_bodies();                                       // checks, the mesh -> body map, the meshes placed
-  void place_body_mesh(std::size_t b);                       // body b's mesh from its pose
-  bool advance_bodies(double h, double beta, double gamma);  // from body_n_ and the latest wrench; false if too far
-  bool place_bodies(double h);                               // Newmark placement
-  bool drift_bodies(double h);     // explicit: saves the start, then positions and orientations
-  void kick_bodies(double h);      // explicit: the velocities with the new wrench
-  double body_wrenches();          // the wrench of every body; Newmark: the sweep's change
-  void init_body_accelerations();  // accelerations consistent with the wrench (construction)
-  void restore_bodies();           // a rejected step
-  double body_load_power() const;  // power of the bodies' external loads, W
+  void apply_flows(double h);  // outflows then inflows after a step of h
 
   void update_free_to_rotate();
   void update_free_to_rotate(const std::vector<std::array<std::int32_t, 2>>& pairs);  // only these particles
@@ -205,15 +187,12 @@ class Simulation {
   void save_state();
   void restore_state();
   [[noreturn]] void throw_too_far(double h) const;
-  [[noreturn]] void throw_mesh_too_far(double h) const;
-  void compute_reactions(std::vector<Vec3>& out) const;
 
   World& m_;
   StepSettings set_;
   std::vector<StepListener*> listeners_;
-  double mesh_step_limit_ = HUGE_VAL;  // m: how far a mesh may move in a step (max_step_displacement x smallest radius)
-  void update_mesh_step_limit();       // after the particles change (construction, the door, a load)
-  bool mesh_rejected_ = false;         // the last Newmark try was rejected because a mesh moved too far
+  void update_mesh_step_limit();  // after the particles change (construction, the door, a load)
+  bool mesh_rejected_ = false;    // the last Newmark try was rejected because a mesh moved too far
   bool implicit_ = false;
   bool rotations_ = false;
   double time_ = 0;
@@ -226,18 +205,11 @@ class Simulation {
   std::vector<int> intact_count_;      // form_rods' scratch: a particle's intact rods, -1 = not counted yet
   EnergyLedger ledger_;
   StepStats stats_;
-  std::vector<double> block_viscous_;            // per rod block, W
-  std::vector<int> block_changed_;               // per rod block: a trial shift or break to commit
-  std::vector<Vec3> group_u_old_, group_u_new_;  // group displacements at t and t + dt
-  std::vector<Vec3> reaction_, reaction_old_;
-  std::vector<Vec3> group_v_;        // velocity of the prescribed components in the last step, m/s
-  std::vector<double> group_mass_;   // total mass of each group, kg
+  std::vector<double> block_viscous_;  // per rod block, W
+  std::vector<int> block_changed_;     // per rod block: a trial shift or break to commit
+  GroupSystem groups_;
+  BodySystem bodies_;
   std::vector<Vec3> mesh_force_;     // force on each mesh after the last accepted step, N
-  std::vector<int> mesh_body_;       // per mesh: the rigid body that moves it, or -1
-  std::vector<RigidBody> body_n_;    // the bodies at the start of the step
-  double body_time_ = 0;             // the time of the bodies' placement, s (their loads' anchors move)
-  std::vector<Vec3> body_x0_;        // the bodies' initial centres (potential energy), m
-  double body_power_old_ = 0;        // power of the bodies' loads at the start of the step, W
   double sweep_force_level2_ = 0;    // the particles' force level of the last sweep squared, N^2
   std::vector<Vec3> contact_force_;  // contact part of each particle's force, N
   double contact_power_old_ = 0;     // power of the contact forces at the start of the step, W
@@ -246,6 +218,8 @@ class Simulation {
   /// Power of the contact forces on the particles and the meshes, W; the particles' part
   /// from the fused gather and kick if 'from_kick'.
   double contact_power(bool from_kick = false) const;
+  /// The particles' part of the sweep's convergence measure, for the bodies' part.
+  SweepMeasure sweep_measure() const { return {implicit_, sweep_dt_, set_.beta, sweep_force_level2_, step_disp2_}; }
   // Start-of-step state for Newmark (predictor and rejection).
   std::vector<Vec3> x_n_, v_n_, a_n_, f_n_;
   std::vector<Vec3> a_guess_;  // accelerations a sweep placed with (integrator.relaxation < 1)

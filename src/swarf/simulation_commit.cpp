@@ -196,36 +196,12 @@ void Simulation::form_rods() {
   contacts_.add_pairs(p, std::move(exchanged));
 }
 
-void Simulation::compute_reactions(std::vector<Vec3>& out) const {
-  const auto& p = m_.particles;
-  out.assign(m_.groups.size(), Vec3::Zero());
-  for (std::size_t g = 0; g < m_.groups.size(); ++g)
-    for (auto i : m_.groups[g].members) out[g] -= p.force[i];
-}
-
 void Simulation::account(double h) {
-  if (!m_.bodies.empty()) {  // the bodies' external loads (gravity: potential_energy())
-    const double power = body_load_power();
-    ledger_.external_work += 0.5 * (body_power_old_ + power) * h;
-    body_power_old_ = power;
-  }
+  bodies_.account(m_, h, ledger_);
   double visc = 0.0;
   for (double v : block_viscous_) visc += v;
   ledger_.viscous_work += visc * h;
-  reaction_old_.swap(reaction_);
-  compute_reactions(reaction_);
-  for (std::size_t g = 0; g < m_.groups.size(); ++g) {
-    const Vec3 du = group_u_new_[g] - group_u_old_[g];
-    const Vec3 v = du / h;
-    for (int c = 0; c < 3; ++c) {
-      if (!(m_.groups[g].dofs & (1u << c))) continue;
-      // Work on the body through the reaction, plus the work that changes the prescribed
-      // particles' own kinetic energy (a grip that starts or reverses accelerates them).
-      ledger_.external_work += 0.5 * (reaction_old_[g][c] + reaction_[g][c]) * du[c];
-      ledger_.external_work += 0.5 * group_mass_[g] * (v[c] * v[c] - group_v_[g][c] * group_v_[g][c]);
-    }
-    group_v_[g] = v;
-  }
+  groups_.account(m_.groups, m_.particles, h, ledger_);
   // Moving meshes (tools) work on the particles: minus the force the particles exert on the
   // mesh times its displacement (trapezoid over the step).
   if (contacts_.enabled()) {
@@ -233,7 +209,7 @@ void Simulation::account(double h) {
     previous.swap(mesh_force_);
     contacts_.mesh_forces(mesh_force_);
     for (std::size_t k = 0; k < m_.meshes.size(); ++k)
-      if (mesh_body_[k] < 0)  // (a body's mesh is moved by the contacts, not by a prescription)
+      if (bodies_.mesh_body(k) < 0)  // (a body's mesh is moved by the contacts, not by a prescription)
         ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
     // What the contacts take up (stored + dissipated): minus the power of their forces,
     // trapezoid over the step.

@@ -16,9 +16,7 @@ void Simulation::resize_scratch() {
   const std::size_t n = m_.particles.size(), m = m_.rods.size();
   block_viscous_.resize(block_count(m), 0.0);
   block_changed_.resize(block_count(m), 0);
-  group_mass_.assign(m_.groups.size(), 0.0);
-  for (std::size_t g = 0; g < m_.groups.size(); ++g)
-    for (auto i : m_.groups[g].members) group_mass_[g] += m_.particles.mass[i];
+  groups_.resize(m_.groups, m_.particles);
   if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
   if (rotations_) update_free_to_rotate();
   broken_ = m_.rods.broken_count();
@@ -114,7 +112,7 @@ void Simulation::set_body_pose(std::size_t b, const Vec3& position, const Quat& 
                     name));
   rb.state.position = position;
   rb.state.orientation = q;
-  place_body_mesh(b);  // (the contact lists see the jump: they measure the meshes' moves from their build)
+  bodies_.place_mesh(m_, b);  // (the contact lists see the jump: they measure the meshes' moves from their build)
 }
 
 }  // namespace swarf

@@ -157,7 +157,8 @@ double Simulation::gather() {
   else
     change = m_.periodic.on() ? gather_impl<GatherMode::Measure, true>(h) : gather_impl<GatherMode::Measure, false>(h);
   if (m_.bodies.empty()) return change;
-  const double bodies = body_wrenches();  // (NaN-safe: a NaN change fails the isfinite test of the caller)
+  const double bodies = bodies_.wrenches(
+      m_, contacts_, sweep_measure());  // (NaN-safe: a NaN change fails the isfinite test of the caller)
   return std::isnan(bodies) ? bodies : std::max(change, bodies);
 }
 
@@ -167,8 +168,8 @@ void Simulation::gather_kick(double h) {
   else
     gather_impl<GatherMode::Kick, false>(h);
   if (m_.bodies.empty()) return;
-  body_wrenches();
-  kick_bodies(h);
+  bodies_.wrenches(m_, contacts_, sweep_measure());
+  bodies_.kick(m_, time_, h);
 }
 
 }  // namespace swarf

@@ -91,62 +91,9 @@ void Simulation::visit_state(StateArchive& ar) {
   r.for_each_field([&](const char* name, auto& v) { ar.array(std::string("rods/") + name, v, load ? any : m); });
   for (std::size_t g = 0; g < ng; ++g) ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
   if (load) check_loaded_world(ends);
-  std::vector<Vec3> offset, velocity;
-  for (const auto& mb : m_.meshes) {
-    offset.push_back(mb.offset);
-    velocity.push_back(mb.velocity);
-  }
-  ar.array("meshes/offset", offset, nm);
-  ar.array("meshes/velocity", velocity, nm);
-  if (load)
-    for (std::size_t k = 0; k < nm; ++k) {
-      m_.meshes[k].offset = offset[k];
-      m_.meshes[k].velocity = velocity[k];
-    }
-  if (const std::size_t nb = m_.bodies.size(); nb > 0) {
-    // The rigid bodies' state and last wrench (the next step's predictor reads it); their
-    // meshes are placed again from it after a load.
-    std::vector<Vec3> x(nb), v(nb), a(nb), w(nb), dw(nb), f(nb), t(nb), cf(nb), ct(nb);
-    std::vector<Quat> q(nb);
-    std::vector<double> angle(nb);
-    for (std::size_t b = 0; b < nb; ++b) {
-      const RigidBody& rb = m_.bodies[b];
-      x[b] = rb.state.position, v[b] = rb.state.velocity, a[b] = rb.state.acceleration;
-      q[b] = rb.state.orientation, w[b] = rb.state.omega, dw[b] = rb.state.omega_dot, angle[b] = rb.state.angle;
-      f[b] = rb.force, t[b] = rb.torque, cf[b] = rb.contact_force, ct[b] = rb.contact_torque;
-    }
-    ar.array("bodies/position", x, nb);
-    ar.array("bodies/velocity", v, nb);
-    ar.array("bodies/acceleration", a, nb);
-    ar.array("bodies/orientation", q, nb);
-    ar.array("bodies/omega", w, nb);
-    ar.array("bodies/omega_dot", dw, nb);
-    ar.array("bodies/angle", angle, nb);
-    ar.array("bodies/force", f, nb);
-    ar.array("bodies/torque", t, nb);
-    ar.array("bodies/contact_force", cf, nb);
-    ar.array("bodies/contact_torque", ct, nb);
-    ar.scalar("bodies/load_power_old", body_power_old_);
-    if (load)
-      for (std::size_t b = 0; b < nb; ++b) {
-        RigidBody& rb = m_.bodies[b];
-        // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
-        const bool finite_q = finite_bits(q[b][0]) && finite_bits(q[b][1]) && finite_bits(q[b][2]) &&
-                              finite_bits(q[b][3]);
-        if (!all_finite(x[b]) || !all_finite(v[b]) || !all_finite(w[b]) || !finite_q ||
-            !(std::abs(q[b].norm() - 1.0) < 1e-9))
-          throw InputError(fmt::format("state fields 'bodies/*': body {} has a non-finite pose or velocity", b));
-        rb.state = BodyState{x[b], v[b], a[b], q[b], w[b], dw[b], angle[b]};
-        rb.force = f[b], rb.torque = t[b], rb.contact_force = cf[b], rb.contact_torque = ct[b];
-        place_body_mesh(b);
-      }
-  }
+  bodies_.visit_state(ar, m_);
   const std::size_t n_now = p.size();
-  ar.array("groups/u_old", group_u_old_, ng);
-  ar.array("groups/u_new", group_u_new_, ng);
-  ar.array("groups/reaction", reaction_, ng);
-  ar.array("groups/reaction_old", reaction_old_, StateArchive::kAnySize);  // (empty before the first step)
-  ar.array("groups/velocity", group_v_, ng);
+  groups_.visit_state(ar, ng);
   ar.array("mesh_force", mesh_force_, StateArchive::kAnySize);
   ar.array("contact_force", contact_force_, contacts_.enabled() ? n_now : 0);
   ar.scalar("time", time_);
@@ -169,21 +116,7 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("stats/max_iterations", stats_.max_iterations);
   ar.scalar("stats/last_iterations", stats_.last_iterations);
   if (contacts_.enabled()) contacts_.visit_state(ar, p);
-  if (!m_.inflows.empty() || !m_.outflows.empty()) {  // (only then: older checkpoints and hashes stay as they were)
-    ar.scalar("ledger/flow_energy", ledger_.flow_energy);
-    for (std::size_t k = 0; k < m_.inflows.size(); ++k) {
-      Inflow& f = m_.inflows[k];
-      const std::string at = fmt::format("flows/inflow_{}/", k);
-      ar.scalar(at + "owed", f.owed);
-      ar.scalar(at + "draws", f.draws);
-      ar.scalar(at + "created", f.created);
-      ar.scalar(at + "missed", f.missed);
-      if (load && !(finite_bits(f.owed) && f.owed >= 0.0 && f.owed < 1.0))
-        throw InputError(fmt::format("state field '{}owed' = {}: it must lie in [0, 1)", at, nan_safe(f.owed)));
-    }
-    for (std::size_t k = 0; k < m_.outflows.size(); ++k)
-      ar.scalar(fmt::format("flows/outflow_{}/removed", k), m_.outflows[k].removed);
-  }
+  FlowSystem::visit_state(ar, m_, ledger_);
   if (load) {
     // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
     if (!(std::isfinite(time_) && time_ >= 0.0) || !(std::isfinite(dt_) && dt_ > 0.0) || !std::isfinite(last_dt_))

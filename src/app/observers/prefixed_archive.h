@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "swarf/state_archive.h"
+#include "swarf/core/state_archive.h"
 
 namespace swarf {
 

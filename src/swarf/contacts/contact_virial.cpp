@@ -2,11 +2,11 @@
 // ContactSystem::add_virial). Read at output times only; the triangle contacts' normals are
 // found again from the geometry, as the evaluation found them, rather than stored per step.
 #include "swarf/contacts/contacts.h"
-#include "swarf/measure/particle_fields.h"
+#include "swarf/core/sym_tensor.h"
 
 namespace swarf {
 
-void ContactSystem::add_virial(const Particles& p, std::vector<std::array<double, 6>>& w) const {
+void ContactSystem::add_virial(const Particles& p, std::vector<SymTensor>& w) const {
   if (!enabled_) return;
   for (std::size_t k = 0; k < pairs_.size() && k < pres_.size(); ++k) {
     const Vec3& f = pres_[k].force;  // on i; -f on j

@@ -23,8 +23,10 @@
 #include <vector>
 
 #include "swarf/core/periodic.h"
+#include "swarf/core/sym_tensor.h"
 #include "swarf/core/vec3.h"
 #include "swarf/geometry/overlap_area.h"
+#include "swarf/laws/contact_params.h"
 #include "swarf/laws/friction.h"
 #include "swarf/laws/hertz.h"
 #include "swarf/state/bodies.h"
@@ -35,17 +37,6 @@ namespace swarf {
 
 struct Rods;
 class StateArchive;
-
-/// Material and law parameters, derived once from [contact] and the meshes.
-struct ContactParams {
-  double youngs_modulus = 0, poisson_ratio = 0;  ///< particles, Pa and 1
-  double alpha = 0;                              ///< damping coefficient from the restitution (hertz.h), 1
-  double friction = 0;                           ///< mu, 1
-  FrictionLaw law = FrictionLaw::None;
-  double regularization_speed = 1e-3;  ///< m/s
-  double tangential_damping = 0;       ///< tangential dashpot as a multiple of the normal one, 1
-  double skin = 0;                     ///< Verlet skin, m
-};
 
 class ContactSystem {
  public:
@@ -147,7 +138,7 @@ class ContactSystem {
   /// x_c - x_i = R_i n (n from i to j, nearest image), sphere-triangle at -R_i n (n from the
   /// wall to the sphere). Divided by a volume it is the contacts' part of the particle stress
   /// (measure/particle_fields.h). 'w' has one entry per particle.
-  void add_virial(const Particles& p, std::vector<std::array<double, 6>>& w) const;
+  void add_virial(const Particles& p, std::vector<SymTensor>& w) const;
 
   /// Writes the trial histories back (after a converged step).
   void commit();

@@ -8,8 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "swarf/core/quat.h"
 #include "swarf/core/vec3.h"
-#include "swarf/integrate/rotation.h"
 #include "swarf/state/mesh.h"
 #include "swarf/state/rigid_body.h"
 

@@ -28,25 +28,13 @@
 #include <vector>
 
 #include "swarf/core/periodic.h"
+#include "swarf/core/sym_tensor.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
 
 namespace swarf {
 
 class ContactSystem;
-
-/// A symmetric tensor as xx, yy, zz, xy, yz, xz (ParaView's order for 6 components).
-using SymTensor = std::array<double, 6>;
-
-/// t += sym(a (x) b): a force's moment about the particle's centre, a its arm, b the force.
-inline void add_moment(SymTensor& t, const Vec3& a, const Vec3& b) {
-  t[0] += a[0] * b[0];
-  t[1] += a[1] * b[1];
-  t[2] += a[2] * b[2];
-  t[3] += 0.5 * (a[0] * b[1] + a[1] * b[0]);
-  t[4] += 0.5 * (a[1] * b[2] + a[2] * b[1]);
-  t[5] += 0.5 * (a[0] * b[2] + a[2] * b[0]);
-}
 
 struct ParticleFields {
   std::vector<SymTensor> stress;       ///< Pa, positive in tension

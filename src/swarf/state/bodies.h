@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "swarf/core/quat.h"
 #include "swarf/core/vec3.h"
-#include "swarf/integrate/rotation.h"
 #include "swarf/laws/parting_rule.h"
 #include "swarf/state/mesh.h"
 

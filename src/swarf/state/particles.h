@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "swarf/core/quat.h"
 #include "swarf/core/vec3.h"
-#include "swarf/integrate/rotation.h"
 
 namespace swarf {
 

@@ -6,7 +6,7 @@
 // mass, velocity and acceleration; orientation q from the body's principal frame to the
 // world, angular velocity and acceleration (world frame). The step integrates it with the
 // particles' schemes (velocity Verlet; Newmark with the quaternion update of
-// integrate/rotation.h inside the step's fixed point) and places the mesh from it
+// laws/rotation.h inside the step's fixed point) and places the mesh from it
 // (MeshBody::turn, offset) before each contact evaluation.
 //
 // Constraints, each optional: translation components held at their initial velocity
@@ -24,8 +24,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "swarf/core/quat.h"
 #include "swarf/core/vec3.h"
-#include "swarf/integrate/rotation.h"
 
 namespace swarf {
 

@@ -1,5 +1,5 @@
 // rotation.cpp: the rotational Newmark update with its inner fixed-point loop (see rotation.h).
-#include "swarf/integrate/rotation.h"
+#include "swarf/laws/rotation.h"
 
 #include <cmath>
 

@@ -1,5 +1,6 @@
-// simulation_flows.cpp: inflow and outflow regions after each accepted step (see
-// state/particle_flows.h and simulation.h).
+// flow_system.cpp: inflow and outflow regions after each accepted step (see flow_system.h).
+#include "swarf/systems/flow_system.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,7 +9,9 @@
 
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
-#include "swarf/simulation.h"
+#include "swarf/core/nan_safe.h"
+#include "swarf/core/state_archive.h"
+#include "swarf/state/particle_flows.h"
 
 namespace swarf {
 
@@ -20,7 +23,7 @@ bool good_box(const Vec3& lo, const Vec3& hi) {
 
 }  // namespace
 
-void Simulation::setup_flows() {
+void FlowSystem::setup(const World& m_) {
   for (std::size_t k = 0; k < m_.inflows.size(); ++k) {
     const Inflow& f = m_.inflows[k];
     const auto bad = [&](const std::string& why) { throw InputError(fmt::format("inflow {}: {}", k, why)); };
@@ -43,33 +46,34 @@ void Simulation::setup_flows() {
   }
 }
 
-void Simulation::apply_flows(double h) {
-  auto& p = m_.particles;
+std::vector<std::uint8_t> FlowSystem::outflow(World& m_, double& out) {
+  const auto& p = m_.particles;
   const Vec3 g = m_.gravity;
-  // Outflow: what leaves takes its kinetic and potential energy and its rods' elastic energy
-  // with it (a contact's stored energy is not tracked: it shows in the balance's error, so
-  // outflow regions belong where particles fly free).
-  if (!m_.outflows.empty()) {
-    std::vector<std::uint8_t> remove(p.size(), 0);
-    std::size_t count = 0;
-    double out = 0.0;  // J
-    for (std::size_t i = 0; i < p.size(); ++i)
-      for (Outflow& o : m_.outflows)
-        if (o.contains(p.position[i])) {
-          remove[i] = 1;
-          ++o.removed;
-          ++count;
-          out += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.inertia[i].dot(p.omega[i].cwiseAbs2()) -
-                 p.mass[i] * g.dot(p.position[i] - p.initial_position[i]);
-          break;
-        }
-    if (count > 0) {
-      const double elastic_before = m_.rods.size() > 0 ? elastic_energy() : 0.0;
-      remove_particles(remove);
-      const double elastic_after = m_.rods.size() > 0 ? elastic_energy() : 0.0;
-      ledger_.flow_energy += out + (elastic_before - elastic_after);
-    }
-  }
+  std::vector<std::uint8_t> remove;
+  out = 0.0;
+  if (m_.outflows.empty()) return remove;
+  // What leaves takes its kinetic and potential energy with it (and its rods' elastic energy:
+  // booked by the caller, which removes them); a contact's stored energy is not tracked: it
+  // shows in the balance's error, so outflow regions belong where particles fly free.
+  remove.assign(p.size(), 0);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (Outflow& o : m_.outflows)
+      if (o.contains(p.position[i])) {
+        remove[i] = 1;
+        ++o.removed;
+        ++count;
+        out += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.inertia[i].dot(p.omega[i].cwiseAbs2()) -
+               p.mass[i] * g.dot(p.position[i] - p.initial_position[i]);
+        break;
+      }
+  if (count == 0) remove.clear();
+  return remove;
+}
+
+Particles FlowSystem::inflow(World& m_, double h, EnergyLedger& ledger) {
+  const auto& p = m_.particles;
+  const Vec3 g = m_.gravity;
   // Inflow: each region owes rate x h particles more; each due particle draws up to
   // 'attempts' places (centre and radius) and takes the first that overlaps nothing beyond
   // the tolerance, the ones created this step included.
@@ -119,14 +123,32 @@ void Simulation::apply_flows(double h) {
         add.inv_mass[k] = 1.0 / m;
         add.inertia[k] = Vec3::Constant(0.4 * m * r * r);
         add.inv_inertia[k] = 1.0 / add.inertia[k][0];
-        ledger_.flow_energy -= 0.5 * m * f.velocity.squaredNorm();
+        ledger.flow_energy -= 0.5 * m * f.velocity.squaredNorm();
         ++f.created;
         placed = true;
       }
       if (!placed) ++f.missed;
     }
   }
-  if (!add.position.empty()) append_particles(add);
+  return add;
+}
+
+void FlowSystem::visit_state(StateArchive& ar, World& m_, EnergyLedger& ledger) {
+  if (m_.inflows.empty() && m_.outflows.empty()) return;  // (only then: older checkpoints and hashes stay as they were)
+  const bool load = ar.loading();
+  ar.scalar("ledger/flow_energy", ledger.flow_energy);
+  for (std::size_t k = 0; k < m_.inflows.size(); ++k) {
+    Inflow& f = m_.inflows[k];
+    const std::string at = fmt::format("flows/inflow_{}/", k);
+    ar.scalar(at + "owed", f.owed);
+    ar.scalar(at + "draws", f.draws);
+    ar.scalar(at + "created", f.created);
+    ar.scalar(at + "missed", f.missed);
+    if (load && !(finite_bits(f.owed) && f.owed >= 0.0 && f.owed < 1.0))
+      throw InputError(fmt::format("state field '{}owed' = {}: it must lie in [0, 1)", at, nan_safe(f.owed)));
+  }
+  for (std::size_t k = 0; k < m_.outflows.size(); ++k)
+    ar.scalar(fmt::format("flows/outflow_{}/removed", k), m_.outflows[k].removed);
 }
 
 }  // namespace swarf

@@ -1,6 +1,7 @@
-// simulation_bodies.cpp: the rigid bodies' part of the step (state/rigid_body.h): their
+// body_system.cpp: the rigid bodies' part of the step (state/rigid_body.h): their
 // wrench from the contacts, loads and gravity; their translation and rotation by the step's
-// scheme; their meshes placed from their poses (see simulation.h for the stages).
+// scheme; their meshes placed from their poses; the prescribed meshes' motions (see
+// body_system.h and simulation.h for the stages).
 //
 // Newmark: the bodies take part in the fixed point like particles. place() puts each body at
 // x+ = x + h v + h^2 ((1/2 - beta) a + beta a+), with a+ from the latest wrench, and turns
@@ -14,13 +15,17 @@
 // A hinge integrates the angle about its fixed axis as a scalar with the same scheme, with
 // I_axis and the torque's axial part, and builds q from the angle, so the axis holds exactly;
 // a pivoted hinge places the centre of mass on its circle about the axis from the same angle.
+#include "swarf/systems/body_system.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "swarf/contacts/contacts.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
-#include "swarf/simulation.h"
+#include "swarf/core/state_archive.h"
+#include "swarf/laws/rotation.h"
 
 namespace swarf {
 
@@ -41,8 +46,9 @@ Vec3 masked(Vec3 a, std::uint8_t fixed) {
 
 }  // namespace
 
-void Simulation::setup_bodies() {
+void BodySystem::setup(World& m_, bool newton) {
   mesh_body_.assign(m_.meshes.size(), -1);
+  body_x0_.clear();
   for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
     RigidBody& rb = m_.bodies[b];
     if (rb.mesh >= m_.meshes.size())
@@ -55,7 +61,7 @@ void Simulation::setup_bodies() {
           fmt::format("rigid body '{}': mass {} kg and principal inertia ({}, {}, {}) kg m^2 must be "
                       "positive and finite",
                       name, rb.mass, rb.inertia[0], rb.inertia[1], rb.inertia[2]));
-    if (set_.solver == Solver::Newton)
+    if (newton)
       throw InputError(
           fmt::format("rigid body '{}': the Newton solver's tangent treats meshes as prescribed; "
                       "use the fixed-point solver with rigid bodies",
@@ -82,11 +88,11 @@ void Simulation::setup_bodies() {
       s.velocity = s.omega.cross(r);
     }
     body_x0_.push_back(s.position);
-    place_body_mesh(b);
+    place_mesh(m_, b);
   }
 }
 
-void Simulation::place_body_mesh(std::size_t b) {
+void BodySystem::place_mesh(World& m_, std::size_t b) {
   const RigidBody& rb = m_.bodies[b];
   MeshBody& mb = m_.meshes[rb.mesh];
   mb.turns = true;
@@ -98,9 +104,9 @@ void Simulation::place_body_mesh(std::size_t b) {
   mb.place();
 }
 
-bool Simulation::advance_bodies(double h, double beta, double gamma) {
+bool BodySystem::advance(World& m_, double t, double h, double beta, double gamma) {
   bool within = true;
-  body_time_ = time_ + h;  // (the placement's time: the loads' anchors move with it)
+  body_time_ = t + h;  // (the placement's time: the loads' anchors move with it)
   for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
     RigidBody& rb = m_.bodies[b];
     const BodyState& n = body_n_[b].state;
@@ -138,32 +144,30 @@ bool Simulation::advance_bodies(double h, double beta, double gamma) {
     // How far a vertex moved in the step: the centre's move plus the chord of the turn.
     const double moved = (s.position - n.position).norm() +
                          2.0 * m_.meshes[rb.mesh].reach * vec(qmul(qconj(n.orientation), s.orientation)).norm();
-    if (!(moved <= mesh_step_limit_)) within = false;
-    place_body_mesh(b);
+    if (!(moved <= step_limit_)) within = false;
+    place_mesh(m_, b);
   }
   return within;
 }
 
-bool Simulation::place_bodies(double h) { return advance_bodies(h, set_.beta, set_.gamma); }
-
-bool Simulation::drift_bodies(double h) {
+bool BodySystem::drift(World& m_, double t, double h) {
   body_n_ = m_.bodies;
   // beta = 0: the positions and the orientation need only the start of the step; the
   // velocities are the drift's (the kick redoes them with the new wrench).
-  return advance_bodies(h, 0.0, 0.5);
+  return advance(m_, t, h, 0.0, 0.5);
 }
 
-void Simulation::kick_bodies(double h) {
+void BodySystem::kick(World& m_, double t, double h) {
   // The same beta = 0 update from the start of the step, now with the new wrench: the
   // positions and the orientation come out the same bits, the velocities get the kick.
-  advance_bodies(h, 0.0, 0.5);
+  advance(m_, t, h, 0.0, 0.5);
 }
 
-double Simulation::body_wrenches() {
+double BodySystem::wrenches(World& m_, const ContactSystem& contacts, const SweepMeasure& sweep) {
   if (m_.bodies.empty()) return 0.0;
   std::vector<Vec3> f, t;
-  if (contacts_.enabled()) contacts_.mesh_wrenches(f, t);
-  double dmax = 0.0, level = sweep_force_level2_, damax = 0.0, disp2 = 0.0;
+  if (contacts.enabled()) contacts.mesh_wrenches(f, t);
+  double dmax = 0.0, level = sweep.force_level2, damax = 0.0, disp2 = 0.0;
   for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
     RigidBody& rb = m_.bodies[b];
     const BodyState& s = rb.state;
@@ -186,15 +190,15 @@ double Simulation::body_wrenches() {
     rb.force = force;
     rb.torque = torque;
   }
-  if (!implicit_ || dmax == 0.0) return 0.0;
-  const double h = sweep_dt_;
+  if (!sweep.implicit || dmax == 0.0) return 0.0;
+  const double h = sweep.h;
   const double by_force = level > 0.0 ? std::sqrt(dmax / level) : HUGE_VAL;
-  const double moved2 = std::max(disp2, step_disp2_);
-  const double by_motion = moved2 > 0.0 ? set_.beta * h * h * std::sqrt(damax / moved2) : HUGE_VAL;
+  const double moved2 = std::max(disp2, sweep.step_disp2);
+  const double by_motion = moved2 > 0.0 ? sweep.beta * h * h * std::sqrt(damax / moved2) : HUGE_VAL;
   return std::min(by_force, by_motion);
 }
 
-void Simulation::init_body_accelerations() {
+void BodySystem::init_accelerations(World& m_) {
   for (RigidBody& rb : m_.bodies) {
     BodyState& s = rb.state;
     s.acceleration = masked(rb.force / rb.mass, rb.fixed);
@@ -211,13 +215,13 @@ void Simulation::init_body_accelerations() {
   }
 }
 
-void Simulation::restore_bodies() {
+void BodySystem::restore(World& m_, double t) {
   m_.bodies = body_n_;
-  body_time_ = time_;
-  for (std::size_t b = 0; b < m_.bodies.size(); ++b) place_body_mesh(b);
+  body_time_ = t;
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b) place_mesh(m_, b);
 }
 
-double Simulation::body_load_power() const {
+double BodySystem::load_power(const World& m_) const {
   double p = 0.0;
   for (const RigidBody& rb : m_.bodies) {
     const BodyState& s = rb.state;
@@ -225,6 +229,110 @@ double Simulation::body_load_power() const {
          (rb.load.torque - rb.load.torque_damping * s.omega).dot(s.omega);
   }
   return p;
+}
+
+bool BodySystem::prescribe_meshes(World& m_, double t, double h) {
+  const double t_new = t + h;
+  // A mesh may move in a step no further than a particle may (step_limit_): a tool that
+  // jumps past the block would cut nothing.
+  const double limit = step_limit_;
+  bool within = true;
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    if (mesh_body_[k] >= 0) continue;  // (placed from its body's pose)
+    const Vec3 u_old = m_.mesh_motion[k].displacement_at(t), u_new = m_.mesh_motion[k].displacement_at(t_new);
+    m_.meshes[k].offset = u_new;
+    m_.meshes[k].velocity = (u_new - u_old) / h;
+    if (!((u_new - u_old).norm() <= limit)) within = false;  // (no particles: the limit is inf)
+  }
+  return within;
+}
+
+void BodySystem::throw_mesh_too_far(const World& m_, double t, double h, std::int64_t step,
+                                    double max_step_displacement) const {
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    if (mesh_body_[k] >= 0) continue;
+    const Vec3 du = m_.mesh_motion[k].displacement_at(t + h) - m_.mesh_motion[k].displacement_at(t);
+    if (du.norm() <= step_limit_) continue;
+    throw SimulationError(fmt::format(
+        "mesh '{}' moves {:.4g} m in step {} at t = {:.6g} s (dt = {:.4g} s, speed {:.4g} m/s), more than "
+        "integrator.max_step_displacement = {} radii of the smallest particle: lower the step or the mesh's speed",
+        m_.meshes[k].name, du.norm(), step, t, h, du.norm() / h, max_step_displacement));
+  }
+  throw SimulationError("a mesh moves too far in one step");
+}
+
+void BodySystem::account(const World& m_, double h, EnergyLedger& ledger) {
+  if (m_.bodies.empty()) return;  // the bodies' external loads (gravity: potential_energy())
+  const double power = load_power(m_);
+  ledger.external_work += 0.5 * (power_old_ + power) * h;
+  power_old_ = power;
+}
+
+double BodySystem::kinetic_energy(const World& m_) const {
+  double e = 0.0;
+  for (const RigidBody& rb : m_.bodies) e += rb.kinetic_energy();
+  return e;
+}
+
+double BodySystem::potential_energy(const World& m_) const {
+  double bodies = 0.0;
+  for (std::size_t b = 0; b < m_.bodies.size(); ++b)
+    bodies -= m_.bodies[b].mass * m_.gravity.dot(m_.bodies[b].state.position - body_x0_[b]);
+  return bodies;
+}
+
+void BodySystem::visit_state(StateArchive& ar, World& m_) {
+  const bool load = ar.loading();
+  const std::size_t nm = m_.meshes.size();
+  std::vector<Vec3> offset, velocity;
+  for (const auto& mb : m_.meshes) {
+    offset.push_back(mb.offset);
+    velocity.push_back(mb.velocity);
+  }
+  ar.array("meshes/offset", offset, nm);
+  ar.array("meshes/velocity", velocity, nm);
+  if (load)
+    for (std::size_t k = 0; k < nm; ++k) {
+      m_.meshes[k].offset = offset[k];
+      m_.meshes[k].velocity = velocity[k];
+    }
+  const std::size_t nb = m_.bodies.size();
+  if (nb == 0) return;
+  // The rigid bodies' state and last wrench (the next step's predictor reads it); their
+  // meshes are placed again from it after a load.
+  std::vector<Vec3> x(nb), v(nb), a(nb), w(nb), dw(nb), f(nb), t(nb), cf(nb), ct(nb);
+  std::vector<Quat> q(nb);
+  std::vector<double> angle(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const RigidBody& rb = m_.bodies[b];
+    x[b] = rb.state.position, v[b] = rb.state.velocity, a[b] = rb.state.acceleration;
+    q[b] = rb.state.orientation, w[b] = rb.state.omega, dw[b] = rb.state.omega_dot, angle[b] = rb.state.angle;
+    f[b] = rb.force, t[b] = rb.torque, cf[b] = rb.contact_force, ct[b] = rb.contact_torque;
+  }
+  ar.array("bodies/position", x, nb);
+  ar.array("bodies/velocity", v, nb);
+  ar.array("bodies/acceleration", a, nb);
+  ar.array("bodies/orientation", q, nb);
+  ar.array("bodies/omega", w, nb);
+  ar.array("bodies/omega_dot", dw, nb);
+  ar.array("bodies/angle", angle, nb);
+  ar.array("bodies/force", f, nb);
+  ar.array("bodies/torque", t, nb);
+  ar.array("bodies/contact_force", cf, nb);
+  ar.array("bodies/contact_torque", ct, nb);
+  ar.scalar("bodies/load_power_old", power_old_);
+  if (!load) return;
+  for (std::size_t b = 0; b < nb; ++b) {
+    RigidBody& rb = m_.bodies[b];
+    // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
+    const bool finite_q = finite_bits(q[b][0]) && finite_bits(q[b][1]) && finite_bits(q[b][2]) && finite_bits(q[b][3]);
+    if (!all_finite(x[b]) || !all_finite(v[b]) || !all_finite(w[b]) || !finite_q ||
+        !(std::abs(q[b].norm() - 1.0) < 1e-9))
+      throw InputError(fmt::format("state fields 'bodies/*': body {} has a non-finite pose or velocity", b));
+    rb.state = BodyState{x[b], v[b], a[b], q[b], w[b], dw[b], angle[b]};
+    rb.force = f[b], rb.torque = t[b], rb.contact_force = cf[b], rb.contact_torque = ct[b];
+    place_mesh(m_, b);
+  }
 }
 
 }  // namespace swarf

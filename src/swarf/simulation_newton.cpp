@@ -1,4 +1,4 @@
-// newton_newmark.cpp: the Newton-Krylov solve of the implicit Newmark step (see
+// simulation_newton.cpp: the Newton-Krylov solve of the implicit Newmark step (see
 // newton_newmark.h and simulation.h).
 //
 // Choices, and why:

@@ -1,4 +1,4 @@
-// world.h: everything the step reads and writes, in SI units.
+// world.h (state/): everything the step reads and writes, in SI units.
 //
 // A World is plain data: particles (structure of arrays), rods (each stored once), groups of
 // particles with prescribed motions, rigid meshes with their motions or as rigid bodies, the periodic width,
@@ -8,9 +8,9 @@
 
 #include <vector>
 
-#include "swarf/contacts/contacts.h"
 #include "swarf/core/periodic.h"
 #include "swarf/core/vec3.h"
+#include "swarf/laws/contact_params.h"
 #include "swarf/state/bodies.h"
 #include "swarf/state/motion.h"
 #include "swarf/state/particle_flows.h"

@@ -1,0 +1,23 @@
+// energy_ledger.h: the step's energy bookkeeping, which every system adds its part to.
+//
+// external = kinetic + elastic + plastic + viscous + fracture + contact (+ flow) (+ error): the
+// balance a run checks (app/observers/energy_balance). Each system books what it does in the
+// account stage (rods: plastic, viscous, fracture; groups and meshes: external work; contacts:
+// what they take up; flows: what crosses the boundary), so a new system adds its own line.
+#pragma once
+
+namespace swarf {
+
+/// Energy bookkeeping, J. external = kinetic + elastic + plastic + viscous + fracture (+ error).
+struct EnergyLedger {
+  double external_work = 0;    ///< work done by the prescribed motions
+  double plastic_work = 0;     ///< sum of sigma d(eps_p) A L0 over commits
+  double viscous_work = 0;     ///< dissipated by the rods' viscous part
+  double fracture_energy = 0;  ///< elastic energy lost with broken rods
+  double contact_work = 0;     ///< taken up by the contacts: -integral of the contact forces' power on
+                               ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
+  double flow_energy = 0;      ///< carried out by removed particles (kinetic, potential, their rods' elastic
+                               ///< energy) minus brought in by created ones (kinetic)
+};
+
+}  // namespace swarf

@@ -1,0 +1,72 @@
+// group_system.cpp: prescribed motions of particle groups and their reactions (see group_system.h).
+#include "swarf/systems/group_system.h"
+
+#include "swarf/core/state_archive.h"
+
+namespace swarf {
+
+void GroupSystem::setup(const std::vector<Group>& groups, const Particles& p) {
+  const std::size_t ng = groups.size();
+  u_old_.assign(ng, Vec3::Zero());
+  u_new_.assign(ng, Vec3::Zero());
+  reaction_.assign(ng, Vec3::Zero());
+  v_.assign(ng, Vec3::Zero());
+  resize(groups, p);
+}
+
+void GroupSystem::resize(const std::vector<Group>& groups, const Particles& p) {
+  mass_.assign(groups.size(), 0.0);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (auto i : groups[g].members) mass_[g] += p.mass[i];
+}
+
+void GroupSystem::prescribe(const std::vector<Group>& groups, Particles& p, double t, double h) {
+  const double t_new = t + h;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    u_old_[g] = groups[g].motion.displacement_at(t);
+    u_new_[g] = groups[g].motion.displacement_at(t_new);
+  }
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const Vec3 v = (u_new_[g] - u_old_[g]) / h;
+    const std::uint8_t mask = groups[g].dofs;
+    for (auto i : groups[g].members)
+      for (int c = 0; c < 3; ++c)
+        if (mask & (1u << c)) {
+          p.position[i][c] = p.initial_position[i][c] + u_new_[g][c];
+          p.velocity[i][c] = v[c];
+        }
+  }
+}
+
+void GroupSystem::reactions(const std::vector<Group>& groups, const Particles& p, std::vector<Vec3>& out) {
+  out.assign(groups.size(), Vec3::Zero());
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (auto i : groups[g].members) out[g] -= p.force[i];
+}
+
+void GroupSystem::account(const std::vector<Group>& groups, const Particles& p, double h, EnergyLedger& ledger) {
+  reaction_old_.swap(reaction_);
+  reactions(groups, p, reaction_);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const Vec3 du = u_new_[g] - u_old_[g];
+    const Vec3 v = du / h;
+    for (int c = 0; c < 3; ++c) {
+      if (!(groups[g].dofs & (1u << c))) continue;
+      // Work on the body through the reaction, plus the work that changes the prescribed
+      // particles' own kinetic energy (a grip that starts or reverses accelerates them).
+      ledger.external_work += 0.5 * (reaction_old_[g][c] + reaction_[g][c]) * du[c];
+      ledger.external_work += 0.5 * mass_[g] * (v[c] * v[c] - v_[g][c] * v_[g][c]);
+    }
+    v_[g] = v;
+  }
+}
+
+void GroupSystem::visit_state(StateArchive& ar, std::size_t ng) {
+  ar.array("groups/u_old", u_old_, ng);
+  ar.array("groups/u_new", u_new_, ng);
+  ar.array("groups/reaction", reaction_, ng);
+  ar.array("groups/reaction_old", reaction_old_, StateArchive::kAnySize);  // (empty before the first step)
+  ar.array("groups/velocity", v_, ng);
+}
+
+}  // namespace swarf

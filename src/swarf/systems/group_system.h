@@ -1,0 +1,50 @@
+// group_system.h: groups of particles whose components follow prescribed motions (grips,
+// clamps, the workpiece's base), and the reactions they exert.
+//
+// Stages (simulation.h): prescribe puts the prescribed components at their displacement at
+// t + h with the step's velocity; account takes the reactions of the converged step (minus
+// the internal forces on the members) and books the work the motions did on the body, by the
+// trapezoid over the step, plus the change of the members' own kinetic energy (a grip that
+// starts or reverses accelerates them). The members' indices are the World's (Group::members):
+// the door (simulation_door.cpp) reindexes them; the system keeps only per-group values.
+#pragma once
+
+#include <vector>
+
+#include "swarf/core/vec3.h"
+#include "swarf/state/motion.h"
+#include "swarf/state/particles.h"
+#include "swarf/systems/energy_ledger.h"
+
+namespace swarf {
+
+class StateArchive;
+
+class GroupSystem {
+ public:
+  /// Sizes the per-group values and sums the groups' masses.
+  void setup(const std::vector<Group>& groups, const Particles& p);
+  /// The prescribed components at t + h (positions from the initial ones, velocities over the step).
+  void prescribe(const std::vector<Group>& groups, Particles& p, double t, double h);
+  /// The reactions of the forces now (the initial state's, at construction).
+  void init_reactions(const std::vector<Group>& groups, const Particles& p) { reactions(groups, p, reaction_); }
+  /// After an accepted step of size h: the reactions and the work of the motions.
+  void account(const std::vector<Group>& groups, const Particles& p, double h, EnergyLedger& ledger);
+  /// The members' masses again, after the door changed the particles.
+  void resize(const std::vector<Group>& groups, const Particles& p);
+  void visit_state(StateArchive& ar, std::size_t n_groups);
+
+  /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum of
+  /// the internal forces on its particles).
+  Vec3 reaction(std::size_t g) const { return reaction_[g]; }
+
+ private:
+  static void reactions(const std::vector<Group>& groups, const Particles& p, std::vector<Vec3>& out);
+
+  std::vector<Vec3> u_old_, u_new_;            // displacements at t and t + h, m
+  std::vector<Vec3> reaction_, reaction_old_;  // N
+  std::vector<Vec3> v_;                        // velocity of the prescribed components in the last step, m/s
+  std::vector<double> mass_;                   // total mass of each group, kg
+};
+
+}  // namespace swarf

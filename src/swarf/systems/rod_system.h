@@ -1,0 +1,76 @@
+// rod_system.h: the rods' part of the step: the kernel over the law, the meshes' parting lines,
+// the commit of plasticity and breakage, bond formation and neighbour exchange, and the rods'
+// energy.
+//
+// Stages (simulation.h):
+//   forces      every intact rod evaluated from its COMMITTED state (forces/rod_forces.h):
+//               trial shift, trial break flag, force coefficient; then the rods on a mesh's
+//               parting line break in this trial (laws/parting_rule.h)
+//   commit      the final evaluation's shifts and breaks written back, per fixed block of rods
+//               (plastic work and fracture energy summed in block order: the same bits for any
+//               thread count); the broken rods' pairs handed back to become contact candidates
+//   form        after the commit, with contacts: pressed unbonded lattice pairs form rods
+//               (laws/bond_formation.h), a particle at the coordination giving up its most
+//               stretched rod (neighbour exchange)
+//   account     the viscous power of the last evaluation over the step
+//   visit_state the counters (the rods' own arrays are the World's: Rods::for_each_field)
+// The rods themselves (Rods) are the World's; the system owns the per-block scratch, the
+// meshes' parting edges, bond formation's scratch and the counters of broken and formed rods.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "swarf/core/vec3.h"
+#include "swarf/state/world.h"
+#include "swarf/systems/energy_ledger.h"
+
+namespace swarf {
+
+class ContactSystem;
+class StateArchive;
+
+class RodSystem {
+ public:
+  using PairList = std::vector<std::array<std::int32_t, 2>>;
+
+  /// Marks the rods as the lattice's own if the World does not say, finds the meshes' parting
+  /// edges and sizes the per-block scratch.
+  void setup(World& w);
+  /// The per-block scratch and the counters again after the door changed the particles or rods.
+  void resize(const World& w);
+
+  /// Evaluates every intact rod (the trial state; nothing committed changes).
+  void forces(World& w);
+  /// Commits the final evaluation: shifts, breaks, plastic work and fracture energy. Returns
+  /// the pairs whose rods broke now (in rod order).
+  PairList commit(World& w, EnergyLedger& ledger);
+  /// Bond formation and neighbour exchange after the commit (with contacts only): new rods
+  /// between pressed lattice pairs; the contact lists lose the formed pairs and gain the
+  /// exchanged ones. Returns the pairs whose particles gained or lost a rod.
+  PairList form(World& w, ContactSystem& contacts, EnergyLedger& ledger);
+  /// The viscous work of the step's last evaluation over a step of h, s.
+  void account(double h, EnergyLedger& ledger) const;
+
+  /// Recoverable elastic energy of the intact rods, J.
+  double elastic_energy(const World& w) const;
+  /// The lattice's own rods that are broken (Rods::broken_count, kept up to date by the stages).
+  std::size_t broken() const { return broken_; }
+  /// Rods formed (or formed again) during the run by bond formation.
+  std::size_t formed() const { return formed_; }
+  void visit_state(StateArchive& ar);
+
+ private:
+  void part(World& w);  // rods on the meshes' parting lines break in this trial
+
+  std::size_t broken_ = 0;
+  std::size_t formed_ = 0;             // state: 'formed_rods'
+  std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m; empty: none
+  std::vector<std::uint8_t> lattice_;  // per particle: 1 if built with a rod (bond formation's candidates)
+  std::vector<int> intact_count_;      // form's scratch: a particle's intact rods, -1 = not counted yet
+  std::vector<double> block_viscous_;  // per rod block: viscous power of the last evaluation, W
+  std::vector<int> block_changed_;     // per rod block: a trial shift or break to commit
+};
+
+}  // namespace swarf
