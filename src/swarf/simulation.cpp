@@ -25,21 +25,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   if (set_.solver == Solver::Newton) {
     if (!implicit_) throw InputError("the Newton solver solves the implicit Newmark step: it needs scheme Newmark");
   }
-  if (m_.rods.formed.size() != m_.rods.size()) m_.rods.formed.assign(m_.rods.size(), 0);
-  // Parting lines: each mesh's lowest reference vertex (the largest x among equals); none
-  // without a parting line, so that the rod stage skips them.
-  if (std::any_of(m_.meshes.begin(), m_.meshes.end(), [](const MeshBody& mb) { return mb.parting.enabled(); }))
-    mesh_edge_.assign(m_.meshes.size(), Vec3::Zero());
-  for (std::size_t k = 0; k < mesh_edge_.size(); ++k) {
-    const auto& v = m_.meshes[k].mesh.vertices;
-    if (v.empty()) continue;
-    Vec3 low = v[0];
-    for (const Vec3& p : v)
-      if (p[2] < low[2] || (p[2] == low[2] && p[0] > low[0])) low = p;
-    mesh_edge_[k] = low;
-  }
-  block_viscous_.assign(block_count(m_.rods.size()), 0.0);
-  block_changed_.assign(block_count(m_.rods.size()), 0);
+  rods_.setup(m_);
   groups_.setup(m_.groups, m_.particles);
   bodies_.setup(m_, set_.solver == Solver::Newton);
   FlowSystem::setup(m_);
@@ -56,7 +42,6 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   bodies_.init_power(m_);
   if (rotations_) set_rotations(true);
   groups_.init_reactions(m_.groups, m_.particles);
-  broken_ = m_.rods.broken_count();
   if (contacts_.enabled()) {
     contacts_.mesh_forces(mesh_force_);
     contact_power_old_ = contact_power();
@@ -401,43 +386,45 @@ bool Simulation::place(double h) {
 
 void Simulation::rod_forces() {
   ++stats_.force_evaluations;
-  auto& r = m_.rods;
-  const auto& p = m_.particles;
-  if (r.size() == 0) return;  // (no parallel region for nothing: each costs microseconds)
-  RodKernelView view;
-  view.rods = r.size();
-  view.ends = r.ends.data();
-  view.rest_length = r.rest_length.data();
-  view.inv_rest_length = r.inv_rest_length.data();
-  view.shift = r.shift.data();
-  view.intact = r.intact.data();
-  view.x = p.position.data();
-  view.v = p.velocity.data();
-  view.trial_shift = r.trial_shift.data();
-  view.trial_broken = r.trial_broken.data();
-  view.stress = r.stress.data();
-  view.coef = r.force_coef.data();
-  view.block_viscous = block_viscous_.data();
-  view.block_changed = block_changed_.data();
-  evaluate_rods(r.law, r.area, view, m_.periodic);
-  if (!mesh_edge_.empty()) part_rods();
+  rods_.forces(m_);
 }
 
-void Simulation::part_rods() {
-  auto& r = m_.rods;
-  const auto& x = m_.particles.position;
-  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
-    const PartingRule& rule = m_.meshes[k].parting;
-    if (!rule.enabled()) continue;
-    const Vec3 edge = mesh_edge_[k] + m_.meshes[k].offset;  // (where the prescribe stage put the mesh)
-    for (std::size_t q = 0; q < r.size(); ++q) {
-      // (x and z only: a rod across the periodic width along y needs no image)
-      if (!r.intact[q] || r.trial_broken[q] || !parts(rule, x[r.ends[q][0]], x[r.ends[q][1]], edge)) continue;
-      r.trial_broken[q] = 1;
-      r.force_coef[q] = 0.0;
-      block_changed_[q / kBlock] = 1;
-    }
+void Simulation::commit() {
+  const RodSystem::PairList broke = rods_.commit(m_, ledger_);
+  const bool contacts = contacts_.enabled();
+  if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
+  // The broken rods' pairs join the contact lists as they are: a full rebuild for each break
+  // is far dearer (validation/bench/README.md).
+  if (contacts && !broke.empty()) contacts_.add_pairs(m_.particles, broke);
+  if (rotations_ && !broke.empty()) update_free_to_rotate(broke);
+  if (contacts && m_.rods.formation.enabled()) {
+    const RodSystem::PairList touched = rods_.form(m_, contacts_, ledger_);
+    if (rotations_ && !touched.empty()) update_free_to_rotate(touched);
   }
+}
+
+void Simulation::account(double h) {
+  bodies_.account(m_, h, ledger_);
+  rods_.account(h, ledger_);
+  groups_.account(m_.groups, m_.particles, h, ledger_);
+  // Moving meshes (tools) work on the particles: minus the force the particles exert on the
+  // mesh times its displacement (trapezoid over the step).
+  if (contacts_.enabled()) {
+    std::vector<Vec3> previous;
+    previous.swap(mesh_force_);
+    contacts_.mesh_forces(mesh_force_);
+    for (std::size_t k = 0; k < m_.meshes.size(); ++k)
+      if (bodies_.mesh_body(k) < 0)  // (a body's mesh is moved by the contacts, not by a prescription)
+        ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
+    // What the contacts take up (stored + dissipated): minus the power of their forces,
+    // trapezoid over the step.
+    const double power = contact_power(!implicit_);
+    ledger_.contact_work -= 0.5 * (contact_power_old_ + power) * h;
+    contact_power_old_ = power;
+  }
+  time_ += h;
+  last_dt_ = h;
+  ++stats_.accepted;
 }
 
 void Simulation::save_state() {
@@ -527,13 +514,7 @@ double Simulation::rotational_energy() const {
   });
 }
 
-double Simulation::elastic_energy() const {
-  const auto& r = m_.rods;
-  const double A = r.area;
-  return deterministic_sum(r.size(), [&](std::size_t k) {
-    return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
-  });
-}
+double Simulation::elastic_energy() const { return rods_.elastic_energy(m_); }
 
 double Simulation::potential_energy() const {
   const auto& p = m_.particles;

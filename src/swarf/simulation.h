@@ -43,6 +43,7 @@
 #include "swarf/systems/energy_ledger.h"
 #include "swarf/systems/flow_system.h"
 #include "swarf/systems/group_system.h"
+#include "swarf/systems/rod_system.h"
 
 namespace swarf {
 
@@ -101,9 +102,9 @@ class Simulation {
   /// Counters of the Newton solver (zero with the fixed-point one).
   const NewtonStats& newton_stats() const { return newton_stats_; }
   const EnergyLedger& ledger() const { return ledger_; }
-  std::size_t broken_rods() const { return broken_; }
+  std::size_t broken_rods() const { return rods_.broken(); }
   /// Rods formed (or formed again) during the run by bond formation (laws/bond_formation.h).
-  std::size_t formed_rods() const { return formed_; }
+  std::size_t formed_rods() const { return rods_.formed(); }
 
   /// Rotations are integrated only when on (set by a torque source, or by hand in tests).
   bool rotations() const { return rotations_; }
@@ -170,9 +171,7 @@ class Simulation {
   void commit();
   /// After the rod kernel: rods on the meshes' parting lines (laws/parting_rule.h) break in
   /// this trial (force zero, broken at commit like a rod that failed by its law).
-  void part_rods();
   /// Commit, last part: rods between pressed unbonded lattice particles (bond_formation.h).
-  void form_rods();
   void account(double h);
 
   void apply_flows(double h);  // outflows then inflows after a step of h
@@ -198,15 +197,9 @@ class Simulation {
   double time_ = 0;
   double dt_ = 0;
   double last_dt_ = 0;
-  std::size_t broken_ = 0;
-  std::size_t formed_ = 0;             // rods formed by bond formation (state: 'formed_rods')
-  std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m
-  std::vector<std::uint8_t> lattice_;  // per particle: 1 if built with a rod (bond formation's candidates)
-  std::vector<int> intact_count_;      // form_rods' scratch: a particle's intact rods, -1 = not counted yet
   EnergyLedger ledger_;
   StepStats stats_;
-  std::vector<double> block_viscous_;  // per rod block, W
-  std::vector<int> block_changed_;     // per rod block: a trial shift or break to commit
+  RodSystem rods_;
   GroupSystem groups_;
   BodySystem bodies_;
   std::vector<Vec3> mesh_force_;     // force on each mesh after the last accepted step, N

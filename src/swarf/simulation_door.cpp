@@ -13,14 +13,11 @@
 namespace swarf {
 
 void Simulation::resize_scratch() {
-  const std::size_t n = m_.particles.size(), m = m_.rods.size();
-  block_viscous_.resize(block_count(m), 0.0);
-  block_changed_.resize(block_count(m), 0);
+  const std::size_t n = m_.particles.size();
+  rods_.resize(m_);
   groups_.resize(m_.groups, m_.particles);
   if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
   if (rotations_) update_free_to_rotate();
-  broken_ = m_.rods.broken_count();
-  lattice_.clear();  // (made again from the rods when bond formation next needs it)
   moved2_ = -1.0;
   update_mesh_step_limit();
 }

@@ -99,8 +99,7 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("time", time_);
   ar.scalar("dt", dt_);
   ar.scalar("last_dt", last_dt_);
-  ar.scalar("broken_rods", broken_);
-  ar.scalar("formed_rods", formed_);
+  rods_.visit_state(ar);
   ar.scalar("rotations", rotations_);
   ar.scalar("rebuild_lists", rebuild_lists_);
   ar.scalar("contact_power_old", contact_power_old_);

@@ -1,25 +1,115 @@
-// simulation_commit.cpp: the commit stage (plastic shifts and breakage of the final
-// evaluation written back, broken rods' pairs handed to the contact lists) and the account
-// stage (energy ledger, reactions, time and counters); see simulation.h.
+// rod_system.cpp: the rods' stages (see rod_system.h): the kernel and the parting lines, the
+// commit of plasticity and breakage, bond formation and neighbour exchange, the energy.
+#include "swarf/systems/rod_system.h"
+
 #include <algorithm>
 #include <cmath>
 
+#include "swarf/contacts/contacts.h"
 #include "swarf/core/parallel.h"
-#include "swarf/simulation.h"
+#include "swarf/core/state_archive.h"
+#include "swarf/forces/rod_forces.h"
 
 namespace swarf {
 
-void Simulation::commit() {
+void RodSystem::setup(World& m_) {
+  if (m_.rods.formed.size() != m_.rods.size()) m_.rods.formed.assign(m_.rods.size(), 0);
+  broken_ = m_.rods.broken_count();
+  // Parting lines: each mesh's lowest reference vertex (the largest x among equals); none
+  // without a parting line, so that the rod stage skips them.
+  mesh_edge_.clear();
+  if (std::any_of(m_.meshes.begin(), m_.meshes.end(), [](const MeshBody& mb) { return mb.parting.enabled(); }))
+    mesh_edge_.assign(m_.meshes.size(), Vec3::Zero());
+  for (std::size_t k = 0; k < mesh_edge_.size(); ++k) {
+    const auto& v = m_.meshes[k].mesh.vertices;
+    if (v.empty()) continue;
+    Vec3 low = v[0];
+    for (const Vec3& p : v)
+      if (p[2] < low[2] || (p[2] == low[2] && p[0] > low[0])) low = p;
+    mesh_edge_[k] = low;
+  }
+  block_viscous_.assign(block_count(m_.rods.size()), 0.0);
+  block_changed_.assign(block_count(m_.rods.size()), 0);
+}
+
+void RodSystem::resize(const World& m_) {
+  const std::size_t m = m_.rods.size();
+  block_viscous_.resize(block_count(m), 0.0);
+  block_changed_.resize(block_count(m), 0);
+  broken_ = m_.rods.broken_count();
+  lattice_.clear();  // (made again from the rods when bond formation next needs it)
+}
+
+void RodSystem::forces(World& m_) {
+  auto& r = m_.rods;
+  const auto& p = m_.particles;
+  if (r.size() == 0) return;  // (no parallel region for nothing: each costs microseconds)
+  RodKernelView view;
+  view.rods = r.size();
+  view.ends = r.ends.data();
+  view.rest_length = r.rest_length.data();
+  view.inv_rest_length = r.inv_rest_length.data();
+  view.shift = r.shift.data();
+  view.intact = r.intact.data();
+  view.x = p.position.data();
+  view.v = p.velocity.data();
+  view.trial_shift = r.trial_shift.data();
+  view.trial_broken = r.trial_broken.data();
+  view.stress = r.stress.data();
+  view.coef = r.force_coef.data();
+  view.block_viscous = block_viscous_.data();
+  view.block_changed = block_changed_.data();
+  evaluate_rods(r.law, r.area, view, m_.periodic);
+  if (!mesh_edge_.empty()) part(m_);
+}
+
+void RodSystem::part(World& m_) {
+  auto& r = m_.rods;
+  const auto& x = m_.particles.position;
+  for (std::size_t k = 0; k < m_.meshes.size(); ++k) {
+    const PartingRule& rule = m_.meshes[k].parting;
+    if (!rule.enabled()) continue;
+    const Vec3 edge = mesh_edge_[k] + m_.meshes[k].offset;  // (where the prescribe stage put the mesh)
+    for (std::size_t q = 0; q < r.size(); ++q) {
+      // (x and z only: a rod across the periodic width along y needs no image)
+      if (!r.intact[q] || r.trial_broken[q] || !parts(rule, x[r.ends[q][0]], x[r.ends[q][1]], edge)) continue;
+      r.trial_broken[q] = 1;
+      r.force_coef[q] = 0.0;
+      block_changed_[q / kBlock] = 1;
+    }
+  }
+}
+
+void RodSystem::account(double h, EnergyLedger& ledger) const {
+  double visc = 0.0;
+  for (double v : block_viscous_) visc += v;
+  ledger.viscous_work += visc * h;
+}
+
+double RodSystem::elastic_energy(const World& m_) const {
+  const auto& r = m_.rods;
+  const double A = r.area;
+  return deterministic_sum(r.size(), [&](std::size_t k) {
+    return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
+  });
+}
+
+void RodSystem::visit_state(StateArchive& ar) {
+  ar.scalar("broken_rods", broken_);
+  ar.scalar("formed_rods", formed_);
+}
+
+RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
   auto& r = m_.rods;
   const double A = r.area;
   const std::size_t m = r.size();
   // Plastic work and fracture energy per rod block, summed in block order.
   const std::size_t nb = block_count(m);
   std::vector<double> plastic(nb, 0.0), fracture(nb, 0.0);
-  std::vector<std::size_t> broke(nb, 0), broke_original(nb, 0);
-  // The rods that break now, per block: their pairs become contact candidates.
-  const bool contacts = contacts_.enabled();
-  std::vector<std::vector<std::array<std::int32_t, 2>>> broken_pairs(contacts ? nb : 0);
+  std::vector<std::size_t> broke_original(nb, 0);
+  // The rods that break now, per block: their pairs become contact candidates (and their
+  // particles may become free to rotate).
+  std::vector<PairList> broken_pairs(nb);
   // Raw pointers and a local law: through 'r' the compiler reloads every array's base after each
   // uint8_t store (which may alias anything), and this loop visits every rod of a changed block.
   const RodLaw law = r.law;
@@ -48,38 +138,24 @@ void Simulation::commit() {
         intact[k] = 0;
         fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
         stress[k] = 0.0;
-        ++broke[b];
         broke_original[b] += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
-        if (contacts) broken_pairs[b].push_back(ends[k]);
+        broken_pairs[b].push_back(ends[k]);
       }
     }
     plastic[b] = plastic_b;
     fracture[b] = fracture_b;
   }
-  bool any_broke = false;
+  PairList pairs;
   for (std::size_t b = 0; b < nb; ++b) {
-    ledger_.plastic_work += plastic[b];
-    ledger_.fracture_energy += fracture[b];
+    ledger.plastic_work += plastic[b];
+    ledger.fracture_energy += fracture[b];
     broken_ += broke_original[b];
-    any_broke = any_broke || broke[b] > 0;
+    pairs.insert(pairs.end(), broken_pairs[b].begin(), broken_pairs[b].end());
   }
-  if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
-  if (contacts && any_broke) {
-    // Added to the lists as they are: a full rebuild for each break is far dearer
-    // (validation/bench/README.md).
-    std::vector<std::array<std::int32_t, 2>> fresh;
-    for (const auto& v : broken_pairs) fresh.insert(fresh.end(), v.begin(), v.end());
-    contacts_.add_pairs(m_.particles, std::move(fresh));
-  }
-  if (any_broke && rotations_) {
-    std::vector<std::array<std::int32_t, 2>> pairs;
-    for (const auto& v : broken_pairs) pairs.insert(pairs.end(), v.begin(), v.end());
-    update_free_to_rotate(pairs);
-  }
-  if (contacts && r.formation.enabled()) form_rods();
+  return pairs;
 }
 
-void Simulation::form_rods() {
+RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLedger& ledger) {
   auto& r = m_.rods;
   const auto& p = m_.particles;
   if (lattice_.size() != p.size()) {
@@ -88,9 +164,9 @@ void Simulation::form_rods() {
       if (!r.formed[k]) lattice_[r.ends[k][0]] = lattice_[r.ends[k][1]] = 1;
   }
   // Candidates are unbonded by construction: bonded pairs are not in the contact lists.
-  const auto pressed = contacts_.pressed_pairs(
+  const auto pressed = contacts.pressed_pairs(
       p, r.formation.overlap, [&](std::int32_t i, std::int32_t j) { return lattice_[i] && lattice_[j]; });
-  if (pressed.empty()) return;
+  if (pressed.empty()) return {};
   // Intact rods per particle, so that none gets more than the lattice's coordination.
   auto intact_rods = [&](std::int32_t i) {
     int c = 0;
@@ -143,7 +219,7 @@ void Simulation::form_rods() {
       }
       const std::int32_t k = give[s];
       r.intact[k] = 0;
-      ledger_.fracture_energy += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
+      ledger.fracture_energy += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
       r.stress[k] = r.force_coef[k] = 0.0;
       broken_ += !r.formed[k];
       const std::int32_t other = r.ends[k][0] == e[s] ? r.ends[k][1] : r.ends[k][0];
@@ -153,7 +229,7 @@ void Simulation::form_rods() {
     formed.push_back(e);
   }
   for (auto i : counted) count[i] = -1;
-  if (formed.empty()) return;
+  if (formed.empty()) return {};
   std::size_t revived = 0;
   const std::size_t m_before = r.size();
   for (const auto& e : formed) {
@@ -187,39 +263,12 @@ void Simulation::form_rods() {
     block_viscous_.resize(block_count(r.size()), 0.0);
     block_changed_.resize(block_count(r.size()), 0);
   }
-  if (rotations_) {  // (only the pairs' particles gained or lost a rod)
-    std::vector<std::array<std::int32_t, 2>> touched = formed;
-    touched.insert(touched.end(), exchanged.begin(), exchanged.end());
-    update_free_to_rotate(touched);
-  }
-  contacts_.remove_pairs(p, formed);
-  contacts_.add_pairs(p, std::move(exchanged));
-}
-
-void Simulation::account(double h) {
-  bodies_.account(m_, h, ledger_);
-  double visc = 0.0;
-  for (double v : block_viscous_) visc += v;
-  ledger_.viscous_work += visc * h;
-  groups_.account(m_.groups, m_.particles, h, ledger_);
-  // Moving meshes (tools) work on the particles: minus the force the particles exert on the
-  // mesh times its displacement (trapezoid over the step).
-  if (contacts_.enabled()) {
-    std::vector<Vec3> previous;
-    previous.swap(mesh_force_);
-    contacts_.mesh_forces(mesh_force_);
-    for (std::size_t k = 0; k < m_.meshes.size(); ++k)
-      if (bodies_.mesh_body(k) < 0)  // (a body's mesh is moved by the contacts, not by a prescription)
-        ledger_.external_work -= 0.5 * (previous[k] + mesh_force_[k]).dot(m_.meshes[k].velocity * h);
-    // What the contacts take up (stored + dissipated): minus the power of their forces,
-    // trapezoid over the step.
-    const double power = contact_power(!implicit_);
-    ledger_.contact_work -= 0.5 * (contact_power_old_ + power) * h;
-    contact_power_old_ = power;
-  }
-  time_ += h;
-  last_dt_ = h;
-  ++stats_.accepted;
+  // (only the pairs' particles gained or lost a rod)
+  PairList touched = formed;
+  touched.insert(touched.end(), exchanged.begin(), exchanged.end());
+  contacts.remove_pairs(p, formed);
+  contacts.add_pairs(p, std::move(exchanged));
+  return touched;
 }
 
 }  // namespace swarf
