@@ -12,6 +12,8 @@
 #include <sstream>
 
 #include "study/report.h"
+#include "study/study.h"
+#include "study/study_record.h"
 #include "study/study_table.h"
 #include "study/sweep.h"
 #include "swarf/core/errors.h"

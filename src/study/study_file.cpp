@@ -1,4 +1,4 @@
-// study_file.cpp: study files and their expansion into cases (see sweep.h, docs/studies.md).
+// study_file.cpp: study files and their expansion into cases (see study.h, docs/studies.md).
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -27,9 +27,9 @@
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
 #include "setup/toml_parse.h"
+#include "study/study.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
-#include "study/sweep.h"
 #include "study/sweep_mpi.h"
 #include "swarf/core/errors.h"
 

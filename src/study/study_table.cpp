@@ -16,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "postprocess/script_dir.h"
 #include "setup/toml_parse.h"
+#include "study/sweep.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "study/sweep.h"
+#include "study/study.h"
+#include "study/study_record.h"
 
 namespace swarf {
 
