@@ -300,13 +300,7 @@ void check_top_level(const toml::table& root, const std::string& source, const s
 
 CaseSettings parse_case(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
                         const std::string& directory) {
-  toml::table root;
-  try {
-    root = parse_toml(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  toml::table root = parse_toml_input(text, source);
   std::set<std::string> ov;
   for (const auto& o : overrides) apply_override(root, o, ov);
 

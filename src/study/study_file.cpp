@@ -320,13 +320,7 @@ void expand(const std::string& source, const Axes& axes, std::vector<std::map<st
 }  // namespace
 
 Study parse_study(const std::string& text, const std::string& source, const std::string& directory) {
-  toml::table root;
-  try {
-    root = parse_toml(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  const toml::table root = parse_toml_input(text, source);
   Study s;
   s.file = source;
   const StudyKeys keys = read_study_keys(root, source, s);

@@ -70,30 +70,25 @@ std::string csv_cell(const std::string& s) {
 // A TOML value text as shown in the table (strings without their quotes).
 std::string cell_text(const std::string& toml_text) {
   if (toml_text.empty() || toml_text.front() != '"') return toml_text;
-  try {
-    auto t = parse_toml("v = " + toml_text);
-    if (auto s = t["v"].value<std::string>()) return *s;
-  } catch (const toml::parse_error&) {
-  }
+  if (const auto t = parse_toml_value(toml_text))
+    if (auto s = (*t)["v"].value<std::string>()) return *s;
   return toml_text;
 }
 
 // The numbers of a TOML value text: one for a number, its elements for an array of numbers.
 std::optional<std::vector<double>> numbers_of(const std::string& toml_text) {
-  try {
-    auto t = parse_toml("v = " + toml_text);
-    const toml::node& n = *t.get("v");
-    if (auto v = n.value<double>(); v && !n.is_boolean()) return std::vector<double>{*v};
-    if (auto a = n.as_array()) {
-      std::vector<double> out;
-      for (const auto& e : *a) {
-        auto v = e.value<double>();
-        if (!v || e.is_boolean()) return std::nullopt;
-        out.push_back(*v);
-      }
-      return out;
+  const auto t = parse_toml_value(toml_text);
+  if (!t) return std::nullopt;
+  const toml::node& n = *t->get("v");
+  if (auto v = n.value<double>(); v && !n.is_boolean()) return std::vector<double>{*v};
+  if (auto a = n.as_array()) {
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      auto v = e.value<double>();
+      if (!v || e.is_boolean()) return std::nullopt;
+      out.push_back(*v);
     }
-  } catch (const toml::parse_error&) {
+    return out;
   }
   return std::nullopt;
 }
