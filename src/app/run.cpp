@@ -28,6 +28,7 @@
 #include "io/checkpoint.h"
 #include "io/console.h"
 #include "io/h5file.h"
+#include "setup/case_keys.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
@@ -44,12 +45,10 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
           fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case "
                       "file (got '{}')",
                       opt.restart, opt.case_path));
-    // An extension: only the end time and the outputs may change. Every other key made the
-    // state the checkpoint holds, and a different value would not continue that run.
-    static const std::vector<std::string> extendable{
-        "integrator.end_time",      "output.series_interval", "output.frame_interval",
-        "output.checkpoint_every",  "output.steady_from",     "output.plots",
-        "output.checkpoint_at_end", "output.progress",        "output.fields"};
+    // An extension: only the keys flagged restartable in the key table (the end time and the
+    // outputs) may change. Every other key made the state the checkpoint holds, and a different
+    // value would not continue that run.
+    const std::vector<std::string> extendable = restartable_keys();
     for (const auto& o : opt.overrides) {
       const std::string key = o.substr(0, o.find('='));
       auto trimmed = key;
