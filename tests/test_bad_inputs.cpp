@@ -26,6 +26,7 @@
 #include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
+#include "study/study.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
 #include "swarf/neighbors/neighbor_pairs.h"
@@ -202,6 +203,16 @@ TEST(BadInput, AFloatBeyondTheDoublesInACaseOrStudyFileIsRefusedNotTrapped) {
   });
   EXPECT_NE(p.find("particle.position"), std::string::npos) << p;
   EXPECT_NE(p.find("must be finite"), std::string::npos) << p;
+}
+
+// A TOML syntax error names the file, the line and the column, in the same words for a case
+// file and a study file (one function, setup/toml_parse.h).
+TEST(BadInput, ATomlSyntaxErrorNamesFileLineAndColumnInEitherFile) {
+  const std::string c = message_of([] { parse_case("[rod]\nyield_strain = = 1\n", "c.toml", {}); });
+  const std::string s = message_of([] { parse_study("base = \"c.toml\"\n[grid\n", "s.toml", "."); });
+  EXPECT_EQ(c.rfind("c.toml:2:", 0), 0u) << c;
+  EXPECT_EQ(s.rfind("s.toml:2:", 0), 0u) << s;
+  for (const std::string& m : {c, s}) EXPECT_NE(m.find(": TOML syntax error: "), std::string::npos) << m;
 }
 
 // Found by the lattice-file fuzzer: two particles at one place have no contact normal, and the

@@ -1,13 +1,17 @@
 // test_case_keys.cpp: the key table (src/setup/case_keys.cpp) is the one place a case key is
 // written: docs/case-reference.md holds its generated tables, the reader reads every key it
 // lists from the right table, every settings member has a key (or is listed as derived),
-// and a key left out keeps the struct's default, which is what the docs show.
+// and a key left out keeps the struct's default, which is what the docs show; summary.json
+// echoes the case from the settings through the same table.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <variant>
 
+#include "app/case_echo.h"
+#include "scenes/tiny_cut.h"
 #include "setup/case_config.h"
 #include "setup/case_keys.h"
 #include "setup/case_keys_doc.h"
@@ -215,8 +219,8 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
       &CaseSettings::membrane, &CaseSettings::material, &CaseSettings::rod, &CaseSettings::integrator,
       &CaseSettings::groups, &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::meshes,
       &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output, &CaseSettings::overrides,
-      &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::cut, &CaseSettings::cut_derived,
-      &CaseSettings::inflows, &CaseSettings::outflows);
+      &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::given, &CaseSettings::cut,
+      &CaseSettings::cut_derived, &CaseSettings::inflows, &CaseSettings::outflows);
 }
 
 // Every key the case leaves out holds the default-constructed struct's value, which is the
@@ -288,6 +292,42 @@ TEST(CaseKeys, UnitsOfEveryKey) {
   for (const KeyRow& r : case_key_rows()) {
     const bool number = r.type != "string" && r.type != "string[]" && r.type != "bool";
     EXPECT_EQ(r.unit.empty(), !number) << r.table << "." << r.name << " (" << r.type << ")";
+  }
+}
+
+// The keys a restart may --set are the rows flagged restartable: the end time and the outputs
+// that made none of the checkpoint's state (app/run.cpp refuses the others by name).
+TEST(CaseKeys, RestartableKeysAreFlaggedInTheTable) {
+  EXPECT_EQ(restartable_keys(),
+            (std::vector<std::string>{"integrator.end_time", "output.frame_interval", "output.series_interval",
+                                      "output.plots", "output.progress", "output.steady_from",
+                                      "output.checkpoint_every", "output.checkpoint_at_end", "output.fields"}));
+  const std::string doc = test::read_file(kDoc);
+  EXPECT_NE(doc.find("<!-- keys:restartable begin -->\n| key | unit |\n|---|---|\n| `integrator.end_time` | s |"),
+            std::string::npos)
+      << "docs/case-reference.md lists them in the Restart section";
+}
+
+// summary.json's "case" holds the keys the case gave (file and overrides), with their values
+// from the settings through the key table: the same values as "case_effective", which fills
+// in the rest, and no second reading of the TOML text.
+TEST(CaseKeys, TheSummaryEchoesTheGivenKeysFromTheSettings) {
+  CaseSettings cs = parse_case(test::kTinyCut, "tiny.toml", {"integrator.end_time=1e-5", "mesh.0.origin.2=0.6e-3"});
+  cs.effective_toml = "[not toml";  // (the echo must not read it)
+  const nlohmann::json c = case_json(cs), e = case_effective_json(cs);
+  EXPECT_EQ(c["integrator"]["end_time"], 1e-5);
+  EXPECT_FALSE(c["integrator"].contains("dt_safety")) << "not given";
+  EXPECT_TRUE(e["integrator"].contains("dt_safety"));
+  EXPECT_EQ(c["mesh"][0]["origin"], nlohmann::json({-0.05e-3, 0.14e-3, 0.6e-3}));
+  EXPECT_EQ(c["mesh"][0]["motion"], "velocity");
+  EXPECT_EQ(c["workpiece"]["cells"], nlohmann::json({6, 2, 3}));
+  EXPECT_EQ(c["group"][0], nlohmann::json({{"name", "base"}, {"side", "z-"}}));
+  EXPECT_EQ(c["rod"], nlohmann::json({{"tensile_strength", 3e8}}));
+  for (const auto& [table, v] : c.items()) {
+    const bool array = v.is_array();
+    for (std::size_t i = 0; i < (array ? v.size() : 1); ++i)
+      for (const auto& [key, value] : (array ? v[i] : v).items())
+        EXPECT_EQ(value, array ? e[table][i][key] : e[table][key]) << table << "." << key;
   }
 }
 

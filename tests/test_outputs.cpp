@@ -16,30 +16,15 @@
 #include "app/plots.h"
 #include "io/h5file.h"
 #include "scenes/tiny_cut.h"
+#include "scenes/tiny_uniaxial.h"
 #include "test_helpers.h"
 
 namespace swarf {
 namespace {
 
-const char* kTiny = R"([workpiece]
-cells = [6, 2, 2]
-radius = 0.5e-3
-[rod]
-youngs_modulus = 200e9
-yield_strain = 1e-3
-hardening_modulus = 20e9
-damping_ratio = 0.1
-[uniaxial]
-axis = "x"
-strain_path = [0.0, 0.012, -0.006]
-strain_rate = 100.0
-[output]
-frame_interval = 6e-5
-)";
-
 TEST(Outputs, ShortUniaxialRunWritesEverything) {
   test::TempDir dir("outputs");
-  test::write_file(dir / "tiny.toml", kTiny);
+  test::write_file(dir / "tiny.toml", test::kTinyUniaxial);
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "tiny.toml") + " --out " +
                                    (dir / "out") + " --threads 2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -149,7 +134,7 @@ TEST(Outputs, OrientationsAndAngularVelocitiesWhenAskedFor) {
 // unknown name is refused naming the key, the value and the valid names.
 TEST(Outputs, FieldsChooseThePerParticleArrays) {
   test::TempDir dir("fields");
-  test::write_file(dir / "tiny.toml", kTiny);
+  test::write_file(dir / "tiny.toml", test::kTinyUniaxial);
   const std::string run = std::string(SWARF_BINARY) + " run " + (dir / "tiny.toml") + " --set integrator.end_time=2e-5";
   const auto r = test::run_command(run + " --out " + (dir / "some") +
                                    " --set 'output.fields=[\"plastic_strain\", \"velocity\"]'");
@@ -210,7 +195,7 @@ TEST(Outputs, FieldsChooseThePerParticleArrays) {
 TEST(Outputs, BlowUpStopsWithMessageAndNoCompleteLookingFiles) {
   test::TempDir dir("blowup");
   // Three times the stable step, forced: the lattice explodes within a few steps.
-  test::write_file(dir / "unstable.toml", kTiny);
+  test::write_file(dir / "unstable.toml", test::kTinyUniaxial);
   const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "unstable.toml") + " --out " +
                                    (dir / "out") +
                                    " --set integrator.dt=3.6e-7 --set integrator.allow_unstable_dt=true");

@@ -12,6 +12,8 @@
 #include <sstream>
 
 #include "study/report.h"
+#include "study/study.h"
+#include "study/study_record.h"
 #include "study/study_table.h"
 #include "study/sweep.h"
 #include "swarf/core/errors.h"
@@ -208,7 +210,7 @@ TEST(Resume, CaseStatesAndChangedStudies) {
       "0003");
 }
 
-TEST(StudyTable, UnitsFromKeySuffixes) {
+TEST(StudyTable, UnitsOfTheDeclaredResults) {
   EXPECT_EQ(unit_of_key("cutting.cutting_force_per_width_mean_N_per_m"), "N/m");
   EXPECT_EQ(unit_of_key("chip.shear_angle_deg"), "deg");
   EXPECT_EQ(unit_of_key("chip.depth_of_cut_m"), "m");

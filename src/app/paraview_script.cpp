@@ -15,6 +15,13 @@
 #include "swarf/version.h"
 
 namespace swarf {
+namespace {
+
+constexpr const char* kScript = "open_in_paraview.py";
+
+}  // namespace
+
+std::vector<RunFile> paraview_script_files() { return {{kScript}}; }
 
 std::string write_paraview_script(const std::string& dir, const Model& model) {
   const std::string tpl = postprocess_path("open_in_paraview.py");
@@ -35,7 +42,7 @@ std::string write_paraview_script(const std::string& dir, const Model& model) {
     run["depth_of_cut_m"] = cut->setup().uncut_surface_z - cut->setup().tool_tip.z();
   }
   text.replace(at, marker.size(), "\nSWARF_RUN = " + run.dump() + "\n");
-  write_text_atomic(dir + "/open_in_paraview.py", text);
+  write_text_atomic(dir + "/" + kScript, text);
   return "";
 }
 

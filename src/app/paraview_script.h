@@ -7,6 +7,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "app/run_file.h"
 
 namespace swarf {
 
@@ -16,5 +19,7 @@ struct Model;
 /// Returns an empty string, or why it could not (the template missing or unreadable): the run
 /// goes on without it.
 std::string write_paraview_script(const std::string& dir, const Model& model);
+/// The file it writes: open_in_paraview.py.
+std::vector<RunFile> paraview_script_files();
 
 }  // namespace swarf

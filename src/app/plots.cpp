@@ -84,6 +84,11 @@ std::vector<std::string> written_files(const std::string& output) {
   return files;
 }
 
+std::vector<RunFile> plot_files() {
+  // (the script names them: a plot it adds is added here too, or a rerun keeps a stale one)
+  return {{"forces.png"}, {"tool_vibration.png"}, {"stress_strain.png"}, {"energy.png"}};
+}
+
 PlotResult make_plots(const std::string& dir, const std::string& summary_path) {
   PlotResult r;
   const ScriptRun run = run_postprocess_script("plot_run.py", {dir, summary_path});

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run_file.h"
 #include "postprocess/script_dir.h"
 
 namespace swarf {
@@ -16,6 +17,9 @@ struct PlotResult {
 
 /// Runs the plot script on DIR/series.csv with the given summary file.
 PlotResult make_plots(const std::string& dir, const std::string& summary_path);
+/// The files the plot script (postprocess/plot_run.py) may write: forces.png,
+/// tool_vibration.png, stress_strain.png, energy.png, each when the run has its columns.
+std::vector<RunFile> plot_files();
 
 /// Result of running one of postprocess/'s Python scripts.
 struct ScriptRun {

@@ -75,7 +75,15 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
   return out;
 }
 
+constexpr const char* kToolSpectrum = "tool_spectrum.csv";
+constexpr const char* kChipSurface = "chip_surface.vtp";
+constexpr const char* kChipPicture = "chip.png";  // (render_chip.py adds _<field> to the stem for the others)
+
 }  // namespace
+
+std::vector<RunFile> cut_files() {
+  return {{kToolSpectrum}, {kChipSurface}, {kChipPicture}, {"chip_plastic_strain.png"}, {"chip_von_mises_stress.png"}};
+}
 
 std::vector<std::string> render_pictures(const std::string& dir, const CutSetup& setup, std::string& message) {
   namespace fs = std::filesystem;
@@ -88,7 +96,7 @@ std::vector<std::string> render_pictures(const std::string& dir, const CutSetup&
     }
     prefix = {"/usr/bin/xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
   }
-  std::vector<std::string> args{dir, dir + "/chip.png", "--tool", setup.tool_mesh};
+  std::vector<std::string> args{dir, dir + "/" + kChipPicture, "--tool", setup.tool_mesh};
   const double depth = setup.uncut_surface_z - setup.tool_tip.z();  // m
   if (depth > 0) args.insert(args.end(), {"--depth", fmt::format("{:.17g}", depth)});
   const ScriptRun run = run_postprocess_script("render_chip.py", args, prefix);
@@ -113,7 +121,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
         setup.mount, ToolSeries{data.time, data.tool_deflection_x, data.tool_deflection_z, data.fc, data.ft},
         setup.steady_from);
     sum["tool"] = tv.summary;
-    if (!tv.spectra.frequency.empty()) write_text_atomic(dir + "/tool_spectrum.csv", tool_spectrum_csv(tv.spectra));
+    if (!tv.spectra.frequency.empty()) write_text_atomic(dir + "/" + kToolSpectrum, tool_spectrum_csv(tv.spectra));
     const auto& t = tv.summary;
     const auto um = [&](const char* key) {
       return t[key].is_number() ? fmt::format("{:.3g}", 1e6 * t[key].get<double>()) : std::string("-");
@@ -150,10 +158,10 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
   chip["surface_dilation_m"] = surf.dilation_m;
   if (!surf.note.empty()) chip["surface_note"] = surf.note;
   if (!surf.mesh.triangles.empty()) {
-    write_vtp(dir + "/chip_surface.vtp", surf.mesh);
-    chip["surface_file"] = "chip_surface.vtp";
+    write_vtp(dir + "/" + kChipSurface, surf.mesh);
+    chip["surface_file"] = kChipSurface;
     chip["surface_triangles"] = surf.mesh.triangles.size();
-    if (vtk) vtk->add_final_part("chip_surface", "chip_surface.vtp");
+    if (vtk) vtk->add_final_part("chip_surface", kChipSurface);
   }
   if (pictures) {
     std::string message;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run_file.h"
 #include "postprocess/cut_report.h"
 
 namespace swarf {
@@ -19,6 +20,10 @@ class VtkSeries;
 /// the result table.
 void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
                 bool pictures);
+
+/// The files finish_cut may write: tool_spectrum.csv (a compliant tool), chip_surface.vtp and
+/// the pictures of render_pictures.
+std::vector<RunFile> cut_files();
 
 /// Renders the last frame headless (xvfb-run + VTK) as DIR/chip.png (damage),
 /// chip_plastic_strain.png and chip_von_mises_stress.png (those whose field the frames hold),

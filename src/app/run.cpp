@@ -28,12 +28,19 @@
 #include "io/checkpoint.h"
 #include "io/console.h"
 #include "io/h5file.h"
+#include "setup/case_keys.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
 namespace {
+
+// Its files in the run directory (run_case_files() declares them).
+constexpr const char* kSummary = "summary.json";
+constexpr const char* kPlotSummary = "summary.json.plotting";
+constexpr const char* kResults = "results.h5";
+constexpr const char* kLog = "run.log";
 
 // The case to run: the checkpoint's own on a restart, else the case file (or the built-in
 // default) with the overrides; 'stored' receives it as a checkpoint records it.
@@ -44,12 +51,10 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
           fmt::format("--restart {}: a restart continues the checkpoint's own case; give no case "
                       "file (got '{}')",
                       opt.restart, opt.case_path));
-    // An extension: only the end time and the outputs may change. Every other key made the
-    // state the checkpoint holds, and a different value would not continue that run.
-    static const std::vector<std::string> extendable{
-        "integrator.end_time",      "output.series_interval", "output.frame_interval",
-        "output.checkpoint_every",  "output.steady_from",     "output.plots",
-        "output.checkpoint_at_end", "output.progress",        "output.fields"};
+    // An extension: only the keys flagged restartable in the key table (the end time and the
+    // outputs) may change. Every other key made the state the checkpoint holds, and a different
+    // value would not continue that run.
+    const std::vector<std::string> extendable = restartable_keys();
     for (const auto& o : opt.overrides) {
       const std::string key = o.substr(0, o.find('='));
       auto trimmed = key;
@@ -87,9 +92,10 @@ CaseSettings read_case(const RunOptions& opt, CheckpointCase& stored) {
 // The plots of the run (the script reads the summary, so it is written for it first); their
 // files or the reason they are missing go into the summary.
 void add_plots(const std::string& dir, nlohmann::json& sum) {
-  write_text_atomic(dir + "/summary.json.plotting", sum.dump(2));
-  const PlotResult pr = make_plots(dir, dir + "/summary.json.plotting");
-  std::filesystem::remove(dir + "/summary.json.plotting");
+  const std::string plotting = dir + "/" + kPlotSummary;
+  write_text_atomic(plotting, sum.dump(2));
+  const PlotResult pr = make_plots(dir, plotting);
+  std::filesystem::remove(plotting);
   sum["plots"] = pr.files;
   if (!pr.ok) {
     sum["plot_error"] = pr.message;
@@ -103,7 +109,7 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
                 ObserverSet& observers, const RunProvenance& prov, const std::string& restarted_from) {
   const int threads = prov.threads;
   const RunOutputs::WallTimes wall = outputs.finish();
-  write_results_h5(dir + "/results.h5", sim, model.settings.output.fields, [&](H5File& f) {
+  write_results_h5(dir + "/" + kResults, sim, model.settings.output.fields, [&](H5File& f) {
     write_disorder_attributes(f, model.derived);
     write_provenance_attributes(f, prov);
     write_series_datasets(f, observers.column_specs(), outputs.series());
@@ -116,7 +122,7 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
   observers.finish(RunEnd{sim, series, dir, outputs.vtk(), plots, threads, wall.wall_s, wall.wall_s - wall.output_s},
                    sum);
   if (plots) add_plots(dir, sum);
-  write_text_atomic(dir + "/summary.json", sum.dump(2) + "\n");
+  write_text_atomic(dir + "/" + kSummary, sum.dump(2) + "\n");
   std::string pictures;
   for (const char* key : {"pictures", "plots"})
     if (sum.contains(key))
@@ -169,6 +175,10 @@ void check_memory(const CaseSettings& cs, bool force) {
 
 }  // namespace
 
+std::vector<RunFile> run_case_files() {
+  return {{kSummary}, {kPlotSummary}, {kResults}, {kLog, RunFile::Keep::on_restart}};
+}
+
 void run_case(const RunOptions& opt) {
   CheckpointCase stored;
   const CaseSettings cs = read_case(opt, stored);
@@ -191,7 +201,7 @@ void run_case(const RunOptions& opt) {
   }
   const std::string dir = prepare_run_directory(opt);
   // DIR/run.log: what this run prints (a restart appends to the log of the run it continues).
-  if (!open_transcript(dir + "/run.log", !opt.restart.empty()))
+  if (!open_transcript(dir + "/" + kLog, !opt.restart.empty()))
     eprint("swarf: warning: cannot write {}/run.log; the run goes on without a log\n", dir);
 
   Simulation sim(model, model.step);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run_file.h"
 #include "app/threads.h"  // (set_threads, which the run's callers use beside run_case)
 
 namespace swarf {
@@ -23,5 +24,8 @@ struct RunOptions {
 /// series and the plots (with options.check: builds the case, prints its set-up and returns).
 /// Throws InputError / SimulationError.
 void run_case(const RunOptions& options);
+/// The files run_case writes itself: summary.json (and summary.json.plotting, the copy the
+/// plot script reads), results.h5, and run.log, which a restart appends to.
+std::vector<RunFile> run_case_files();
 
 }  // namespace swarf

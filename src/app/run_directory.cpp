@@ -10,18 +10,24 @@
 #include <cstdio>
 #include <cstring>
 
+#include "app/paraview_script.h"
+#include "app/plots.h"
+#include "app/post.h"
 #include "app/run.h"
+#include "app/run_outputs.h"
 #include "io/console.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
 namespace {
 
+constexpr const char* kLock = ".swarf-run.lock";
+
 // Holds DIR/.swarf-run.lock for the rest of the process: two runs writing into one directory
 // would leave one's summary beside the other's series. The lock ends with the process (also
 // when it is killed), so a stale lock file never blocks a later run.
 void lock_run_directory(const std::string& dir) {
-  const std::string path = dir + "/.swarf-run.lock";
+  const std::string path = dir + "/" + kLock;
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(fmt::format("--out {}: cannot create '{}': {}", dir, path, std::strerror(errno)));
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
@@ -42,6 +48,13 @@ void lock_run_directory(const std::string& dir) {
 
 }  // namespace
 
+std::vector<RunFile> run_directory_files() {
+  std::vector<RunFile> files{{kLock, RunFile::Keep::always}};
+  for (const auto& writer : {run_case_files(), RunOutputs::files(), paraview_script_files(), plot_files(), cut_files()})
+    files.insert(files.end(), writer.begin(), writer.end());
+  return files;
+}
+
 std::string prepare_run_directory(const RunOptions& opt) {
   namespace fs = std::filesystem;
   const bool restarting = !opt.restart.empty();
@@ -52,16 +65,16 @@ std::string prepare_run_directory(const RunOptions& opt) {
   }
   fs::create_directories(dir);
   lock_run_directory(dir);
-  // Outputs of an earlier run in the same directory would mix with this one's (and a previous
-  // summary would make an interrupted run look complete). A restart keeps the frames.
-  for (const char* name : {"summary.json", "series.csv", "series.csv.part", "results.h5", "results.h5.part",
-                           "stress_strain.png", "energy.png", "forces.png", "chip.png", "chip_plastic_strain.png",
-                           "chip_von_mises_stress.png", "chip_surface.vtp", "open_in_paraview.py"})
-    fs::remove(fs::path(dir) / name);
-  if (!restarting) {
-    fs::remove(fs::path(dir) / "particles.pvd");
-    fs::remove(fs::path(dir) / "checkpoint.h5");
-    fs::remove_all(fs::path(dir) / "frames");
+  // Outputs of an earlier run in the same directory would mix with this one's: a file this run
+  // does not write would pass for its own, and a previous summary would make an interrupted run
+  // look complete. So every file a writer declares goes, the ones this run rewrites too; a
+  // restart keeps what it continues.
+  for (const RunFile& f : run_directory_files()) {
+    if (f.keep == RunFile::Keep::always || (restarting && f.keep == RunFile::Keep::on_restart)) continue;
+    const fs::path path = fs::path(dir) / f.name;
+    fs::remove_all(path);
+    fs::remove(path.string() + ".part");
+    fs::remove(path.string() + ".part" + path.extension().string());  // (VTK's: chip_surface.vtp.part.vtp)
   }
   return dir;
 }

@@ -5,13 +5,20 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include "app/run_file.h"
 
 namespace swarf {
 
 struct RunOptions;
 
-/// --out, else the checkpoint's directory on a restart, else "swarf-out"; created, and
-/// cleared of an earlier run's outputs (a restart keeps the frames and the checkpoint).
+/// Every file a run may write in its directory, as its writers declare them (run_file.h).
+std::vector<RunFile> run_directory_files();
+
+/// --out, else the checkpoint's directory on a restart, else "swarf-out"; created, locked,
+/// and cleared of every declared file (a restart keeps those it continues: the checkpoint,
+/// the ParaView series and its frames, the log).
 std::string prepare_run_directory(const RunOptions& opt);
 
 /// A restart into another directory: the frames the checkpoint's run wrote before it (numbers

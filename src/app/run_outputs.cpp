@@ -19,6 +19,23 @@
 #include "swarf/simulation.h"
 
 namespace swarf {
+namespace {
+
+// Its files in the run directory (files() declares them; VtkSeries names the ParaView series).
+constexpr const char* kSeries = "series.csv";
+constexpr const char* kColumnTable = "series_columns.csv";
+constexpr const char* kCheckpoint = "checkpoint.h5";
+
+}  // namespace
+
+std::vector<RunFile> RunOutputs::files() {
+  using K = RunFile::Keep;
+  return {{kSeries},
+          {kColumnTable},
+          {kCheckpoint, K::on_restart},
+          {"particles.pvd", K::on_restart},
+          {"frames", K::on_restart}};
+}
 
 RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers,
                        CheckpointCase stored)
@@ -37,14 +54,14 @@ RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& s
                ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk, model.settings.output.orientations,
                                              model.settings.output.fields)
                : nullptr),
-      series_(dir + "/series.csv", columns_) {
+      series_(dir + "/" + kSeries, columns_) {
   if (vtk_) {
     vtk_->set_periodic(model.periodic);
     if (const std::string why = write_paraview_script(dir, model); !why.empty())
       eprint("swarf: warning: {}/open_in_paraview.py not written: {}\n", dir, why);
   }
   rec_.columns = columns_.size();
-  write_column_table(dir + "/series_columns.csv", observers.column_specs());
+  write_column_table(dir + "/" + kColumnTable, observers.column_specs());
 }
 
 void write_column_table(const std::string& path, const std::vector<Column>& columns) {
@@ -136,7 +153,7 @@ void RunOutputs::write_checkpoint_now() {
   if (vtk_) rec_.frame_times = vtk_->times();
   rec_.wall_s = wall_before_ + seconds_since(start_);
   rec_.output_s = output_s_;
-  write_checkpoint(dir_ + "/checkpoint.h5", sim_, rec_, stored_, [&](StateArchive& ar) { observers_.visit_state(ar); });
+  write_checkpoint(dir_ + "/" + kCheckpoint, sim_, rec_, stored_, [&](StateArchive& ar) { observers_.visit_state(ar); });
 }
 
 RunOutputs::WallTimes RunOutputs::finish() {

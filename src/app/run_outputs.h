@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/observers/observer.h"
+#include "app/run_file.h"
 #include "app/series_columns.h"
 #include "io/checkpoint.h"
 #include "io/series.h"
@@ -39,6 +40,10 @@ class RunOutputs {
   /// columns make the header. 'stored' is the case a checkpoint records.
   RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers, CheckpointCase stored);
   ~RunOutputs();
+
+  /// The files it may write: series.csv, series_columns.csv, and kept by a restart, which
+  /// continues them, checkpoint.h5, particles.pvd and frames/ (the ParaView series).
+  static std::vector<RunFile> files();
 
   /// A fresh run: the observers begin, the initial row and frame, the schedule from t = 0.
   void begin();

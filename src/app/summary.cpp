@@ -2,20 +2,18 @@
 #include "app/summary.h"
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
 
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
-#include "app/case_effective.h"
+#include "app/case_echo.h"
 #include "io/atomic_file.h"
 #include "io/h5file.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
-#include "setup/toml_parse.h"
 #include "swarf/measure/particle_fields.h"
 #include "swarf/version.h"
 
@@ -33,26 +31,6 @@ static nlohmann::json flow_points(const FlowCurve& f, bool strains) {
   for (int i = 0; i < f.points; ++i) j.push_back(strains ? f.plastic_strain[i] : f.stress[i]);
   return j;
 }
-
-static nlohmann::json node_to_json(const toml::node& n) {
-  if (auto t = n.as_table()) {
-    nlohmann::json j = nlohmann::json::object();
-    for (const auto& [k, v] : *t) j[std::string(k.str())] = node_to_json(v);
-    return j;
-  }
-  if (auto a = n.as_array()) {
-    nlohmann::json j = nlohmann::json::array();
-    for (const auto& v : *a) j.push_back(node_to_json(v));
-    return j;
-  }
-  if (auto s = n.as_string()) return s->get();
-  if (auto i = n.as_integer()) return i->get();
-  if (auto f = n.as_floating_point()) return number(f->get());
-  if (auto b = n.as_boolean()) return b->get();
-  return print_toml(n);
-}
-
-nlohmann::json case_to_json(const CaseSettings& cs) { return node_to_json(parse_toml(cs.effective_toml)); }
 
 nlohmann::json derived_to_json(const Derived& d) {
   return {
@@ -120,7 +98,7 @@ nlohmann::json summary_head(const Model& model, const Simulation& sim, const std
   sum["case_file"] = settings.source;
   sum["overrides"] = settings.overrides;
   if (!restarted_from.empty()) sum["restarted_from"] = restarted_from;
-  sum["case"] = case_to_json(settings);
+  sum["case"] = case_json(settings);
   sum["case_effective"] = case_effective_json(settings);
   sum["case_units"] = case_key_units();  // (every key's unit, from the key table)
   sum["derived"] = derived_to_json(model.derived);

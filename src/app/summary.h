@@ -14,8 +14,6 @@ namespace swarf {
 class H5File;
 struct Model;
 
-/// The effective case (after overrides) as JSON; non-finite numbers become "inf"/"-inf".
-nlohmann::json case_to_json(const CaseSettings& cs);
 /// Derived quantities with their units in the key names.
 nlohmann::json derived_to_json(const Derived& d);
 /// A finite number, or the string "inf"/"-inf"/"nan" (JSON has no such numbers).

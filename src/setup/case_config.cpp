@@ -272,6 +272,25 @@ void read_output(const CaseInput& in, CaseSettings& cs) {
   r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
 }
 
+// The tables and keys the tree holds (CaseSettings::given); the top level is checked already.
+std::set<std::string> given_keys(const toml::table& root) {
+  std::set<std::string> given;
+  auto add = [&](const toml::table& t, const std::string& path) {
+    given.insert(path);
+    for (const auto& [k, v] : t) given.insert(path + "." + std::string(k.str()));
+  };
+  for (const auto& [k, v] : root) {
+    const std::string name(k.str());
+    if (const toml::table* t = v.as_table()) {
+      add(*t, name);
+    } else if (const toml::array* a = v.as_array()) {
+      for (std::size_t i = 0; i < a->size(); ++i)
+        if (const toml::table* t = (*a)[i].as_table()) add(*t, name + "." + std::to_string(i));
+    }
+  }
+  return given;
+}
+
 // Top level: only known tables, and tables where a table is expected.
 void check_top_level(const toml::table& root, const std::string& source, const std::set<std::string>& ov) {
   const std::set<std::string> tables{"cut",    "workpiece", "membrane",    "material", "rod",      "integrator",
@@ -300,13 +319,7 @@ void check_top_level(const toml::table& root, const std::string& source, const s
 
 CaseSettings parse_case(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
                         const std::string& directory) {
-  toml::table root;
-  try {
-    root = parse_toml(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  toml::table root = parse_toml_input(text, source);
   std::set<std::string> ov;
   for (const auto& o : overrides) apply_override(root, o, ov);
 
@@ -319,6 +332,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   std::set<std::string> derived;  // the keys [cut] put into the tree
   expand_cut(root, CaseInput{root, source, directory, ov}, cs, derived);
   cs.effective_toml = print_toml(root);
+  cs.given = given_keys(root);
   const CaseInput in{root, source, directory, ov, &derived};
   read_workpiece(in, cs);
   read_membrane(in, cs);

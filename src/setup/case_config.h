@@ -11,6 +11,7 @@
 
 #include <array>
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -316,6 +317,11 @@ struct CaseSettings {
   std::vector<std::string> overrides;  ///< the --set arguments, in order
   std::string effective_toml;          ///< the TOML tree after overrides, as read
   std::string text;                    ///< the case text as given (before overrides)
+  /// What the case gave (the file, the overrides, and what [cut] derived): each table as
+  /// "table" ("mesh.0" for an entry of an array of tables) and each key as "table.key"
+  /// ("mesh.0.origin"). summary.json's "case" lists these keys with their values from the
+  /// settings, through the key table.
+  std::set<std::string> given;
 };
 
 /// Reads a case file and applies overrides ("dotted.key=value"). Throws InputError.

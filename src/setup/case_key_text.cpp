@@ -126,6 +126,7 @@ void append(std::vector<KeyRow>& rows, std::string_view table, const std::vector
     row.unit = k.unit;
     row.doc = k.doc;
     row.shared_with = shared_with;
+    row.restartable = k.restartable;
     std::visit(
         [&](auto member) {
           const auto& value = defaults.*member;
@@ -193,6 +194,13 @@ std::vector<KeyRow> case_key_rows() {
   append(rows, "environment", environment_keys());
   append(rows, "output", output_keys());
   return rows;
+}
+
+std::vector<std::string> restartable_keys() {
+  std::vector<std::string> keys;
+  for (const auto& r : case_key_rows())
+    if (r.restartable) keys.push_back(r.table + "." + r.name);
+  return keys;
 }
 
 std::map<std::string, std::map<std::string, std::string>> case_key_units() {

@@ -400,7 +400,8 @@ const std::vector<Key<IntegratorSettings>>& integrator_keys() {
        .unit = "s",
        .range = kNonNegative,
        .rule = "> 0 unless `[uniaxial]` is present",
-       .doc = "Simulated time. With `[uniaxial]`, 0 means the duration of the strain path."},
+       .doc = "Simulated time. With `[uniaxial]`, 0 means the duration of the strain path.",
+       .restartable = true},
       {.name = "max_step_displacement",
        .field = &S::max_step_displacement,
        .unit = "1",
@@ -1143,13 +1144,15 @@ const std::vector<Key<OutputSettings>>& output_keys() {
        .field = &S::frame_interval,
        .unit = "s",
        .range = kNonNegative,
-       .doc = "Interval between ParaView frames. 0 means only the first and last states."},
+       .doc = "Interval between ParaView frames. 0 means only the first and last states.",
+       .restartable = true},
       {.name = "series_interval",
        .field = &S::series_interval,
        .unit = "s",
        .range = kNonNegative,
        .doc = "Interval between `series.csv` rows. 0 means end_time/2000, about 2001 rows (fewer if steps are "
-              "longer than the interval)."},
+              "longer than the interval).",
+       .restartable = true},
       {.name = "vtk", .field = &S::vtk, .doc = "Write `particles.pvd` and `frames/*.vtu`."},
       {.name = "rods_in_vtk", .field = &S::rods_in_vtk, .doc = "Add the rods as lines (part 1) to each frame."},
       {.name = "plots",
@@ -1158,8 +1161,9 @@ const std::vector<Key<OutputSettings>>& output_keys() {
               "[cutting runs](outputs.md#cutting-runs) it also renders the pictures `chip.png`, "
               "`chip_plastic_strain.png` and `chip_von_mises_stress.png` from the last frame (needs VTK's Python "
               "module and `vtk = true`). If plotting or rendering fails, you get a warning and "
-              "the run still completes."},
-      {.name = "progress", .field = &S::progress, .doc = "Print the progress line on stderr."},
+              "the run still completes.",
+       .restartable = true},
+      {.name = "progress", .field = &S::progress, .doc = "Print the progress line on stderr.", .restartable = true},
       {.name = "steady_from",
        .field = &S::steady_from,
        .unit = "s",
@@ -1167,20 +1171,23 @@ const std::vector<Key<OutputSettings>>& output_keys() {
        .default_note = "half of `end_time`",
        .range = kNonNegative,
        .doc = "Cutting runs: the summary's force statistics (`cutting` in summary.json) use the rows with time >= "
-              "this. It is stored in `results.h5` (`/cutting/steady_from`), which `swarf post` uses."},
+              "this. It is stored in `results.h5` (`/cutting/steady_from`), which `swarf post` uses.",
+       .restartable = true},
       {.name = "checkpoint_every",
        .field = &S::checkpoint_every,
        .unit = "1",
        .range = in(0, 1000000000, "[]"),
        .doc = "Write the restart file `DIR/checkpoint.h5` after every this many accepted steps (newmark: "
               "rejected tries do not count). 0 means no checkpoints. See "
-              "[Restart](#restart-swarf-run---restart)."},
+              "[Restart](#restart-swarf-run---restart).",
+       .restartable = true},
       {.name = "checkpoint_at_end",
        .field = &S::checkpoint_at_end,
        .doc = "Also write `DIR/checkpoint.h5` after the last step, so that `swarf run --restart DIR/checkpoint.h5 "
               "--set integrator.end_time=...` extends the finished run from its end (without it, an extension "
               "continues from the last periodic checkpoint and computes the stretch after it again). See "
-              "[Restart](#restart-swarf-run---restart)."},
+              "[Restart](#restart-swarf-run---restart).",
+       .restartable = true},
       {.name = "orientations",
        .field = &S::orientations,
        .doc = "Integrate the spheres' orientations (unit quaternions, body to world) and write them and the "
@@ -1197,7 +1204,8 @@ const std::vector<Key<OutputSettings>>& output_keys() {
               "([outputs.md](outputs.md#choosing-the-fields-outputfields)); `[]` writes none. The positions, radii "
               "and groups are always written, and `results.h5` always holds `broken_fraction` (`swarf post` "
               "reads it). Fewer fields make smaller frames, and without `stress`, `von_mises_stress`, "
-              "`hydrostatic_stress` and `plastic_strain` the frames skip computing them."},
+              "`hydrostatic_stress` and `plastic_strain` the frames skip computing them.",
+       .restartable = true},
   };
   return keys;
 }

@@ -74,6 +74,9 @@ struct Key {
   std::string_view rule = {};     ///< docs: the conditions that the reader checks by hand
   std::string_view doc = {};      ///< docs: the meaning, one line
   std::string_view section = {};  ///< docs: the sub-table it is listed in ("newmark"); empty = the main one
+  /// A restart may change it (--set with --restart): it made none of the state a checkpoint
+  /// holds (the end time, the outputs). Every other key did, and a restart refuses it.
+  bool restartable = false;
 };
 
 // The keys of each table, in reading order. [[group]] and [[mesh]] read the motion keys too.
@@ -106,12 +109,16 @@ struct KeyRow {
   std::string default_value;  ///< markdown
   std::string allowed;        ///< markdown: range or choices, then the hand-checked rule
   std::string doc;
-  std::string shared_with;  ///< the table whose docs list this key ("group" for the motion keys of [[mesh]])
+  std::string shared_with;   ///< the table whose docs list this key ("group" for the motion keys of [[mesh]])
+  bool restartable = false;  ///< Key::restartable
 };
 
 /// Every key of every table, in the order of the tables in a case file and of their keys.
 /// The motion keys are listed under "group" and, once more, under "mesh".
 std::vector<KeyRow> case_key_rows();
+
+/// The keys a restart may change ("integrator.end_time", "output.plots", ...), in table order.
+std::vector<std::string> restartable_keys();
 
 /// The unit of every key, table -> key -> unit ("1" dimensionless, "" text and bool), for
 /// a sibling of the case echo in summary.json.

@@ -59,6 +59,28 @@ std::string begin_id(const std::string& line) {
   return line.substr(head.size(), line.size() - head.size() - tail.size());
 }
 
+// The Restart section's block: the keys a restart may --set (Key::restartable), so that the
+// section's list cannot drift from the check in the run (app/run.cpp).
+constexpr std::string_view kRestartableBlock = "restartable";
+
+std::string restartable_markdown() {
+  std::string out = "| key | unit |\n|---|---|\n";
+  for (const auto& r : case_key_rows())
+    if (r.restartable) out += fmt::format("| `{}.{}` | {} |\n", r.table, r.name, r.unit.empty() ? "-" : r.unit);
+  return out;
+}
+
+// Every block id of the document: the key tables, then the restartable keys.
+std::vector<std::string> block_ids() {
+  std::vector<std::string> ids = key_table_ids();
+  ids.emplace_back(kRestartableBlock);
+  return ids;
+}
+
+std::string block_markdown(std::string_view id) {
+  return id == kRestartableBlock ? restartable_markdown() : key_table_markdown(id);
+}
+
 struct Block {
   std::string id;
   std::size_t first = 0, last = 0;  // the content lines [first, last) between the markers
@@ -66,7 +88,7 @@ struct Block {
 
 // The marker blocks of a document; throws std::runtime_error for a malformed or missing one.
 std::vector<Block> blocks_of(const std::vector<std::string>& lines) {
-  const auto ids = key_table_ids();
+  const auto ids = block_ids();
   const std::set<std::string> known(ids.begin(), ids.end());
   std::vector<Block> blocks;
   std::set<std::string> seen;
@@ -134,8 +156,7 @@ std::string key_table_markdown(std::string_view id) {
 
 std::string key_tables_markdown() {
   std::string out;
-  for (const auto& id : key_table_ids())
-    out += begin_marker(id) + "\n" + key_table_markdown(id) + end_marker(id) + "\n\n";
+  for (const auto& id : block_ids()) out += begin_marker(id) + "\n" + block_markdown(id) + end_marker(id) + "\n\n";
   return out;
 }
 
@@ -160,7 +181,7 @@ std::string update_key_tables(const std::string& document) {
   std::size_t next = 0;
   for (const Block& b : blocks_of(lines)) {
     for (; next < b.first; ++next) out += lines[next] + "\n";
-    out += key_table_markdown(b.id);
+    out += block_markdown(b.id);
     next = b.last;
   }
   for (; next < lines.size(); ++next) out += lines[next] + "\n";
@@ -191,7 +212,7 @@ std::string key_tables_difference(const std::string& document) {
     return e.what();
   }
   for (const Block& b : blocks) {
-    const auto want = lines_of(key_table_markdown(b.id));
+    const auto want = lines_of(block_markdown(b.id));
     const std::size_t have = b.last - b.first;
     for (std::size_t k = 0; k < std::max(want.size(), have); ++k) {
       const std::string doc = k < have ? lines[b.first + k] : "(nothing)";

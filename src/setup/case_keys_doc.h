@@ -2,9 +2,9 @@
 //
 // The document holds each table between marker lines,
 //   <!-- keys:integrator begin -->  ...  <!-- keys:integrator end -->
-// (ids "TABLE" or "TABLE:SECTION", as key_table_ids() lists them); the prose around them is
-// written by hand. 'swarf case keys --update FILE' rewrites the blocks, and a test fails
-// when the document and the key table differ.
+// (ids "TABLE" or "TABLE:SECTION", as key_table_ids() lists them, and "restartable": the keys
+// a restart may change); the prose around them is written by hand. 'swarf case keys --update
+// FILE' rewrites the blocks, and a test fails when the document and the key table differ.
 #pragma once
 
 #include <string>
@@ -17,7 +17,7 @@ namespace swarf {
 std::vector<std::string> key_table_ids();
 /// One markdown table: key | type | unit | default | allowed | meaning. Throws std::invalid_argument for an unknown id.
 std::string key_table_markdown(std::string_view id);
-/// Every table, each between its marker lines.
+/// Every table, each between its marker lines (the restartable keys last).
 std::string key_tables_markdown();
 /// One line per key, "TABLE.KEY  TYPE  UNIT  DEFAULT", aligned ('swarf case keys').
 std::string key_list_text();

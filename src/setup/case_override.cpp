@@ -18,13 +18,8 @@ void apply_override(toml::table& root, const std::string& arg, std::set<std::str
   if (eq == std::string::npos || eq == 0)
     throw InputError(fmt::format("--set '{}': expected key=value (for example integrator.dt=2e-9)", arg));
   const std::string key = arg.substr(0, eq), text = arg.substr(eq + 1);
-  toml::table parsed;
-  try {
-    parsed = parse_toml("v = " + text);
-  } catch (const toml::parse_error&) {
-    // A bare word is taken as a string: --set integrator.scheme=verlet
-    parsed.insert_or_assign("v", text);
-  }
+  // A bare word is taken as a string: --set integrator.scheme=verlet
+  const toml::table parsed = parse_toml_value(text).value_or(toml::table{{"v", text}});
   std::vector<std::string> parts;
   {
     std::size_t start = 0;

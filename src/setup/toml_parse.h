@@ -9,11 +9,15 @@
 #pragma once
 
 #include <fenv.h>
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
+
+#include "swarf/core/errors.h"
 
 namespace swarf {
 
@@ -34,6 +38,28 @@ class FpExceptionsHeld {
 inline toml::table parse_toml(std::string_view text, std::string_view source = {}) {
   const FpExceptionsHeld held;
   return toml::parse(text, source);
+}
+
+/// A case or study file's text as TOML: as parse_toml, but a syntax error becomes InputError
+/// "SOURCE:LINE:COLUMN: TOML syntax error: WHAT", the one wording of every file swarf reads.
+inline toml::table parse_toml_input(std::string_view text, const std::string& source) {
+  try {
+    return parse_toml(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+}
+
+/// One TOML value written alone ("2e-3", "[1, 2]", "\"verlet\"": an override's or a study
+/// table's value text) as the key 'v' of a table (toml++ parses documents, not bare values);
+/// nullopt when the text is no TOML value.
+inline std::optional<toml::table> parse_toml_value(const std::string& text) {
+  try {
+    return parse_toml("v = " + text);
+  } catch (const toml::parse_error&) {
+    return std::nullopt;
+  }
 }
 
 /// A node (a table, an array, a value) as toml++ prints it, without raising one.

@@ -10,8 +10,8 @@
 
 #include "io/atomic_file.h"
 #include "postprocess/hysteresis.h"
+#include "study/study_record.h"
 #include "study/study_table.h"
-#include "study/sweep.h"
 
 namespace swarf {
 

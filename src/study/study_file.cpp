@@ -1,4 +1,4 @@
-// study_file.cpp: study files and their expansion into cases (see sweep.h, docs/studies.md).
+// study_file.cpp: study files and their expansion into cases (see study.h, docs/studies.md).
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -27,9 +27,9 @@
 #include "io/atomic_file.h"
 #include "setup/case_config.h"
 #include "setup/toml_parse.h"
+#include "study/study.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
-#include "study/sweep.h"
 #include "study/sweep_mpi.h"
 #include "swarf/core/errors.h"
 
@@ -320,13 +320,7 @@ void expand(const std::string& source, const Axes& axes, std::vector<std::map<st
 }  // namespace
 
 Study parse_study(const std::string& text, const std::string& source, const std::string& directory) {
-  toml::table root;
-  try {
-    root = parse_toml(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  const toml::table root = parse_toml_input(text, source);
   Study s;
   s.file = source;
   const StudyKeys keys = read_study_keys(root, source, s);

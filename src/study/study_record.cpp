@@ -1,5 +1,7 @@
 // study_record.cpp: a study's record in its output folder (study.json, reconciling an earlier
-// run's cases, each case's state from its summary) (see sweep.h).
+// run's cases, each case's state from its summary) (see study_record.h).
+#include "study/study_record.h"
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -28,7 +30,6 @@
 #include "setup/case_config.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
-#include "study/sweep.h"
 #include "study/sweep_mpi.h"
 #include "swarf/core/errors.h"
 

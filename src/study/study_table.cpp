@@ -15,7 +15,9 @@
 
 #include "io/atomic_file.h"
 #include "postprocess/script_dir.h"
+#include "setup/result_keys.h"
 #include "setup/toml_parse.h"
+#include "study/sweep.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -30,11 +32,6 @@ const std::vector<std::string> kSections{"results", "cutting", "chip", "uniaxial
 // Keys of "run" that measure the machine, not the physics: timing.csv only.
 const std::set<std::string> kTiming{"run.threads", "run.wall_time_s", "run.step_wall_time_s",
                                     "run.ns_per_particle_step"};
-
-bool is_component(const std::string& part) {
-  return part == "x" || part == "y" || part == "z" ||
-         (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }));
-}
 
 void flatten(const json& j, const std::string& name, std::vector<std::pair<std::string, std::string>>& out) {
   if (j.is_object()) {
@@ -69,30 +66,25 @@ std::string csv_cell(const std::string& s) {
 // A TOML value text as shown in the table (strings without their quotes).
 std::string cell_text(const std::string& toml_text) {
   if (toml_text.empty() || toml_text.front() != '"') return toml_text;
-  try {
-    auto t = parse_toml("v = " + toml_text);
-    if (auto s = t["v"].value<std::string>()) return *s;
-  } catch (const toml::parse_error&) {
-  }
+  if (const auto t = parse_toml_value(toml_text))
+    if (auto s = (*t)["v"].value<std::string>()) return *s;
   return toml_text;
 }
 
 // The numbers of a TOML value text: one for a number, its elements for an array of numbers.
 std::optional<std::vector<double>> numbers_of(const std::string& toml_text) {
-  try {
-    auto t = parse_toml("v = " + toml_text);
-    const toml::node& n = *t.get("v");
-    if (auto v = n.value<double>(); v && !n.is_boolean()) return std::vector<double>{*v};
-    if (auto a = n.as_array()) {
-      std::vector<double> out;
-      for (const auto& e : *a) {
-        auto v = e.value<double>();
-        if (!v || e.is_boolean()) return std::nullopt;
-        out.push_back(*v);
-      }
-      return out;
+  const auto t = parse_toml_value(toml_text);
+  if (!t) return std::nullopt;
+  const toml::node& n = *t->get("v");
+  if (auto v = n.value<double>(); v && !n.is_boolean()) return std::vector<double>{*v};
+  if (auto a = n.as_array()) {
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      auto v = e.value<double>();
+      if (!v || e.is_boolean()) return std::nullopt;
+      out.push_back(*v);
     }
-  } catch (const toml::parse_error&) {
+    return out;
   }
   return std::nullopt;
 }
@@ -131,60 +123,14 @@ std::optional<double> StudyTable::number(std::size_t row, const std::string& nam
   return v;
 }
 
-namespace {
-
-// Unit suffixes of summary keys, longer ones before their tails (_N_per_m before _m).
-const std::vector<std::pair<std::string, std::string>>& unit_suffixes() {
-  static const std::vector<std::pair<std::string, std::string>> suffixes{{"_N_s_per_m", "N s/m"},
-                                                                         {"_N_per_m", "N/m"},
-                                                                         {"_kg_per_m3", "kg/m^3"},
-                                                                         {"_rad_per_s", "rad/s"},
-                                                                         {"_m_per_s", "m/s"},
-                                                                         {"_per_us", "1/us"},
-                                                                         {"_Pa_s", "Pa s"},
-                                                                         {"_percent", "%"},
-                                                                         {"_m2", "m^2"},
-                                                                         {"_m3", "m^3"},
-                                                                         {"_deg", "deg"},
-                                                                         {"_rad", "rad"},
-                                                                         {"_Pa", "Pa"},
-                                                                         {"_J", "J"},
-                                                                         {"_W", "W"},
-                                                                         {"_N", "N"},
-                                                                         {"_kg", "kg"},
-                                                                         {"_m", "m"},
-                                                                         {"_s", "s"}};
-  return suffixes;
-}
-
-}  // namespace
-
 std::string unit_of_key(const std::string& flat_key) {
-  const auto& suffixes = unit_suffixes();
-  std::vector<std::string> parts;
-  std::stringstream ss(flat_key);
-  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
-  for (std::size_t k = parts.size(); k-- > 0;) {
-    if (k + 1 == parts.size() && is_component(parts[k]) && parts.size() > 1) continue;
-    for (const auto& [suffix, unit] : suffixes)
-      if (parts[k].size() > suffix.size() && parts[k].ends_with(suffix)) return unit;
-  }
-  return "1";
+  const ResultKey* k = find_result_key(flat_key);
+  return k ? std::string(k->unit) : "?";
 }
 
 std::string ci95_key_of(const std::string& flat_key) {
-  const auto dot = flat_key.rfind('.');
-  const std::string last = flat_key.substr(dot == std::string::npos ? 0 : dot + 1);
-  if (last.empty() || is_component(last)) return "";
-  std::string suffix;
-  for (const auto& [s, unit] : unit_suffixes())
-    if (last.size() > s.size() && last.ends_with(s)) {
-      suffix = s;
-      break;
-    }
-  std::string stem = flat_key.substr(0, flat_key.size() - suffix.size());
-  if (stem.ends_with("_mean")) stem.resize(stem.size() - 5);
-  return stem + "_ci95" + suffix;
+  const ResultKey* k = find_result_key(flat_key);
+  return k ? std::string(k->ci95) : "";
 }
 
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing) {

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "study/sweep.h"
+#include "study/study.h"
+#include "study/study_record.h"
 
 namespace swarf {
 
@@ -22,15 +23,15 @@ struct StudyTable {
   std::optional<double> number(std::size_t row, const std::string& name) const;
 };
 
-/// Unit of a flattened summary key from its suffix (_N_per_m -> "N/m", _deg -> "deg"); the
-/// nearest enclosing key with a suffix counts (deviation_percent.yield_stress -> "%"); no
-/// suffix anywhere: "1".
+/// Unit of a flattened summary key as the result table declares it (setup/result_keys.h):
+/// cutting.cutting_force_per_width_mean_N_per_m -> "N/m", a vector's component as its vector;
+/// "?" for a number no entry declares.
 std::string unit_of_key(const std::string& flat_key);
 
-/// The column of a metric's 95 % confidence half-width, by summary.json's naming: "_mean" becomes
-/// "_ci95" (cutting.cutting_force_per_width_mean_N_per_m -> cutting.cutting_force_per_width_ci95_N_per_m),
-/// else "_ci95" goes before the unit suffix (chip.friction_angle_deg -> chip.friction_angle_ci95_deg)
-/// or at the end (chip.compression_ratio -> chip.compression_ratio_ci95). "" for a vector component.
+/// The column of a metric's 95 % confidence half-width, as the result table declares it
+/// (cutting.cutting_force_per_width_mean_N_per_m -> cutting.cutting_force_per_width_ci95_N_per_m,
+/// chip.friction_angle_deg -> chip.friction_angle_ci95_deg); "" for a metric without one and
+/// for a vector component.
 std::string ci95_key_of(const std::string& flat_key);
 
 /// The study table (timing = false: DIR/study.csv; true: DIR/timing.csv, the wall times and

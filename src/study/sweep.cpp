@@ -30,6 +30,8 @@
 #include "io/atomic_file.h"
 #include "io/console.h"
 #include "setup/case_config.h"
+#include "study/study.h"
+#include "study/study_record.h"
 #include "study/study_table.h"
 #include "study/study_text.h"
 #include "study/sweep_mpi.h"

@@ -29,7 +29,7 @@
 #include "lattice_gen/lattice_file.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
-#include "study/sweep.h"
+#include "study/study.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
