@@ -28,7 +28,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   rods_.setup(m_);
   groups_.setup(m_.groups, m_.particles);
   bodies_.setup(m_, set_.solver == Solver::Newton);
-  FlowSystem::setup(m_);
+  flows_.setup(m_);
   if (m_.contacts) {
     contact_force_.assign(m_.particles.size(), Vec3::Zero());
     contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
@@ -50,14 +50,14 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
 
 void Simulation::apply_flows(double h) {
   double out = 0.0;  // J
-  if (const auto remove = FlowSystem::outflow(m_, out); !remove.empty()) {
+  if (const auto remove = flows_.outflow(m_, out); !remove.empty()) {
     // (their rods' elastic energy leaves with them)
     const double elastic_before = m_.rods.size() > 0 ? elastic_energy() : 0.0;
     remove_particles(remove);
     const double elastic_after = m_.rods.size() > 0 ? elastic_energy() : 0.0;
     ledger_.flow_energy += out + (elastic_before - elastic_after);
   }
-  if (const Particles add = FlowSystem::inflow(m_, h, ledger_); !add.position.empty()) append_particles(add);
+  if (const Particles add = flows_.inflow(m_, h, ledger_); !add.position.empty()) append_particles(add);
 }
 
 double Simulation::contact_power(bool from_kick) const {
@@ -264,9 +264,19 @@ void Simulation::update_mesh_step_limit() {
 }
 
 bool Simulation::prescribe(double h) {
-  const bool within = bodies_.prescribe_meshes(m_, time_, h);
-  groups_.prescribe(m_.groups, m_.particles, time_, h);
+  const StepContext c = context(h);
+  bool within = true;
+  for_each_system([&](auto& s) {
+    if constexpr (requires { s.prescribe(c); }) within = s.prescribe(c) && within;
+  });
   return within;
+}
+
+double Simulation::ghost_reach() const {
+  double reach = contacts_.enabled() ? contacts_.ghost_reach(m_.particles) : 0.0;
+  auto& self = const_cast<Simulation&>(*this);  // (systems() ties the members; nothing is changed)
+  self.for_each_system([&](const auto& s) { reach = std::max(reach, s.ghost_reach(m_)); });
+  return reach;
 }
 
 bool Simulation::kick_drift(double h) {
@@ -404,9 +414,10 @@ void Simulation::commit() {
 }
 
 void Simulation::account(double h) {
-  bodies_.account(m_, h, ledger_);
-  rods_.account(h, ledger_);
-  groups_.account(m_.groups, m_.particles, h, ledger_);
+  const StepContext c = context(h);
+  for_each_system([&](auto& s) {
+    if constexpr (requires { s.account(c); }) s.account(c);
+  });
   // Moving meshes (tools) work on the particles: minus the force the particles exert on the
   // mesh times its displacement (trapezoid over the step).
   if (contacts_.enabled()) {

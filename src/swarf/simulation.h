@@ -28,6 +28,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 #include "swarf/contacts/contacts.h"
@@ -44,6 +45,7 @@
 #include "swarf/systems/flow_system.h"
 #include "swarf/systems/group_system.h"
 #include "swarf/systems/rod_system.h"
+#include "swarf/systems/step_context.h"
 
 namespace swarf {
 
@@ -140,6 +142,9 @@ class Simulation {
   /// function saves, loads and hashes it. Load into a Simulation constructed from the same
   /// World as the one saved.
   void visit_state(StateArchive& ar);
+  /// How far beyond a domain's region a rank would need copies of particles for every force the
+  /// step computes (rods, contacts, inflows): the largest of the systems' reaches, m (issue 38).
+  double ghost_reach() const;
   /// 64-bit hash of that state (bit-exact: any difference in any field changes it).
   std::uint64_t state_hash() const;
 
@@ -199,9 +204,22 @@ class Simulation {
   double last_dt_ = 0;
   EnergyLedger ledger_;
   StepStats stats_;
+  // The systems, each with its own state and stages (systems/). A stage that several systems
+  // have calls them in this fixed order, one call each, found at compile time (no virtual call,
+  // no empty stage): prescribe (the meshes, then the groups), account (the bodies' loads, the
+  // rods' viscous work, the groups' reactions), resize after the door, visit_state. A new
+  // system is a member and an entry in systems(). The contacts are called by name: the rods'
+  // commit and bond formation hand them pairs, and the integrators time them apart.
+  BodySystem bodies_;
   RodSystem rods_;
   GroupSystem groups_;
-  BodySystem bodies_;
+  FlowSystem flows_;
+  auto systems() { return std::tie(bodies_, rods_, groups_, flows_); }
+  template <class F>
+  void for_each_system(F&& f) {
+    std::apply([&](auto&... s) { (f(s), ...); }, systems());
+  }
+  StepContext context(double h) { return StepContext{m_, time_, h, set_.beta, set_.gamma, implicit_, ledger_}; }
   std::vector<Vec3> mesh_force_;     // force on each mesh after the last accepted step, N
   double sweep_force_level2_ = 0;    // the particles' force level of the last sweep squared, N^2
   std::vector<Vec3> contact_force_;  // contact part of each particle's force, N

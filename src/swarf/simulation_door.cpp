@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
@@ -14,8 +15,9 @@ namespace swarf {
 
 void Simulation::resize_scratch() {
   const std::size_t n = m_.particles.size();
-  rods_.resize(m_);
-  groups_.resize(m_.groups, m_.particles);
+  for_each_system([&](auto& s) {
+    if constexpr (requires { s.resize(std::as_const(m_)); }) s.resize(m_);
+  });
   if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
   if (rotations_) update_free_to_rotate();
   moved2_ = -1.0;

@@ -91,15 +91,13 @@ void Simulation::visit_state(StateArchive& ar) {
   r.for_each_field([&](const char* name, auto& v) { ar.array(std::string("rods/") + name, v, load ? any : m); });
   for (std::size_t g = 0; g < ng; ++g) ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
   if (load) check_loaded_world(ends);
-  bodies_.visit_state(ar, m_);
+  for_each_system([&](auto& s) { s.visit_state(ar, m_, ledger_); });
   const std::size_t n_now = p.size();
-  groups_.visit_state(ar, ng);
   ar.array("mesh_force", mesh_force_, StateArchive::kAnySize);
   ar.array("contact_force", contact_force_, contacts_.enabled() ? n_now : 0);
   ar.scalar("time", time_);
   ar.scalar("dt", dt_);
   ar.scalar("last_dt", last_dt_);
-  rods_.visit_state(ar);
   ar.scalar("rotations", rotations_);
   ar.scalar("rebuild_lists", rebuild_lists_);
   ar.scalar("contact_power_old", contact_power_old_);
@@ -115,7 +113,6 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("stats/max_iterations", stats_.max_iterations);
   ar.scalar("stats/last_iterations", stats_.last_iterations);
   if (contacts_.enabled()) contacts_.visit_state(ar, p);
-  FlowSystem::visit_state(ar, m_, ledger_);
   if (load) {
     // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
     if (!(std::isfinite(time_) && time_ >= 0.0) || !(std::isfinite(dt_) && dt_ > 0.0) || !std::isfinite(last_dt_))

@@ -250,4 +250,10 @@ std::size_t ContactSystem::touching() const {
   return c;
 }
 
+double ContactSystem::ghost_reach(const Particles& p) const {
+  double largest = 0.0;
+  for (double r : p.radius) largest = std::max(largest, r);
+  return 2.0 * largest + prm_.skin;
+}
+
 }  // namespace swarf

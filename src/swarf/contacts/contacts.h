@@ -197,6 +197,9 @@ class ContactSystem {
   void mesh_wrenches(std::vector<Vec3>& force, std::vector<Vec3>& torque) const;
   /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
   double elastic_energy() const;
+  /// Domains (issue 38): how far beyond its region a rank needs copies of particles for the
+  /// sphere-sphere candidates, the contact distance of the two largest spheres plus the skin, m.
+  double ghost_reach(const Particles& p) const;
   /// Current number of touching sphere-sphere and sphere-triangle contacts.
   std::size_t touching() const;
   /// Current number of touching sphere-sphere contacts.

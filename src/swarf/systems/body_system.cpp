@@ -231,7 +231,9 @@ double BodySystem::load_power(const World& m_) const {
   return p;
 }
 
-bool BodySystem::prescribe_meshes(World& m_, double t, double h) {
+bool BodySystem::prescribe(const StepContext& c) {
+  World& m_ = c.world;
+  const double t = c.t, h = c.h;
   const double t_new = t + h;
   // A mesh may move in a step no further than a particle may (step_limit_): a tool that
   // jumps past the block would cut nothing.
@@ -261,10 +263,10 @@ void BodySystem::throw_mesh_too_far(const World& m_, double t, double h, std::in
   throw SimulationError("a mesh moves too far in one step");
 }
 
-void BodySystem::account(const World& m_, double h, EnergyLedger& ledger) {
-  if (m_.bodies.empty()) return;  // the bodies' external loads (gravity: potential_energy())
-  const double power = load_power(m_);
-  ledger.external_work += 0.5 * (power_old_ + power) * h;
+void BodySystem::account(const StepContext& c) {
+  if (c.world.bodies.empty()) return;  // the bodies' external loads (gravity: potential_energy())
+  const double power = load_power(c.world);
+  c.ledger.external_work += 0.5 * (power_old_ + power) * c.h;
   power_old_ = power;
 }
 
@@ -281,7 +283,7 @@ double BodySystem::potential_energy(const World& m_) const {
   return bodies;
 }
 
-void BodySystem::visit_state(StateArchive& ar, World& m_) {
+void BodySystem::visit_state(StateArchive& ar, World& m_, EnergyLedger&) {
   const bool load = ar.loading();
   const std::size_t nm = m_.meshes.size();
   std::vector<Vec3> offset, velocity;

@@ -21,6 +21,7 @@
 #include "swarf/core/vec3.h"
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
+#include "swarf/systems/step_context.h"
 
 namespace swarf {
 
@@ -47,7 +48,7 @@ class BodySystem {
   double step_limit() const { return step_limit_; }
 
   /// The prescribed meshes at t + h; false if one would move further than the step limit.
-  bool prescribe_meshes(World& w, double t, double h);
+  bool prescribe(const StepContext& c);
   [[noreturn]] void throw_mesh_too_far(const World& w, double t, double h, std::int64_t step,
                                        double max_step_displacement) const;
 
@@ -70,14 +71,20 @@ class BodySystem {
 
   /// The power of the loads now, as the start of the first step's trapezoid (construction).
   void init_power(const World& w) { power_old_ = load_power(w); }
-  /// The work of the bodies' external loads over an accepted step of size h.
-  void account(const World& w, double h, EnergyLedger& ledger);
+  /// The work of the bodies' external loads over an accepted step.
+  void account(const StepContext& c);
 
   /// The rigid body that moves mesh k, or -1 (a prescribed mesh).
   int mesh_body(std::size_t k) const { return mesh_body_[k]; }
   double kinetic_energy(const World& w) const;    ///< J
   double potential_energy(const World& w) const;  ///< in gravity, from the initial centres, J
-  void visit_state(StateArchive& ar, World& w);
+  void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
+
+  // Domains (issue 38): the bodies and meshes are few and held whole on every rank; a body's
+  // wrench is the sum of the ranks' contact parts. The contact system, not this one, needs the
+  // particles near the meshes.
+  static constexpr Sharing sharing = Sharing::Replicated;
+  double ghost_reach(const World&) const { return 0.0; }
 
  private:
   bool advance(World& w, double t, double h, double beta, double gamma);  // from body_n_; false if too far

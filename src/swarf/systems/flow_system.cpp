@@ -133,6 +133,14 @@ Particles FlowSystem::inflow(World& m_, double h, EnergyLedger& ledger) {
   return add;
 }
 
+double FlowSystem::ghost_reach(const World& m_) const {
+  if (m_.inflows.empty()) return 0.0;
+  double largest = 0.0, new_largest = 0.0;
+  for (double r : m_.particles.radius) largest = std::max(largest, r);
+  for (const Inflow& f : m_.inflows) new_largest = std::max(new_largest, f.radius_max);
+  return largest + new_largest;
+}
+
 void FlowSystem::visit_state(StateArchive& ar, World& m_, EnergyLedger& ledger) {
   if (m_.inflows.empty() && m_.outflows.empty()) return;  // (only then: older checkpoints and hashes stay as they were)
   const bool load = ar.loading();

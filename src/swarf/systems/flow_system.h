@@ -15,6 +15,7 @@
 
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
+#include "swarf/systems/step_context.h"
 
 namespace swarf {
 
@@ -30,7 +31,14 @@ class FlowSystem {
   /// The particles the inflows create after a step of h, s (their kinetic energy booked).
   static Particles inflow(World& w, double h, EnergyLedger& ledger);
   /// The regions' counters and the flow energy (nothing without regions).
-  static void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
+  void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
+
+  // Domains (issue 38): the regions and their counters are held whole on every rank; a new
+  // particle must not overlap one near the box, on whichever rank it lies.
+  static constexpr Sharing sharing = Sharing::Replicated;
+  /// How far beyond its region a rank needs copies of particles for the inflows' overlap
+  /// check: the largest radius_max of the inflows plus the largest radius there is, m.
+  double ghost_reach(const World& w) const;
 };
 
 }  // namespace swarf

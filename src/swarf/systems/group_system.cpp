@@ -11,16 +11,23 @@ void GroupSystem::setup(const std::vector<Group>& groups, const Particles& p) {
   u_new_.assign(ng, Vec3::Zero());
   reaction_.assign(ng, Vec3::Zero());
   v_.assign(ng, Vec3::Zero());
-  resize(groups, p);
+  mass_.assign(ng, 0.0);
+  for (std::size_t g = 0; g < ng; ++g)
+    for (auto i : groups[g].members) mass_[g] += p.mass[i];
 }
 
-void GroupSystem::resize(const std::vector<Group>& groups, const Particles& p) {
+void GroupSystem::resize(const World& w) {
+  const auto& groups = w.groups;
+  const auto& p = w.particles;
   mass_.assign(groups.size(), 0.0);
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (auto i : groups[g].members) mass_[g] += p.mass[i];
 }
 
-void GroupSystem::prescribe(const std::vector<Group>& groups, Particles& p, double t, double h) {
+bool GroupSystem::prescribe(const StepContext& c) {
+  const auto& groups = c.world.groups;
+  auto& p = c.world.particles;
+  const double t = c.t, h = c.h;
   const double t_new = t + h;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     u_old_[g] = groups[g].motion.displacement_at(t);
@@ -36,6 +43,7 @@ void GroupSystem::prescribe(const std::vector<Group>& groups, Particles& p, doub
           p.velocity[i][c] = v[c];
         }
   }
+  return true;
 }
 
 void GroupSystem::reactions(const std::vector<Group>& groups, const Particles& p, std::vector<Vec3>& out) {
@@ -44,7 +52,11 @@ void GroupSystem::reactions(const std::vector<Group>& groups, const Particles& p
     for (auto i : groups[g].members) out[g] -= p.force[i];
 }
 
-void GroupSystem::account(const std::vector<Group>& groups, const Particles& p, double h, EnergyLedger& ledger) {
+void GroupSystem::account(const StepContext& ctx) {
+  const auto& groups = ctx.world.groups;
+  const double h = ctx.h;
+  EnergyLedger& ledger = ctx.ledger;
+  const auto& p = ctx.world.particles;
   reaction_old_.swap(reaction_);
   reactions(groups, p, reaction_);
   for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -61,7 +73,8 @@ void GroupSystem::account(const std::vector<Group>& groups, const Particles& p, 
   }
 }
 
-void GroupSystem::visit_state(StateArchive& ar, std::size_t ng) {
+void GroupSystem::visit_state(StateArchive& ar, World& w, EnergyLedger&) {
+  const std::size_t ng = w.groups.size();
   ar.array("groups/u_old", u_old_, ng);
   ar.array("groups/u_new", u_new_, ng);
   ar.array("groups/reaction", reaction_, ng);

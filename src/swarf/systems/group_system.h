@@ -15,6 +15,7 @@
 #include "swarf/state/motion.h"
 #include "swarf/state/particles.h"
 #include "swarf/systems/energy_ledger.h"
+#include "swarf/systems/step_context.h"
 
 namespace swarf {
 
@@ -24,15 +25,21 @@ class GroupSystem {
  public:
   /// Sizes the per-group values and sums the groups' masses.
   void setup(const std::vector<Group>& groups, const Particles& p);
-  /// The prescribed components at t + h (positions from the initial ones, velocities over the step).
-  void prescribe(const std::vector<Group>& groups, Particles& p, double t, double h);
+  /// The prescribed components at t + h (positions from the initial ones, velocities over the
+  /// step). Always within the step's limits (true).
+  bool prescribe(const StepContext& c);
   /// The reactions of the forces now (the initial state's, at construction).
   void init_reactions(const std::vector<Group>& groups, const Particles& p) { reactions(groups, p, reaction_); }
-  /// After an accepted step of size h: the reactions and the work of the motions.
-  void account(const std::vector<Group>& groups, const Particles& p, double h, EnergyLedger& ledger);
+  /// After an accepted step: the reactions and the work of the motions.
+  void account(const StepContext& c);
   /// The members' masses again, after the door changed the particles.
-  void resize(const std::vector<Group>& groups, const Particles& p);
-  void visit_state(StateArchive& ar, std::size_t n_groups);
+  void resize(const World& w);
+  void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
+
+  // Domains (issue 38): a group's members may lie on several ranks; its reaction is the sum of
+  // the ranks' parts. It computes no pair force, so it needs no ghosts.
+  static constexpr Sharing sharing = Sharing::Replicated;
+  double ghost_reach(const World&) const { return 0.0; }
 
   /// Force the group's prescribed motion exerts on the rest of the body, N (minus the sum of
   /// the internal forces on its particles).

@@ -80,10 +80,23 @@ void RodSystem::part(World& m_) {
   }
 }
 
-void RodSystem::account(double h, EnergyLedger& ledger) const {
+void RodSystem::account(const StepContext& c) const {
   double visc = 0.0;
   for (double v : block_viscous_) visc += v;
-  ledger.viscous_work += visc * h;
+  c.ledger.viscous_work += visc * c.h;
+}
+
+double RodSystem::ghost_reach(const World& m_) const {
+  const auto& r = m_.rods;
+  const auto& x = m_.particles.position;
+  double longest2 = 0.0;
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    if (!r.intact[k]) continue;
+    Vec3 d = x[r.ends[k][1]] - x[r.ends[k][0]];
+    m_.periodic.wrap(d);
+    longest2 = std::max(longest2, d.squaredNorm());
+  }
+  return std::sqrt(longest2);
 }
 
 double RodSystem::elastic_energy(const World& m_) const {
@@ -94,7 +107,7 @@ double RodSystem::elastic_energy(const World& m_) const {
   });
 }
 
-void RodSystem::visit_state(StateArchive& ar) {
+void RodSystem::visit_state(StateArchive& ar, World&, EnergyLedger&) {
   ar.scalar("broken_rods", broken_);
   ar.scalar("formed_rods", formed_);
 }

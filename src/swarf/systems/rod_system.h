@@ -25,6 +25,7 @@
 #include "swarf/core/vec3.h"
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
+#include "swarf/systems/step_context.h"
 
 namespace swarf {
 
@@ -50,8 +51,8 @@ class RodSystem {
   /// between pressed lattice pairs; the contact lists lose the formed pairs and gain the
   /// exchanged ones. Returns the pairs whose particles gained or lost a rod.
   PairList form(World& w, ContactSystem& contacts, EnergyLedger& ledger);
-  /// The viscous work of the step's last evaluation over a step of h, s.
-  void account(double h, EnergyLedger& ledger) const;
+  /// The viscous work of the step's last evaluation over the step.
+  void account(const StepContext& c) const;
 
   /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy(const World& w) const;
@@ -59,7 +60,13 @@ class RodSystem {
   std::size_t broken() const { return broken_; }
   /// Rods formed (or formed again) during the run by bond formation.
   std::size_t formed() const { return formed_; }
-  void visit_state(StateArchive& ar);
+  void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
+
+  // Domains (issue 38): a rod is computed once, by the rank that owns its first particle; that
+  // rank needs a copy of the other end.
+  static constexpr Sharing sharing = Sharing::PerRod;
+  /// How far beyond its region a rank needs copies of particles: the longest intact rod now, m.
+  double ghost_reach(const World& w) const;
 
  private:
   void part(World& w);  // rods on the meshes' parting lines break in this trial
