@@ -568,9 +568,13 @@ double Simulation::rotational_energy() const {
 double Simulation::elastic_energy() const {
   const auto& r = m_.rods;
   const double A = r.area;
-  return deterministic_sum(r.size(), [&](std::size_t k) {
-    return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
-  });
+  return std::visit(  // (one visit: the sum's loop sees the concrete law)
+      [&](const auto& law) {
+        return deterministic_sum(r.size(), [&](std::size_t k) {
+          return r.intact[k] ? elastic_energy_density(law, r.stress[k]) * A * r.rest_length[k] : 0.0;
+        });
+      },
+      r.law);
 }
 
 double Simulation::potential_energy() const {
