@@ -141,6 +141,7 @@ const std::vector<std::pair<std::string, std::string>>& unit_suffixes() {
                                                                          {"_rad_per_s", "rad/s"},
                                                                          {"_m_per_s", "m/s"},
                                                                          {"_per_us", "1/us"},
+                                                                         {"_per_s", "1/s"},
                                                                          {"_Pa_s", "Pa s"},
                                                                          {"_percent", "%"},
                                                                          {"_m2", "m^2"},
