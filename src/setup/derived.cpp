@@ -265,6 +265,7 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
     law.flow = make_flow_curve(rod.flow_plastic_strain, rod.flow_stress);
   }
   d.law = law;
+  if (rod.law == "johnson_cook_rate") d.law = JohnsonCookRateRodLaw{law, rod.rate_sensitivity, rod.reference_rate};
 
   return choose_step(cs, d, std::isfinite(rod.tensile_strength) || std::isfinite(rod.failure_strain), modal, zeta);
 }
