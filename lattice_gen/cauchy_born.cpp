@@ -16,15 +16,15 @@ constexpr int kVoigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
 
 }  // namespace
 
-CauchyBornCrystal::CauchyBornCrystal(const RodLaw& law, double cell_edge, double rod_area)
+CauchyBornCrystal::CauchyBornCrystal(const AnyRodLaw& law, double cell_edge, double rod_area)
     : law_(law), a_(cell_edge), l0_(cell_edge / std::sqrt(2.0)), area_(rod_area) {
   if (!(cell_edge > 0) || !std::isfinite(cell_edge))
     throw InputError(fmt::format("material: the cell edge must be a positive length in m, got {}", cell_edge));
   if (!(rod_area > 0) || !std::isfinite(rod_area))
     throw InputError(fmt::format("material: the rod area must be a positive area in m^2, got {}", rod_area));
-  if (!(law.youngs_modulus > 0) || !std::isfinite(law.youngs_modulus))
-    throw InputError(
-        fmt::format("material: the rod's Young's modulus must be positive in Pa, got {}", law.youngs_modulus));
+  const double E = elastic_modulus(law);
+  if (!(E > 0) || !std::isfinite(E))
+    throw InputError(fmt::format("material: the rod's Young's modulus must be positive in Pa, got {}", E));
   for (int k = 0; k < 6; ++k) r0_[k] = 0.5 * a_ * Eigen::Vector3d(kFccBonds[k][0], kFccBonds[k][1], kFccBonds[k][2]);
 }
 

@@ -18,7 +18,7 @@
 #include <Eigen/Dense>
 #include <array>
 
-#include "swarf/laws/rod_law.h"
+#include "swarf/laws/any_rod_law.h"
 
 namespace swarf {
 
@@ -38,7 +38,7 @@ struct CrystalTrial {
 class CauchyBornCrystal {
  public:
   /// 'cell_edge' a (m), 'rod_area' A (m^2). Throws InputError on non-positive lengths or modulus.
-  CauchyBornCrystal(const RodLaw& law, double cell_edge, double rod_area);
+  CauchyBornCrystal(const AnyRodLaw& law, double cell_edge, double rod_area);
 
   /// The trial at F (lattice frame) from the committed state. A rod already broken, or marked in
   /// 'carry_nothing', carries no stress (its trial flag then says broken); the law's own trial
@@ -56,8 +56,8 @@ class CauchyBornCrystal {
   double rest_length() const { return l0_; }  ///< l0 = a/sqrt(2), m
   double rod_area() const { return area_; }
   /// kb = E A / l0, N/m.
-  double rod_stiffness() const { return law_.youngs_modulus * area_ / l0_; }
-  const RodLaw& law() const { return law_; }
+  double rod_stiffness() const { return elastic_modulus(law_) * area_ / l0_; }
+  const AnyRodLaw& law() const { return law_; }
 
   /// The small-strain elastic constants (Voigt 6x6, order xx yy zz yz xz xy, Pa) of the intact
   /// crystal: C_ijkl = (1/(a^3/4)) sum_k kb l0^2 n_i n_j n_k n_l. C11 = 2 kb/a, C12 = C44 = kb/a.
@@ -69,7 +69,7 @@ class CauchyBornCrystal {
   double closest_unbonded(const Eigen::Matrix3d& F) const;
 
  private:
-  RodLaw law_;
+  AnyRodLaw law_;  ///< (evaluated six rods at a time, a visit each: not a kernel)
   double a_, l0_, area_;
   std::array<Eigen::Vector3d, 6> r0_;  ///< the rod vectors, m
   std::array<double, 6> shift_{};

@@ -172,7 +172,7 @@ Vec5 solve_lateral(const CauchyBornCrystal& c, const Eigen::Matrix3d& Q, double 
 
 }  // namespace
 
-std::vector<MaterialPoint> uniaxial_test(const RodLaw& law, double cell_edge, double rod_area,
+std::vector<MaterialPoint> uniaxial_test(const AnyRodLaw& law, double cell_edge, double rod_area,
                                          const std::array<double, 3>& direction,
                                          const std::vector<double>& turning_points, double increment) {
   CauchyBornCrystal crystal(law, cell_edge, rod_area);
@@ -211,7 +211,7 @@ std::vector<MaterialPoint> uniaxial_test(const RodLaw& law, double cell_edge, do
   return out;
 }
 
-std::vector<MaterialPoint> simple_shear_test(const RodLaw& law, double cell_edge, double rod_area,
+std::vector<MaterialPoint> simple_shear_test(const AnyRodLaw& law, double cell_edge, double rod_area,
                                              const std::array<double, 3>& direction,
                                              const std::array<double, 3>& normal, double gamma_max, double increment) {
   CauchyBornCrystal crystal(law, cell_edge, rod_area);

@@ -22,7 +22,7 @@
 #include <array>
 #include <vector>
 
-#include "swarf/laws/rod_law.h"
+#include "swarf/laws/any_rod_law.h"
 
 namespace swarf {
 
@@ -55,7 +55,7 @@ struct MaterialPoint {
 /// lattice has collapsed: an unbonded neighbour closer than l0/2 (the rods alone cannot stop
 /// it; the DEM's contacts engage at l0, see closest_unbonded). Throws
 /// InputError on bad arguments, SimulationError when the lateral solve fails.
-std::vector<MaterialPoint> uniaxial_test(const RodLaw& law, double cell_edge, double rod_area,
+std::vector<MaterialPoint> uniaxial_test(const AnyRodLaw& law, double cell_edge, double rod_area,
                                          const std::array<double, 3>& direction,
                                          const std::vector<double>& turning_points, double increment);
 
@@ -63,7 +63,7 @@ std::vector<MaterialPoint> uniaxial_test(const RodLaw& law, double cell_edge, do
 /// orthonormal, any length) from 0 to gamma_max in steps of at most 'increment'; the
 /// deformation is prescribed entirely (periodic, homogeneous), so sigma_11, sigma_22, sigma_33
 /// are the lattice's normal-stress (Poynting-like) effects. Stops early like uniaxial_test.
-std::vector<MaterialPoint> simple_shear_test(const RodLaw& law, double cell_edge, double rod_area,
+std::vector<MaterialPoint> simple_shear_test(const AnyRodLaw& law, double cell_edge, double rod_area,
                                              const std::array<double, 3>& direction,
                                              const std::array<double, 3>& normal, double gamma_max, double increment);
 

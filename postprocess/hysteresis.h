@@ -12,14 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "swarf/laws/rod_law.h"
+#include "swarf/laws/any_rod_law.h"
 
 namespace swarf {
 
 /// The predicted bar stress along a strain history (call in time order).
 class BarPrediction {
  public:
-  BarPrediction(const RodLaw& law, double stress_factor) : law_(law), factor_(stress_factor) { law_.viscosity = 0; }
+  // (Evaluated at rate 0: the quasi-static curve, without the viscous part or a rate factor.)
+  BarPrediction(const AnyRodLaw& law, double stress_factor) : law_(law), factor_(stress_factor) {}
   double stress(double bar_strain) {
     if (broken_) return 0.0;
     const RodResponse r = evaluate(law_, bar_strain / 3.0, 0.0, shift_);
@@ -36,7 +37,7 @@ class BarPrediction {
   }
 
  private:
-  RodLaw law_;
+  AnyRodLaw law_;
   double factor_;
   double shift_ = 0.0;
   bool broken_ = false;

@@ -43,9 +43,11 @@ Scene scene(double gap, bool free_sphere) {
     p.inv_inertia[i] = 1.0 / p.inertia[i][0];
   }
   auto& r = w.rods;
-  r.law.youngs_modulus = kE;
-  r.law.yield_strain = HUGE_VAL;
-  r.law.tensile_strength = HUGE_VAL;
+  RodLaw law;
+  law.youngs_modulus = kE;
+  law.yield_strain = HUGE_VAL;
+  law.tensile_strength = HUGE_VAL;
+  r.law = law;
   r.area = std::numbers::pi * kR * kR;
   r.formation.overlap = kOverlap;
   r.ends = {{0, 1}, {2, 3}};

@@ -151,11 +151,12 @@ TEST(MaterialPreset, C45FillsTheMaterial) {
   const Model m = build_model(parse_case(kCase, "m.toml", {}));
   EXPECT_EQ(m.settings.material.density, 7870.0);
   EXPECT_EQ(m.settings.material.youngs_modulus, 205e9);
-  EXPECT_EQ(m.derived.law.flow.points, 8);
+  EXPECT_EQ(std::get<RodLaw>(m.derived.law).flow.points, 8);
   // The rod's yield stress: A E_rod / ((3 sqrt 3 / 2) E100).
-  const double e_rod = m.derived.law.youngs_modulus;
-  EXPECT_NEAR(m.derived.law.flow.stress[0], 553.1e6 * e_rod / (1.5 * std::sqrt(3.0) * 205e9), 1e-6 * 553.1e6);
-  EXPECT_TRUE(std::isfinite(m.derived.law.failure_strain));
+  const double e_rod = std::get<RodLaw>(m.derived.law).youngs_modulus;
+  EXPECT_NEAR(std::get<RodLaw>(m.derived.law).flow.stress[0], 553.1e6 * e_rod / (1.5 * std::sqrt(3.0) * 205e9),
+              1e-6 * 553.1e6);
+  EXPECT_TRUE(std::isfinite(std::get<RodLaw>(m.derived.law).failure_strain));
   EXPECT_TRUE(m.derived.implicit);  // rods can break: Newmark by default
   // A key given beside the preset wins.
   const Model n = build_model(parse_case(kCase + "", "m.toml", {"material.density=7800"}));
@@ -196,8 +197,8 @@ TEST(FailureElongation, SetsTheFailureStrainOfTheLatticeRodAtEveryRadius) {
         radius, kElongation);
     const Model m = build_model(parse_case(text, "m.toml", {}));
     const double want = kElongation / (2.0 * radius);
-    EXPECT_NEAR(m.derived.law.failure_strain, want, 1e-12 * want) << radius;
-    const RodLaw& law = m.derived.law;
+    EXPECT_NEAR(std::get<RodLaw>(m.derived.law).failure_strain, want, 1e-12 * want) << radius;
+    const RodLaw& law = std::get<RodLaw>(m.derived.law);
     EXPECT_FALSE(evaluate(law, want * (1 - 1e-9), 0.0, 0.0).broken) << radius;
     EXPECT_TRUE(evaluate(law, want * (1 + 1e-9), 0.0, 0.0).broken) << radius;
     // Both keys: refused, naming both.

@@ -67,7 +67,7 @@ TEST(CaseFiles, HardeningCurveAndFailureStrainReachTheRodLaw) {
                                     "failure_strain = 0.5");
   ASSERT_EQ(case_error(curve), "");
   const Model m = build_model(parse_case(curve, "curve.toml", {}));
-  const RodLaw& law = m.derived.law;
+  const RodLaw& law = std::get<RodLaw>(m.derived.law);
   EXPECT_EQ(law.flow.points, 3);
   EXPECT_EQ(law.flow.plastic_strain[1], 0.01);
   EXPECT_EQ(law.flow.stress[2], 350e6);
@@ -75,7 +75,7 @@ TEST(CaseFiles, HardeningCurveAndFailureStrainReachTheRodLaw) {
   EXPECT_EQ(law.hardening, 0.0);
   EXPECT_EQ(law.failure_strain, 0.5);
   EXPECT_TRUE(m.derived.implicit);  // rods can break: the auto scheme is Newmark
-  EXPECT_EQ(m.rods.law.flow.points, 3);
+  EXPECT_EQ(std::get<RodLaw>(m.rods.law).flow.points, 3);
   // The rules between the keys.
   expect_mentions(case_error(replace(curve, "flow_stress = [200e6, 300e6, 350e6]\n", "")),
                   {"rod.flow_plastic_strain", "both"});

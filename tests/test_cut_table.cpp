@@ -46,7 +46,7 @@ TEST(CutTable, TheDefaultCutAsACutTableBuildsTheDefaultModel) {
   for (std::size_t k = 0; k < a.rods.size(); ++k)
     ASSERT_NEAR(a.rods.rest_length[k], b.rods.rest_length[k], 3e-6 * a.rods.rest_length[k]);
 
-  const RodLaw &la = a.rods.law, &lb = b.rods.law;
+  const RodLaw &la = std::get<RodLaw>(a.rods.law), &lb = std::get<RodLaw>(b.rods.law);
   EXPECT_NEAR(la.youngs_modulus, lb.youngs_modulus, 1e-4 * la.youngs_modulus);
   EXPECT_EQ(la.failure_strain, lb.failure_strain);
   EXPECT_NEAR(la.viscosity, lb.viscosity, 1e-4 * la.viscosity);

@@ -193,7 +193,7 @@ TEST(Disorder, RodsAreTheOrderedLatticesTwelveNeighboursAtTheirJitteredLengths) 
 
 TEST(Disorder, TheJitteredBlockStartsStressFreeAndStaysAtRest) {
   Model m = jittered(11, 0.1, {"workpiece.periodic_width=true"});
-  const double E = m.derived.law.youngs_modulus, A = m.derived.rod_area;
+  const double E = std::get<RodLaw>(m.derived.law).youngs_modulus, A = m.derived.rod_area;
   // Had the rods kept the ordered length 2R, the jitter would strain them by up to 10 %.
   double strain_if_ordered = 0.0;
   for (double L0 : m.rods.rest_length) strain_if_ordered = std::max(strain_if_ordered, std::abs(L0 / (2 * kR) - 1));
@@ -239,14 +239,14 @@ TEST(Disorder, TheStableStepAllowsForTheShortestRodTheSameForEverySeed) {
   const Model ordered = block({"rod.damping_ratio=0"});
   const Model a = jittered(1, 0.2, {"rod.damping_ratio=0"}), b = jittered(2, 0.2, {"rod.damping_ratio=0"});
   // The material is the ordered block's whatever the seed.
-  EXPECT_EQ(a.derived.law.youngs_modulus, ordered.derived.law.youngs_modulus);
+  EXPECT_EQ(std::get<RodLaw>(a.derived.law).youngs_modulus, std::get<RodLaw>(ordered.derived.law).youngs_modulus);
   EXPECT_EQ(a.derived.rod_stiffness, ordered.derived.rod_stiffness);
   // kb_max = E A/(2R (1 - A)), so the undamped step is sqrt(1 - A) of the ordered one.
   EXPECT_NEAR(a.derived.dt_stable / ordered.derived.dt_stable, std::sqrt(1 - 0.2), 1e-12);
   EXPECT_EQ(a.derived.dt_stable, b.derived.dt_stable);
   EXPECT_EQ(ordered.derived.rod_stiffness_max, ordered.derived.rod_stiffness);
   // ... and is a bound: no rod is stiffer than kb_max.
-  const double E = a.derived.law.youngs_modulus, area = a.derived.rod_area;
+  const double E = std::get<RodLaw>(a.derived.law).youngs_modulus, area = a.derived.rod_area;
   for (double L0 : a.rods.rest_length) EXPECT_LE(E * area / L0, a.derived.rod_stiffness_max * (1 + 1e-12));
 }
 

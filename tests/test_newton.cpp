@@ -99,8 +99,8 @@ void linear_chain_matches_the_recurrence(const std::string& rod) {
   Simulation sim(m, m.step);
   DenseChain ref;
   ref.n = n;
-  ref.kb = m.rods.law.youngs_modulus * m.rods.area / kL0;
-  ref.cv = m.rods.law.viscosity * m.rods.area / kL0;
+  ref.kb = std::get<RodLaw>(m.rods.law).youngs_modulus * m.rods.area / kL0;
+  ref.cv = std::get<RodLaw>(m.rods.law).viscosity * m.rods.area / kL0;
   ref.mass.resize(n);
   ref.x.resize(n);
   ref.v.resize(n);

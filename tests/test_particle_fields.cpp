@@ -74,7 +74,9 @@ TEST(ParticleFields, InteriorVirialStressIsTheCauchyBornStressUnderAGeneralDefor
 // Ep = diag(e, -e/2, -e/2) has the equivalent e. Tolerance 1e-10 relative (a 6 x 6 solve).
 TEST(ParticleFields, PlasticStrainOfRodsFromOneTensorIsItsVonMisesEquivalent) {
   Model m = build_model(parse_case(kBlock, "fields", {}));
-  const double e = 0.02, to_plastic = (m.rods.law.youngs_modulus - m.rods.law.hardening) / m.rods.law.youngs_modulus;
+  const double e = 0.02,
+               to_plastic = (std::get<RodLaw>(m.rods.law).youngs_modulus - std::get<RodLaw>(m.rods.law).hardening) /
+                            std::get<RodLaw>(m.rods.law).youngs_modulus;
   Eigen::Matrix3d ep = Eigen::Matrix3d::Zero();
   ep.diagonal() << e, -0.5 * e, -0.5 * e;
   for (std::size_t k = 0; k < m.rods.size(); ++k) {

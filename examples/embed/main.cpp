@@ -82,13 +82,15 @@ Block add_fcc_block(swarf::World& w) {
   // third of the lattice's strain, so yield at a rod strain of 1e-3 is a yield stress of
   // 3 x 1e-3 x 4 kb/(3a), about 450 MPa; the hardening slope of 0.07 E is about 10 GPa for
   // the lattice, and rods that fail in tension at 340 MPa make it fail at about 750 MPa.
-  r.law.youngs_modulus = kYoungs;
-  r.law.yield_strain = 1e-3;
-  r.law.hardening = 0.07 * kYoungs;  // Pa, slope of the plastic branch
-  r.law.tensile_strength = 340e6;    // Pa
+  swarf::RodLaw law;  // the paper's law; Rods hold any of laws/any_rod_law.h
+  law.youngs_modulus = kYoungs;
+  law.yield_strain = 1e-3;
+  law.hardening = 0.07 * kYoungs;  // Pa, slope of the plastic branch
+  law.tensile_strength = 340e6;    // Pa
   // Damping as a fraction of critical for two particles and one rod, c = 2 zeta sqrt(kb m/2),
   // written as the rod's viscosity eta = c L0 / A: it calms the ringing the cut starts.
-  r.law.viscosity = kDampingRatio * 2.0 * std::sqrt(b.rod_stiffness * b.particle_mass / 2.0) * d / r.area;
+  law.viscosity = kDampingRatio * 2.0 * std::sqrt(b.rod_stiffness * b.particle_mass / 2.0) * d / r.area;
+  r.law = law;
   r.reset_state();  // every rod intact, no plastic shift
   r.build_rows(p.size());
   return b;

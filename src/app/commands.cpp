@@ -100,6 +100,7 @@ struct RodCommand final : Command {
     sub->add_option("--steps", steps, "Increments per segment (default 100)");
   }
   int run() override {
+    check_rod_options(law);
     write_rod_csv(std::cout, drive_rod(law, parse_list(path_s, "--path"), steps));
     return 0;
   }

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/plots.h"
+#include "app/summary.h"
 #include "io/atomic_file.h"
 #include "io/console.h"
 #include "lattice_gen/cauchy_born.h"
@@ -74,8 +75,8 @@ double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) &
 // 2 kb/(a E), r = 1/4.
 std::vector<double> small_strain_mapping(const LabTest& t, const CauchyBornCrystal& c,
                                          const std::vector<MaterialPoint>& curve) {
-  const RodLaw& law = c.law();
-  const double g = c.rod_stiffness() / (c.cell_edge() * law.youngs_modulus);
+  const AnyRodLaw& law = c.law();
+  const double g = c.rod_stiffness() / (c.cell_edge() * elastic_modulus(law));
   double factor = 4 * g, r = 1.0 / 3.0;
   if (t.shear) {
     factor = 2 * g;
@@ -217,18 +218,7 @@ int run_material(const MaterialOptions& o) {
   doc["overrides"] = o.overrides;
   doc["increment"] = o.increment;
   doc["strain_rate_per_s"] = 0.0;
-  nlohmann::json law{{"youngs_modulus_Pa", d.law.youngs_modulus},
-                     {"yield_strain", value(d.law.yield_strain)},
-                     {"hardening_modulus_Pa", d.law.hardening},
-                     {"tensile_strength_Pa", value(d.law.tensile_strength)},
-                     {"failure_strain", value(d.law.failure_strain)}};
-  if (d.law.flow.points > 0) {
-    law["flow_plastic_strain"] = std::vector<double>(d.law.flow.plastic_strain.begin(),
-                                                     d.law.flow.plastic_strain.begin() + d.law.flow.points);
-    law["flow_stress_Pa"] = std::vector<double>(d.law.flow.stress.begin(),
-                                                d.law.flow.stress.begin() + d.law.flow.points);
-  }
-  doc["rod_law"] = law;
+  doc["rod_law"] = rod_law_to_json(d.law, "");
   doc["lattice"] = {{"cell_edge_m", d.cell_edge},
                     {"rest_length_m", l0},
                     {"rod_area_m2", d.rod_area},
@@ -307,7 +297,7 @@ int run_material(const MaterialOptions& o) {
   fmt::print(
       "material lab: {} (E_rod = {:.4g} Pa, a = {:.4g} m, A = {:.4g} m^2); lattice E100 = {:.4g} Pa, "
       "E110 = {:.4g} Pa, C44 = {:.4g} Pa\n",
-      cs.source, d.law.youngs_modulus, d.cell_edge, d.rod_area, e100, e110, C(3, 3));
+      cs.source, elastic_modulus(d.law), d.cell_edge, d.rod_area, e100, e110, C(3, 3));
   fmt::print("{:<15} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>9}\n", "test", "E [GPa]", "yield", "flow0.1",
              "flow0.5", "flow1", "failure", "dV_p/V", "contact");
   fmt::print("{:<15} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>9}\n", "", "", "[MPa]", "[MPa]", "[MPa]",

@@ -9,11 +9,7 @@
 
 namespace swarf {
 
-std::vector<RodSample> drive_rod(const RodLaw& law, const std::vector<double>& path, int steps) {
-  if (path.size() < 2 || path[0] != 0.0) throw InputError("--path: needs at least two turning points, the first 0");
-  for (double p : path)
-    if (!std::isfinite(p)) throw InputError(fmt::format("--path: turning point {} is not finite", p));
-  if (steps < 1) throw InputError(fmt::format("--steps: must be a positive integer, got {}", steps));
+void check_rod_options(const RodLaw& law) {
   if (!(law.youngs_modulus > 0) || !std::isfinite(law.youngs_modulus))
     throw InputError(fmt::format("--E: must be a positive modulus in Pa, got {}", law.youngs_modulus));
   if (!(law.yield_strain > 0))
@@ -22,6 +18,13 @@ std::vector<RodSample> drive_rod(const RodLaw& law, const std::vector<double>& p
     throw InputError(fmt::format("--hardening: must lie in [0, E) Pa, got {}", law.hardening));
   if (!(law.tensile_strength > 0))
     throw InputError(fmt::format("--tensile-strength: must be positive (Pa), got {}", law.tensile_strength));
+}
+
+std::vector<RodSample> drive_rod(const AnyRodLaw& law, const std::vector<double>& path, int steps) {
+  if (path.size() < 2 || path[0] != 0.0) throw InputError("--path: needs at least two turning points, the first 0");
+  for (double p : path)
+    if (!std::isfinite(p)) throw InputError(fmt::format("--path: turning point {} is not finite", p));
+  if (steps < 1) throw InputError(fmt::format("--steps: must be a positive integer, got {}", steps));
   std::vector<RodSample> out;
   out.push_back({0.0, 0.0, 0.0, false});
   double shift = 0.0;

@@ -84,23 +84,22 @@ void print_setup(const Model& m, int threads) {
           "strength {:.4g} Pa):\n",
           m.settings.material.youngs_modulus, m.settings.material.yield_stress, m.settings.material.hardening_modulus,
           m.settings.material.tensile_strength);
-    say("  rod: E = {:.4g} Pa, yield strain {:.4g}, hardening k = {:.4g} Pa, strength {:.4g} Pa\n",
-        d.law.youngs_modulus, d.law.yield_strain, d.law.hardening, d.law.tensile_strength);
-    if (std::isfinite(d.law.failure_strain))
-      say("  rod: fails at strain {:.4g} in tension{}\n", d.law.failure_strain,
-          std::isfinite(m.settings.rod.failure_elongation)
-              ? fmt::format(" (rod.failure_elongation = {:.4g} m over L0)", m.settings.rod.failure_elongation)
-              : std::string());
+    // The law as it describes itself: its name, then each parameter (a table as a list).
+    const RodLawDescription law = describe(d.law);
+    std::string params;
+    for (const LawParameter& p : law.parameters) {
+      if (p.table && p.values.empty()) continue;  // (no hardening curve)
+      const std::string unit = p.unit == "1" ? "" : " " + p.unit;
+      std::string v = p.table ? "[" : "";
+      for (std::size_t i = 0; i < p.values.size(); ++i) v += fmt::format("{}{:.4g}", i ? ", " : "", p.values[i]);
+      params += fmt::format("{}{} = {}{}{}", params.empty() ? "" : ", ", p.name, v, p.table ? "]" : "", unit);
+    }
+    say("  rod law \"{}\": {}\n", law.name, params);
+    if (std::isfinite(m.settings.rod.failure_elongation))
+      say("  rod: failure_strain from rod.failure_elongation = {:.4g} m over L0\n", m.settings.rod.failure_elongation);
     if (m.rods.formation.enabled())
       say("  rod: unbonded lattice particles pressed beyond a relative overlap of {:.4g} form a rod\n",
           m.rods.formation.overlap);
-    if (d.law.flow.points > 0) {
-      std::string pts;
-      for (int i = 0; i < d.law.flow.points; ++i)
-        pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", d.law.flow.plastic_strain[i],
-                           d.law.flow.stress[i] * 1e-6);
-      say("  rod hardening curve (plastic strain, flow stress): {}\n", pts);
-    }
     say("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area, d.rod_stiffness,
         d.rod_damping);
   }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 #include "app/case_echo.h"
@@ -25,15 +26,25 @@ nlohmann::json number(double v) {
   return v > 0 ? "inf" : "-inf";
 }
 
-/// The rod law's hardening curve points (plastic strains or stresses); empty for the linear law.
-static nlohmann::json flow_points(const FlowCurve& f, bool strains) {
-  nlohmann::json j = nlohmann::json::array();
-  for (int i = 0; i < f.points; ++i) j.push_back(strains ? f.plastic_strain[i] : f.stress[i]);
+nlohmann::json rod_law_to_json(const AnyRodLaw& law, const std::string& prefix) {
+  // The units a law's parameters carry, as key suffixes (study_table.cpp reads them back).
+  static const std::map<std::string, std::string> suffix{{"1", ""}, {"Pa", "_Pa"}, {"Pa s", "_Pa_s"}, {"1/s", "_per_s"}};
+  const RodLawDescription d = describe(law);
+  nlohmann::json j{{prefix + "law", d.name}};
+  for (const LawParameter& p : d.parameters) {
+    const std::string key = prefix + p.name + suffix.at(p.unit);
+    if (!p.table) {
+      j[key] = number(p.values[0]);
+      continue;
+    }
+    j[key] = nlohmann::json::array();
+    for (double v : p.values) j[key].push_back(number(v));
+  }
   return j;
 }
 
 nlohmann::json derived_to_json(const Derived& d) {
-  return {
+  nlohmann::json j{
       {"radius_m", d.radius},
       {"nn_distance_m", d.nn_distance},
       {"cell_edge_m", d.cell_edge},
@@ -42,15 +53,8 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"rod_area_m2", d.rod_area},
       {"rod_stiffness_N_per_m", d.rod_stiffness},
       {"rod_law_from_material", d.converted},
-      {"rod_youngs_modulus_Pa", d.law.youngs_modulus},
-      {"rod_yield_strain", number(d.law.yield_strain)},
-      {"rod_hardening_modulus_Pa", d.law.hardening},
-      {"rod_tensile_strength_Pa", number(d.law.tensile_strength)},
-      {"rod_failure_strain", number(d.law.failure_strain)},
       {"calibration_shear_mismatch", d.calibration_mismatch},
       {"calibration_shear_points_reached", d.calibration_points},
-      {"rod_flow_plastic_strain", flow_points(d.law.flow, true)},
-      {"rod_flow_stress_Pa", flow_points(d.law.flow, false)},
       {"rod_damping_N_s_per_m", d.rod_damping},
       {"rod_viscosity_Pa_s", d.rod_viscosity},
       {"omega_max_rad_per_s", d.omega_max},
@@ -85,6 +89,8 @@ nlohmann::json derived_to_json(const Derived& d) {
       {"membrane_wave_transverse_m_per_s", d.membrane_wave_transverse},
       {"membrane_dt_cfl_s", d.membrane_dt_cfl},
   };
+  j.update(rod_law_to_json(d.law, "rod_"));  // (its viscosity is rod_viscosity_Pa_s above, the same number)
+  return j;
 }
 
 nlohmann::json summary_head(const Model& model, const Simulation& sim, const std::string& restarted_from) {

@@ -18,6 +18,10 @@ struct Model;
 nlohmann::json derived_to_json(const Derived& d);
 /// A finite number, or the string "inf"/"-inf"/"nan" (JSON has no such numbers).
 nlohmann::json number(double v);
+/// The rod law as its describe() gives it: "<prefix>law" its name, then "<prefix><parameter>"
+/// with the unit as the summary's key suffix (_Pa, _Pa_s, _per_s; none for 1), a number or,
+/// for a table, an array (empty: no table).
+nlohmann::json rod_law_to_json(const AnyRodLaw& law, const std::string& prefix);
 
 /// The summary's head: version, status "completed", the final state's hash, the case (file,
 /// overrides, effective settings), the derived quantities and the counts; 'restarted_from'

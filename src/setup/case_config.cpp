@@ -202,6 +202,9 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!((d.bond_overlap > -0.2 && d.bond_overlap < 1.0) || d.bond_overlap == kInf))
     r.fail("bond_overlap", r.get("bond_overlap"),
            "must lie in (-0.2, 1) (a relative overlap; below 0 a gap), or be inf (never)");
+  if (d.law != "johnson_cook_rate")
+    for (const char* key : {"rate_sensitivity", "reference_rate"})
+      if (r.has(key)) r.fail(key, r.get(key), "belongs to the rate law: set rod.law = \"johnson_cook_rate\"");
   if (r.has("failure_elongation") && r.has("failure_strain"))
     r.fail(
         "failure_elongation", r.get("failure_elongation"),

@@ -110,6 +110,9 @@ struct RodSettings {
   double failure_elongation = kInf;         ///< stretch L - L0 at which a rod breaks, m; inf = never
   std::vector<double> flow_plastic_strain;  ///< hardening curve: plastic strains of its points, 1 (first 0)
   std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
+  std::string law = "bilinear";             ///< "bilinear" (the paper's) or "johnson_cook_rate" (rate hardening)
+  double rate_sensitivity = 0.0;            ///< johnson_cook_rate: C of R = 1 + C ln(max(|rate|/rate_ref, 1)), 1
+  double reference_rate = 1.0;              ///< johnson_cook_rate: rate_ref, 1/s
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
   double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
   bool neighbour_exchange = false;  ///< a particle with 12 rods gives up its most stretched one for a new neighbour

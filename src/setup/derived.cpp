@@ -113,10 +113,12 @@ static Derived membrane_derived(const CaseSettings& cs, const Lattice& lat, Deri
   const double kb = r.bond_stiffness, m = r.particle_mass, zeta = ms.damping_ratio;
   d.rod_damping = zeta * 2.0 * std::sqrt(kb * m / 2.0);
   d.rod_viscosity = d.rod_damping * l0 / d.rod_area;
-  d.law.youngs_modulus = kb * l0 / d.rod_area;
-  d.law.yield_strain = kInf;
-  d.law.tensile_strength = kInf;
-  d.law.viscosity = d.rod_viscosity;
+  RodLaw law;
+  law.youngs_modulus = kb * l0 / d.rod_area;
+  law.yield_strain = kInf;
+  law.tensile_strength = kInf;
+  law.viscosity = d.rod_viscosity;
+  d.law = law;
   d.omega_max = r.omega_max;
   // As for the FCC block (below): the zone-edge mode, omega^2 = modal kb/m, has sqrt(modal/2)
   // times the two-particle mode's damping ratio.
@@ -251,16 +253,19 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
   }
   d.bar_failure_stress = d.bar_stress_factor * rod.tensile_strength;
 
-  d.law.youngs_modulus = E;
-  d.law.yield_strain = rod.yield_strain;
-  d.law.hardening = rod.hardening_modulus;
-  d.law.tensile_strength = rod.tensile_strength;
-  d.law.viscosity = d.rod_viscosity;
-  d.law.failure_strain = rod.failure_strain;
+  RodLaw law;
+  law.youngs_modulus = E;
+  law.yield_strain = rod.yield_strain;
+  law.hardening = rod.hardening_modulus;
+  law.tensile_strength = rod.tensile_strength;
+  law.viscosity = d.rod_viscosity;
+  law.failure_strain = rod.failure_strain;
   if (!rod.flow_plastic_strain.empty()) {
     // The hardening curve carries the hardening; its first stress is the yield stress.
-    d.law.flow = make_flow_curve(rod.flow_plastic_strain, rod.flow_stress);
+    law.flow = make_flow_curve(rod.flow_plastic_strain, rod.flow_stress);
   }
+  d.law = law;
+  if (rod.law == "johnson_cook_rate") d.law = JohnsonCookRateRodLaw{law, rod.rate_sensitivity, rod.reference_rate};
 
   return choose_step(cs, d, std::isfinite(rod.tensile_strength) || std::isfinite(rod.failure_strain), modal, zeta);
 }

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "setup/case_config.h"
-#include "swarf/laws/rod_law.h"
+#include "swarf/laws/any_rod_law.h"
 
 namespace swarf {
 
@@ -55,7 +55,7 @@ struct Derived {
   double membrane_wave_transverse = 0;    ///< c_T = sqrt(T / rho_A), m/s
   double membrane_dt_cfl = 0;             ///< d / c_L: a wave crosses one spacing per step, s
 
-  RodLaw law;                       ///< the rod law with the viscosity filled in
+  AnyRodLaw law;                    ///< the rod law with the viscosity filled in
   bool converted = false;           ///< the rod law was derived from [material] macroscopic properties
   double calibration_mismatch = 0;  ///< shear calibration: largest |lattice/flow curve - 1| left, 1
   int calibration_points = 0;       ///< flow-curve points beyond the yield that the shear test reached

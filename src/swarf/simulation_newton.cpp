@@ -251,6 +251,7 @@ void Simulation::newton_tangent(double h) {
   v.trial_broken = r.trial_broken.data();
   v.coef = r.force_coef.data();
   v.x = p.position.data();
+  v.v = p.velocity.data();
   v.axis = nk_.axis.data();
   v.axial = nk_.axial.data();
   v.lateral = nk_.lateral.data();

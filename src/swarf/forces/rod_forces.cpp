@@ -11,9 +11,10 @@ namespace swarf {
 namespace {
 
 // The rod kernel over one block of rods. Raw pointers keep the compiler from reloading the
-// arrays' bases after every store (the uint8_t stores may alias anything). 'Viscous' is a
-// compile-time switch so the undamped lattice does not gather velocities.
-template <class Law, bool Viscous, bool Wrap>
+// arrays' bases after every store (the uint8_t stores may alias anything). 'Rate' is a
+// compile-time switch so a law that reads no strain rate (the undamped paper's law) does not
+// gather velocities.
+template <class Law, bool Rate, bool Wrap>
 void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
                const double* rest_length, const double* inv_rest_length, const double* shift,
                const std::uint8_t* intact, const Vec3* x, const Vec3* v, double* trial_shift,
@@ -51,7 +52,7 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
       const double inv_l0 = inv_rest_length[k];
       const double strain = (len - l0) * inv_l0;
       double rate = 0.0;
-      if constexpr (Viscous) {
+      if constexpr (Rate) {
         const std::int32_t i = ends[k][0], j = ends[k][1];
         const Vec3 dx(dxs[0][c], dxs[1][c], dxs[2][c]);
         rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
@@ -65,7 +66,7 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
         coef[k] = 0.0;
       } else {
         coef[k] = (res.stress + res.viscous_stress) * A * inv_len;
-        if constexpr (Viscous) visc += res.viscous_stress * rate * A * l0;
+        if constexpr (Rate) visc += res.viscous_stress * rate * A * l0;
       }
     }
   }
@@ -73,12 +74,12 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
   changed = any;
 }
 
-}  // namespace
-
-void evaluate_rods(const RodLaw& rod_law, double area, const RodKernelView& view, Periodic periodic) {
+// All the rods with one concrete law.
+template <class Law>
+void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& view, Periodic periodic) {
   // Copies in locals: through references the compiler would reload them after every store
   // (the uint8_t stores may alias anything).
-  const RodLaw law = rod_law;
+  const Law law = rod_law;
   const double A = area;
   const std::size_t m = view.rods, nb = block_count(m);
   if (m == 0) return;
@@ -95,16 +96,15 @@ void evaluate_rods(const RodLaw& rod_law, double area, const RodKernelView& view
   double* coef = view.coef;
   double* block_visc = view.block_viscous;
   int* block_changed = view.block_changed;
-  const bool viscous = law.viscosity != 0.0;
-  using Law = RodLaw;
+  const bool rate = uses_rate(law);
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < nb; ++b) {
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
-    // Compile-time switches: the common undamped or non-periodic cases pay for neither.
-    if (viscous && periodic.on())
+    // Compile-time switches: the common rate-free or non-periodic cases pay for neither.
+    if (rate && periodic.on())
       rod_block<Law, true, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
                                  stress, coef, block_visc[b], block_changed[b], periodic);
-    else if (viscous)
+    else if (rate)
       rod_block<Law, true, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
                                   stress, coef, block_visc[b], block_changed[b], periodic);
     else if (periodic.on())
@@ -114,6 +114,13 @@ void evaluate_rods(const RodLaw& rod_law, double area, const RodKernelView& view
       rod_block<Law, false, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
                                    stress, coef, block_visc[b], block_changed[b], periodic);
   }
+}
+
+}  // namespace
+
+void evaluate_rods(const AnyRodLaw& law, double area, const RodKernelView& view, Periodic periodic) {
+  // One visit per call: the loops above see the concrete law.
+  std::visit([&](const auto& l) { evaluate_rods_with(l, area, view, periodic); }, law);
 }
 
 }  // namespace swarf

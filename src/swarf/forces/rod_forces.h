@@ -7,7 +7,7 @@
 //
 // The law is a template parameter of the block loop (no virtual call per rod): a law is a
 // value type with a pure evaluate(law, strain, rate, shift) -> RodResponse (laws/rod_law.h);
-// the dispatch to the block loop happens once per call.
+// the variant of laws (laws/any_rod_law.h) is visited once per call.
 #pragma once
 
 #include <array>
@@ -16,7 +16,7 @@
 
 #include "swarf/core/periodic.h"
 #include "swarf/core/vec3.h"
-#include "swarf/laws/rod_law.h"
+#include "swarf/laws/any_rod_law.h"
 
 namespace swarf {
 
@@ -41,6 +41,6 @@ struct RodKernelView {
 
 /// Evaluates every intact rod of cross-section 'area' (m^2) with 'law', in parallel over
 /// fixed blocks of rods (the same results for any thread count).
-void evaluate_rods(const RodLaw& law, double area, const RodKernelView& view, Periodic periodic);
+void evaluate_rods(const AnyRodLaw& law, double area, const RodKernelView& view, Periodic periodic);
 
 }  // namespace swarf

@@ -5,10 +5,13 @@
 
 namespace swarf {
 
-void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, const RodTangentView& view,
-                       Periodic periodic) {
+namespace {
+
+template <class Law>
+void rod_tangent_setup_with(const Law& law, double area, double kx, double kv, const RodTangentView& view,
+                            Periodic periodic) {
   const std::size_t m = view.rods;
-  const double A = area, E = law.youngs_modulus, eta = law.viscosity;
+  const double A = area;
   const auto* ends = view.ends;
   const Vec3* x = view.x;
   const RodTangentView v = view;  // (a local copy: the compiler need not reload the pointers after each store)
@@ -23,14 +26,26 @@ void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, con
     periodic.wrap(dx);
     const double len = dx.norm();
     const Vec3 n = dx / len;
-    // The branch of the trial: the law moved the shift only on the plastic branch.
-    const double slope = v.trial_shift[k] != v.shift[k] ? plastic_tangent(law, v.trial_shift[k]) : E;
-    const double c = v.coef[k];
     const double inv_l0 = v.inv_rest_length[k];
+    double strain = 0.0, rate = 0.0;
+    if constexpr (Law::kTangentReadsMotion) {
+      strain = len * inv_l0 - 1.0;
+      rate = n.dot(v.v[ends[k][1]] - v.v[ends[k][0]]) * inv_l0;
+    }
+    // The branch of the trial (the law moved the shift only on the plastic branch) and its slopes.
+    const RodTangent t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
+    const double c = v.coef[k];
     v.axis[k] = n;
-    v.axial[k] = kx * (slope * A * inv_l0 - c) + kv * eta * A * inv_l0;
+    v.axial[k] = kx * (t.stiffness * A * inv_l0 - c) + kv * t.damping * A * inv_l0;
     v.lateral[k] = kx * c;
   }
+}
+
+}  // namespace
+
+void rod_tangent_setup(const AnyRodLaw& law, double area, double kx, double kv, const RodTangentView& view,
+                       Periodic periodic) {
+  std::visit([&](const auto& l) { rod_tangent_setup_with(l, area, kx, kv, view, periodic); }, law);
 }
 
 }  // namespace swarf

@@ -9,7 +9,9 @@
 // E_t is the slope of the rod law's branch in the latest evaluation (its trial state): E
 // when the trial kept the committed shift, the plastic branch's slope (plastic_tangent: k, or
 // the hardening curve's E H / (E + H)) when the trial moved it
-// (plastic flow); a rod broken in the trial carries nothing. The viscous stress also depends
+// (plastic flow); a rod broken in the trial carries nothing. The law's tangent() gives E_t and
+// the rate slope that replaces eta in C_k (eta, or more for a rate-hardening law); a law whose
+// tangent reads the trial's strain and rate (kTangentReadsMotion) gets them from x and v. The viscous stress also depends
 // on the positions through n; that term is left out (it is not symmetric and is of the order
 // of the strain rate times h; Newton then converges linearly on damped 3-D motion instead of
 // quadratically, and exactly on the axial motion the tests check).
@@ -29,7 +31,7 @@
 
 #include "swarf/core/periodic.h"
 #include "swarf/core/vec3.h"
-#include "swarf/laws/rod_law.h"
+#include "swarf/laws/any_rod_law.h"
 
 namespace swarf {
 
@@ -44,14 +46,16 @@ struct RodTangentView {
   const std::uint8_t* trial_broken = nullptr;  ///< of the latest evaluation
   const double* coef = nullptr;                ///< of the latest evaluation, N/m
   const Vec3* x = nullptr;                     ///< positions of that evaluation, m
+  const Vec3* v = nullptr;                     ///< velocities of that evaluation, m/s (read only by a law
+                                               ///< whose tangent depends on the rate)
   Vec3* axis = nullptr;                        ///< out: unit axis n, 1
   double* axial = nullptr;                     ///< out: coefficient of n n^T in S_k, kg
   double* lateral = nullptr;                   ///< out: coefficient of I in S_k, kg
 };
 
 /// Sets up S_k = kx K_k + kv C_k for every rod (kx = beta h^2 in s^2, kv = gamma h in s),
-/// in parallel over rods (each rod's values depend on nothing else).
-void rod_tangent_setup(const RodLaw& law, double area, double kx, double kv, const RodTangentView& view,
+/// in parallel over rods (each rod's values depend on nothing else); the law is visited once.
+void rod_tangent_setup(const AnyRodLaw& law, double area, double kx, double kv, const RodTangentView& view,
                        Periodic periodic);
 
 /// S_k u = lateral u + axial (n . u) n, in N (u in m/s^2, the coefficients in kg).

@@ -40,9 +40,13 @@ ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic
   ParticleFields out;
   out.stress.assign(n, SymTensor{});
   auto& moment = out.stress;
-  // eps_p = (E - k)/E eps0, the relation plastic_work_density books (laws/rod_law.h).
-  const double to_plastic = r.law.youngs_modulus > 0 ? (r.law.youngs_modulus - r.law.hardening) / r.law.youngs_modulus
-                                                     : 0.0;
+  // Each rod's plastic strain from its state, as its law defines it (one visit for all rods).
+  std::vector<double> rod_plastic(r.size());
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < r.size(); ++k) rod_plastic[k] = plastic_strain(law, r.shift[k]);
+      },
+      r.law);
   const bool have_coef = r.force_coef.size() == r.size();
   auto axis = [&](std::size_t k) {
     const auto [i, j] = r.ends[k];
@@ -84,7 +88,7 @@ ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic
       if (len <= 0) continue;
       const auto g = normal_strain_row(d / len);
       normal += g * g.transpose();
-      rhs += g * (to_plastic * r.shift[k]);
+      rhs += g * rod_plastic[k];
     }
     if (rhs.isZero(0.0)) continue;  // (no plastic strain in any rod: 0 without a solve)
     // Least squares through the normal matrix's eigenvectors, keeping those it determines

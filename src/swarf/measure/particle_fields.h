@@ -14,8 +14,9 @@
 // (lattice_gen/cauchy_born.h); at free surfaces and in fragments the particle's volume is not
 // filled and the value is that of the particle's neighbourhood, as in any virial stress.
 //
-// Plastic strain. Each intact rod holds a plastic strain eps_p = (E - k)/E eps0 (its shift;
-// laws/rod_law.h) along its direction n. The particle's plastic strain tensor is the one whose
+// Plastic strain. Each intact rod holds a plastic strain eps_p, its law's plastic_strain() of
+// its state (the paper's law: (E - k)/E eps0; laws/rod_law.h), along its direction n. The
+// particle's plastic strain tensor is the one whose
 // normal strains n.E.n fit its intact rods' eps_p best in least squares (exact when the rods
 // span the 6 independent directions of a symmetric tensor, as an interior FCC particle's do;
 // otherwise the part the rods determine well: see particle_fields.cpp), and the field is its

@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "swarf/core/vec3.h"
+#include "swarf/laws/any_rod_law.h"
 #include "swarf/laws/bond_formation.h"
-#include "swarf/laws/rod_law.h"
 
 namespace swarf {
 
 struct Rods {
-  RodLaw law;               ///< one rod family: the law's parameters
+  AnyRodLaw law;            ///< one rod family: the law (any_rod_law.h) with its parameters
   double area = 0.0;        ///< cross-section A of every rod, m^2
   BondFormation formation;  ///< when unbonded lattice particles pressed together form a rod (off by default)
 

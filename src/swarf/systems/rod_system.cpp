@@ -102,9 +102,13 @@ double RodSystem::ghost_reach(const World& m_) const {
 double RodSystem::elastic_energy(const World& m_) const {
   const auto& r = m_.rods;
   const double A = r.area;
-  return deterministic_sum(r.size(), [&](std::size_t k) {
-    return r.intact[k] ? elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k] : 0.0;
-  });
+  return std::visit(  // (one visit: the sum's loop sees the concrete law)
+      [&](const auto& law) {
+        return deterministic_sum(r.size(), [&](std::size_t k) {
+          return r.intact[k] ? elastic_energy_density(law, r.stress[k]) * A * r.rest_length[k] : 0.0;
+        });
+      },
+      r.law);
 }
 
 void RodSystem::visit_state(StateArchive& ar, World&, EnergyLedger&) {
@@ -125,7 +129,6 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
   std::vector<PairList> broken_pairs(nb);
   // Raw pointers and a local law: through 'r' the compiler reloads every array's base after each
   // uint8_t store (which may alias anything), and this loop visits every rod of a changed block.
-  const RodLaw law = r.law;
   std::uint8_t* intact = r.intact.data();
   const std::uint8_t* trial_broken = r.trial_broken.data();
   const std::uint8_t* formed = r.formed.data();
@@ -135,29 +138,35 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
   double* stress = r.stress.data();
   const auto* ends = r.ends.data();
   const int* changed = block_changed_.data();
+  // One visit: the loop over the rods sees the concrete law, copied into a local.
+  std::visit(
+      [&](const auto& rod_law) {
+        const auto law = rod_law;
 #pragma omp parallel for schedule(static) if (nb > 0)
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (!changed[b]) continue;  // no rod of the block yielded or broke
-    const std::size_t end = std::min(m, (b + 1) * kBlock);
-    double plastic_b = 0.0, fracture_b = 0.0;
-    for (std::size_t k = b * kBlock; k < end; ++k) {
-      if (!intact[k]) continue;
-      const double dshift = trial_shift[k] - shift[k];
-      if (dshift != 0.0) {
-        plastic_b += plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
-        shift[k] = trial_shift[k];
-      }
-      if (trial_broken[k]) {
-        intact[k] = 0;
-        fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
-        stress[k] = 0.0;
-        broke_original[b] += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
-        broken_pairs[b].push_back(ends[k]);
-      }
-    }
-    plastic[b] = plastic_b;
-    fracture[b] = fracture_b;
-  }
+        for (std::size_t b = 0; b < nb; ++b) {
+          if (!changed[b]) continue;  // no rod of the block yielded or broke
+          const std::size_t end = std::min(m, (b + 1) * kBlock);
+          double plastic_b = 0.0, fracture_b = 0.0;
+          for (std::size_t k = b * kBlock; k < end; ++k) {
+            if (!intact[k]) continue;
+            const double dshift = trial_shift[k] - shift[k];
+            if (dshift != 0.0) {
+              plastic_b += plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
+              shift[k] = trial_shift[k];
+            }
+            if (trial_broken[k]) {
+              intact[k] = 0;
+              fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
+              stress[k] = 0.0;
+              broke_original[b] += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
+              broken_pairs[b].push_back(ends[k]);
+            }
+          }
+          plastic[b] = plastic_b;
+          fracture[b] = fracture_b;
+        }
+      },
+      r.law);
   PairList pairs;
   for (std::size_t b = 0; b < nb; ++b) {
     ledger.plastic_work += plastic[b];
@@ -232,6 +241,7 @@ RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLe
       }
       const std::int32_t k = give[s];
       r.intact[k] = 0;
+      // (A visit for one rod: a few rods per step at the most.)
       ledger.fracture_energy += elastic_energy_density(r.law, r.stress[k]) * A * r.rest_length[k];
       r.stress[k] = r.force_coef[k] = 0.0;
       broken_ += !r.formed[k];
