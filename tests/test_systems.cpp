@@ -29,9 +29,11 @@ World three_on_a_line(double R, double x1, double x2) {
   }
   p.next_id = 3;
   Rods& r = w.rods;
-  r.law.youngs_modulus = 2e11;
-  r.law.yield_strain = HUGE_VAL;
-  r.law.tensile_strength = HUGE_VAL;
+  RodLaw law;
+  law.youngs_modulus = 2e11;
+  law.yield_strain = HUGE_VAL;
+  law.tensile_strength = HUGE_VAL;
+  r.law = law;
   r.area = R * R;
   r.ends = {{0, 1}, {1, 2}};
   r.rest_length = {x1, x2 - x1};
