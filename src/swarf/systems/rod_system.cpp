@@ -116,6 +116,59 @@ void RodSystem::visit_state(StateArchive& ar, World&, EnergyLedger&) {
   ar.scalar("formed_rods", formed_);
 }
 
+namespace {
+
+// The arrays the commit reads and writes, as raw pointers.
+struct CommitArrays {
+  std::uint8_t* intact;
+  const std::uint8_t* trial_broken;
+  const std::uint8_t* formed;
+  const double* trial_shift;
+  const double* rest_length;
+  double* shift;
+  double* stress;
+  const std::array<std::int32_t, 2>* ends;
+};
+
+// One block of rods [begin, end): their trial shifts and breaks written back. The law and the
+// pointers are this function's own copies: through a closure's references (or through the Rods)
+// the compiler reloads every array's base after each uint8_t store, which may alias anything.
+// (Measured with callgrind: validation/bench/README.md, the systems restructuring.)
+template <class Law>
+void commit_block(const Law law, double A, std::size_t begin, std::size_t end, const CommitArrays arrays,
+                  double& plastic, double& fracture, std::size_t& broke_original, RodSystem::PairList& pairs) {
+  std::uint8_t* intact = arrays.intact;
+  const std::uint8_t* trial_broken = arrays.trial_broken;
+  const std::uint8_t* formed = arrays.formed;
+  const double* trial_shift = arrays.trial_shift;
+  const double* rest_length = arrays.rest_length;
+  double* shift = arrays.shift;
+  double* stress = arrays.stress;
+  const auto* ends = arrays.ends;
+  double plastic_b = 0.0, fracture_b = 0.0;
+  std::size_t original = 0;
+  for (std::size_t k = begin; k < end; ++k) {
+    if (!intact[k]) continue;
+    const double dshift = trial_shift[k] - shift[k];
+    if (dshift != 0.0) {
+      plastic_b += plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
+      shift[k] = trial_shift[k];
+    }
+    if (trial_broken[k]) {
+      intact[k] = 0;
+      fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
+      stress[k] = 0.0;
+      original += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
+      pairs.push_back(ends[k]);
+    }
+  }
+  plastic = plastic_b;
+  fracture = fracture_b;
+  broke_original = original;
+}
+
+}  // namespace
+
 RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
   auto& r = m_.rods;
   const double A = r.area;
@@ -127,43 +180,17 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
   // The rods that break now, per block: their pairs become contact candidates (and their
   // particles may become free to rotate).
   std::vector<PairList> broken_pairs(nb);
-  // Raw pointers and a local law: through 'r' the compiler reloads every array's base after each
-  // uint8_t store (which may alias anything), and this loop visits every rod of a changed block.
-  std::uint8_t* intact = r.intact.data();
-  const std::uint8_t* trial_broken = r.trial_broken.data();
-  const std::uint8_t* formed = r.formed.data();
-  const double* trial_shift = r.trial_shift.data();
-  const double* rest_length = r.rest_length.data();
-  double* shift = r.shift.data();
-  double* stress = r.stress.data();
-  const auto* ends = r.ends.data();
-  const int* changed = block_changed_.data();
-  // One visit: the loop over the rods sees the concrete law, copied into a local.
+  // One visit: the loop over the blocks sees the concrete law (commit_block).
   std::visit(
-      [&](const auto& rod_law) {
-        const auto law = rod_law;
+      [&](const auto& law) {
+        const CommitArrays a{r.intact.data(),      r.trial_broken.data(), r.formed.data(), r.trial_shift.data(),
+                             r.rest_length.data(), r.shift.data(),        r.stress.data(), r.ends.data()};
+        const int* changed = block_changed_.data();
 #pragma omp parallel for schedule(static) if (nb > 0)
         for (std::size_t b = 0; b < nb; ++b) {
           if (!changed[b]) continue;  // no rod of the block yielded or broke
-          const std::size_t end = std::min(m, (b + 1) * kBlock);
-          double plastic_b = 0.0, fracture_b = 0.0;
-          for (std::size_t k = b * kBlock; k < end; ++k) {
-            if (!intact[k]) continue;
-            const double dshift = trial_shift[k] - shift[k];
-            if (dshift != 0.0) {
-              plastic_b += plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
-              shift[k] = trial_shift[k];
-            }
-            if (trial_broken[k]) {
-              intact[k] = 0;
-              fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
-              stress[k] = 0.0;
-              broke_original[b] += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
-              broken_pairs[b].push_back(ends[k]);
-            }
-          }
-          plastic[b] = plastic_b;
-          fracture[b] = fracture_b;
+          commit_block(law, A, b * kBlock, std::min(m, (b + 1) * kBlock), a, plastic[b], fracture[b], broke_original[b],
+                       broken_pairs[b]);
         }
       },
       r.law);
