@@ -28,6 +28,7 @@ struct Particles {
   std::vector<double> radius;            ///< m
   std::vector<std::uint8_t> prescribed;  ///< bitmask of prescribed components (1=x, 2=y, 4=z)
   std::vector<std::int32_t> group;       ///< index of the particle's group, -1 if none
+  std::vector<double> temperature;       ///< K; 0 = not given one yet (ThermalSystem sets it; stays 0 without heat)
   // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
   // so torques come from contacts; the machinery is here for them).
   std::vector<Quat> orientation;    ///< unit quaternion, body to world
@@ -55,6 +56,7 @@ struct Particles {
     f("radius", radius);
     f("prescribed", prescribed);
     f("group", group);
+    f("temperature", temperature);
     f("orientation", orientation);
     f("omega", omega);
     f("omega_dot", omega_dot);
@@ -76,6 +78,7 @@ struct Particles {
     radius.resize(n, 0.0);
     prescribed.resize(n, 0);
     group.resize(n, -1);
+    temperature.resize(n, 0.0);
     orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));
     omega.resize(n, Vec3::Zero());
     omega_dot.resize(n, Vec3::Zero());
