@@ -77,6 +77,9 @@ side = "x-"
 [uniaxial]
 strain_path = [0.0, 1e-3]
 [contact]
+[heat]
+heat_capacity = 486.0
+conductivity = 50.7
 [environment]
 [[mesh]]
 edge1 = [1.0, 0.0, 0.0]
@@ -206,6 +209,7 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("motion", motion_keys());
   expect_every_member_keyed("uniaxial", uniaxial_keys(), &UniaxialSettings::enabled);
   expect_every_member_keyed("contact", contact_keys(), &ContactSettings::enabled);
+  expect_every_member_keyed("heat", heat_keys(), &HeatSettings::present);
   expect_every_member_keyed("mesh", mesh_keys(), &MeshSettings::tool, &MeshSettings::motion,
                             &MeshSettings::hinge_at_point);
   expect_every_member_keyed("particle", particle_keys());
@@ -217,10 +221,10 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed(
       "environment", environment_keys(), &CaseSettings::source, &CaseSettings::directory, &CaseSettings::workpiece,
       &CaseSettings::membrane, &CaseSettings::material, &CaseSettings::rod, &CaseSettings::integrator,
-      &CaseSettings::groups, &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::meshes,
-      &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output, &CaseSettings::overrides,
-      &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::given, &CaseSettings::cut,
-      &CaseSettings::cut_derived, &CaseSettings::inflows, &CaseSettings::outflows);
+      &CaseSettings::groups, &CaseSettings::uniaxial, &CaseSettings::contact, &CaseSettings::heat,
+      &CaseSettings::meshes, &CaseSettings::particles, &CaseSettings::particles_file, &CaseSettings::output,
+      &CaseSettings::overrides, &CaseSettings::effective_toml, &CaseSettings::text, &CaseSettings::given,
+      &CaseSettings::cut, &CaseSettings::cut_derived, &CaseSettings::inflows, &CaseSettings::outflows);
 }
 
 // Every key the case leaves out holds the default-constructed struct's value, which is the
@@ -249,6 +253,7 @@ TEST(CaseKeys, KeysLeftOutKeepTheStructDefaults) {
   expect_defaults("group", motion_keys(), cs.groups[0].motion, {});
   expect_defaults("uniaxial", uniaxial_keys(), cs.uniaxial, {"strain_path"});
   expect_defaults("contact", contact_keys(), cs.contact, {});
+  expect_defaults("heat", heat_keys(), cs.heat, {"heat_capacity", "conductivity"});
   expect_defaults("environment", environment_keys(), cs, {});
   expect_defaults("mesh", mesh_keys(), cs.meshes.at(0), {"edge1", "edge2", "name"});
   EXPECT_EQ(cs.meshes[0].name, "mesh0");

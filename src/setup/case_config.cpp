@@ -262,6 +262,25 @@ void read_contact_and_environment(const CaseInput& in, CaseSettings& cs) {
     r.read(contact_keys(), cs.contact);
     r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
   }
+  if (const toml::table* t = in.table("heat")) {
+    TableReader r = in.reader(t, "heat");
+    cs.heat.present = true;
+    r.read(heat_keys(), cs.heat);
+    r.finish();
+    for (const std::string& g : cs.heat.held_groups)
+      if (std::none_of(cs.groups.begin(), cs.groups.end(), [&](const GroupSettings& s) { return s.name == g; }))
+        r.fail("held_groups", r.get("held_groups"), fmt::format("names no [[group]]: '{}'", g));
+    // The material preset fills what the table does not give.
+    const MaterialPreset* preset = cs.material.preset.empty() ? nullptr : find_material_preset(cs.material.preset);
+    if (preset && !r.has("heat_capacity")) cs.heat.heat_capacity = preset->heat_capacity;
+    if (preset && !r.has("conductivity")) cs.heat.conductivity = preset->conductivity;
+    if (cs.heat.enabled)
+      for (const char* key : {"heat_capacity", "conductivity"})
+        if (!r.has(key) && !preset)
+          r.fail(key, nullptr,
+                 "the workpiece's heat capacity (J/(kg K)) and conductivity (W/(m K)) are needed: give them or "
+                 "material.preset");
+  }
   if (const toml::table* t = in.table("environment")) {
     TableReader r = in.reader(t, "environment");
     r.read(environment_keys(), cs);
@@ -296,9 +315,9 @@ std::set<std::string> given_keys(const toml::table& root) {
 
 // Top level: only known tables, and tables where a table is expected.
 void check_top_level(const toml::table& root, const std::string& source, const std::set<std::string>& ov) {
-  const std::set<std::string> tables{"cut",    "workpiece", "membrane",    "material", "rod",      "integrator",
-                                     "group",  "uniaxial",  "contact",     "mesh",     "particle", "particles",
-                                     "inflow", "outflow",   "environment", "output"};
+  const std::set<std::string> tables{"cut",       "workpiece", "membrane", "material",    "rod",   "integrator",
+                                     "group",     "uniaxial",  "contact",  "heat",        "mesh",  "particle",
+                                     "particles", "inflow",    "outflow",  "environment", "output"};
   const std::set<std::string> arrays_of_tables{"group", "mesh", "particle", "inflow", "outflow"};
   for (const auto& [k, v] : root) {
     const std::string key(k.str());

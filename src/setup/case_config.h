@@ -213,6 +213,23 @@ struct ContactSettings {
   double skin = 0.2;                ///< Verlet-list skin as a fraction of the largest radius, 1
 };
 
+/// [heat]: temperatures, heat from plastic and frictional work, conduction (issue 33;
+/// swarf/laws/heat_params.h). On when the table is present and `enabled` is true.
+struct HeatSettings {
+  bool present = false;                  ///< the table was given
+  bool enabled = true;                   ///< heat.enabled (with the table)
+  double heat_capacity = 0.0;            ///< c, J/(kg K); 0 = not given (the material preset's)
+  double conductivity = 0.0;             ///< k, W/(m K); 0 = not given (the material preset's)
+  double taylor_quinney = 0.9;           ///< 1
+  double initial_temperature = 293.15;   ///< K
+  bool contact_conduction = true;        ///< conduction through touching contacts too
+  double tool_temperature = 293.15;      ///< K
+  double tool_heat_capacity = 0.0;       ///< J/K per mesh; 0 = held at tool_temperature
+  double tool_conductivity = 0.0;        ///< W/(m K); 0 = no conduction into the tools
+  double stability_fraction = 0.5;       ///< 1
+  std::vector<std::string> held_groups;  ///< [[group]] names held at the initial temperature (clamps)
+};
+
 /// [[mesh]]: a rigid triangle mesh (wall, tool) from a file or a built-in rectangle.
 struct MeshSettings {
   std::string name;
@@ -310,6 +327,7 @@ struct CaseSettings {
   std::vector<GroupSettings> groups;
   UniaxialSettings uniaxial;
   ContactSettings contact;
+  HeatSettings heat;
   std::vector<MeshSettings> meshes;
   std::vector<ParticleSettings> particles;
   ParticlesFileSettings particles_file;

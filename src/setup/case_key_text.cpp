@@ -181,6 +181,7 @@ std::vector<KeyRow> case_key_rows() {
   append(rows, "group", motion_keys());
   append(rows, "uniaxial", uniaxial_keys());
   append(rows, "contact", contact_keys());
+  append(rows, "heat", heat_keys());
   std::vector<KeyRow> mesh;
   append(mesh, "mesh", mesh_keys());
   append(mesh, "mesh", motion_keys(), "group");

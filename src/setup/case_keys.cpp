@@ -711,6 +711,74 @@ const std::vector<Key<ContactSettings>>& contact_keys() {
   return keys;
 }
 
+const std::vector<Key<HeatSettings>>& heat_keys() {
+  using S = HeatSettings;
+  // (Temperature ranges: above absolute zero and below 10^4 K, beyond every solid's melting point.)
+  static const std::vector<Key<S>> keys{
+      {.name = "enabled",
+       .field = &S::enabled,
+       .doc = "Heat on (the table's presence turns it on; false turns it off)."},
+      {.name = "heat_capacity",
+       .field = &S::heat_capacity,
+       .unit = "J/(kg K)",
+       .no_default = true,
+       .default_note = "the material preset's",
+       .range = in(1, 1e5, "[]"),
+       .doc = "Specific heat capacity c of the workpiece: a particle holds m c per kelvin."},
+      {.name = "conductivity",
+       .field = &S::conductivity,
+       .unit = "W/(m K)",
+       .no_default = true,
+       .default_note = "the material preset's",
+       .range = in(1e-3, 1e4, "[]"),
+       .doc = "Thermal conductivity k of the workpiece: a rod of rest length d conducts k d / (2 sqrt 2) W/K, "
+              "which gives k on the FCC lattice."},
+      {.name = "taylor_quinney",
+       .field = &S::taylor_quinney,
+       .unit = "1",
+       .range = in(0, 1, "[]"),
+       .doc = "Fraction beta of the rods' plastic work that becomes heat (Taylor-Quinney)."},
+      {.name = "initial_temperature",
+       .field = &S::initial_temperature,
+       .unit = "K",
+       .range = in(1, 1e4, "[]"),
+       .doc = "Temperature of the workpiece at the start and of new (inflow) particles."},
+      {.name = "contact_conduction",
+       .field = &S::contact_conduction,
+       .doc = "Heat also flows through touching contacts between particles, 4 a / (1/k + 1/k) W/K for a contact "
+              "circle of radius a."},
+      {.name = "tool_temperature",
+       .field = &S::tool_temperature,
+       .unit = "K",
+       .range = in(1, 1e4, "[]"),
+       .doc = "Temperature of the meshes (tools) at the start; held there when `tool_heat_capacity` is 0."},
+      {.name = "tool_heat_capacity",
+       .field = &S::tool_heat_capacity,
+       .unit = "J/K",
+       .range = kNonNegative,
+       .doc = "Heat capacity of each mesh (lumped: one temperature per tool). 0 means a heat sink at "
+              "`tool_temperature`."},
+      {.name = "tool_conductivity",
+       .field = &S::tool_conductivity,
+       .unit = "W/(m K)",
+       .range = in(0, 1e4, "[]"),
+       .doc = "Conductivity of the meshes for the contact conductance with the particles. 0 means no conduction "
+              "into the tools: they get only their half of the frictional heat."},
+      {.name = "stability_fraction",
+       .field = &S::stability_fraction,
+       .unit = "1",
+       .range = in(0, 1, "(]"),
+       .doc = "Conduction step as a fraction of its explicit limit min m c / sum G (forward Euler). The "
+              "conduction runs when that much time has passed, and the sources every step."},
+      {.name = "held_groups",
+       .field = &S::held_groups,
+       .rule = "names of [[group]] tables",
+       .doc = "Groups whose particles are held at `initial_temperature` (a clamp that is a heat sink); what flows "
+              "into them is booked as heat to the clamps."},
+  };
+  return keys;
+}
+
 const std::vector<Key<CaseSettings>>& environment_keys() {
   using S = CaseSettings;
   static const std::vector<Key<S>> keys{

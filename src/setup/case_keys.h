@@ -90,6 +90,7 @@ const std::vector<Key<GroupSettings>>& group_keys();
 const std::vector<Key<MotionSettings>>& motion_keys();
 const std::vector<Key<UniaxialSettings>>& uniaxial_keys();
 const std::vector<Key<ContactSettings>>& contact_keys();
+const std::vector<Key<HeatSettings>>& heat_keys();
 const std::vector<Key<CaseSettings>>& environment_keys();
 const std::vector<Key<MeshSettings>>& mesh_keys();
 const std::vector<Key<ParticleSettings>>& particle_keys();

@@ -16,8 +16,15 @@ const std::vector<MaterialPreset>& material_presets() {
        .jc_b = 600.8e6,
        .jc_n = 0.234,
        .failure_strain = 2.0,
-       .source = "Jaspers 1999 (PhD thesis TU Eindhoven, table 5.3) flow curve; E, rho: Rodriguez Prieto et al., "
-                 "Materials 16 (2023) 3702"},
+       .jc_c = 0.0134,
+       .jc_m = 1.0,
+       .reference_rate = 1.0,
+       .melt_temperature = 1733.0,
+       .reference_temperature = 293.15,
+       .heat_capacity = 486.0,
+       .conductivity = 50.7,
+       .source = "Jaspers 1999 (PhD thesis TU Eindhoven, table 5.3) flow curve, C, m, T_melt; E, rho, k, c: "
+                 "Rodriguez Prieto et al., Materials 16 (2023) 3702, appendix A"},
       {.name = "Al2024-T351",
        .description = "aluminium alloy 2024-T351",
        .density = 2770.0,
@@ -26,7 +33,15 @@ const std::vector<MaterialPreset>& material_presets() {
        .jc_b = 426e6,
        .jc_n = 0.34,
        .failure_strain = 1.5,
-       .source = "Johnson and Cook 1983 (7th Int. Symp. Ballistics) flow curve"},
+       .jc_c = 0.015,
+       .jc_m = 1.0,
+       .reference_rate = 1.0,
+       .melt_temperature = 775.0,
+       .reference_temperature = 293.15,
+       .heat_capacity = 875.0,
+       .conductivity = 121.0,
+       .source = "Johnson and Cook 1983 (7th Int. Symp. Ballistics) flow curve, C, m, T_melt, c; k: ASM handbook "
+                 "(2024-T3/T351, 121 W/(m K))"},
       {.name = "Ti6Al4V",
        .description = "titanium alloy Ti-6Al-4V",
        .density = 4430.0,
@@ -35,7 +50,16 @@ const std::vector<MaterialPreset>& material_presets() {
        .jc_b = 331e6,
        .jc_n = 0.34,
        .failure_strain = 1.0,
-       .source = "Johnson 1985 set as used in SPH cutting codes; E, rho: Rodriguez Prieto et al. 2023"},
+       .jc_c = 0.012,
+       .jc_m = 0.8,
+       .reference_rate = 1.0,
+       .melt_temperature = 1878.0,
+       .reference_temperature = 293.15,
+       .heat_capacity = 526.0,
+       .conductivity = 6.7,
+       .source = "Johnson 1985 set as used in SPH cutting codes (A, B, n, C, m, T_melt); E, rho, k, c: Rodriguez "
+                 "Prieto "
+                 "et al. 2023, appendix A"},
   };
   return presets;
 }

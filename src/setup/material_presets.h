@@ -21,7 +21,15 @@ struct MaterialPreset {
   double jc_b = 0;            ///< Johnson-Cook B, Pa
   double jc_n = 0;            ///< Johnson-Cook n, 1
   double failure_strain = 0;  ///< equivalent strain at failure in shear (material.failure_strain), 1
-  std::string_view source;    ///< one line: where the numbers come from
+  // Rate and temperature (Johnson-Cook's second and third factors) and the heat ([heat]).
+  double jc_c = 0;                   ///< Johnson-Cook C (rate sensitivity), 1
+  double jc_m = 0;                   ///< Johnson-Cook m (thermal softening exponent), 1
+  double reference_rate = 0;         ///< Johnson-Cook reference equivalent plastic strain rate, 1/s
+  double melt_temperature = 0;       ///< Johnson-Cook T_melt, K
+  double reference_temperature = 0;  ///< Johnson-Cook T_ref (room: the flow curve's), K
+  double heat_capacity = 0;          ///< specific heat capacity c, J/(kg K)
+  double conductivity = 0;           ///< thermal conductivity k, W/(m K)
+  std::string_view source;           ///< one line: where the numbers come from
 };
 
 /// The library, in the order the docs list it.

@@ -514,6 +514,23 @@ Model build_model(const CaseSettings& cs) {
   }
   if (cs.contact.enabled) model.contact = contact_params(cs, model.particles);
   model.contacts = cs.contact.enabled;
+  if (cs.heat.present && cs.heat.enabled) {
+    HeatParams& h = model.heat;
+    const HeatSettings& s = cs.heat;
+    h.enabled = true;
+    h.heat_capacity = s.heat_capacity;
+    h.conductivity = s.conductivity;
+    h.taylor_quinney = s.taylor_quinney;
+    h.initial_temperature = s.initial_temperature;
+    h.contact_conduction = s.contact_conduction;
+    h.tool_temperature = s.tool_temperature;
+    h.tool_heat_capacity = s.tool_heat_capacity;
+    h.tool_conductivity = s.tool_conductivity;
+    h.stability_fraction = s.stability_fraction;
+    h.held.assign(model.groups.size(), 0);
+    for (std::size_t g = 0; g < model.groups.size(); ++g)
+      h.held[g] = std::find(s.held_groups.begin(), s.held_groups.end(), model.groups[g].name) != s.held_groups.end();
+  }
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
   model.step = step_settings(model.settings, model.derived);
   check_output_schedule(model.settings);

@@ -34,6 +34,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
     contacts_.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
     if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) rotations_ = true;
   }
+  thermal_.setup(m_);
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
   rod_forces();
   contact_forces(dt_);
@@ -53,6 +54,7 @@ void Simulation::apply_flows(double h) {
   if (const auto remove = flows_.outflow(m_, out); !remove.empty()) {
     // (their rods' elastic energy leaves with them)
     const double elastic_before = m_.rods.size() > 0 ? elastic_energy() : 0.0;
+    ledger_.heat_outflow += thermal_.carried(m_, remove);
     remove_particles(remove);
     const double elastic_after = m_.rods.size() > 0 ? elastic_energy() : 0.0;
     ledger_.flow_energy += out + (elastic_before - elastic_after);
@@ -141,7 +143,7 @@ void Simulation::step_scheme(double max_dt) {
     const double h = std::min(dt_, max_dt);
     const bool newton = g.solver == Solver::Newton;
     if (newton ? try_newton(h) : try_newmark(h)) {
-      commit();
+      commit(h);
       clock_.lap(Stage::Commit);
       account(h);
       clock_.lap(Stage::Account);
@@ -187,7 +189,7 @@ void Simulation::step_explicit() {
   contact_forces(h, true);
   gather_kick(h);  // (rotations included: the explicit update needs only this step's torque)
   clock_.lap(Stage::Gather);
-  commit();
+  commit(h);
   clock_.lap(Stage::Commit);
   account(h);
   clock_.lap(Stage::Account);
@@ -399,7 +401,8 @@ void Simulation::rod_forces() {
   rods_.forces(m_);
 }
 
-void Simulation::commit() {
+void Simulation::commit(double h) {
+  if (thermal_.enabled()) thermal_.heat(context(h), contacts_);
   const RodSystem::PairList broke = rods_.commit(m_, ledger_);
   const bool contacts = contacts_.enabled();
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation

@@ -46,6 +46,7 @@
 #include "swarf/systems/group_system.h"
 #include "swarf/systems/rod_system.h"
 #include "swarf/systems/step_context.h"
+#include "swarf/systems/thermal_system.h"
 
 namespace swarf {
 
@@ -127,6 +128,8 @@ class Simulation {
   /// Kinetic energy of the rigid bodies, J (part of kinetic_energy()).
   double body_kinetic_energy() const { return bodies_.kinetic_energy(m_); }
   const ContactSystem& contacts() const { return contacts_; }
+  /// The heat: the tools' temperatures, the stored heat, the conduction's step (issue 33).
+  const ThermalSystem& thermal() const { return thermal_; }
   /// Per-stage wall time of the steps taken while enabled (swarf bench --stages).
   StageClock& stage_clock() { return clock_; }
   const StageClock& stage_clock() const { return clock_; }
@@ -173,7 +176,7 @@ class Simulation {
   enum class GatherMode { Plain, Measure, Kick };
   template <GatherMode Mode, bool Wrap>
   double gather_impl(double h);
-  void commit();
+  void commit(double h);  // the heat of the step (before the rods' commit reads its trial), then the commits
   /// After the rod kernel: rods on the meshes' parting lines (laws/parting_rule.h) break in
   /// this trial (force zero, broken at commit like a rod that failed by its law).
   /// Commit, last part: rods between pressed unbonded lattice particles (bond_formation.h).
@@ -214,7 +217,8 @@ class Simulation {
   RodSystem rods_;
   GroupSystem groups_;
   FlowSystem flows_;
-  auto systems() { return std::tie(bodies_, rods_, groups_, flows_); }
+  ThermalSystem thermal_;
+  auto systems() { return std::tie(bodies_, rods_, groups_, flows_, thermal_); }
   template <class F>
   void for_each_system(F&& f) {
     std::apply([&](auto&... s) { (f(s), ...); }, systems());

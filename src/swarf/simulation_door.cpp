@@ -16,7 +16,7 @@ namespace swarf {
 void Simulation::resize_scratch() {
   const std::size_t n = m_.particles.size();
   for_each_system([&](auto& s) {
-    if constexpr (requires { s.resize(std::as_const(m_)); }) s.resize(m_);
+    if constexpr (requires { s.resize(m_); }) s.resize(m_);
   });
   if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
   if (rotations_) update_free_to_rotate();

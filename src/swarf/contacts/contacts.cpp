@@ -115,14 +115,8 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       TriPair& q = tris[k];
       const std::int32_t i = q.i, t = q.tri;
       const MeshBody& mb = meshes[tri_mesh[t]];
-      const auto& tri = mb.mesh.triangles[tri_local[t]];
       const double R = radius[i];
-      // (A turning mesh's frames turn with it: made from its placed vertices.)
-      const SphereTriangleHit hit = mb.turns ? sphere_triangle(x[i], R, mb.placed[tri[0]], mb.placed[tri[1]],
-                                                               mb.placed[tri[2]])
-                                             : sphere_triangle(x[i], R, mb.mesh.vertices[tri[0]] + mb.offset,
-                                                               mb.mesh.vertices[tri[1]] + mb.offset,
-                                                               mb.mesh.vertices[tri[2]] + mb.offset, tri_frame[t]);
+      const SphereTriangleHit hit = triangle_hit(mb, tri_local[t], tri_frame[t], x[i], R);
       if (!hit.touching) {
         if (ttouch[k]) {
           tres[k] = Result{Vec3::Zero(), Vec3::Zero()};

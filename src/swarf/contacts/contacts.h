@@ -190,6 +190,27 @@ class ContactSystem {
   };
   TangentRows tangent_rows() const;
 
+  /// The contacts' part of the heat (issue 33; laws/heat_conduction.h), from the last
+  /// evaluation's results and the state now (the step's end). Per particle, summed over its
+  /// contacts in a fixed order (the same bits for any thread count): 'friction' += half of each
+  /// touching contact's frictional power max(0, -ft . vt) (W; the other half goes to the other
+  /// particle or to the mesh), 'flux' += the heat conducted in, sum G (T_other - T_i) (W) and
+  /// 'conductance' += sum G (W/K). Per mesh (in list order): 'mesh_friction' += its half of the
+  /// frictional power (W), 'mesh_flux' += the heat conducted into it (W), 'mesh_conductance' += sum G (W/K). The
+  /// outputs must be sized (particles, meshes); the conduction terms only with 'temperature'.
+  struct HeatInput {
+    const double* temperature = nullptr;       ///< per particle, K; null: friction only
+    double conductivity = 0.0;                 ///< of the particles, W/(m K)
+    const double* mesh_temperature = nullptr;  ///< per mesh, K
+    double mesh_conductivity = 0.0;            ///< of the meshes, W/(m K); 0: no conduction into them
+    bool friction = true;                      ///< add the frictional power
+  };
+  struct HeatOutput {
+    std::vector<double> friction, flux, conductance;                 ///< per particle: W, W, W/K
+    std::vector<double> mesh_friction, mesh_flux, mesh_conductance;  ///< per mesh: W, W, W/K
+  };
+  void heat(const Particles& p, const HeatInput& in, HeatOutput& out) const;
+
   /// Force the particles exert on each mesh (sums over its contacts in a fixed order), N; one pass.
   void mesh_forces(std::vector<Vec3>& out) const;
   /// Force (N) and torque about each mesh's centre() (N m) that the particles exert on each
@@ -230,6 +251,16 @@ class ContactSystem {
     Vec3 history = Vec3::Zero();
     double K = 0, D = 0, kt0 = 0;
   };
+  // The overlap of sphere (x, R) with global triangle t of 'mb' where the meshes are now
+  // (evaluate's geometry; contact_heat.cpp recomputes it).
+  static SphereTriangleHit triangle_hit(const MeshBody& mb, std::int32_t local, const TriangleFrame& frame,
+                                        const Vec3& x, double R) {
+    const auto& tri = mb.mesh.triangles[local];
+    // (A turning mesh's frames turn with it: made from its placed vertices.)
+    return mb.turns ? sphere_triangle(x, R, mb.placed[tri[0]], mb.placed[tri[1]], mb.placed[tri[2]])
+                    : sphere_triangle(x, R, mb.mesh.vertices[tri[0]] + mb.offset, mb.mesh.vertices[tri[1]] + mb.offset,
+                                      mb.mesh.vertices[tri[2]] + mb.offset, frame);
+  }
   void partition(int nthreads);  // row_split_, spanning_ for the lists and the number of threads
   void fill_constants(const Particles& p);
   void build(const Particles& p, const Rods& rods);

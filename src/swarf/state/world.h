@@ -11,6 +11,7 @@
 #include "swarf/core/periodic.h"
 #include "swarf/core/vec3.h"
 #include "swarf/laws/contact_params.h"
+#include "swarf/laws/heat_params.h"
 #include "swarf/state/bodies.h"
 #include "swarf/state/motion.h"
 #include "swarf/state/particle_flows.h"
@@ -30,6 +31,7 @@ struct World {
   std::vector<RigidBody> bodies;    ///< meshes that move as rigid bodies under the contacts (rigid_body.h)
   bool contacts = false;            ///< Hertz contacts and friction between unbonded particles and with meshes
   ContactParams contact;            ///< used when 'contacts'
+  HeatParams heat;                  ///< temperatures and heat (off unless heat.enabled)
   Vec3 gravity = Vec3::Zero();      ///< m/s^2
   std::vector<Inflow> inflows;      ///< regions creating particles (particle_flows.h)
   std::vector<Outflow> outflows;    ///< regions removing particles

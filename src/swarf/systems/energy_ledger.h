@@ -18,6 +18,14 @@ struct EnergyLedger {
                                ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
   double flow_energy = 0;      ///< carried out by removed particles (kinetic, potential, their rods' elastic
                                ///< energy) minus brought in by created ones (kinetic)
+  // The heat (systems/thermal_system.h), apart from the mechanical balance above: what the
+  // dissipation turned into heat and where it went. heat_plastic + heat_friction = stored +
+  // heat_to_tools + heat_outflow + heat_to_clamps.
+  double heat_plastic = 0;    ///< the Taylor-Quinney fraction of the plastic work, J
+  double heat_friction = 0;   ///< the frictional work of the contacts, J
+  double heat_to_tools = 0;   ///< into the tools (meshes): their half of the friction and the conduction, J
+  double heat_outflow = 0;    ///< carried out by removed particles, above the initial temperature, J
+  double heat_to_clamps = 0;  ///< into particles held at the initial temperature (heat.held_groups), J
 };
 
 }  // namespace swarf

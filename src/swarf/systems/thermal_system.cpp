@@ -1,0 +1,244 @@
+// thermal_system.cpp: the heat's stages (see thermal_system.h; laws/heat_conduction.h).
+#include "swarf/systems/thermal_system.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "swarf/core/errors.h"
+#include "swarf/core/parallel.h"
+#include "swarf/core/state_archive.h"
+#include "swarf/laws/heat_conduction.h"
+
+namespace swarf {
+
+namespace {
+
+void assign(std::vector<double>& v, std::size_t n) { v.assign(n, 0.0); }
+
+}  // namespace
+
+void ThermalSystem::setup(World& w) {
+  const HeatParams& hp = w.heat;
+  enabled_ = hp.enabled;
+  if (!enabled_) return;
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(hp.heat_capacity) || !positive(hp.conductivity))
+    throw InputError(
+        fmt::format("heat: the workpiece needs a heat capacity (J/(kg K)) and a conductivity "
+                    "(W/(m K)) above zero, got {} and {}",
+                    hp.heat_capacity, hp.conductivity));
+  if (!(hp.taylor_quinney >= 0.0 && hp.taylor_quinney <= 1.0))
+    throw InputError(fmt::format("heat: the Taylor-Quinney fraction {} is not within [0, 1]", hp.taylor_quinney));
+  if (!positive(hp.initial_temperature) || !positive(hp.tool_temperature))
+    throw InputError(fmt::format("heat: temperatures are absolute (K) and above zero, got {} K and {} K",
+                                 hp.initial_temperature, hp.tool_temperature));
+  if (!(hp.stability_fraction > 0.0 && hp.stability_fraction <= 1.0))
+    throw InputError(fmt::format("heat: stability_fraction {} is not within (0, 1]", hp.stability_fraction));
+  if (!(hp.tool_heat_capacity >= 0.0 && std::isfinite(hp.tool_heat_capacity)) ||
+      !(hp.tool_conductivity >= 0.0 && std::isfinite(hp.tool_conductivity)))
+    throw InputError(fmt::format("heat: the tools' heat capacity {} J/K and conductivity {} W/(m K) must be >= 0",
+                                 hp.tool_heat_capacity, hp.tool_conductivity));
+  tool_t_.assign(w.meshes.size(), hp.tool_temperature);
+  resize(w);
+  interval_ = 0.0;  // (the first conduction measures the limit)
+}
+
+void ThermalSystem::resize(World& w) {
+  if (!enabled_) return;
+  // 0 K marks a particle that has no temperature yet: built before the system, or new at the door.
+  auto& p = w.particles;
+  const auto& held = w.heat.held;
+  held_.assign(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::int32_t g = p.group[i];
+    held_[i] = g >= 0 && static_cast<std::size_t>(g) < held.size() && held[g];
+    if (p.temperature[i] == 0.0) p.temperature[i] = w.heat.initial_temperature;
+  }
+  if (tool_t_.size() != w.meshes.size()) tool_t_.resize(w.meshes.size(), w.heat.tool_temperature);
+}
+
+void ThermalSystem::fluxes(const World& w, const ContactSystem& contacts) {
+  const auto& p = w.particles;
+  const auto& r = w.rods;
+  const std::size_t n = p.size(), nm = w.meshes.size();
+  assign(out_.friction, n);
+  assign(out_.flux, n);
+  assign(out_.conductance, n);
+  assign(out_.mesh_friction, nm);
+  assign(out_.mesh_flux, nm);
+  assign(out_.mesh_conductance, nm);
+  const double k = w.heat.conductivity;
+  const double* T = p.temperature.data();
+  double* flux = out_.flux.data();
+  double* cond = out_.conductance.data();
+  if (r.row_start.size() == n + 1) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      double q = 0.0, g = 0.0;
+      for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
+        const Rods::Entry en = r.entries[e];
+        if (!r.intact[en.rod]) continue;
+        const double G = rod_conductance(k, r.rest_length[en.rod]);
+        q += G * (T[en.other] - T[i]);
+        g += G;
+      }
+      flux[i] = q;
+      cond[i] = g;
+    }
+  }
+  if (w.heat.contact_conduction || w.heat.tool_conductivity > 0.0) {
+    ContactSystem::HeatInput in;
+    in.temperature = T;
+    in.conductivity = w.heat.contact_conduction ? k : 0.0;
+    in.mesh_temperature = tool_t_.data();
+    in.mesh_conductivity = w.heat.tool_conductivity;
+    in.friction = false;
+    contacts.heat(p, in, out_);
+  }
+}
+
+void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts) {
+  if (!enabled_) return;
+  World& w = c.world;
+  auto& p = w.particles;
+  const auto& r = w.rods;
+  const HeatParams& hp = w.heat;
+  const std::size_t n = p.size(), nm = w.meshes.size();
+  const double h = c.h;
+  // Sources. The plastic work of each rod's trial, as the commit will book it (half per end).
+  assign(plastic_, n);
+  if (r.size() > 0 && r.row_start.size() == n + 1 && hp.taylor_quinney > 0.0) {
+    const double A = r.area, half_beta = 0.5 * hp.taylor_quinney;
+    double* q = plastic_.data();
+    std::visit(
+        [&](const auto& law) {
+#pragma omp parallel for schedule(static)
+          for (std::size_t i = 0; i < n; ++i) {
+            double s = 0.0;
+            for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
+              const std::int32_t k = r.entries[e].rod;
+              if (!r.intact[k]) continue;
+              const double dshift = r.trial_shift[k] - r.shift[k];
+              if (dshift != 0.0) s += plastic_work_density(law, r.stress[k], dshift) * A * r.rest_length[k];
+            }
+            q[i] = half_beta * s;
+          }
+        },
+        r.law);
+  }
+  // Friction over the step: half to each body.
+  assign(out_.friction, n);
+  assign(out_.mesh_friction, nm);
+  if (contacts.enabled()) {
+    assign(out_.flux, n);
+    assign(out_.conductance, n);
+    assign(out_.mesh_flux, nm);
+    assign(out_.mesh_conductance, nm);
+    contacts.heat(p, ContactSystem::HeatInput{}, out_);  // (friction only)
+  }
+  const double c_heat = hp.heat_capacity;
+  double* T = p.temperature.data();
+  const double* m = p.mass.data();
+  const double* qp = plastic_.data();
+  const double* qf = out_.friction.data();
+  const std::uint8_t* held = held_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (m[i] > 0.0 && !held[i]) T[i] += (qp[i] + h * qf[i]) / (m[i] * c_heat);
+  c.ledger.heat_to_clamps += deterministic_sum(n, [&](std::size_t i) { return held[i] ? qp[i] + h * qf[i] : 0.0; });
+  c.ledger.heat_plastic += deterministic_sum(n, [&](std::size_t i) { return qp[i]; });
+  const double particle_friction = deterministic_sum(n, [&](std::size_t i) { return qf[i]; });
+  double tool_friction = 0.0;
+  for (std::size_t k = 0; k < nm; ++k) {
+    const double q = h * out_.mesh_friction[k];
+    tool_friction += q;
+    if (hp.tool_heat_capacity > 0.0) tool_t_[k] += q / hp.tool_heat_capacity;
+  }
+  c.ledger.heat_friction += h * particle_friction + tool_friction;
+  c.ledger.heat_to_tools += tool_friction;
+  // Conduction, when it is due.
+  pending_ += h;
+  if (pending_ >= interval_) {
+    conduct(w, contacts, pending_, c.ledger);
+    pending_ = 0.0;
+  }
+}
+
+void ThermalSystem::conduct(World& w, const ContactSystem& contacts, double dt, EnergyLedger& ledger) {
+  auto& p = w.particles;
+  const HeatParams& hp = w.heat;
+  const std::size_t n = p.size(), nm = w.meshes.size();
+  const double c_heat = hp.heat_capacity;
+  const double* m = p.mass.data();
+  double* T = p.temperature.data();
+  int sub = 1;
+  for (int s = 0; s < sub; ++s) {
+    fluxes(w, contacts);
+    if (s == 0) {
+      // The explicit limit of this pass: min_i C_i / sum_j G_ij (and the heated tools').
+      double limit = HUGE_VAL;
+      for (std::size_t i = 0; i < n; ++i)
+        if (out_.conductance[i] > 0.0 && m[i] > 0.0 && !held_[i])
+          limit = std::min(limit, m[i] * c_heat / out_.conductance[i]);
+      if (hp.tool_heat_capacity > 0.0)
+        for (std::size_t k = 0; k < nm; ++k)
+          if (out_.mesh_conductance[k] > 0.0) limit = std::min(limit, hp.tool_heat_capacity / out_.mesh_conductance[k]);
+      limit_ = limit;
+      const double allowed = hp.stability_fraction * limit;
+      sub = std::isfinite(allowed) ? std::max(1, static_cast<int>(std::ceil(dt / allowed))) : 1;
+      last_step_ = dt / sub;
+      // Nothing conducts yet (no rod, no touching contact): look again at the next step.
+      interval_ = std::isfinite(allowed) ? allowed : 0.0;
+    }
+    const double ds = dt / sub;
+    const double* q = out_.flux.data();
+    const std::uint8_t* held = held_.data();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i)
+      if (m[i] > 0.0 && !held[i]) T[i] += ds * q[i] / (m[i] * c_heat);
+    ledger.heat_to_clamps += ds * deterministic_sum(n, [&](std::size_t i) { return held[i] ? q[i] : 0.0; });
+    for (std::size_t k = 0; k < nm; ++k) {
+      const double in = ds * out_.mesh_flux[k];
+      ledger.heat_to_tools += in;
+      if (hp.tool_heat_capacity > 0.0) tool_t_[k] += in / hp.tool_heat_capacity;
+    }
+  }
+  ++conductions_;
+}
+
+double ThermalSystem::carried(const World& w, const std::vector<std::uint8_t>& remove) const {
+  if (!enabled_) return 0.0;
+  const auto& p = w.particles;
+  const double c = w.heat.heat_capacity, t0 = w.heat.initial_temperature;
+  double q = 0.0;
+  for (std::size_t i = 0; i < remove.size() && i < p.size(); ++i)
+    if (remove[i]) q += p.mass[i] * c * (p.temperature[i] - t0);
+  return q;
+}
+
+double ThermalSystem::stored_heat(const World& w) const {
+  if (!enabled_) return 0.0;
+  const auto& p = w.particles;
+  const double c = w.heat.heat_capacity, t0 = w.heat.initial_temperature;
+  return deterministic_sum(p.size(), [&](std::size_t i) { return p.mass[i] * c * (p.temperature[i] - t0); });
+}
+
+void ThermalSystem::visit_state(StateArchive& ar, World& w, EnergyLedger& ledger) {
+  if (!enabled_) return;
+  ar.array("heat/tool_temperature", tool_t_, ar.loading() ? StateArchive::kAnySize : tool_t_.size());
+  if (ar.loading() && tool_t_.size() != w.meshes.size())
+    throw InputError(fmt::format("state field 'heat/tool_temperature' has {} entries for {} meshes", tool_t_.size(),
+                                 w.meshes.size()));
+  ar.scalar("heat/pending", pending_);
+  ar.scalar("heat/interval", interval_);
+  ar.scalar("heat/conductions", conductions_);
+  ar.scalar("ledger/heat_plastic", ledger.heat_plastic);
+  ar.scalar("ledger/heat_friction", ledger.heat_friction);
+  ar.scalar("ledger/heat_to_tools", ledger.heat_to_tools);
+  ar.scalar("ledger/heat_outflow", ledger.heat_outflow);
+  ar.scalar("ledger/heat_to_clamps", ledger.heat_to_clamps);
+}
+
+}  // namespace swarf
