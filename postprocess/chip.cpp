@@ -52,4 +52,22 @@ ChipMetrics measure_chip(const ChipInput& in) {
   return m;
 }
 
+ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<double>& temperature) {
+  ChipHeat h;
+  double sum = 0.0;
+  for (std::size_t i : m.members) sum += temperature[i];
+  if (!m.members.empty()) h.chip_mean = sum / double(m.members.size());
+  const double a = in.rake_angle_deg * kDeg;
+  const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  for (std::size_t i = 0; i < in.position.size(); ++i) {
+    const Vec3 rel = in.position[i] - in.tool_tip;
+    const double along = rel.dot(up), off = rel.dot(normal);
+    // (a particle on the face has its centre R off it; the edge's rounding puts the first
+    // layer near the tip a little further: 2 R takes the first layer and not the second)
+    if (along >= 0.0 && along <= in.face_length && off > -in.radius && off < 2.0 * in.radius)
+      h.rake_face_max = std::max(h.rake_face_max, temperature[i]);
+  }
+  return h;
+}
+
 }  // namespace swarf

@@ -44,6 +44,15 @@ struct ChipMetrics {
 /// Identifies the chip and measures it.
 ChipMetrics measure_chip(const ChipInput& in);
 
+/// The chip's temperatures ([heat]), K; 0 where there is no particle to measure.
+struct ChipHeat {
+  double chip_mean = 0;      ///< mean over the chip particles (ChipMetrics::members)
+  double rake_face_max = 0;  ///< maximum over the layer on the rake face: centres less than 2 R from the
+                             ///< face's plane, from the tip to the face's end (the secondary shear zone)
+};
+/// temperature is per particle of ChipInput::position, K.
+ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<double>& temperature);
+
 /// The q-quantile (q in [0, 1]) of v, linear between order statistics; v must not be empty.
 double quantile(std::vector<double> v, double q);
 

@@ -12,6 +12,7 @@
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/laws/heat_conduction.h"
+#include "swarf/measure/particle_fields.h"
 #include "swarf/simulation.h"
 #include "swarf/systems/thermal_system.h"
 
@@ -231,6 +232,133 @@ TEST(Heat, TheTransientBarFollowsTheSeries) {
     }
     EXPECT_LT(worst, 0.005 * (T0 - T1)) << "t = " << t / tau1 << " tau1";
   }
+}
+
+// The adiabatic shear cell. Every (001) layer of a bonded block is a group moved along x at
+// gamma_dot times its height, so the lattice shears affinely (simple shear gamma in the xz
+// plane, periodic across y). The rods along (1,0,+-1)/sqrt 2 stretch and shorten by about
+// gamma/2, those along (0,1,+-1) by gamma^2/4 (elastic), the rest not at all. With perfectly
+// plastic rods (flow stress s_y, yield strain e_y) an interior particle's four yielding rods
+// give it beta/2 s_y A L0 (|e_r| - e_y) each, and with k = 1e-3 W/(m K) the conduction is
+// negligible (a particle's time constant about 0.5 s against the 2 us of shear): adiabatic.
+// Checked twice: (1) each interior particle's temperature rise against that discrete sum with
+// the rods' exact strains, to 1e-9 (round-off of 2,000 steps' increments); (2) the continuum's
+// adiabatic heating Delta T = beta tau gamma_p / (rho c), with tau the particle's virial shear
+// stress measured at the end and gamma_p = gamma - 2 e_y, within 0.5 %: the finite-strain
+// geometry (|e_r| differs from gamma/2 by gamma^2/8, 5e-4 relative at gamma = 0.02) and tau's
+// rotation by the shear, also of order gamma.
+TEST(Heat, TheAdiabaticShearCellHeatsAsBetaTauGammaOverRhoC) {
+  const double R = 14e-6, E = 200e9, ey = 1e-3, sy = E * ey, beta = 0.9, k_low = 1e-3;
+  const double gamma = 0.02, duration = 2e-6, rate = gamma / duration;
+  const std::string head = fmt::format(R"([workpiece]
+cells = [5, 2, 3]
+radius = {}
+periodic_width = true
+[material]
+density = {}
+[rod]
+youngs_modulus = {}
+yield_strain = {}
+hardening_modulus = 0.0
+damping_ratio = 0.0
+tensile_strength = 1e12
+failure_strain = 10.0
+[integrator]
+end_time = {}
+[heat]
+heat_capacity = {}
+conductivity = {}
+taylor_quinney = {}
+)",
+                                       R, kRho, E, ey, duration, kC, k_low, beta);
+  const Model plain = build_model(parse_case(head, "shear", {}));
+  const double s = std::sqrt(2.0) * R;  // (001) layer spacing, m
+  const double z0 = lowest(plain.particles, 2);
+  const int nz = layers(plain.particles, 2, s);
+  std::string groups;
+  for (int k = 0; k < nz; ++k)
+    groups += fmt::format(R"([[group]]
+name = "layer{}"
+box_min = [-1.0, -1.0, {}]
+box_max = [1.0, 1.0, {}]
+motion = "velocity"
+velocity = [{}, 0.0, 0.0]
+)",
+                          k, z0 + (k - 0.5) * s, z0 + (k + 0.5) * s, rate * k * s);
+  Model w = build_model(parse_case(head + groups, "shear", {}));
+  ASSERT_EQ(w.groups.size(), static_cast<std::size_t>(nz));
+  const std::vector<Vec3> x0 = w.particles.position;
+  Simulation sim(w, w.step);
+  while (sim.time() < duration * (1 - 1e-12)) sim.step(duration - sim.time());
+  const double g_end = rate * sim.time();  // (the shear reached, exactly gamma when the last step lands on the end)
+  const auto& p = w.particles;
+  const auto& r = w.rods;
+  const double T0 = w.heat.initial_temperature;
+  const double A = M_PI * R * R;
+  // The discrete sum, with each rod's strain under the affine map x += g z.
+  std::vector<double> heat(p.size(), 0.0);
+  for (std::size_t b = 0; b < r.size(); ++b) {
+    const auto [i, j] = r.ends[b];
+    Vec3 d = x0[j] - x0[i];
+    w.periodic.wrap(d);
+    const double L0 = r.rest_length[b];
+    const Vec3 dd(d[0] + g_end * d[2], d[1], d[2]);
+    const double e = dd.norm() / L0 - 1.0;
+    const double q = 0.5 * beta * sy * A * L0 * std::max(0.0, std::fabs(e) - ey);
+    heat[i] += q;
+    heat[j] += q;
+  }
+  std::vector<int> rods_of(p.size(), 0);
+  for (const auto& e : r.ends) ++rods_of[e[0]], ++rods_of[e[1]];
+  const ParticleFields f = particle_fields(p, r, w.periodic, nullptr);
+  int interior = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (rods_of[i] != 12) continue;  // (a face particle has fewer rods)
+    ++interior;
+    const double dT = p.temperature[i] - T0;
+    EXPECT_NEAR(dT, heat[i] / (p.mass[i] * kC), 1e-9 * dT) << i;
+    const double tau = f.stress[i][5];  // xz, Pa
+    EXPECT_NEAR(dT, beta * tau * (g_end - 2.0 * ey) / (kRho * kC), 5e-3 * dT) << i;
+  }
+  EXPECT_GT(interior, 0);
+  // The heat of the whole block is beta times the plastic work the ledger booked.
+  EXPECT_NEAR(sim.ledger().heat_plastic, beta * sim.ledger().plastic_work, 1e-12 * sim.ledger().heat_plastic);
+}
+
+// The heat ledger of a cut closes: a few hundred steps of a small [cut] (C45, 4 layers across
+// h = 0.1 mm) with friction, the base held as a clamp and a tool with a heat capacity and a
+// conductivity. heat_plastic + heat_friction = stored + to the tools + to the clamps, to 1e-9
+// of the heat made (each step's sources and conduction are exact transfers; what remains is
+// round-off over the steps); heat_plastic is beta times the plastic work the commit booked, to
+// round-off; and each of the terms is at work (none of them is zero).
+TEST(Heat, TheLedgerOfACutCloses) {
+  Model w = build_model(parse_case(R"([cut]
+uncut_chip_thickness = 0.1e-3
+cutting_speed = 10.0
+rake_angle = 10.0
+material = "C45"
+layers = 4
+length_of_cut = 0.2e-3
+[heat]
+held_groups = ["base"]
+tool_heat_capacity = 1e-6
+tool_conductivity = 20.0
+)",
+                                   "cut", {}));
+  ASSERT_TRUE(w.heat.enabled);
+  Simulation sim(w, w.step);
+  for (int n = 0; n < 800; ++n) sim.step();
+  const EnergyLedger& L = sim.ledger();
+  const double made = L.heat_plastic + L.heat_friction;
+  const double stored = sim.thermal().stored_heat(w);
+  EXPECT_GT(L.heat_plastic, 0.0);
+  EXPECT_GT(L.heat_friction, 0.0);
+  EXPECT_GT(L.heat_to_tools, 0.0);
+  EXPECT_NEAR(L.heat_plastic, w.heat.taylor_quinney * L.plastic_work, 1e-12 * L.heat_plastic);
+  EXPECT_NEAR(made, stored + L.heat_to_tools + L.heat_outflow + L.heat_to_clamps, 1e-9 * made);
+  // The tool's lumped temperature holds what reached it.
+  ASSERT_FALSE(sim.thermal().tool_temperature().empty());
+  EXPECT_GT(sim.thermal().tool_temperature()[0], w.heat.tool_temperature);
 }
 
 }  // namespace

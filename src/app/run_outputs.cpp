@@ -19,7 +19,15 @@
 #include "swarf/simulation.h"
 
 namespace swarf {
+
 namespace {
+
+// The fields the frames hold: output.fields, without the temperature when the run has no heat.
+std::vector<std::string> frame_fields(const Model& model) {
+  std::vector<std::string> f = model.settings.output.fields;
+  if (!model.heat.enabled) std::erase(f, std::string("temperature"));
+  return f;
+}
 
 // Its files in the run directory (files() declares them; VtkSeries names the ParaView series).
 constexpr const char* kSeries = "series.csv";
@@ -52,7 +60,7 @@ RunOutputs::RunOutputs(const std::string& dir, const Model& model, Simulation& s
       checkpoint_at_end_(model.settings.output.checkpoint_at_end),
       vtk_(model.settings.output.vtk
                ? std::make_unique<VtkSeries>(dir, model.settings.output.rods_in_vtk, model.settings.output.orientations,
-                                             model.settings.output.fields)
+                                             frame_fields(model))
                : nullptr),
       series_(dir + "/" + kSeries, columns_) {
   if (vtk_) {

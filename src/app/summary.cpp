@@ -144,6 +144,8 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     put("/particles/mass", p.mass.data(), n, 1, "kg", "particle mass");
     put("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n, 1, "1",
         "damage: broken rods over the particle's rods at the start");
+    if (sim.world().heat.enabled && has_field(fields, "temperature"))
+      put("/particles/temperature", p.temperature.data(), n, 1, "K", "particle temperature at the end ([heat])");
     if (needs_particle_fields(fields)) {
       const ParticleFields pf = particle_fields(p, r, sim.world().periodic, &sim.contacts());
       if (has_field(fields, "stress"))

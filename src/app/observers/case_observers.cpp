@@ -6,6 +6,7 @@
 #include "app/observers/energy_balance.h"
 #include "app/observers/flow_counts.h"
 #include "app/observers/group_reactions.h"
+#include "app/observers/heat_probe.h"
 #include "app/observers/mesh_forces.h"
 #include "app/observers/rod_counts.h"
 #include "app/observers/step_counters.h"
@@ -24,6 +25,7 @@ std::vector<std::unique_ptr<Observer>> observers_for(const Model& model, bool en
   obs.push_back(std::make_unique<MeshForces>(model.meshes));
   if (!model.bodies.empty()) obs.push_back(std::make_unique<BodyStates>(model.bodies, model.meshes));
   if (!model.inflows.empty() || !model.outflows.empty()) obs.push_back(std::make_unique<FlowCounts>());
+  if (model.heat.enabled) obs.push_back(std::make_unique<HeatProbe>(model));
   if (auto cut = CutProbe::of(model)) obs.push_back(std::move(cut));
   return obs;
 }

@@ -5,7 +5,10 @@
 #include <cmath>
 
 #include "app/post.h"
+#include "io/console.h"
 #include "io/vtk_output.h"
+#include "postprocess/chip.h"
+#include "postprocess/steady_stats.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
 
@@ -67,6 +70,10 @@ void CutProbe::columns(std::vector<Column>& out) const {
               {"cutting_force_per_width", "N/m", "cutting force Fc = -force_<tool>_x over the workpiece width"},
               {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
               {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip reaches the section"}});
+  if (model_.heat.enabled)
+    out.insert(out.end(), {{"chip_temperature", "K", "mean temperature of the chip particles; 0 without a chip"},
+                           {"rake_face_temperature", "K",
+                            "the hottest particle in the layer on the rake face (centres within 2 R of it)"}});
   if (tool_body_ >= 0)
     out.insert(out.end(), {{"tool_deflection_x", "m", "the compliant tool's centre minus its holder's anchor along x"},
                            {"tool_deflection_z", "m", "the compliant tool's centre minus its holder's anchor along z"}});
@@ -76,8 +83,14 @@ void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
   const Vec3 f = sim.mesh_force(tool_mesh_);
   const auto& x = model_.particles.position;
   const std::vector<Vec3> workpiece(x.begin(), x.begin() + setup_.lattice_particles);
-  values.insert(values.end(), {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width,
-                               measure_chip(chip_input(setup_, workpiece, tool_tip())).thickness});
+  const ChipInput in = chip_input(setup_, workpiece, tool_tip());
+  const ChipMetrics chip = measure_chip(in);
+  values.insert(values.end(),
+                {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width, chip.thickness});
+  if (model_.heat.enabled) {
+    const ChipHeat heat = chip_heat(in, chip, sim.world().particles.temperature);
+    values.insert(values.end(), {heat.chip_mean, heat.rake_face_max});
+  }
   if (tool_body_ >= 0) {
     const RigidBody& rb = model_.bodies[tool_body_];
     const Vec3 d = rb.state.position - rb.load.anchor - sim.time() * rb.load.holder_velocity;
@@ -104,6 +117,25 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
     data.tool_deflection_z = end.series["tool_deflection_z"];
   }
   finish_cut(end.dir, setup_now(), data, summary, end.vtk, end.pictures);
+  if (model_.heat.enabled) {
+    // The temperatures over the steady part, as the forces (mean and the batch-means interval).
+    const auto& t = end.series["time"];
+    nlohmann::json& chip = summary["chip"];
+    std::string line = "  temperatures (steady part)";
+    for (const char* col : {"chip_temperature", "rake_face_temperature"}) {
+      std::vector<double> x;
+      const auto& v = end.series[col];
+      for (std::size_t k = 0; k < t.size() && k < v.size(); ++k)
+        if (t[k] >= setup_.steady_from && v[k] > 0.0) x.push_back(v[k]);
+      const SteadyStats st = steady_stats(x);
+      const std::string key = std::string(col) + "_K";
+      chip[key] = x.empty() ? nlohmann::json() : nlohmann::json(st.mean);
+      chip[key + "_ci95"] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
+      line += x.empty() ? fmt::format(", {}: no steady rows", col)
+                        : fmt::format(", {} {:.0f} K (+- {:.0f} K, 95 % CI)", col, st.mean, st.ci95);
+    }
+    say("{}\n", line);
+  }
 }
 
 }  // namespace swarf
