@@ -13,7 +13,10 @@ broken_fraction,plastic_strain,von_mises_stress), each coloured blue (low) to re
                       0.05; --max-fraction sets it)
   plastic_strain      OUTPUT's stem + _plastic_strain.png, 0 to the 99th percentile in view
   von_mises_stress    OUTPUT's stem + _von_mises_stress.png, MPa, 0 to the 99th percentile in view
-A field the frame does not hold (output.fields left it out) is skipped with a note.
+  temperature         OUTPUT's stem + _temperature.png, deg C, the coolest to the hottest particle
+                      in view (a run with [heat]; the hottest is the point: no percentile cut)
+A field the frame does not hold (output.fields left it out, or no [heat] for the temperature) is
+skipped, with a note if --fields named it.
 
 The camera looks along +y at the cutting plane x-z (x, the cutting direction, to the right;
 z up), parallel projection. With a tool (--tool NAME, or the mesh reaching lowest) it frames the
@@ -40,12 +43,14 @@ import xml.etree.ElementTree as ET
 
 XVFB_GUARD = "SWARF_RENDER_UNDER_XVFB"
 
-# field -> (picture suffix, colour bar title, factor to the bar's unit, label format)
+# field -> (picture suffix, colour bar title, factor to the bar's unit, offset after it, label format)
 FIELDS = {
-    "broken_fraction": ("", "damage: broken-rod fraction", 1.0, "%.2f"),
-    "plastic_strain": ("_plastic_strain", "equivalent plastic strain held by the rods", 1.0, "%.3g"),
-    "von_mises_stress": ("_von_mises_stress", "von Mises stress (MPa)", 1e-6, "%.3g"),
+    "broken_fraction": ("", "damage: broken-rod fraction", 1.0, 0.0, "%.2f"),
+    "plastic_strain": ("_plastic_strain", "equivalent plastic strain held by the rods", 1.0, 0.0, "%.3g"),
+    "von_mises_stress": ("_von_mises_stress", "von Mises stress (MPa)", 1e-6, 0.0, "%.3g"),
+    "temperature": ("_temperature", "temperature (deg C)", 1.0, -273.15, "%.0f"),
 }
+DEFAULT_FIELDS = "broken_fraction,plastic_strain,von_mises_stress,temperature"
 
 
 def fail(msg, code=1):
@@ -62,12 +67,13 @@ def parse_args():
     ap.add_argument("--max-fraction", type=float, default=0.0,
                     help="top of the colour bar (default: the largest broken-rod fraction, at least 0.05)")
     ap.add_argument("--frame", type=int, default=-1, help="frame number (default: the last)")
-    ap.add_argument("--fields", default="broken_fraction,plastic_strain,von_mises_stress",
-                    help="one picture per field, comma-separated (default broken_fraction,plastic_strain,von_mises_stress)")
+    ap.add_argument("--fields", default=None,
+                    help="one picture per field, comma-separated (default %s; those the frame holds)" % DEFAULT_FIELDS)
     ap.add_argument("--tool", default="", help="name of the tool's mesh (default: the mesh reaching lowest)")
     ap.add_argument("--depth", type=float, default=0.0, help="depth of cut, m (default: from the particles)")
     a = ap.parse_args()
-    a.fields = [f for f in a.fields.split(",") if f]
+    a.fields_named = a.fields is not None
+    a.fields = [f for f in (a.fields if a.fields_named else DEFAULT_FIELDS).split(",") if f]
     for f in a.fields:
         if f not in FIELDS:
             fail("--fields: '%s' is not one of %s" % (f, ", ".join(FIELDS)), 2)
@@ -339,16 +345,22 @@ def main():
     stem = out[:-4] if out.lower().endswith(".png") else out
     wrote = 0
     for field in a.fields:
-        suffix, bar_title, factor, fmt = FIELDS[field]
+        suffix, bar_title, factor, offset, fmt = FIELDS[field]
         arr = pd.GetArray(field)
         if arr is None:
+            if not a.fields_named and field == "temperature":
+                continue  # (a run without [heat])
             print("render_chip.py: no point data '%s' in %s (output.fields left it out): picture skipped"
                   % (field, particles_path), file=sys.stderr)
             continue
-        values = vtk_to_numpy(arr).astype(float) * factor
+        values = vtk_to_numpy(arr).astype(float) * factor + offset
         shown = values[in_view] if in_view.any() else values
+        bottom = 0.0
         if field == "broken_fraction":
             top = a.max_fraction if a.max_fraction > 0 else max(0.05, float(values.max()))
+        elif field == "temperature":
+            bottom = float(shown.min()) if len(shown) else 0.0
+            top = max(float(shown.max()) if len(shown) else 0.0, bottom + 1.0)
         else:  # the 99th percentile of what is in view: a few extreme particles do not wash the map out
             top = float(np.percentile(shown, 99.0)) if len(shown) else 0.0
             if not top > 0:
@@ -358,15 +370,17 @@ def main():
             scaled = numpy_to_vtk(np.ascontiguousarray(values), deep=1)
             scaled.SetName(name)
             pd.AddArray(scaled)
-        lut.SetTableRange(0.0, top)
+        lut.SetTableRange(bottom, top)
         glyphs.SetScalarModeToUsePointFieldData()
         glyphs.SelectColorArray(name)
         glyphs.SetLookupTable(lut)
-        glyphs.SetScalarRange(0.0, top)
+        glyphs.SetScalarRange(bottom, top)
         glyphs.UseLookupTableScalarRangeOn()
         glyphs.ScalarVisibilityOn()
         glyphs.Modified()
-        bar.SetTitle(bar_title + ("" if field == "broken_fraction" else ", 0 to the 99th percentile in view"))
+        bar.SetTitle(bar_title + ("" if field == "broken_fraction" else
+                                  ", the coolest to the hottest in view" if field == "temperature" else
+                                  ", 0 to the 99th percentile in view"))
         bar.SetLabelFormat(fmt)
         win.Render()
 

@@ -82,7 +82,12 @@ constexpr const char* kChipPicture = "chip.png";  // (render_chip.py adds _<fiel
 }  // namespace
 
 std::vector<RunFile> cut_files() {
-  return {{kToolSpectrum}, {kChipSurface}, {kChipPicture}, {"chip_plastic_strain.png"}, {"chip_von_mises_stress.png"}};
+  return {{kToolSpectrum},
+          {kChipSurface},
+          {kChipPicture},
+          {"chip_plastic_strain.png"},
+          {"chip_von_mises_stress.png"},
+          {"chip_temperature.png"}};
 }
 
 std::vector<std::string> render_pictures(const std::string& dir, const CutSetup& setup, std::string& message) {
