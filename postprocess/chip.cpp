@@ -52,6 +52,19 @@ ChipMetrics measure_chip(const ChipInput& in) {
   return m;
 }
 
+double rake_contact_length(const ChipInput& in) {
+  const double a = in.rake_angle_deg * kDeg;
+  const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  double length = 0.0;
+  for (const Vec3& x : in.position) {
+    const Vec3 rel = x - in.tool_tip;
+    const double along = rel.dot(up), off = rel.dot(normal);
+    if (along >= 0.0 && along <= in.face_length && off > -in.radius && off < in.radius)
+      length = std::max(length, along);
+  }
+  return length;
+}
+
 ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<double>& temperature) {
   ChipHeat h;
   double sum = 0.0;

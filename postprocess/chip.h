@@ -44,6 +44,11 @@ struct ChipMetrics {
 /// Identifies the chip and measures it.
 ChipMetrics measure_chip(const ChipInput& in);
 
+/// The tool-chip contact length along the rake face, m: the largest distance from the tip,
+/// along the face and not past its end, of a workpiece particle that touches the face's plane
+/// (centre less than R from it); 0 when none does.
+double rake_contact_length(const ChipInput& in);
+
 /// The chip's temperatures ([heat]), K; 0 where there is no particle to measure.
 struct ChipHeat {
   double chip_mean = 0;      ///< mean over the chip particles (ChipMetrics::members)

@@ -152,9 +152,11 @@ TriangleMesh square(int n, double jitter, unsigned seed) {
 }
 
 // The force on one sphere (radius 1 mm) at 'centre' pressed into the mesh, with a velocity.
-Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& velocity) {
+Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& velocity,
+                     const StickingRule& sticking = {}, double temperature = 0.0) {
   Particles p;
   p.resize(1);
+  p.temperature[0] = temperature;
   p.position[0] = centre;
   p.velocity[0] = velocity;
   p.radius[0] = 1e-3;
@@ -174,6 +176,7 @@ Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& v
   prm.friction = 0.3;
   prm.law = FrictionLaw::Spring;
   prm.skin = 2e-4;
+  prm.sticking = sticking;
   ContactSystem cs;
   cs.setup(prm, 1, &meshes);
   cs.update_lists(p, rods, true);
@@ -181,6 +184,35 @@ Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& v
   Vec3 f = Vec3::Zero(), tau = Vec3::Zero();
   cs.add_to_particle(0, p.radius[0], f, tau);
   return f;
+}
+
+// The sticking cap (laws/sticking.h): a sphere sliding fast over a face (the spring law
+// saturated) passes Coulomb's mu fn, or the cap 4 R^2 k0 Theta(T) where that is smaller, with
+// Theta = 1 - T*^m (floored at 1e-3). Here k0 is set so that the cap is 1/3 of mu fn cold;
+// the force's direction stays against the slip. Tolerance: round-off (1e-12).
+TEST(Sticking, TheCapTakesOverWhereMuTimesThePressureExceedsTheShearStrength) {
+  const TriangleMesh m = square(4, 0.0, 1);
+  const Vec3 centre(2.5e-3, 2.5e-3, 1e-3 - 2e-6), slide(50.0, 0.0, 0.0);  // (on a diagonal: two triangles share it)
+  const Vec3 free = force_on_sphere(m, centre, slide);
+  const double fn = free.z(), ft = std::hypot(free.x(), free.y());
+  ASSERT_GT(fn, 0.0);
+  EXPECT_NEAR(ft, 0.3 * fn, 1e-12 * fn);  // (saturated: Coulomb)
+  const double R = 1e-3;
+  StickingRule s{.shear_strength = 0.1 * fn / (4.0 * R * R),
+                 .softening_exponent = 2.0,
+                 .melt_temperature = 1693.15,
+                 .reference_temperature = 293.15};
+  for (const auto& [T, theta] : std::vector<std::pair<double, double>>{
+           {0.0, 1.0}, {293.15, 1.0}, {993.15, 0.75}, {1693.15, 1e-3}, {2500.0, 1e-3}}) {
+    const Vec3 f = force_on_sphere(m, centre, slide, s, T);
+    EXPECT_NEAR(f.z(), fn, 1e-12 * fn) << T;
+    EXPECT_NEAR(-f.x(), 0.1 * fn * theta, 1e-12 * fn) << T;
+    EXPECT_NEAR(f.y(), 0.0, 1e-12 * fn) << T;
+  }
+  // Above Coulomb (a strong material, cold) the cap does not bind.
+  s.shear_strength = 10.0 * fn / (4.0 * R * R);
+  const Vec3 strong = force_on_sphere(m, centre, slide, s, 293.15);
+  EXPECT_NEAR(-strong.x(), 0.3 * fn, 1e-12 * fn);
 }
 
 TEST(FlatSurface, SameForceHoweverTriangulated) {

@@ -255,12 +255,31 @@ void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
 }
 
 // [contact] and [environment]: present or not, no rules between their keys.
+// [contact] sticking: its keys only with sticking = true; what they leave out from the preset.
+void read_sticking(TableReader& r, CaseSettings& cs) {
+  ContactSettings& c = cs.contact;
+  for (const char* key : {"sticking_shear_strength", "sticking_softening_exponent", "sticking_melt_temperature"})
+    if (r.has(key) && !c.sticking) r.fail(key, r.get(key), "is used only with contact.sticking = true");
+  if (!c.sticking) return;
+  const MaterialPreset* preset = cs.material.preset.empty() ? nullptr : find_material_preset(cs.material.preset);
+  if (preset && !r.has("sticking_shear_strength"))
+    c.sticking_shear_strength = (preset->jc_a + preset->jc_b) / std::sqrt(3.0);
+  if (!r.has("sticking_softening_exponent")) c.sticking_softening_exponent = preset ? preset->jc_m : 1.0;
+  if (preset && !r.has("sticking_melt_temperature")) c.sticking_melt_temperature = preset->melt_temperature;
+  for (const char* key : {"sticking_shear_strength", "sticking_melt_temperature"})
+    if (!r.has(key) && !preset)
+      r.fail(key, nullptr,
+             "sticking needs the shear flow strength (Pa) and the melting temperature (K): give them "
+             "or material.preset");
+}
+
 void read_contact_and_environment(const CaseInput& in, CaseSettings& cs) {
   if (const toml::table* t = in.table("contact")) {
     TableReader r = in.reader(t, "contact");
     cs.contact.enabled = true;
     r.read(contact_keys(), cs.contact);
     r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
+    read_sticking(r, cs);
   }
   if (const toml::table* t = in.table("heat")) {
     TableReader r = in.reader(t, "heat");

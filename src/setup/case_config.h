@@ -212,6 +212,10 @@ struct ContactSettings {
   double regularization_speed = 1e-3;  ///< v0 in tanh(|v_t|/v0) of the regularized law, m/s
   double tangential_damping = 0.0;  ///< spring law: tangential dashpot as a multiple of the normal damping coefficient, 1
   double skin = 0.2;                ///< Verlet-list skin as a fraction of the largest radius, 1
+  bool sticking = false;            ///< cap the tool contacts' friction at the shear flow strength
+  double sticking_shear_strength = 0.0;      ///< k0, Pa; 0 = not given (the preset's)
+  double sticking_softening_exponent = 0.0;  ///< m, 1; 0 = not given (the preset's, else 1)
+  double sticking_melt_temperature = 0.0;    ///< T_melt, K; 0 = not given (the preset's)
 };
 
 /// [heat]: temperatures, heat from plastic and frictional work, conduction (issue 33;

@@ -707,6 +707,34 @@ const std::vector<Key<ContactSettings>>& contact_keys() {
        .unit = "1",
        .range = in(0, 2, "(]"),
        .doc = "Verlet-list skin s as a fraction of the largest particle radius: s = `skin` x R_max (m)."},
+      {.name = "sticking",
+       .field = &S::sticking,
+       .doc = "Cap the friction of the tool (triangle) contacts at the particle's share of the shear flow "
+              "strength, 4 R^2 k(T): Zorev's sticking zone where mu times the pressure exceeds k "
+              "([physics.md section 5](physics.md#5-hertz-contacts-with-restitution-damping-and-friction))."},
+      {.name = "sticking_shear_strength",
+       .field = &S::sticking_shear_strength,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "the preset's (A + B)/sqrt 3",
+       .range = in(1e3, 1e11, "[]"),
+       .doc = "k0, the workpiece's shear flow strength at room temperature; the preset's default is its "
+              "Johnson-Cook flow stress at plastic strain 1 over sqrt 3 (von Mises)."},
+      {.name = "sticking_softening_exponent",
+       .field = &S::sticking_softening_exponent,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "the preset's Johnson-Cook m, else 1",
+       .range = in(0.01, 10, "[]"),
+       .doc = "m of the thermal factor 1 - T*^m of k (T* = (T - 293.15 K)/(T_melt - 293.15 K), clamped to "
+              "[0, 1]); T is the particle's temperature ([heat]; without it the cap stays at k0)."},
+      {.name = "sticking_melt_temperature",
+       .field = &S::sticking_melt_temperature,
+       .unit = "K",
+       .no_default = true,
+       .default_note = "the preset's",
+       .range = in(300, 1e4, "[]"),
+       .doc = "T_melt of the thermal factor of k."},
   };
   return keys;
 }

@@ -419,6 +419,11 @@ ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
   for (double rr : p.radius) rmax = std::max(rmax, rr);
   for (const auto& f : cs.inflows) rmax = std::max(rmax, f.radius_max);
   c.skin = cs.contact.skin * rmax;
+  if (cs.contact.sticking)
+    c.sticking = StickingRule{.shear_strength = cs.contact.sticking_shear_strength,
+                              .softening_exponent = cs.contact.sticking_softening_exponent,
+                              .melt_temperature = cs.contact.sticking_melt_temperature,
+                              .reference_temperature = 293.15};
   return c;
 }
 

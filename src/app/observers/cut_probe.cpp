@@ -69,7 +69,8 @@ void CutProbe::columns(std::vector<Column>& out) const {
              {{"tool_travel", "m", "the tool's displacement along x from its initial placement"},
               {"cutting_force_per_width", "N/m", "cutting force Fc = -force_<tool>_x over the workpiece width"},
               {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
-              {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip reaches the section"}});
+              {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip reaches the section"},
+              {"contact_length", "m", "tool-chip contact length along the rake face (particles touching it)"}});
   if (model_.heat.enabled)
     out.insert(out.end(), {{"chip_temperature", "K", "mean temperature of the chip particles; 0 without a chip"},
                            {"rake_face_temperature", "K",
@@ -85,8 +86,8 @@ void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
   const std::vector<Vec3> workpiece(x.begin(), x.begin() + setup_.lattice_particles);
   const ChipInput in = chip_input(setup_, workpiece, tool_tip());
   const ChipMetrics chip = measure_chip(in);
-  values.insert(values.end(),
-                {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width, chip.thickness});
+  values.insert(values.end(), {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width,
+                               chip.thickness, rake_contact_length(in)});
   if (model_.heat.enabled) {
     const ChipHeat heat = chip_heat(in, chip, sim.world().particles.temperature);
     values.insert(values.end(), {heat.chip_mean, heat.rake_face_max});
@@ -117,25 +118,28 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
     data.tool_deflection_z = end.series["tool_deflection_z"];
   }
   finish_cut(end.dir, setup_now(), data, summary, end.vtk, end.pictures);
-  if (model_.heat.enabled) {
-    // The temperatures over the steady part, as the forces (mean and the batch-means interval).
-    const auto& t = end.series["time"];
-    nlohmann::json& chip = summary["chip"];
-    std::string line = "  temperatures (steady part)";
-    for (const char* col : {"chip_temperature", "rake_face_temperature"}) {
-      std::vector<double> x;
-      const auto& v = end.series[col];
-      for (std::size_t k = 0; k < t.size() && k < v.size(); ++k)
-        if (t[k] >= setup_.steady_from && v[k] > 0.0) x.push_back(v[k]);
-      const SteadyStats st = steady_stats(x);
-      const std::string key = std::string(col) + "_K";
-      chip[key] = x.empty() ? nlohmann::json() : nlohmann::json(st.mean);
-      chip[key + "_ci95"] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
-      line += x.empty() ? fmt::format(", {}: no steady rows", col)
-                        : fmt::format(", {} {:.0f} K (+- {:.0f} K, 95 % CI)", col, st.mean, st.ci95);
-    }
-    say("{}\n", line);
-  }
+  // The contact length and the temperatures over the steady part, as the forces (mean and the
+  // batch-means interval), over the rows where they were measured (> 0).
+  const auto t = end.series["time"];
+  nlohmann::json& chip = summary["chip"];
+  const auto steady = [&](const char* col, const char* key, double scale, const char* unit, const char* fmt_value) {
+    std::vector<double> x;
+    const auto v = end.series[col];
+    for (std::size_t k = 0; k < t.size() && k < v.size(); ++k)
+      if (t[k] >= setup_.steady_from && v[k] > 0.0) x.push_back(v[k]);
+    const SteadyStats st = steady_stats(x);
+    chip[key] = x.empty() ? nlohmann::json() : nlohmann::json(st.mean);
+    chip[std::string(key) + "_ci95"] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
+    if (x.empty()) return fmt::format("{}: no steady rows", col);
+    return fmt::format("{} {} {} (95 % CI +- {} {})", col, fmt::format(fmt::runtime(fmt_value), scale * st.mean), unit,
+                       fmt::format(fmt::runtime(fmt_value), scale * st.ci95), unit);
+  };
+  std::string line = "  steady part: " + steady("contact_length", "contact_length_m", 1e3, "mm", "{:.3g}");
+  if (model_.heat.enabled)
+    for (const auto& [col, key] : {std::pair{"chip_temperature", "chip_temperature_K"},
+                                   std::pair{"rake_face_temperature", "rake_face_temperature_K"}})
+      line += ", " + steady(col, key, 1.0, "K", "{:.0f}");
+  say("{}\n", line);
 }
 
 }  // namespace swarf

@@ -43,6 +43,7 @@ void ContactSystem::tangent(const Particles& p, double h, double kx, double kv) 
   const Vec3* v = p.velocity.data();
   const Vec3* w = p.omega.data();
   const double* radius = p.radius.data();
+  const double* temperature = p.temperature.empty() ? nullptr : p.temperature.data();
   const Periodic periodic = periodic_;
   const std::vector<MeshBody>& meshes = *meshes_;
 #pragma omp parallel
@@ -92,8 +93,9 @@ void ContactSystem::tangent(const Particles& p, double h, double kx, double kv) 
       const double fn = hit.weight * HertzLaw{q.K, q.D}.force(hit.overlap, root, root4, -vn);
       if (!(fn > 0.0)) continue;
       const double normal = hit.weight * (kx * 1.5 * q.K * root + kv * q.D * root4);
+      const double stick = hit.weight * sticking_cap(prm_.sticking, R, temperature ? temperature[i] : 0.0);
       const double t = kv * friction_tangent(rule, n, vrel - vn * n, fn, hit.weight * q.kt0 * root,
-                                             hit.weight * eta_ratio * q.D * root4, q.history);
+                                             hit.weight * eta_ratio * q.D * root4, q.history, stick);
       ttan_axis_[k] = n;
       ttan_lateral_[k] = t;
       ttan_axial_[k] = normal - t;

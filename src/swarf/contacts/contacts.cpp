@@ -44,6 +44,8 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   const Vec3* v = p.velocity.data();
   const Vec3* w = p.omega.data();
   const double* radius = p.radius.data();
+  const double* temperature = p.temperature.empty() ? nullptr : p.temperature.data();
+  const StickingRule stick_rule = prm_.sticking;
   const Periodic periodic = periodic_;
   const std::vector<MeshBody>& meshes = *meshes_;
   const std::int32_t* tri_mesh = tri_mesh_.data();
@@ -140,8 +142,9 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const Vec3 vt = vrel - vn * n;
       Vec3 hist = q.history;
       // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
+      const double stick = hit.weight * sticking_cap(stick_rule, R, temperature ? temperature[i] : 0.0);
       const Vec3 ft = friction_force(rule, n, vt, fn, hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4,
-                                     hist);
+                                     hist, stick);
       tres[k] = Result{fn * n + ft, ft.cross(n)};
       if (final)
         q.history = hist;

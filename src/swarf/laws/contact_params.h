@@ -6,6 +6,7 @@
 #pragma once
 
 #include "swarf/laws/friction.h"
+#include "swarf/laws/sticking.h"
 
 namespace swarf {
 
@@ -18,6 +19,7 @@ struct ContactParams {
   double regularization_speed = 1e-3;  ///< m/s
   double tangential_damping = 0;       ///< tangential dashpot as a multiple of the normal one, 1
   double skin = 0;                     ///< Verlet skin, m
+  StickingRule sticking;               ///< the tool-chip friction's sticking cap (off: shear_strength 0)
 };
 
 }  // namespace swarf

@@ -6,6 +6,7 @@
 // (mu fn tanh(|vt|/v0), no history).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarf/core/vec3.h"
@@ -23,9 +24,10 @@ struct FrictionRule {
 
 // Tangential force on body j from the relative tangential velocity vt (j relative to i, m/s),
 // the committed history 'hist' (m) and the normal force fn (N), with the tangential stiffness
-// kt (N/m) and dashpot eta (N s/m); returns the trial history through 'hist'.
+// kt (N/m) and dashpot eta (N s/m); returns the trial history through 'hist'. 'stick' (N)
+// caps the force below Coulomb's mu fn where it is smaller (the sticking cap, sticking.h).
 [[gnu::always_inline]] inline Vec3 friction_force(const FrictionRule& r, const Vec3& n, const Vec3& vt, double fn,
-                                                  double kt, double eta, Vec3& hist) {
+                                                  double kt, double eta, Vec3& hist, double stick = HUGE_VAL) {
   if (r.law == FrictionLaw::None || r.mu == 0.0) {
     hist = Vec3::Zero();
     return Vec3::Zero();
@@ -34,13 +36,13 @@ struct FrictionRule {
     hist = Vec3::Zero();
     const double s = vt.norm();
     if (s == 0.0) return Vec3::Zero();
-    return (-r.mu * fn * std::tanh(s / r.v0) / s) * vt;
+    return (-std::min(r.mu * fn, stick) * std::tanh(s / r.v0) / s) * vt;
   }
   // Cundall-Strack spring with a dashpot: the history, kept in the tangent plane, grows
   // with the slip; when the force exceeds Coulomb's cap the spring is reset to it.
   Vec3 xi = hist - hist.dot(n) * n + r.h * vt;
   Vec3 ft = -kt * xi - eta * vt;
-  const double cap = r.mu * fn, f2 = ft.squaredNorm();
+  const double cap = std::min(r.mu * fn, stick), f2 = ft.squaredNorm();
   if (f2 > cap * cap) {
     ft *= cap / std::sqrt(f2);
     xi = kt > 0.0 ? Vec3(-(ft + eta * vt) / kt) : Vec3::Zero();
@@ -56,15 +58,16 @@ struct FrictionRule {
 // its growth with fn are left out: an approximate tangent, which Newton's residual test
 // corrects). Regularized law: the secant mu fn tanh(s/v0) / s, its limit mu fn / v0 at s = 0.
 [[gnu::always_inline]] inline double friction_tangent(const FrictionRule& r, const Vec3& n, const Vec3& vt, double fn,
-                                                      double kt, double eta, const Vec3& hist) {
+                                                      double kt, double eta, const Vec3& hist,
+                                                      double stick = HUGE_VAL) {
   if (r.law == FrictionLaw::None || r.mu == 0.0 || fn <= 0.0) return 0.0;
   if (r.law == FrictionLaw::Regularized) {
     const double s = vt.norm(), u = s / r.v0;
-    return r.mu * fn * (u > 1e-8 ? std::tanh(u) / s : 1.0 / r.v0);
+    return std::min(r.mu * fn, stick) * (u > 1e-8 ? std::tanh(u) / s : 1.0 / r.v0);
   }
   const Vec3 xi = hist - hist.dot(n) * n + r.h * vt;
   const Vec3 ft = -kt * xi - eta * vt;
-  const double cap = r.mu * fn;
+  const double cap = std::min(r.mu * fn, stick);
   return ft.squaredNorm() > cap * cap ? 0.0 : kt * r.h + eta;
 }
 
