@@ -35,6 +35,19 @@ ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Ve
   return ci;
 }
 
+double broken_rod_fraction(std::span<const std::uint8_t> intact, std::span<const std::uint8_t> formed) {
+  if (!formed.empty() && formed.size() != intact.size())
+    throw InputError(
+        fmt::format("broken-rod fraction: {} intact flags but {} formed flags", intact.size(), formed.size()));
+  std::size_t own = 0, broken = 0;
+  for (std::size_t k = 0; k < intact.size(); ++k) {
+    if (!formed.empty() && formed[k]) continue;
+    ++own;
+    broken += intact[k] ? 0 : 1;
+  }
+  return double(broken) / std::max<double>(1.0, double(own));  // (no rods: 0, not NaN)
+}
+
 CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   CutResult out;
   // The steady part's rows.

@@ -4,12 +4,17 @@
 // refused by name; 'swarf run --check' and 'swarf case default' do what they say.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "case_errors.h"
+#include "io/h5file.h"
+#include "postprocess/cut_report.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -19,6 +24,14 @@ const MeshSettings& tool_of(const CaseSettings& cs) {
   for (const auto& m : cs.meshes)
     if (m.tool) return m;
   throw std::runtime_error("no tool");
+}
+
+// 'swarf run' of the [cut] example coarsened to 5 layers across h (some 2000 particles: a second
+// or two), on one thread and without plots, into 'out', with the further options 'sets'.
+test::CommandResult run_coarse_cut(const std::string& out, const std::string& sets) {
+  return test::run_command(fmt::format(
+      "timeout 300 {} run {}/examples/cut_c45.toml --out {} --set cut.layers=5 --set output.plots=false --threads 1 {}",
+      SWARF_BINARY, SWARF_SOURCE_DIR, out, sets));
 }
 
 // The hand-written default rounds R to six digits (1.41421e-5 m for 1.41421356e-5) and the
@@ -268,6 +281,52 @@ TEST(CutTable, ACutWithoutForceHasNoFrictionAngle) {
   const std::string summary = test::read_file(dir / "out/summary.json");
   EXPECT_NE(summary.find("\"friction_angle_deg\": null"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"merchant_shear_angle_deg\": null"), std::string::npos) << summary;
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// The broken-rod fraction counts the lattice's own rods only: 1 of the 3 own rods below is
+// broken; the formed rods (one intact, one broken) are in neither count.
+TEST(BrokenRodFraction, CountsTheLatticesOwnRodsOnly) {
+  const std::vector<std::uint8_t> intact{1, 0, 1, 1, 0}, formed{0, 0, 0, 1, 1};
+  EXPECT_EQ(broken_rod_fraction(intact, formed), 1.0 / 3.0);
+  EXPECT_EQ(broken_rod_fraction(intact, {}), 2.0 / 5.0);  // (no formed flags: every rod is the lattice's)
+  EXPECT_EQ(broken_rod_fraction({}, {}), 0.0);            // (no rods: 0, not NaN)
+  EXPECT_THROW(broken_rod_fraction(intact, std::vector<std::uint8_t>{0, 1}), InputError);
+}
+
+// 'swarf post' on a finished [cut] run gives the run's broken-rod fraction, bit for bit: with
+// bond formation the run divided by the lattice's own rods and post (before layout 4) by all
+// rods, formed ones included (0.7312 % against 0.7365 % on this case). The coarse cut (5
+// layers, 0.15 mm) breaks 56 rods and forms some 60.
+TEST(CutTable, PostGivesTheRunsBrokenRodFraction) {
+  test::TempDir dir("cut_post_broken");
+  const std::string out = dir / "out";
+  const auto r = run_coarse_cut(out, "--set cut.length_of_cut=0.15e-3 --set output.vtk=false");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto run = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+  ASSERT_GT(run["results"]["broken_rods"].get<long long>(), 0) << run["results"].dump(2);
+  {
+    H5File f(out + "/results.h5", H5File::Mode::Read);
+    std::size_t rows = 0, cols = 0;
+    const auto formed = f.read_ints("/bonds/formed", rows, cols);
+    ASSERT_GT(std::count(formed.begin(), formed.end(), 1), 0) << "the case must form rods to test this";
+  }
+  const double fraction = run["cutting"]["broken_fraction"].get<double>();
+  EXPECT_EQ(fraction, run["results"]["broken_fraction"].get<double>());
+  const auto p = test::run_command(fmt::format("{} post {}", SWARF_BINARY, out));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const auto post = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+  EXPECT_EQ(post["cutting"]["broken_fraction"].get<double>(), fraction);
+  const auto line = [](const std::string& text) {
+    const auto at = text.find("broken-rod fraction");
+    return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+  };
+  EXPECT_EQ(line(p.output), line(r.output));
 }
 
 }  // namespace
