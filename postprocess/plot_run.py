@@ -39,7 +39,7 @@ def plot_cut(run, summary, s):
         if x0 is not None:
             ax.axvspan(x0, travel[-1], color="0.9", zorder=0, label="steady part (statistics)")
             for key, c in (("cutting_force_per_width_mean_N_per_m", "C0"), ("thrust_force_per_width_mean_N_per_m", "C3")):
-                if key in cut:
+                if cut.get(key) is not None:  # (null: no steady rows)
                     ax.hlines(cut[key] / 1e3, x0, travel[-1], colors=c, linestyles="--", lw=1.5)
                     # the mean's 95 % confidence interval (batch means; null when the part is too short)
                     ci = cut.get(key.replace("_mean_", "_ci95_"))

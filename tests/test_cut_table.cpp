@@ -268,6 +268,43 @@ TEST(CutTable, RunCheckAndCaseDefault) {
 namespace swarf {
 namespace {
 
+// A run that ends before its steady window (issue 36, defect 2) has no steady force: null in
+// summary.json with a note saying why, a warning, "none" in the table (it printed "0 +- 0 kN/m"),
+// and the last line does not name a chip surface that was not written; 'swarf post' agrees.
+TEST(CutTable, ARunThatEndsBeforeItsSteadyWindowReportsNoForce) {
+  test::TempDir dir("cut_nosteady");
+  const std::string out = dir / "out";
+  const auto r = run_coarse_cut(out, "--set integrator.end_time=3e-6");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto check = [&](const std::string& output, const char* who) {
+    const auto sum = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+    const auto& c = sum["cutting"];
+    EXPECT_EQ(c["steady_samples"], 0) << who;
+    for (const char* k : {"cutting_force_per_width_mean_N_per_m", "cutting_force_per_width_std_N_per_m",
+                          "thrust_force_per_width_mean_N_per_m", "thrust_force_per_width_std_N_per_m"})
+      EXPECT_TRUE(c[k].is_null()) << who << ": " << k << " = " << c[k];
+    ASSERT_TRUE(c.contains("steady_note")) << who << ": " << c.dump(2);
+    // (the run ends with the step that passes 3e-6 s: verlet does not shorten its last step)
+    test::expect_mentions(c["steady_note"].get<std::string>(),
+                          {"starts at 0.0001 s", "after the end of the run at 3.0"});
+    test::expect_mentions(output, {"warning: the steady forces are missing", "note: the steady window starts at"});
+    const std::string none = "none (no steady rows: see the note below)";
+    const auto fc = output.find("Fc/w "), ft = output.find("Ft/w ");
+    ASSERT_NE(fc, std::string::npos) << output;
+    ASSERT_NE(ft, std::string::npos) << output;
+    EXPECT_NE(output.substr(fc, output.find('\n', fc) - fc).find(none), std::string::npos) << output;
+    EXPECT_NE(output.substr(ft, output.find('\n', ft) - ft).find(none), std::string::npos) << output;
+    EXPECT_EQ(output.find("0 +- 0 kN/m"), std::string::npos) << who << ": " << output;
+  };
+  check(r.output, "run");
+  EXPECT_NE(r.output.find("particles.pvd (open in ParaView)"), std::string::npos) << r.output;
+  ASSERT_FALSE(std::filesystem::exists(out + "/chip_surface.vtp")) << "the case must end before the chip forms";
+  EXPECT_EQ(r.output.find("chip_surface.vtp"), std::string::npos) << r.output;
+  const auto p = test::run_command(fmt::format("{} post {}", SWARF_BINARY, out));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  check(p.output, "post");
+}
+
 // A cut stopped before the tool touches the block has no force, so no force direction: the
 // friction angle and Merchant's angle are not measured (null), not the rake angle that
 // atan2(0, 0) = 0 would make of them.

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """test_plot_run.py: ctest 'plot_run_forces': the legends of forces.png (postprocess/plot_run.py).
 
-Two synthetic cutting runs (series.csv and summary.json only, 40 rows): one whose chip
+Three synthetic cutting runs (series.csv and summary.json only, 40 rows): one whose chip
 thickness was measured from the middle on, one where it never was (every row 0, no
-thickness_m). The script's figures are kept instead of written (Figure.savefig is replaced) and
+thickness_m), and one that ended before its steady window (null steady means: drawn without
+them). The script's figures are kept instead of written (Figure.savefig is replaced) and
 checked: the broken-rod curve has a legend entry; every legend drawn has at least one entry (no
 empty box when the chip thickness was not measured); the chip-thickness entries appear only
 when it was measured. Usage: test_plot_run.py PATH/TO/plot_run.py. Exit 77 (skipped) without
@@ -18,7 +19,7 @@ import tempfile
 SKIP = 77
 
 
-def write_run(path, measured):
+def write_run(path, measured, steady=True):
     os.makedirs(path)
     rows = 40
     with open(os.path.join(path, "series.csv"), "w") as f:
@@ -30,6 +31,10 @@ def write_run(path, measured):
     cutting = {"steady_from_s": 2e-6, "cutting_force_per_width_mean_N_per_m": 2.01e5,
                "thrust_force_per_width_mean_N_per_m": 5e4, "cutting_force_per_width_ci95_N_per_m": 500.0,
                "thrust_force_per_width_ci95_N_per_m": None}
+    if not steady:  # a run that ended before its steady window: no steady figures (null)
+        cutting = {"steady_from_s": 1e-4, "cutting_force_per_width_mean_N_per_m": None,
+                   "thrust_force_per_width_mean_N_per_m": None, "cutting_force_per_width_ci95_N_per_m": None,
+                   "thrust_force_per_width_ci95_N_per_m": None, "steady_note": "the steady window starts ..."}
     chip = {"thickness_m": 0.25e-3} if measured else {"note": "chip thickness not measured"}
     with open(os.path.join(path, "summary.json"), "w") as f:
         json.dump({"cutting": cutting, "chip": chip}, f)
@@ -60,12 +65,16 @@ def main():
     matplotlib.figure.Figure.savefig = lambda fig, name, *a, **k: saved.__setitem__(os.path.basename(name), fig)
     failures = []
     with tempfile.TemporaryDirectory(prefix="swarf_test_plot_run_") as tmp:
-        for measured in (True, False):
-            run = os.path.join(tmp, "measured" if measured else "unmeasured")
-            write_run(run, measured)
+        for measured, steady in ((True, True), (False, True), (False, False)):
+            run = os.path.join(tmp, ("measured" if measured else "unmeasured") + ("" if steady else "_nosteady"))
+            write_run(run, measured, steady)
             saved.clear()
             summary = json.load(open(os.path.join(run, "summary.json")))
-            plot_run.plot_cut(run, summary, plot_run.read_series(os.path.join(run, "series.csv")))
+            try:
+                plot_run.plot_cut(run, summary, plot_run.read_series(os.path.join(run, "series.csv")))
+            except Exception as e:  # (a null steady mean once raised a TypeError)
+                failures.append("%s: plot_cut raised %r" % (run, e))
+                continue
             fig = saved.get("forces.png")
             if fig is None:
                 failures.append("%s: forces.png not drawn" % run)

@@ -143,6 +143,9 @@ std::vector<std::string> render_pictures(const std::string& dir, const CutSetup&
 void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
                 bool pictures) {
   const CutResult res = analyze_cut(setup, data);
+  if (res.cutting.contains("steady_note"))
+    eprint("swarf: warning: the steady forces are missing (null in summary.json): {}\n",
+           res.cutting["steady_note"].get<std::string>());
   sum["cutting"] = res.cutting;
   sum["chip"] = res.chip;
   std::string tool_line;
