@@ -197,6 +197,10 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
   refused("[cut]\n" + ok + "[workpiece]\nsize = [1e-3, 1e-3, 1e-3]\n", {"workpiece.size", "[cut]"});
   refused("[cut]\n" + ok + "[uniaxial]\nstrain_path = [0.0, 0.01]\n", {"[cut]", "[uniaxial]"});
   refused("[cut]\n" + ok + "layers = 1\n", {"cut.layers", "[2, 200]"});
+  // A tool from a file on the mesh [cut] makes its tool of: the keys [cut] set are named as its.
+  refused("[cut]\n" + ok + "[[mesh]]\nname = \"tool\"\nfile = \"tool.stl\"\n",
+          {"c.toml:8", "key 'mesh.file' = \"tool.stl\"", "[cut] set", "rake_angle = 10",
+           "clearance_angle = ", "edge_radius", "origin", "[[mesh]] 'tool'"});
   // (found by the fuzzer: a width of 5e42 m made lround overflow under the FP traps)
   refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "cells", "more than"});
 }
