@@ -319,6 +319,7 @@ TEST(CutTable, ACutWithoutForceHasNoFrictionAngle) {
       "--set output.vtk=false --threads 1",
       SWARF_BINARY, SWARF_SOURCE_DIR, dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("ns per particle-step, 1 thread)"), std::string::npos) << r.output;  // (not "1 threads")
   const std::string summary = test::read_file(dir / "out/summary.json");
   EXPECT_NE(summary.find("\"friction_angle_deg\": null"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"merchant_shear_angle_deg\": null"), std::string::npos) << summary;

@@ -506,3 +506,19 @@ TEST(SweepMpi, TwoRanksWriteTheSameStudyCsvAsJobsTwo) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// docs/studies.md shows validation/studies/rake_angle.toml as its example: the file's text, in
+// full (it once showed a study of the first cut at four rake angles that the file no longer was).
+TEST(StudyDocs, TheExampleIsTheValidationStudy) {
+  const std::string doc = test::read_file(std::string(SWARF_SOURCE_DIR) + "/docs/studies.md");
+  const std::string file = test::read_file(std::string(SWARF_SOURCE_DIR) + "/validation/studies/rake_angle.toml");
+  ASSERT_FALSE(file.empty());
+  EXPECT_NE(doc.find("Example (`validation/studies/rake_angle.toml`"), std::string::npos);
+  EXPECT_NE(doc.find("```toml\n" + file + "```"), std::string::npos) << "docs/studies.md's example is not the file";
+}
+
+}  // namespace
+}  // namespace swarf
