@@ -35,6 +35,19 @@ ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Ve
   return ci;
 }
 
+double broken_rod_fraction(std::span<const std::uint8_t> intact, std::span<const std::uint8_t> formed) {
+  if (!formed.empty() && formed.size() != intact.size())
+    throw InputError(
+        fmt::format("broken-rod fraction: {} intact flags but {} formed flags", intact.size(), formed.size()));
+  std::size_t own = 0, broken = 0;
+  for (std::size_t k = 0; k < intact.size(); ++k) {
+    if (!formed.empty() && formed[k]) continue;
+    ++own;
+    broken += intact[k] ? 0 : 1;
+  }
+  return double(broken) / std::max<double>(1.0, double(own));  // (no rods: 0, not NaN)
+}
+
 CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   CutResult out;
   // The steady part's rows.
@@ -46,6 +59,8 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
       ft_rows.push_back(k < d.ft.size() ? d.ft[k] : NAN);
     }
   const std::size_t samples = time.size();
+  // No steady rows (a run that ended before its steady window): no force to report, which is
+  // not a force of 0 N/m. The means and deviations are null, and the note says why.
   // Mean, sample deviation and the batch-means interval of the forces per width (steady_stats.h).
   const SteadyStats fcs = steady_stats(fc_rows), fts = steady_stats(ft_rows);
   const double fc = samples > 0 ? fcs.mean : 0.0, ft = samples > 0 ? fts.mean : 0.0;
@@ -59,13 +74,13 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
       {"width_m", s.width},
       {"steady_from_s", s.steady_from},
       {"steady_samples", samples},
-      {"cutting_force_per_width_mean_N_per_m", fc},
-      {"cutting_force_per_width_std_N_per_m", samples > 1 ? fcs.std : 0.0},
+      {"cutting_force_per_width_mean_N_per_m", samples > 0 ? nlohmann::json(fc) : nlohmann::json(nullptr)},
+      {"cutting_force_per_width_std_N_per_m", samples > 1 ? nlohmann::json(fcs.std) : nlohmann::json(nullptr)},
       {"cutting_force_per_width_ci95_N_per_m", finite_or_null(fcs.ci95)},
       {"cutting_force_per_width_autocorrelation_time_s", finite_or_null(fcs.autocorrelation_time * row_interval)},
       {"cutting_force_per_width_effective_samples", finite_or_null(fcs.effective_samples)},
-      {"thrust_force_per_width_mean_N_per_m", ft},
-      {"thrust_force_per_width_std_N_per_m", samples > 1 ? fts.std : 0.0},
+      {"thrust_force_per_width_mean_N_per_m", samples > 0 ? nlohmann::json(ft) : nlohmann::json(nullptr)},
+      {"thrust_force_per_width_std_N_per_m", samples > 1 ? nlohmann::json(fts.std) : nlohmann::json(nullptr)},
       {"thrust_force_per_width_ci95_N_per_m", finite_or_null(fts.ci95)},
       {"thrust_force_per_width_autocorrelation_time_s", finite_or_null(fts.autocorrelation_time * row_interval)},
       {"thrust_force_per_width_effective_samples", finite_or_null(fts.effective_samples)},
@@ -76,6 +91,14 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
       {"steady_batches", fcs.batches},
       {"steady_batch_samples", fcs.batches > 0 ? fcs.batch_size : 0},
       {"broken_fraction", d.broken_rod_fraction}};
+  if (samples == 0)
+    out.cutting
+        ["steady_note"] = d.time.empty()
+                              ? std::string("the series has no rows: no steady forces")
+                              : fmt::format(
+                                    "the steady window starts at {:.4g} s, after the end of the run at {:.4g} s: no "
+                                    "steady rows, so no steady forces (lower output.steady_from, or run longer)",
+                                    s.steady_from, d.time.back());
   if (fcs.batches_short() || fts.batches_short()) {
     const char* which = fcs.batches_short() && fts.batches_short()
                             ? "cutting_force_per_width and thrust_force_per_width"
@@ -174,19 +197,31 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
                  : fmt::format(" (95 % CI{}: unavailable)", of);
     return fmt::format(" (95 % CI{} +- {:.3g}{})", of, nan_safe(j[key].get<double>() * scale), unit);
   };
+  // A steady force: its mean, its deviation (when there are two rows) and its interval; none
+  // without steady rows (null in summary.json), said so instead of a force of 0.
+  auto force = [&](const char* what, const char* mean, const char* std_key, const char* ci_key) {
+    if (!cutting.contains(mean) || !cutting[mean].is_number())
+      return fmt::format("  {}    {:>10} (no steady rows: see the note below)\n", what, "none");
+    const double sd = num(cutting, std_key);
+    return fmt::format("  {}    {:>10.4g}{} kN/m{}\n", what, nan_safe(num(cutting, mean) / 1e3),
+                       std::isnan(sd) ? std::string() : fmt::format(" +- {:.3g}", nan_safe(sd / 1e3)),
+                       ci(cutting, ci_key, 1e-3, " kN/m", " of the mean", rows));
+  };
+  // A figure that summary.json gives as null (no steady rows, no force direction): "none", not
+  // "nan" (and not 0).
+  auto figure = [](const nlohmann::json& j, const char* key, const char* spec, const char* unit) {
+    if (!j.contains(key) || !j[key].is_number()) return fmt::format("{:>10}", "none");
+    return fmt::format(fmt::runtime(spec), nan_safe(j[key].get<double>())) + unit;
+  };
   std::string t;
   t += "\n  result (steady part of the cut)          value\n";
-  t += fmt::format("  cutting force per width Fc/w    {:>10.4g} +- {:.3g} kN/m{}\n",
-                   nan_safe(num(cutting, "cutting_force_per_width_mean_N_per_m") / 1e3),
-                   nan_safe(num(cutting, "cutting_force_per_width_std_N_per_m") / 1e3),
-                   ci(cutting, "cutting_force_per_width_ci95_N_per_m", 1e-3, " kN/m", " of the mean", rows));
-  t += fmt::format("  thrust force per width Ft/w     {:>10.4g} +- {:.3g} kN/m{}\n",
-                   nan_safe(num(cutting, "thrust_force_per_width_mean_N_per_m") / 1e3),
-                   nan_safe(num(cutting, "thrust_force_per_width_std_N_per_m") / 1e3),
-                   ci(cutting, "thrust_force_per_width_ci95_N_per_m", 1e-3, " kN/m", " of the mean", rows));
+  t += force("cutting force per width Fc/w", "cutting_force_per_width_mean_N_per_m",
+             "cutting_force_per_width_std_N_per_m", "cutting_force_per_width_ci95_N_per_m");
+  t += force("thrust force per width Ft/w ", "thrust_force_per_width_mean_N_per_m",
+             "thrust_force_per_width_std_N_per_m", "thrust_force_per_width_ci95_N_per_m");
   if (cutting.contains("thrust_to_cutting_force_ratio"))
-    t += fmt::format("  force ratio Ft/Fc               {:>10.3g}{}\n",
-                     nan_safe(num(cutting, "thrust_to_cutting_force_ratio")),
+    t += fmt::format("  force ratio Ft/Fc               {}{}\n",
+                     figure(cutting, "thrust_to_cutting_force_ratio", "{:>10.3g}", ""),
                      ci(cutting, "thrust_to_cutting_force_ratio_ci95", 1.0, "", "", rows));
   t += fmt::format("  depth of cut h                  {:>10.4g} mm\n", nan_safe(num(chip, "depth_of_cut_m") * 1e3));
   if (chip.contains("thickness_m")) {
@@ -204,17 +239,18 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
     t += fmt::format("  chip thickness                  not measured ({} chip particles)\n",
                      chip.value("chip_particles", 0));
   }
-  t += fmt::format("  friction angle beta (Fc, Ft)    {:>10.1f} deg{}\n", nan_safe(num(chip, "friction_angle_deg")),
+  t += fmt::format("  friction angle beta (Fc, Ft)    {}{}\n", figure(chip, "friction_angle_deg", "{:>10.1f}", " deg"),
                    ci(chip, "friction_angle_ci95_deg", 1.0, " deg", "", rows));
-  t += fmt::format("  Merchant 45 + gamma/2 - beta/2  {:>10.1f} deg{}\n",
-                   nan_safe(num(chip, "merchant_shear_angle_deg")),
+  t += fmt::format("  Merchant 45 + gamma/2 - beta/2  {}{}\n",
+                   figure(chip, "merchant_shear_angle_deg", "{:>10.1f}", " deg"),
                    ci(chip, "merchant_shear_angle_ci95_deg", 1.0, " deg", "", rows));
   t += fmt::format("  broken-rod fraction             {:>10.2f} %\n", nan_safe(100.0 * broken));
   if (chip.contains("packing_volume_m3"))
     t += fmt::format("  chip volume (particles x a^3/4) {:>10.4g} mm^3\n",
                      nan_safe(num(chip, "packing_volume_m3") * 1e9));
   // What the two spreads mean, and the cross-check of the batches' length.
-  if (cutting.contains("cutting_force_per_width_ci95_N_per_m")) {
+  if (cutting.contains("steady_note")) t += "  note: " + cutting["steady_note"].get<std::string>() + "\n";
+  if (cutting.contains("cutting_force_per_width_ci95_N_per_m") && rows > 0) {
     t += "  (+- after a force: its standard deviation over the steady part; 95 % CI: the confidence interval of the\n"
          "  mean";
     if (cutting.value("steady_batches", 0) > 0) {

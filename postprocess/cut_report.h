@@ -17,7 +17,9 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -51,7 +53,7 @@ struct CutData {
                                         ///< empty for runs of earlier versions (then the last state's is used)
   std::vector<Vec3> position;           ///< workpiece particle centres at the end, m
   std::vector<double> broken_fraction;  ///< per workpiece particle: broken rods / rods, 1
-  double broken_rod_fraction = 0;       ///< broken rods / all rods, 1
+  double broken_rod_fraction = 0;       ///< broken_rod_fraction(): the lattice's own rods broken / its own rods, 1
   std::vector<double> tool_deflection_x, tool_deflection_z;  ///< series rows of a compliant tool, m (else empty)
 };
 
@@ -62,6 +64,15 @@ struct CutResult {
 };
 
 CutResult analyze_cut(const CutSetup& setup, const CutData& data);
+
+/// The broken-rod fraction of a run, the one definition that the run's series and summary and
+/// 'swarf post' share: the lattice's own rods that are broken over the lattice's own rods. Rods
+/// formed during the run (bond formation) are in neither count: they are not part of the
+/// material that was cut, their number grows with the chip's contacts, and a broken one is
+/// removed, so counting them would make the fraction depend on when it is taken. 'intact[k]'
+/// is rod k's flag (1 intact), 'formed[k]' 1 for a formed rod (empty: none was formed); no
+/// rods give 0. Throws InputError when the two sizes differ.
+double broken_rod_fraction(std::span<const std::uint8_t> intact, std::span<const std::uint8_t> formed);
 
 /// The chip analysis' input for the workpiece centres 'position' (m) with the tool's sharp tip at
 /// 'tool_tip' (m): the setup's geometry, the depth of cut from the tip.

@@ -13,7 +13,7 @@ takes the run directory as its first argument: pvpython open_in_paraview.py DIR.
 What it shows: the particles of the frame series as spheres of their own radius (Point
 Gaussian, shader "Sphere", scaled by the 'radius' array), the meshes (tool, walls) in grey, the
 chip surface of the end of the run translucent (a cutting run), in one render view per field
-side by side with linked cameras: von Mises stress (MPa scale, "Cool to Warm"), equivalent
+side by side with linked cameras: von Mises stress (in Pa, "Cool to Warm"), equivalent
 plastic strain ("Viridis") and damage, the broken-rod fraction ("Inferno"), each ranged 0 to
 the 99th percentile of the last frame (damage: 0 to its maximum). Only the fields that the run
 wrote (output.fields) get a view. The camera looks along +y at the cutting plane (x, the

@@ -39,7 +39,7 @@ def plot_cut(run, summary, s):
         if x0 is not None:
             ax.axvspan(x0, travel[-1], color="0.9", zorder=0, label="steady part (statistics)")
             for key, c in (("cutting_force_per_width_mean_N_per_m", "C0"), ("thrust_force_per_width_mean_N_per_m", "C3")):
-                if key in cut:
+                if cut.get(key) is not None:  # (null: no steady rows)
                     ax.hlines(cut[key] / 1e3, x0, travel[-1], colors=c, linestyles="--", lw=1.5)
                     # the mean's 95 % confidence interval (batch means; null when the part is too short)
                     ci = cut.get(key.replace("_mean_", "_ci95_"))
@@ -50,19 +50,26 @@ def plot_cut(run, summary, s):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")
     ax.set_title("Cutting forces on the tool (%s)" % os.path.basename(os.path.normpath(run)))
-    bx.plot(travel, [100 * v for v in s["broken_fraction"]], color="k", lw=1.2, label="broken rods")
+    bx.plot(travel, [100 * v for v in s["broken_fraction"]], color="k", lw=1.2,
+            label="broken rods (of the lattice's own, left axis)")
     bx.set_ylabel("broken rods [%]")
-    if "chip_thickness" in s:  # per row, 0 = not measured yet
-        cx = bx.twinx()
-        pts = [(x, v * 1e3) for x, v in zip(travel, s["chip_thickness"]) if v > 0]
-        if pts:
-            cx.plot([p[0] for p in pts], [p[1] for p in pts], color="C2", lw=0.8, label="chip thickness h_c")
-        chip = summary.get("chip", {})
+    # One legend for both axes of the lower panel (a legend per axis would put one over the
+    # other), with the chip thickness only when it was measured: no empty box.
+    handles = list(bx.get_legend_handles_labels()[0])
+    pts = [(x, v * 1e3) for x, v in zip(travel, s.get("chip_thickness", [])) if v > 0]  # per row, 0 = not measured
+    chip = summary.get("chip", {})
+    cx = bx.twinx() if pts else None
+    if pts:
+        cx.plot([p[0] for p in pts], [p[1] for p in pts], color="C2", lw=0.8, label="chip thickness h_c (right axis)")
         if "thickness_m" in chip and steady is not None and x0 is not None:
             cx.hlines(chip["thickness_m"] * 1e3, x0, travel[-1], colors="C2", linestyles="--", lw=1.5,
                       label="h_c, median of the steady part")
         cx.set_ylabel("chip thickness [mm]", color="C2")
-        cx.legend(fontsize=8, loc="upper left")
+        handles += cx.get_legend_handles_labels()[0]
+    elif "chip_thickness" in s:
+        bx.text(0.99, 0.05, "chip thickness not measured", transform=bx.transAxes, ha="right", va="bottom",
+                fontsize=8, color="C2")
+    (cx if pts else bx).legend(handles=handles, fontsize=8, loc="upper left")  # (on the twin: drawn over its lines)
     bx.set_xlabel("tool travel [mm]")
     bx.grid(alpha=0.3)
     fig.tight_layout()

@@ -4,12 +4,17 @@
 // refused by name; 'swarf run --check' and 'swarf case default' do what they say.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "case_errors.h"
+#include "io/h5file.h"
+#include "postprocess/cut_report.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -19,6 +24,14 @@ const MeshSettings& tool_of(const CaseSettings& cs) {
   for (const auto& m : cs.meshes)
     if (m.tool) return m;
   throw std::runtime_error("no tool");
+}
+
+// 'swarf run' of the [cut] example coarsened to 5 layers across h (some 2000 particles: a second
+// or two), on one thread and without plots, into 'out', with the further options 'sets'.
+test::CommandResult run_coarse_cut(const std::string& out, const std::string& sets) {
+  return test::run_command(fmt::format(
+      "timeout 300 {} run {}/examples/cut_c45.toml --out {} --set cut.layers=5 --set output.plots=false --threads 1 {}",
+      SWARF_BINARY, SWARF_SOURCE_DIR, out, sets));
 }
 
 // The hand-written default rounds R to six digits (1.41421e-5 m for 1.41421356e-5) and the
@@ -184,6 +197,10 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
   refused("[cut]\n" + ok + "[workpiece]\nsize = [1e-3, 1e-3, 1e-3]\n", {"workpiece.size", "[cut]"});
   refused("[cut]\n" + ok + "[uniaxial]\nstrain_path = [0.0, 0.01]\n", {"[cut]", "[uniaxial]"});
   refused("[cut]\n" + ok + "layers = 1\n", {"cut.layers", "[2, 200]"});
+  // A tool from a file on the mesh [cut] makes its tool of: the keys [cut] set are named as its.
+  refused("[cut]\n" + ok + "[[mesh]]\nname = \"tool\"\nfile = \"tool.stl\"\n",
+          {"c.toml:8", "key 'mesh.file' = \"tool.stl\"", "[cut] set", "rake_angle = 10",
+           "clearance_angle = ", "edge_radius", "origin", "[[mesh]] 'tool'"});
   // (found by the fuzzer: a width of 5e42 m made lround overflow under the FP traps)
   refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "cells", "more than"});
 }
@@ -255,6 +272,43 @@ TEST(CutTable, RunCheckAndCaseDefault) {
 namespace swarf {
 namespace {
 
+// A run that ends before its steady window (issue 36, defect 2) has no steady force: null in
+// summary.json with a note saying why, a warning, "none" in the table (it printed "0 +- 0 kN/m"),
+// and the last line does not name a chip surface that was not written; 'swarf post' agrees.
+TEST(CutTable, ARunThatEndsBeforeItsSteadyWindowReportsNoForce) {
+  test::TempDir dir("cut_nosteady");
+  const std::string out = dir / "out";
+  const auto r = run_coarse_cut(out, "--set integrator.end_time=3e-6");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto check = [&](const std::string& output, const char* who) {
+    const auto sum = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+    const auto& c = sum["cutting"];
+    EXPECT_EQ(c["steady_samples"], 0) << who;
+    for (const char* k : {"cutting_force_per_width_mean_N_per_m", "cutting_force_per_width_std_N_per_m",
+                          "thrust_force_per_width_mean_N_per_m", "thrust_force_per_width_std_N_per_m"})
+      EXPECT_TRUE(c[k].is_null()) << who << ": " << k << " = " << c[k];
+    ASSERT_TRUE(c.contains("steady_note")) << who << ": " << c.dump(2);
+    // (the run ends with the step that passes 3e-6 s: verlet does not shorten its last step)
+    test::expect_mentions(c["steady_note"].get<std::string>(),
+                          {"starts at 0.0001 s", "after the end of the run at 3.0"});
+    test::expect_mentions(output, {"warning: the steady forces are missing", "note: the steady window starts at"});
+    const std::string none = "none (no steady rows: see the note below)";
+    const auto fc = output.find("Fc/w "), ft = output.find("Ft/w ");
+    ASSERT_NE(fc, std::string::npos) << output;
+    ASSERT_NE(ft, std::string::npos) << output;
+    EXPECT_NE(output.substr(fc, output.find('\n', fc) - fc).find(none), std::string::npos) << output;
+    EXPECT_NE(output.substr(ft, output.find('\n', ft) - ft).find(none), std::string::npos) << output;
+    EXPECT_EQ(output.find("0 +- 0 kN/m"), std::string::npos) << who << ": " << output;
+  };
+  check(r.output, "run");
+  EXPECT_NE(r.output.find("particles.pvd (open in ParaView)"), std::string::npos) << r.output;
+  ASSERT_FALSE(std::filesystem::exists(out + "/chip_surface.vtp")) << "the case must end before the chip forms";
+  EXPECT_EQ(r.output.find("chip_surface.vtp"), std::string::npos) << r.output;
+  const auto p = test::run_command(fmt::format("{} post {}", SWARF_BINARY, out));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  check(p.output, "post");
+}
+
 // A cut stopped before the tool touches the block has no force, so no force direction: the
 // friction angle and Merchant's angle are not measured (null), not the rake angle that
 // atan2(0, 0) = 0 would make of them.
@@ -265,9 +319,56 @@ TEST(CutTable, ACutWithoutForceHasNoFrictionAngle) {
       "--set output.vtk=false --threads 1",
       SWARF_BINARY, SWARF_SOURCE_DIR, dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("ns per particle-step, 1 thread)"), std::string::npos) << r.output;  // (not "1 threads")
   const std::string summary = test::read_file(dir / "out/summary.json");
   EXPECT_NE(summary.find("\"friction_angle_deg\": null"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"merchant_shear_angle_deg\": null"), std::string::npos) << summary;
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// The broken-rod fraction counts the lattice's own rods only: 1 of the 3 own rods below is
+// broken; the formed rods (one intact, one broken) are in neither count.
+TEST(BrokenRodFraction, CountsTheLatticesOwnRodsOnly) {
+  const std::vector<std::uint8_t> intact{1, 0, 1, 1, 0}, formed{0, 0, 0, 1, 1};
+  EXPECT_EQ(broken_rod_fraction(intact, formed), 1.0 / 3.0);
+  EXPECT_EQ(broken_rod_fraction(intact, {}), 2.0 / 5.0);  // (no formed flags: every rod is the lattice's)
+  EXPECT_EQ(broken_rod_fraction({}, {}), 0.0);            // (no rods: 0, not NaN)
+  EXPECT_THROW(broken_rod_fraction(intact, std::vector<std::uint8_t>{0, 1}), InputError);
+}
+
+// 'swarf post' on a finished [cut] run gives the run's broken-rod fraction, bit for bit: with
+// bond formation the run divided by the lattice's own rods and post (before layout 4) by all
+// rods, formed ones included (0.7312 % against 0.7365 % on this case). The coarse cut (5
+// layers, 0.15 mm) breaks 56 rods and forms some 60.
+TEST(CutTable, PostGivesTheRunsBrokenRodFraction) {
+  test::TempDir dir("cut_post_broken");
+  const std::string out = dir / "out";
+  const auto r = run_coarse_cut(out, "--set cut.length_of_cut=0.15e-3 --set output.vtk=false");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto run = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+  ASSERT_GT(run["results"]["broken_rods"].get<long long>(), 0) << run["results"].dump(2);
+  {
+    H5File f(out + "/results.h5", H5File::Mode::Read);
+    std::size_t rows = 0, cols = 0;
+    const auto formed = f.read_ints("/bonds/formed", rows, cols);
+    ASSERT_GT(std::count(formed.begin(), formed.end(), 1), 0) << "the case must form rods to test this";
+  }
+  const double fraction = run["cutting"]["broken_fraction"].get<double>();
+  EXPECT_EQ(fraction, run["results"]["broken_fraction"].get<double>());
+  const auto p = test::run_command(fmt::format("{} post {}", SWARF_BINARY, out));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const auto post = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+  EXPECT_EQ(post["cutting"]["broken_fraction"].get<double>(), fraction);
+  const auto line = [](const std::string& text) {
+    const auto at = text.find("broken-rod fraction");
+    return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+  };
+  EXPECT_EQ(line(p.output), line(r.output));
 }
 
 }  // namespace

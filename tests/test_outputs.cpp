@@ -344,6 +344,19 @@ TEST(Outputs, ParaViewScriptWrittenAndRunsAgainstAStub) {
   EXPECT_TRUE(std::filesystem::exists(out + "/rods.vtu.series"));
 }
 
+// The ParaView script's docstring gives the stress view's unit as its colour bar does (it said
+// "MPa scale" over a bar in Pa).
+TEST(Outputs, ParaViewScriptDocstringNamesTheStressBarsUnit) {
+  const std::string script = test::read_file(std::string(SWARF_SOURCE_DIR) + "/postprocess/open_in_paraview.py");
+  const std::string bar = "(\"von_mises_stress\", \"von Mises stress (";
+  const auto at = script.find(bar);
+  ASSERT_NE(at, std::string::npos) << "the FIELDS entry of the stress view";
+  const std::string unit = script.substr(at + bar.size(), script.find(')', at + bar.size()) - at - bar.size());
+  const std::string doc = script.substr(0, script.find("\"\"\"", 3));
+  EXPECT_NE(doc.find("von Mises stress (in " + unit + ","), std::string::npos)
+      << "the bar is in " << unit << "; the docstring says: " << doc.substr(doc.find("von Mises stress"), 40);
+}
+
 }  // namespace
 }  // namespace swarf
 

@@ -79,6 +79,36 @@ constexpr const char* kToolSpectrum = "tool_spectrum.csv";
 constexpr const char* kChipSurface = "chip_surface.vtp";
 constexpr const char* kChipPicture = "chip.png";  // (render_chip.py adds _<field> to the stem for the others)
 
+// The run's broken-rod fraction from results.h5 (broken_rod_fraction: over the lattice's own
+// rods). Layouts before 4 have no /bonds/formed: without bond formation every rod is the
+// lattice's own; with it, the run's own figure in summary.json stands (it was taken over the
+// lattice's rods by the run, which knew which rods were formed).
+double read_broken_rod_fraction(const H5File& f, const nlohmann::json& sum) {
+  std::size_t r = 0, c = 0;
+  const auto flags = [&](const char* name) {
+    const auto v = f.read_ints(name, r, c);
+    return std::vector<std::uint8_t>(v.begin(), v.end());
+  };
+  const std::vector<std::uint8_t> intact = flags("/bonds/intact");
+  if (f.has("/bonds/formed")) {
+    const std::vector<std::uint8_t> formed = flags("/bonds/formed");
+    if (formed.size() != intact.size())
+      throw InputError(fmt::format("post: '{}': /bonds/formed has {} rods, /bonds/intact {}", f.path(), formed.size(),
+                                   intact.size()));
+    return broken_rod_fraction(intact, formed);
+  }
+  if (results_format(f) >= 4) throw InputError(fmt::format("post: '{}' (layout 4) has no /bonds/formed", f.path()));
+  const auto& results = sum.contains("results") ? sum["results"] : nlohmann::json::object();
+  if (!results.contains("formed_rods")) return broken_rod_fraction(intact, {});  // no bond formation
+  const auto& cutting = sum.contains("cutting") ? sum["cutting"] : nlohmann::json::object();
+  if (!cutting.contains("broken_fraction") || !cutting["broken_fraction"].is_number())
+    throw InputError(
+        fmt::format("post: '{}' (layout {}) does not mark the rods formed during the run and summary.json has no "
+                    "cutting.broken_fraction: the broken-rod fraction over the lattice's own rods cannot be recomputed",
+                    f.path(), results_format(f)));
+  return cutting["broken_fraction"].get<double>();
+}
+
 }  // namespace
 
 std::vector<RunFile> cut_files() {
@@ -118,6 +148,9 @@ std::vector<std::string> render_pictures(const std::string& dir, const CutSetup&
 void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
                 bool pictures) {
   const CutResult res = analyze_cut(setup, data);
+  if (res.cutting.contains("steady_note"))
+    eprint("swarf: warning: the steady forces are missing (null in summary.json): {}\n",
+           res.cutting["steady_note"].get<std::string>());
   sum["cutting"] = res.cutting;
   sum["chip"] = res.chip;
   std::string tool_line;
@@ -228,10 +261,7 @@ void post_run(const std::string& dir) {
     data.position.emplace_back(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
     data.broken_fraction.push_back(bf[i]);
   }
-  const auto intact = f.read_ints("/bonds/intact", r, c);
-  std::size_t broken = 0;
-  for (auto v : intact) broken += v ? 0 : 1;
-  data.broken_rod_fraction = intact.empty() ? 0.0 : double(broken) / double(intact.size());
+  data.broken_rod_fraction = read_broken_rod_fraction(f, sum);
   const bool pictures = sum["case"].contains("output") ? sum["case"]["output"].value("plots", true) : true;
   for (const char* stale : {"pictures", "picture_error", "plots", "plot_error", "tool"}) sum.erase(stale);
   finish_cut(dir, setup, data, sum, nullptr, pictures);

@@ -179,6 +179,12 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
         "shift eps0 of the rod's elastic range (kinematic hardening); plastic strain (E - k)/E eps0");
     f.write("/bonds/intact", r.intact.data(), m);
     f.describe("/bonds/intact", "1", "1 intact, 0 broken");
+    // (Rods::formed is empty when bond formation is off: then no rod was formed)
+    const std::vector<std::uint8_t> formed = r.formed.size() == m ? r.formed : std::vector<std::uint8_t>(m, 0);
+    f.write("/bonds/formed", formed.data(), m);
+    f.describe("/bonds/formed", "1",
+               "1 for a rod formed during the run (bond formation), 0 for the lattice's own; the broken-rod "
+               "fraction counts only the lattice's own rods");
     put("/bonds/stress", r.stress.data(), m, 1, "Pa", "axial stress of the rod, positive in tension");
     f.write_attribute("time_s", sim.time());
     f.write_attribute("steps", static_cast<double>(sim.steps()));

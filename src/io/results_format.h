@@ -7,13 +7,15 @@
 //   3: every dataset has 'unit' and 'description' attributes; the cut's set-up is one named
 //      dataset per value under /cutting (width, steady_from, tool_tip, ...); /groups/name holds
 //      the group names; /series/<column> the time history; the root has the provenance.
+//   4: /bonds/formed marks the rods formed during the run, so that the broken-rod fraction can
+//      be taken over the lattice's own rods (before it, 'swarf post' divided by all rods).
 #pragma once
 
 #include "io/h5file.h"
 
 namespace swarf {
 
-inline constexpr double kResultsFormat = 3.0;
+inline constexpr double kResultsFormat = 4.0;
 
 /// The layout of an open results.h5: its 'format' attribute, 1 when it has none.
 inline int results_format(const H5File& f) {

@@ -180,6 +180,20 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
     r.fail("cylinder_radius", r.get("cylinder_radius"), "needs cylinder_length (m)");
   if (cyl && !(m.cylinder_axis[0] != 0.0 || m.cylinder_axis[1] != 0.0 || m.cylinder_axis[2] != 0.0))
     r.fail("cylinder_axis", r.get("cylinder_axis"), "must not be zero");
+  // [cut] makes the mesh named "tool" a generated tool: a [[mesh]] of that name with a file
+  // gets its tool keys, and the conflict below would name keys the user never wrote.
+  if (!m.file.empty()) {
+    std::string from_cut;
+    for (const char* key : {"rake_angle", "clearance_angle", "edge_radius", "width", "face_length", "origin"})
+      if (r.from_cut(key)) from_cut += fmt::format("{}{} = {}", from_cut.empty() ? "" : ", ", key, r.value_text(key));
+    if (!from_cut.empty())
+      r.fail("file", r.get("file"),
+             fmt::format("[cut] set the keys of its generated tool on this [[mesh]] '{}' ({}), which a mesh file "
+                         "cannot take: [cut] does not take a tool from a file. Name this mesh otherwise to have it "
+                         "beside [cut]'s tool, or write the case without [cut] ('swarf run --check' prints the keys "
+                         "[cut] derives)",
+                         m.name, from_cut));
+  }
   if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) + (box ? 1 : 0) + (cyl ? 1 : 0) > 1)
     r.fail("file",
            r.get("file")         ? r.get("file")

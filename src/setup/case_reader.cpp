@@ -58,6 +58,23 @@ const toml::node* TableReader::get(std::string_view key) const {
   return t_ ? t_->get(key) : nullptr;
 }
 
+bool TableReader::from_cut(std::string_view key) const {
+  const toml::node* n = get(key);
+  const std::string full = prefix_.empty() ? std::string(key) : prefix_ + "." + std::string(key);
+  return n && n->source().begin.line == 0 && !overridden_.count(full) && derived_ && derived_->count(full);
+}
+
+std::string TableReader::value_text(std::string_view key) const {
+  const toml::node* n = get(key);
+  if (!n) return {};
+  if (const toml::array* a = n->as_array()) {  // (numbers in their shortest form, not print_toml's 17 digits)
+    std::string out = "[";
+    for (std::size_t k = 0; k < a->size(); ++k) out += (k ? ", " : "") + repr(*a->get(k));
+    return out + "]";
+  }
+  return repr(*n);
+}
+
 void TableReader::fail(std::string_view key, const toml::node* n, const std::string& problem) const {
   const std::string full = prefix_.empty() ? std::string(key) : prefix_ + "." + std::string(key);
   if (n) throw InputError(fmt::format("{}: key '{}' = {}: {}", where(full, n), full, repr(*n), problem));

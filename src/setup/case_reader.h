@@ -45,6 +45,11 @@ class TableReader {
   bool has(std::string_view key) const;
   /// The key's node or null; the key must be one of the tables read.
   const toml::node* get(std::string_view key) const;
+  /// Whether the table's key was put there by [cut] (cut_case.h), not written in the case or
+  /// given by --set.
+  bool from_cut(std::string_view key) const;
+  /// The key's value as a message shows it ("" when absent).
+  std::string value_text(std::string_view key) const;
   /// Throws InputError "FILE:LINE: key 'TABLE.KEY' = VALUE: PROBLEM" (no value when n is null).
   [[noreturn]] void fail(std::string_view key, const toml::node* n, const std::string& problem) const;
   /// Rejects every key of the table that no key table read names.

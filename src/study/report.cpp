@@ -198,8 +198,8 @@ std::string write_report(const std::string& dir) {
   md += fmt::format("- {} cases: {} completed, {} failed, {} not finished\n", t.rows.size(), completed, failed,
                     t.rows.size() - completed - failed);
   md +=
-      "- all metrics: [study.csv](study.csv) (units in the second header line); wall times: "
-      "[timing.csv](timing.csv)\n\n";
+      "- all metrics: [study.csv](study.csv); wall times: [timing.csv](timing.csv); the columns' units and "
+      "meanings: [study_columns.csv](study_columns.csv)\n\n";
 
   const std::vector<std::string> metrics = study.plot_metrics.empty() ? default_plot_metrics(t) : study.plot_metrics;
   md += "## Cases\n\n" + markdown_table(t, metrics) + "\n";

@@ -135,19 +135,22 @@ std::string ci95_key_of(const std::string& flat_key) {
 
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing) {
   StudyTable t;
-  t.columns.push_back("case");
-  t.units.push_back("-");
+  const auto add = [&t](std::string name, std::string unit, std::string what) {
+    t.columns.push_back(std::move(name));
+    t.units.push_back(std::move(unit));
+    t.descriptions.push_back(std::move(what));
+  };
+  add("case", "-", "the case's id; its outputs are in cases/<id>/");
   for (const auto& p : study.parameters) {
-    t.columns.push_back(p);
     auto u = study.units.find(p);
-    t.units.push_back(u == study.units.end() ? "" : u->second);
+    add(p, u == study.units.end() ? "" : u->second,
+        p == study.seed_key ? "the seed key: seed_start + repetition (TOML text)"
+        : u == study.units.end()
+            ? "varied case key: its value as TOML text (no unit: the study's [units] does not give one)"
+            : "varied case key: its value as TOML text (unit from the study's [units])");
   }
-  if (study.repetitions > 1) {
-    t.columns.push_back("repetition");
-    t.units.push_back("1");
-  }
-  t.columns.push_back("status");
-  t.units.push_back("-");
+  if (study.repetitions > 1) add("repetition", "1", "0-based repetition of the point");
+  add("status", "-", "completed, failed (exit N), failed (signal N), interrupted or not run");
   t.first_metric = t.columns.size();
 
   std::vector<std::vector<std::pair<std::string, std::string>>> metrics(study.cases.size());
@@ -181,10 +184,9 @@ StudyTable collect_table(const Study& study, const std::string& out_dir, bool ti
       }
     }
   }
-  for (const auto& [s, name] : names) {
-    t.columns.push_back(name);
-    t.units.push_back(unit_of_key(name));
-  }
+  for (const auto& [s, name] : names)
+    add(name, unit_of_key(name),
+        fmt::format("summary.json's {} (docs/outputs.md); empty where the case did not complete or has none", name));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     t.rows[r].resize(t.columns.size());
     for (const auto& [name, value] : metrics[r]) t.rows[r][t.column(name)] = value;
@@ -202,8 +204,18 @@ std::string table_csv(const StudyTable& t) {
     out += "\n";
   };
   line(t.columns);
-  line(t.units);
   for (const auto& r : t.rows) line(r);
+  return out;
+}
+
+std::string columns_csv(const StudyTable& study, const StudyTable& timing) {
+  std::string out = "column,unit,description\n";
+  auto line = [&out](const StudyTable& t, std::size_t c, const char* prefix) {
+    out += csv_cell(t.columns[c]) + ',' + csv_cell(t.units[c]) + ',' + csv_cell(prefix + t.descriptions[c]) + '\n';
+  };
+  for (std::size_t c = 0; c < study.columns.size(); ++c) line(study, c, "");
+  for (std::size_t c = 0; c < timing.columns.size(); ++c)
+    if (study.column(timing.columns[c]) < 0) line(timing, c, "timing.csv only: ");
   return out;
 }
 

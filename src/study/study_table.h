@@ -1,5 +1,8 @@
 // study_table.h: the table of a study (one row per case: varied keys, status, metrics from the
-// case's summary.json), written as DIR/study.csv and DIR/timing.csv, and the plot data.
+// case's summary.json), written as DIR/study.csv and DIR/timing.csv, their columns' units and
+// meanings as DIR/study_columns.csv, and the plot data. The tables have one header line of
+// names and nothing else before the numbers, so that numpy.genfromtxt(names=True) and
+// pandas.read_csv read numbers; the units live in the sidecar.
 #pragma once
 
 #include <optional>
@@ -14,6 +17,7 @@ namespace swarf {
 struct StudyTable {
   std::vector<std::string> columns;            ///< names
   std::vector<std::string> units;              ///< one per column ("-" for text columns)
+  std::vector<std::string> descriptions;       ///< one per column: what it holds
   std::vector<std::vector<std::string>> rows;  ///< cells as text, rows in case id order
   std::vector<CaseStatus> status;              ///< one per row
   std::size_t first_metric = 0;                ///< columns before this are case, keys, status
@@ -37,8 +41,11 @@ std::string ci95_key_of(const std::string& flat_key);
 /// The study table (timing = false: DIR/study.csv; true: DIR/timing.csv, the wall times and
 /// thread counts, which differ from run to run).
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing = false);
-/// CSV: the names, then the units, then one line per row.
+/// CSV: the names, then one line per row (the units are in columns_csv).
 std::string table_csv(const StudyTable& table);
+/// DIR/study_columns.csv: "column,unit,description", one line per column of study.csv, then
+/// one per column that only timing.csv has.
+std::string columns_csv(const StudyTable& study, const StudyTable& timing);
 
 /// The metric columns plotted when the study does not list them (those present in the table).
 std::vector<std::string> default_plot_metrics(const StudyTable& table);

@@ -213,7 +213,7 @@ int run_sweep(const SweepOptions& o) {
     write_study_json(study, o.out_dir);
     for (const auto& p : study.parameters)
       if (!study.units.count(p))
-        eprint("sweep: note: no unit for '{}' in [units]: its study.csv unit cell stays empty\n", p);
+        eprint("sweep: note: no unit for '{}' in [units]: its unit in study_columns.csv stays empty\n", p);
   }
   mpi.barrier();
 
@@ -242,8 +242,10 @@ int run_sweep(const SweepOptions& o) {
 
   // Rank 0 gathers what every rank wrote into the case folders.
   const StudyTable table = collect_table(study, o.out_dir);
+  const StudyTable timing = collect_table(study, o.out_dir, true);
   write_text_atomic((fs::path(o.out_dir) / "study.csv").string(), table_csv(table));
-  write_text_atomic((fs::path(o.out_dir) / "timing.csv").string(), table_csv(collect_table(study, o.out_dir, true)));
+  write_text_atomic((fs::path(o.out_dir) / "timing.csv").string(), table_csv(timing));
+  write_text_atomic((fs::path(o.out_dir) / "study_columns.csv").string(), columns_csv(table, timing));
   std::size_t completed = 0;
   for (const auto& st : table.status) completed += st.state == CaseState::completed;
   std::string plots = "no plots (plots = false)";
@@ -251,8 +253,10 @@ int run_sweep(const SweepOptions& o) {
     const std::string why = draw_plots(study, table, o.out_dir);
     plots = why.empty() ? "plots in plots/" : "no plots: " + why;
   }
-  fmt::print("sweep: {} cases: {} completed, {} failed or not finished; wrote {}/study.csv, timing.csv; {}\n",
-             table.rows.size(), completed, table.rows.size() - completed, o.out_dir, plots);
+  fmt::print(
+      "sweep: {} cases: {} completed, {} failed or not finished; wrote {}/study.csv, timing.csv, study_columns.csv; "
+      "{}\n",
+      table.rows.size(), completed, table.rows.size() - completed, o.out_dir, plots);
   return completed == table.rows.size() ? 0 : 1;
 }
 

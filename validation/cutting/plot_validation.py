@@ -20,7 +20,10 @@ FCS, FTS = "cutting.cutting_force_per_width_std_N_per_m", "cutting.thrust_force_
 def read(path):
     with open(path) as f:
         rows = list(csv.reader(f))
-    head, body = rows[0], [r for r in rows[2:] if r]
+    # (study.csv files before 2026-12-05 have the units on line 2: its status cell is "-")
+    head = rows[0]
+    units_row = len(rows) > 1 and dict(zip(head, rows[1])).get("status") == "-"
+    body = [r for r in rows[2 if units_row else 1:] if r]
     out = []
     for r in body:
         d = dict(zip(head, r))

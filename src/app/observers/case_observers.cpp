@@ -19,8 +19,8 @@ std::vector<std::unique_ptr<Observer>> observers_for(const Model& model, bool en
   std::vector<std::unique_ptr<Observer>> obs;
   if (model.uniaxial.enabled) obs.push_back(std::make_unique<UniaxialProbe>(model));
   obs.push_back(std::make_unique<StepCounters>(model.settings.integrator.end_time, model.particles.size()));
-  obs.push_back(std::make_unique<EnergyBalance>(model.rods.size(), energy_check));
-  obs.push_back(std::make_unique<RodCounts>(model.rods.size()));
+  obs.push_back(std::make_unique<EnergyBalance>(energy_check));
+  obs.push_back(std::make_unique<RodCounts>());
   obs.push_back(std::make_unique<GroupReactions>(model.groups));
   obs.push_back(std::make_unique<MeshForces>(model.meshes));
   if (!model.bodies.empty()) obs.push_back(std::make_unique<BodyStates>(model.bodies, model.meshes));

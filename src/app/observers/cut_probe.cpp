@@ -111,8 +111,7 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
   const auto bf = broken_fraction_per_particle(model_.particles, model_.rods);
   data.position.assign(model_.particles.position.begin(), model_.particles.position.begin() + n);
   data.broken_fraction.assign(bf.begin(), bf.begin() + n);
-  data.broken_rod_fraction = double(end.sim.broken_rods()) /
-                             std::max<double>(1.0, double(model_.rods.original_count()));
+  data.broken_rod_fraction = broken_rod_fraction(model_.rods.intact, model_.rods.formed);
   if (tool_body_ >= 0) {
     data.tool_deflection_x = end.series["tool_deflection_x"];
     data.tool_deflection_z = end.series["tool_deflection_z"];

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "io/console.h"
+#include "postprocess/cut_report.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
 #include "swarf/simulation.h"
@@ -93,9 +94,9 @@ void EnergyBalance::finish(const RunEnd& end, nlohmann::json& summary) {
   r["contact_work_J"] = b.contact_work;
   r["energy_error_J"] = b.error;
   // The report's health line: the breakage beside the balance that its fracture energy enters.
-  const std::size_t broken = end.sim.broken_rods();
-  say("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", broken, rods_,
-      100.0 * broken / std::max<double>(1.0, double(rods_)), b.error, b.external_work);
+  const Rods& rods = end.sim.world().rods;
+  say("  broken rods {} of {} ({:.4g} %), energy error {:.3g} J of external work {:.4g} J\n", end.sim.broken_rods(),
+      rods.original_count(), 100.0 * broken_rod_fraction(rods.intact, rods.formed), b.error, b.external_work);
 }
 
 }  // namespace swarf

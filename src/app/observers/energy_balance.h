@@ -39,9 +39,8 @@ void check_energy_balance(const EnergyBalanceNow& b, double t);
 
 class EnergyBalance final : public Observer {
  public:
-  /// 'rods' for the broken-rod count the report prints beside the balance; 'check': each row
-  /// calls check_energy_balance (swarf run --no-energy-check turns it off).
-  explicit EnergyBalance(std::size_t rods, bool check = true) : rods_(rods), check_(check) {}
+  /// 'check': each row calls check_energy_balance (swarf run --no-energy-check turns it off).
+  explicit EnergyBalance(bool check = true) : check_(check) {}
   std::string_view name() const override { return "energy"; }
   void columns(std::vector<Column>& out) const override;
   void row(const Simulation& sim, std::vector<double>& values) override;
@@ -53,7 +52,6 @@ class EnergyBalance final : public Observer {
   EnergyBalanceNow measure(const Simulation& sim) const;
 
  private:
-  std::size_t rods_;
   bool check_;
   double initial_ = 0;  ///< kinetic + elastic + potential energy at the start, J
 };

@@ -1,20 +1,20 @@
 // rod_counts.cpp: broken rods and touching contacts (see rod_counts.h).
 #include "app/observers/rod_counts.h"
 
-#include <algorithm>
-
+#include "postprocess/cut_report.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
 
 double RodCounts::broken_fraction(const Simulation& sim) const {
-  return double(sim.broken_rods()) / std::max<double>(1.0, double(rods_));  // (no rods: 0, not NaN)
+  const Rods& r = sim.world().rods;
+  return broken_rod_fraction(r.intact, r.formed);
 }
 
 void RodCounts::columns(std::vector<Column>& out) const {
   out.insert(out.end(),
              {{"broken_rods", "1", "the lattice's own rods broken now"},
-              {"broken_fraction", "1", "broken_rods / the lattice's rods at the start"},
+              {"broken_fraction", "1", "broken_rods / the lattice's own rods (formed rods are in neither)"},
               {"contacts", "1", "contacts touching in the last evaluation (sphere-sphere and sphere-triangle)"}});
 }
 

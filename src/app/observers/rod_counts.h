@@ -1,5 +1,6 @@
 // rod_counts.h: what holds the particles together, counted per row: rods broken (and their
-// fraction of all rods) and contacts touching; the breakage in summary.json "results".
+// fraction of the lattice's own rods, broken_rod_fraction in cut_report.h) and contacts
+// touching; the breakage in summary.json "results".
 #pragma once
 
 #include "app/observers/observer.h"
@@ -8,7 +9,7 @@ namespace swarf {
 
 class RodCounts final : public Observer {
  public:
-  explicit RodCounts(std::size_t rods) : rods_(rods) {}
+  RodCounts() = default;
   // "bonds": the checkpoint group of this observer, named before "rod" was chosen (kept so that
   // checkpoints written by earlier versions restart).
   std::string_view name() const override { return "bonds"; }
@@ -18,7 +19,6 @@ class RodCounts final : public Observer {
 
  private:
   double broken_fraction(const Simulation& sim) const;
-  std::size_t rods_;
 };
 
 }  // namespace swarf
