@@ -55,6 +55,9 @@ struct CutData {
   std::vector<double> broken_fraction;  ///< per workpiece particle: broken rods / rods, 1
   double broken_rod_fraction = 0;       ///< broken_rod_fraction(): the lattice's own rods broken / its own rods, 1
   std::vector<double> tool_deflection_x, tool_deflection_z;  ///< series rows of a compliant tool, m (else empty)
+  /// Optional series rows by column name (empty: the column is not in the run's series):
+  /// contact_length (m); with [heat] chip_temperature and rake_face_temperature (K).
+  std::vector<double> contact_length, chip_temperature, rake_face_temperature;
 };
 
 struct CutResult {

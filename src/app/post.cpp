@@ -17,6 +17,7 @@
 #include "io/results_format.h"
 #include "io/vtk_output.h"
 #include "postprocess/chip_surface.h"
+#include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -145,6 +146,39 @@ std::vector<std::string> render_pictures(const std::string& dir, const CutSetup&
   return files;
 }
 
+namespace {
+
+// The steady-part means and intervals of the optional columns (contact length, temperatures),
+// as the forces', over the rows where each was measured (> 0), into summary.json "chip";
+// returns the report's line ("" without any of them).
+std::string steady_extras(const CutSetup& setup, const CutData& data, nlohmann::json& chip) {
+  std::string line;
+  const auto steady = [&](const char* col, const std::vector<double>& v, const char* key, double scale,
+                          const char* unit, int digits) {
+    if (v.empty()) return;
+    std::vector<double> x;
+    for (std::size_t k = 0; k < data.time.size() && k < v.size(); ++k)
+      if (data.time[k] >= setup.steady_from && v[k] > 0.0) x.push_back(v[k]);
+    const SteadyStats st = steady_stats(x);
+    chip[key] = x.empty() ? nlohmann::json() : nlohmann::json(st.mean);
+    chip[std::string(key) + "_ci95"] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
+    line += line.empty() ? "  steady part: " : ", ";
+    if (x.empty()) {
+      line += fmt::format("{}: no steady rows", col);
+      return;
+    }
+    line += fmt::format("{} {:.{}f} {}", col, scale * st.mean, digits, unit);
+    line += st.has_interval() ? fmt::format(" (95 % CI +- {:.{}f} {})", scale * st.ci95, digits, unit)
+                              : std::string(" (95 % CI unavailable: fewer than 20 rows)");
+  };
+  steady("contact_length", data.contact_length, "contact_length_m", 1e3, "mm", 3);
+  steady("chip_temperature", data.chip_temperature, "chip_temperature_K", 1.0, "K", 0);
+  steady("rake_face_temperature", data.rake_face_temperature, "rake_face_temperature_K", 1.0, "K", 0);
+  return line;
+}
+
+}  // namespace
+
 void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
                 bool pictures) {
   const CutResult res = analyze_cut(setup, data);
@@ -212,6 +246,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
     }
   }
   say("{}{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction), tool_line);
+  if (const std::string line = steady_extras(setup, data, sum["chip"]); !line.empty()) say("{}\n", line);
   std::fflush(stdout);
 }
 
@@ -248,6 +283,10 @@ void post_run(const std::string& dir) {
   // takes the last state's. From layout 2 on the column is required.
   if (results_format(f) >= 2 || has_column(dir + "/series.csv", "chip_thickness"))
     data.chip_thickness = read_columns(dir + "/series.csv", {"chip_thickness"})[0];
+  for (auto [name, column] :
+       {std::pair{"contact_length", &data.contact_length}, std::pair{"chip_temperature", &data.chip_temperature},
+        std::pair{"rake_face_temperature", &data.rake_face_temperature}})
+    if (has_column(dir + "/series.csv", name)) *column = read_columns(dir + "/series.csv", {name})[0];
   if (setup.compliant()) {
     const auto d = read_columns(dir + "/series.csv", {"tool_deflection_x", "tool_deflection_z"});
     data.tool_deflection_x = d[0];

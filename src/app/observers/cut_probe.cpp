@@ -5,10 +5,8 @@
 #include <cmath>
 
 #include "app/post.h"
-#include "io/console.h"
 #include "io/vtk_output.h"
 #include "postprocess/chip.h"
-#include "postprocess/steady_stats.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
 
@@ -116,29 +114,12 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
     data.tool_deflection_x = end.series["tool_deflection_x"];
     data.tool_deflection_z = end.series["tool_deflection_z"];
   }
+  data.contact_length = end.series["contact_length"];
+  if (model_.heat.enabled) {
+    data.chip_temperature = end.series["chip_temperature"];
+    data.rake_face_temperature = end.series["rake_face_temperature"];
+  }
   finish_cut(end.dir, setup_now(), data, summary, end.vtk, end.pictures);
-  // The contact length and the temperatures over the steady part, as the forces (mean and the
-  // batch-means interval), over the rows where they were measured (> 0).
-  const auto t = end.series["time"];
-  nlohmann::json& chip = summary["chip"];
-  const auto steady = [&](const char* col, const char* key, double scale, const char* unit, const char* fmt_value) {
-    std::vector<double> x;
-    const auto v = end.series[col];
-    for (std::size_t k = 0; k < t.size() && k < v.size(); ++k)
-      if (t[k] >= setup_.steady_from && v[k] > 0.0) x.push_back(v[k]);
-    const SteadyStats st = steady_stats(x);
-    chip[key] = x.empty() ? nlohmann::json() : nlohmann::json(st.mean);
-    chip[std::string(key) + "_ci95"] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
-    if (x.empty()) return fmt::format("{}: no steady rows", col);
-    return fmt::format("{} {} {} (95 % CI +- {} {})", col, fmt::format(fmt::runtime(fmt_value), scale * st.mean), unit,
-                       fmt::format(fmt::runtime(fmt_value), scale * st.ci95), unit);
-  };
-  std::string line = "  steady part: " + steady("contact_length", "contact_length_m", 1e3, "mm", "{:.3g}");
-  if (model_.heat.enabled)
-    for (const auto& [col, key] : {std::pair{"chip_temperature", "chip_temperature_K"},
-                                   std::pair{"rake_face_temperature", "rake_face_temperature_K"}})
-      line += ", " + steady(col, key, 1.0, "K", "{:.0f}");
-  say("{}\n", line);
 }
 
 }  // namespace swarf
