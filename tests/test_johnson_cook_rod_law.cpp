@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "case_errors.h"
+#include "rod_law_fixtures.h"
 #include "setup/case_config.h"
 #include "setup/material_presets.h"
 #include "setup/model.h"
@@ -23,27 +24,9 @@
 namespace swarf {
 namespace {
 
-constexpr double kE = 200e9, kEpsY = 1e-3, kK = 20e9;  // Pa, 1, Pa: s_y = 200 MPa
-constexpr double kL0 = 1e-3, kA = 1e-8;                // m, m^2
-constexpr double kTref = 293.15, kTmelt = 1733.0;      // K (C45's)
-
-RodLaw linear_law() {
-  RodLaw law;
-  law.youngs_modulus = kE;
-  law.yield_strain = kEpsY;
-  law.hardening = kK;
-  law.tensile_strength = HUGE_VAL;
-  return law;
-}
-
-RodLaw curve_law() {  // flow stress 200, 400, 500 MPa at plastic strain 0, 0.01, 0.11; slope 1 GPa beyond
-  RodLaw law = linear_law();
-  law.hardening = 0.0;
-  law.flow.points = 3;
-  law.flow.plastic_strain = {0.0, 0.01, 0.11};
-  law.flow.stress = {200e6, 400e6, 500e6};
-  return law;
-}
+using test::curve_law, test::kE, test::kEpsY, test::kK, test::linear_law;
+constexpr double kL0 = 1e-3, kA = 1e-8;            // m, m^2
+constexpr double kTref = 293.15, kTmelt = 1733.0;  // K (C45's)
 
 JohnsonCookRodLaw jc_law(const RodLaw& base, double m = 1.0) {
   JohnsonCookRodLaw law;
@@ -263,7 +246,8 @@ TEST(JohnsonCookRodLaw, ARejectedTrialLeavesTheCommittedStateUntouched) {
 
 // A particle without a temperature (0: no [heat], or not set yet) is read as T_ref: the kernel
 // with ends at 0 K, at T_ref, one of each, below T_ref, and without a temperature field gives the
-// same bits as the reference law (Theta = 1: the evaluation is the base law's).
+// same bits as the reference law (Theta = 1: the evaluation is the base law's); with one end hot,
+// the unset end counts as T_ref in the mean.
 TEST(JohnsonCookRodLaw, TemperatureZeroIsTheReferenceTemperature) {
   for (bool curve : {true, false}) {
     const AnyRodLaw law = jc_law(curve ? curve_law() : linear_law());
@@ -284,6 +268,17 @@ TEST(JohnsonCookRodLaw, TemperatureZeroIsTheReferenceTemperature) {
       EXPECT_EQ(shift[c], shift[0]) << c;
     }
     EXPECT_NEAR(stress[0], closed_stress(curve, 0.03, closed_scale(1e3, kTref, 1.0)), 1e-9 * 500e6);
+    // One end unset and the other hot: the rod is at the mean of T_ref and the hot end's, not at
+    // half the hot end's temperature.
+    auto hot = [&](double t0, double t1) {
+      OneRod rod;
+      rod.temperature = {t0, t1};
+      return rod.evaluate_at(law, 0.03, 1e3).stress;
+    };
+    EXPECT_EQ(hot(0.0, 1300.0), hot(kTref, 1300.0));
+    EXPECT_EQ(hot(1300.0, 0.0), hot(kTref, 1300.0));
+    EXPECT_NEAR(hot(0.0, 1300.0), closed_stress(curve, 0.03, closed_scale(1e3, 0.5 * (kTref + 1300.0), 1.0)),
+                1e-9 * 500e6);
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "case_errors.h"
 #include "lattice_gen/lattice_file.h"
+#include "rod_law_fixtures.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/parallel.h"
@@ -22,28 +23,10 @@
 namespace swarf {
 namespace {
 
-constexpr double kE = 200e9, kEpsY = 1e-3, kK = 20e9;  // Pa, 1, Pa: s_y = 200 MPa, H = E k/(E - k)
-constexpr double kC = 0.1, kRef = 1.0;                 // 1, 1/s
+using test::curve_law, test::kE, test::kEpsY, test::kK, test::linear_law;
+constexpr double kC = 0.1, kRef = 1.0;  // 1, 1/s
 // A rate whose factor is 1.2: ln(rate / rate_ref) = 2.
 const double kRate12 = kRef * std::exp(2.0);
-
-RodLaw linear_law() {
-  RodLaw law;
-  law.youngs_modulus = kE;
-  law.yield_strain = kEpsY;
-  law.hardening = kK;
-  law.tensile_strength = HUGE_VAL;
-  return law;
-}
-
-RodLaw curve_law() {  // flow stress 200, 400, 500 MPa at plastic strain 0, 0.01, 0.11
-  RodLaw law = linear_law();
-  law.hardening = 0.0;
-  law.flow.points = 3;
-  law.flow.plastic_strain = {0.0, 0.01, 0.11};
-  law.flow.stress = {200e6, 400e6, 500e6};
-  return law;
-}
 
 JohnsonCookRodLaw rate_law(const RodLaw& base) { return {base, kC, kRef}; }
 
