@@ -240,8 +240,8 @@ const std::vector<Key<MaterialSettings>>& material_keys() {
        .range = kPositive,
        .rule = "with `johnson_cook_b` and `johnson_cook_n`; not with a table or `yield_stress`",
        .doc = "Johnson-Cook's A: the flow curve A + B eps_p^n at the reference rate and room temperature, "
-              "tabulated at eps_p = 0, 0.01, 0.03, 0.08, 0.2, 0.5, 1, 2 (no rate or heat terms: swarf has "
-              "neither)."},
+              "tabulated at eps_p = 0, 0.01, 0.03, 0.08, 0.2, 0.5, 1, 2 (the rate and temperature factors: "
+              "`rod.law` = `\"johnson_cook\"` with `johnson_cook_c` and `johnson_cook_m`)."},
       {.name = "johnson_cook_b",
        .field = &S::johnson_cook_b,
        .unit = "Pa",
