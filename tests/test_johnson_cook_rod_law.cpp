@@ -5,6 +5,7 @@
 // committed state as it was; a particle without a temperature (0) is at T_ref; a rod at and
 // above T_melt keeps the 1e-3 floor; the tangent with a temperature; the case keys and the
 // [material] route (the preset's factors, the rate conversion 2/sqrt3 or 3).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "case_errors.h"
+#include "lattice_gen/lattice_file.h"
 #include "rod_law_fixtures.h"
 #include "setup/case_config.h"
 #include "setup/material_presets.h"
@@ -19,7 +21,9 @@
 #include "swarf/core/parallel.h"
 #include "swarf/forces/rod_forces.h"
 #include "swarf/laws/any_rod_law.h"
+#include "swarf/simulation.h"
 #include "swarf/systems/rod_system.h"
+#include "test_helpers.h"
 
 namespace swarf {
 namespace {
@@ -336,6 +340,49 @@ TEST(JohnsonCookRodLaw, TheTangentAtATemperatureIsTheDerivativeOfEvaluate) {
 // alias, and the [material] route taking the preset's C, m, rate and temperatures with the rate
 // conversion of its calibration (2/sqrt3 in shear, 3 in tension); keys of the law without it
 // are errors that name them.
+// One rod pulled at a constant speed through a case file and the Simulation, its ends held at
+// 1000 K (set in the World: no [heat], so nothing changes them), with the explicit step and with
+// the implicit Newmark step solved by Newton (whose tangent reads the temperatures too): both
+// yield at R Theta s_y, perfectly plastic, and follow min(E eps, R Theta s_y) at every step.
+// Tolerance 1e-9 relative as in test_rate_rod_law.cpp (the strain is prescribed: v t / L0).
+TEST(JohnsonCookRodLaw, ARodPulledHotYieldsAtRThetaSigmaYInBothSteps) {
+  test::TempDir dir("jc_rod");
+  constexpr double kRadius = 0.5e-3, L0 = 2 * kRadius, T = 1000.0;
+  Lattice lat;
+  lat.position = {Vec3(0, 0, 0), Vec3(L0, 0, 0)};
+  lat.radius = {kRadius, kRadius};
+  lat.rods = {{0, 1}};
+  lat.rest_length = {L0};
+  write_lattice(dir / "rod.h5", lat);
+  const double v = 0.05, rate = v / L0;  // m/s, 1/s: 50/s
+  const double S = (1.0 + 0.1 * std::log(rate)) * (1.0 - (T - kTref) / (kTmelt - kTref)), sy = kE * kEpsY;
+  for (const char* integrator : {"", "scheme = \"newmark\"\nsolver = \"newton\"\n"}) {
+    const std::string toml = fmt::format(
+        "[workpiece]\nlattice_file = \"{}\"\n[rod]\nyoungs_modulus = 200e9\nyield_strain = 1e-3\n"
+        "law = \"johnson_cook\"\nrate_sensitivity = 0.1\nreference_rate = 1.0\nmelt_temperature = {}\n"
+        "reference_temperature = {}\n[integrator]\nend_time = 1\n{}"
+        "[[group]]\nname = \"left\"\nside = \"x-\"\n"
+        "[[group]]\nname = \"right\"\nside = \"x+\"\nmotion = \"velocity\"\nvelocity = [{}, 0.0, 0.0]\n",
+        dir / "rod.h5", kTmelt, kTref, integrator, v);
+    Model m = build_model(parse_case(toml, "jc_rod", {}));
+    m.particles.temperature = {T, T};
+    Simulation sim(m, m.step);
+    double dev = 0.0;
+    int steps = 0, flowing = 0;
+    while (sim.time() * rate < 3 * S * kEpsY) {
+      sim.step();
+      ++steps;
+      const double eps = (m.particles.position[1].x() - m.particles.position[0].x() - L0) / L0;
+      dev = std::max(dev, std::abs(m.rods.stress[0] - std::min(kE * eps, S * sy)) / (S * sy));
+      flowing += m.rods.shift[0] != 0.0;
+    }
+    EXPECT_LT(dev, 1e-9) << integrator;
+    EXPECT_GT(steps, 20) << integrator;
+    EXPECT_GT(flowing, steps / 3) << integrator;
+    EXPECT_NEAR(m.rods.stress[0], S * sy, 1e-9 * S * sy) << integrator;
+  }
+}
+
 // A small C45 case on the [material] route (the preset gives the flow curve and the factors).
 std::string c45_case(const std::string& rod_lines) {
   return "[workpiece]\ncells = [2, 2, 2]\nradius = 1.0e-5\n[material]\npreset = \"C45\"\n[rod]\n" + rod_lines +
