@@ -347,39 +347,21 @@ TEST(JohnsonCookRodLaw, TheTangentAtATemperatureIsTheDerivativeOfEvaluate) {
 // Tolerance 1e-9 relative as in test_rate_rod_law.cpp (the strain is prescribed: v t / L0).
 TEST(JohnsonCookRodLaw, ARodPulledHotYieldsAtRThetaSigmaYInBothSteps) {
   test::TempDir dir("jc_rod");
-  constexpr double kRadius = 0.5e-3, L0 = 2 * kRadius, T = 1000.0;
-  Lattice lat;
-  lat.position = {Vec3(0, 0, 0), Vec3(L0, 0, 0)};
-  lat.radius = {kRadius, kRadius};
-  lat.rods = {{0, 1}};
-  lat.rest_length = {L0};
-  write_lattice(dir / "rod.h5", lat);
-  const double v = 0.05, rate = v / L0;  // m/s, 1/s: 50/s
-  const double S = (1.0 + 0.1 * std::log(rate)) * (1.0 - (T - kTref) / (kTmelt - kTref)), sy = kE * kEpsY;
+  const test::PulledRod rod(dir.str());
+  constexpr double T = 1000.0;
+  const double S = (1.0 + 0.1 * std::log(rod.rate())) * (1.0 - (T - kTref) / (kTmelt - kTref)), sy = kE * kEpsY;
+  const std::string law = fmt::format(
+      "law = \"johnson_cook\"\nrate_sensitivity = 0.1\nreference_rate = 1.0\nmelt_temperature = {}\n"
+      "reference_temperature = {}\n",
+      kTmelt, kTref);
   for (const char* integrator : {"", "scheme = \"newmark\"\nsolver = \"newton\"\n"}) {
-    const std::string toml = fmt::format(
-        "[workpiece]\nlattice_file = \"{}\"\n[rod]\nyoungs_modulus = 200e9\nyield_strain = 1e-3\n"
-        "law = \"johnson_cook\"\nrate_sensitivity = 0.1\nreference_rate = 1.0\nmelt_temperature = {}\n"
-        "reference_temperature = {}\n[integrator]\nend_time = 1\n{}"
-        "[[group]]\nname = \"left\"\nside = \"x-\"\n"
-        "[[group]]\nname = \"right\"\nside = \"x+\"\nmotion = \"velocity\"\nvelocity = [{}, 0.0, 0.0]\n",
-        dir / "rod.h5", kTmelt, kTref, integrator, v);
-    Model m = build_model(parse_case(toml, "jc_rod", {}));
-    m.particles.temperature = {T, T};
-    Simulation sim(m, m.step);
-    double dev = 0.0;
-    int steps = 0, flowing = 0;
-    while (sim.time() * rate < 3 * S * kEpsY) {
-      sim.step();
-      ++steps;
-      const double eps = (m.particles.position[1].x() - m.particles.position[0].x() - L0) / L0;
-      dev = std::max(dev, std::abs(m.rods.stress[0] - std::min(kE * eps, S * sy)) / (S * sy));
-      flowing += m.rods.shift[0] != 0.0;
-    }
-    EXPECT_LT(dev, 1e-9) << integrator;
-    EXPECT_GT(steps, 20) << integrator;
-    EXPECT_GT(flowing, steps / 3) << integrator;
-    EXPECT_NEAR(m.rods.stress[0], S * sy, 1e-9 * S * sy) << integrator;
+    const test::PulledRod::Result r = rod.run(rod.case_text(law, integrator), S, [&](Model& m) {
+      m.particles.temperature = {T, T};
+    });
+    EXPECT_LT(r.deviation, 1e-9) << integrator;
+    EXPECT_GT(r.steps, 20) << integrator;
+    EXPECT_GT(r.flowing, r.steps / 3) << integrator;
+    EXPECT_NEAR(r.stress, S * sy, 1e-9 * S * sy) << integrator;
   }
 }
 

@@ -268,49 +268,24 @@ TEST(RodLawJohnsonCookRate, TheKernelAgreesWithEvaluatePerRod) {
 // rounding of a few hundred additions (about 1e-13 relative).
 TEST(RodLawJohnsonCookRate, ARodPulledAtAConstantRateYieldsAtTheRateFactorTimesSigmaY) {
   test::TempDir dir("rate_rod");
-  constexpr double kRadius = 0.5e-3, L0 = 2 * kRadius;
-  Lattice lat;
-  lat.position = {Vec3(0, 0, 0), Vec3(L0, 0, 0)};
-  lat.radius = {kRadius, kRadius};
-  lat.rods = {{0, 1}};
-  lat.rest_length = {L0};
-  write_lattice(dir / "rod.h5", lat);
-  const double v = 0.05, rate = v / L0;  // m/s, 1/s: 50/s, R = 1 + 0.1 ln 50 = 1.391
-  const double sy = kE * kEpsY;
-  auto case_text = [&](const std::string& law_keys) {
-    return fmt::format(
-        "[workpiece]\nlattice_file = \"{}\"\n[rod]\nyoungs_modulus = 200e9\nyield_strain = 1e-3\n{}"
-        "[integrator]\nend_time = 1\n"
-        "[[group]]\nname = \"left\"\nside = \"x-\"\n"
-        "[[group]]\nname = \"right\"\nside = \"x+\"\nmotion = \"velocity\"\nvelocity = [{}, 0.0, 0.0]\n",
-        dir / "rod.h5", law_keys, v);
-  };
+  const test::PulledRod rod(dir.str());
+  const double sy = kE * kEpsY;  // (rate 50/s: R = 1 + 0.1 ln 50 = 1.391)
   auto plateau = [&](const std::string& law_keys, double R) {
-    const std::string toml = case_text(law_keys);
-    Model m = build_model(parse_case(toml, "rate_rod", {}));
-    EXPECT_EQ(describe(m.rods.law).name, R == 1.0 ? "bilinear" : "johnson_cook");
-    Simulation sim(m, m.step);
-    double dev = 0.0;
-    int steps = 0, flowing = 0;
-    while (sim.time() * rate < 3 * R * kEpsY) {
-      sim.step();
-      ++steps;
-      const double eps = (m.particles.position[1].x() - m.particles.position[0].x() - L0) / L0;
-      dev = std::max(dev, std::abs(m.rods.stress[0] - std::min(kE * eps, R * sy)) / (R * sy));
-      flowing += m.rods.shift[0] != 0.0;
-    }
-    EXPECT_LT(dev, 1e-9) << law_keys;
-    EXPECT_GT(steps, 100) << law_keys;  // (the path is resolved: yield is not one step's jump)
-    EXPECT_GT(flowing, steps / 3) << law_keys;
-    return m.rods.stress[0];
+    const test::PulledRod::Result r = rod.run(rod.case_text(law_keys), R);
+    EXPECT_EQ(r.law, R == 1.0 ? "bilinear" : "johnson_cook");
+    EXPECT_LT(r.deviation, 1e-9) << law_keys;
+    EXPECT_GT(r.steps, 100) << law_keys;  // (the path is resolved: yield is not one step's jump)
+    EXPECT_GT(r.flowing, r.steps / 3) << law_keys;
+    return r.stress;
   };
   EXPECT_NEAR(plateau("", 1.0), sy, 1e-9 * sy);
-  const double R = 1.0 + kC * std::log(rate / kRef);
+  const double R = 1.0 + kC * std::log(rod.rate() / kRef);
   // (kC and kRef as TOML floats.)
   const double fast = plateau("law = \"johnson_cook_rate\"\nrate_sensitivity = 0.1\nreference_rate = 1.0\n", R);
   EXPECT_NEAR(fast, R * sy, 1e-9 * R * sy);
   // The rate keys belong to the rate law: without rod.law they are an error that names them.
-  test::expect_mentions(test::case_error(case_text("rate_sensitivity = 0.1\n")), {"rate_sensitivity", "johnson_cook"});
+  test::expect_mentions(test::case_error(rod.case_text("rate_sensitivity = 0.1\n")),
+                        {"rate_sensitivity", "johnson_cook"});
 }
 
 }  // namespace
