@@ -202,7 +202,8 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("cut", cut_keys(), &CutSettings::enabled);
   expect_every_member_keyed("workpiece", workpiece_keys(), &WorkpieceSettings::enabled);
   expect_every_member_keyed("membrane", membrane_keys(), &MembraneSettings::enabled);
-  expect_every_member_keyed("material", material_keys(), &MaterialSettings::macroscopic, &MaterialSettings::flow_curve);
+  expect_every_member_keyed("material", material_keys(), &MaterialSettings::macroscopic, &MaterialSettings::flow_curve,
+                            &MaterialSettings::johnson_cook_keys_given);
   expect_every_member_keyed("rod", rod_keys());
   expect_every_member_keyed("integrator", integrator_keys());
   expect_every_member_keyed("group", group_keys(), &GroupSettings::motion);

@@ -1,4 +1,4 @@
-// test_rate_rod_law.cpp: the Johnson-Cook rate-hardening rod law (laws/johnson_cook_rate_rod_law.h)
+// test_rate_rod_law.cpp: the Johnson-Cook rate-hardening rod law (laws/johnson_cook_rod_law.h)
 // against closed forms: the paper's law below the reference rate (bit for bit), the yield stress
 // R sigma_y at a constant rate, hand-computed monotonic and cyclic (Bauschinger) paths, the plastic
 // strain of both laws, the rod kernel against evaluate() per rod, and a rod pulled at a constant
@@ -11,6 +11,7 @@
 
 #include "case_errors.h"
 #include "lattice_gen/lattice_file.h"
+#include "rod_law_fixtures.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/parallel.h"
@@ -22,30 +23,12 @@
 namespace swarf {
 namespace {
 
-constexpr double kE = 200e9, kEpsY = 1e-3, kK = 20e9;  // Pa, 1, Pa: s_y = 200 MPa, H = E k/(E - k)
-constexpr double kC = 0.1, kRef = 1.0;                 // 1, 1/s
+using test::curve_law, test::kE, test::kEpsY, test::kK, test::linear_law;
+constexpr double kC = 0.1, kRef = 1.0;  // 1, 1/s
 // A rate whose factor is 1.2: ln(rate / rate_ref) = 2.
 const double kRate12 = kRef * std::exp(2.0);
 
-RodLaw linear_law() {
-  RodLaw law;
-  law.youngs_modulus = kE;
-  law.yield_strain = kEpsY;
-  law.hardening = kK;
-  law.tensile_strength = HUGE_VAL;
-  return law;
-}
-
-RodLaw curve_law() {  // flow stress 200, 400, 500 MPa at plastic strain 0, 0.01, 0.11
-  RodLaw law = linear_law();
-  law.hardening = 0.0;
-  law.flow.points = 3;
-  law.flow.plastic_strain = {0.0, 0.01, 0.11};
-  law.flow.stress = {200e6, 400e6, 500e6};
-  return law;
-}
-
-JohnsonCookRateRodLaw rate_law(const RodLaw& base) { return {base, kC, kRef}; }
+JohnsonCookRodLaw rate_law(const RodLaw& base) { return {base, kC, kRef}; }
 
 // Exact equality of two responses, field by field.
 void expect_same(const RodResponse& a, const RodResponse& b, const std::string& where) {
@@ -62,7 +45,7 @@ TEST(RodLawJohnsonCookRate, BelowTheReferenceRateItIsThePapersLawBitForBit) {
   for (RodLaw base : {linear_law(), curve_law()}) {
     base.viscosity = 1e3;
     base.tensile_strength = 330e6;
-    const JohnsonCookRateRodLaw law = rate_law(base);
+    const JohnsonCookRodLaw law = rate_law(base);
     for (double rate : {0.0, 0.3 * kRef, -0.9 * kRef, kRef, -kRef}) {
       double s_base = 0.0, s_rate = 0.0;
       for (double eps : {0.002, 0.004, 0.0, -0.005, -0.001, 0.003, 0.02}) {
@@ -81,7 +64,7 @@ TEST(RodLawJohnsonCookRate, BelowTheReferenceRateItIsThePapersLawBitForBit) {
 TEST(RodLawJohnsonCookRate, AtAConstantRateItYieldsAtTheRateFactorTimesSigmaY) {
   for (const RodLaw& base : {linear_law(), curve_law()})
     for (double rate : {10.0, 1e3, 1e5, -1e4}) {
-      const JohnsonCookRateRodLaw law = rate_law(base);
+      const JohnsonCookRodLaw law = rate_law(base);
       const double R = 1.0 + kC * std::log(std::abs(rate) / kRef);
       EXPECT_NEAR(rate_factor(law, rate), R, 1e-15 * R);
       const double sign = rate > 0 ? 1.0 : -1.0, eps_yield = sign * R * kEpsY;
@@ -102,7 +85,7 @@ TEST(RodLawJohnsonCookRate, AtAConstantRateItYieldsAtTheRateFactorTimesSigmaY) {
 // Driven in increments of 1e-5 with the rate's sign following the direction. Tolerance 1e-12
 // relative: the plastic branch does not depend on the path, so only rounding separates the values.
 TEST(RodLawJohnsonCookRate, MonotonicAndCyclicPathsOfTheSingleSlopeAtAConstantRate) {
-  const JohnsonCookRateRodLaw law = rate_law(linear_law());
+  const JohnsonCookRodLaw law = rate_law(linear_law());
   const double top = 1.2 * (20e9 * (560e6 / 204e9) + 200e6), reverse = top - 2 * 1.2 * 200e6;
   EXPECT_NEAR(top, 305.88235294117646e6, 1e-6);
   double shift = 0.0, eps = 0.0;
@@ -138,7 +121,7 @@ TEST(RodLawJohnsonCookRate, MonotonicAndCyclicPathsOfTheSingleSlopeAtAConstantRa
 // R (200 + 200 x 0.5) MPa = 360 MPa, reached at eps = 0.005 + 360e6/E = 0.0068; the back stress
 // R x 100 MPa, so the reverse yield is at 120 - 240 = -120 MPa, eps = 0.005 - 120e6/E = 0.0044.
 TEST(RodLawJohnsonCookRate, MonotonicAndCyclicPathsOfTheHardeningCurveAtAConstantRate) {
-  const JohnsonCookRateRodLaw law = rate_law(curve_law());
+  const JohnsonCookRodLaw law = rate_law(curve_law());
   const RodResponse up = evaluate(law, 0.0068, kRate12, 0.0);
   EXPECT_NEAR(up.shift, 0.005, 1e-14);
   EXPECT_NEAR(up.stress, 360e6, 1e-12 * 360e6);
@@ -160,7 +143,7 @@ TEST(RodLawJohnsonCookRate, PlasticStrainOfEachLawIsTheClosedForm) {
   const RodLaw paper = linear_law();
   const RodResponse a = evaluate(paper, 0.004, 0.0, 0.0);
   EXPECT_NEAR(plastic_strain(paper, a.shift), 0.0027, 1e-15);
-  const JohnsonCookRateRodLaw fast = rate_law(paper);
+  const JohnsonCookRodLaw fast = rate_law(paper);
   const RodResponse b = evaluate(fast, 0.004, kRate12, 0.0);
   EXPECT_NEAR(plastic_strain(fast, b.shift), 0.004 - 1.2 * (20e9 * (560e6 / 204e9) + 200e6) / kE, 1e-15);
   for (const AnyRodLaw& law : {AnyRodLaw(curve_law()), AnyRodLaw(rate_law(curve_law()))})
@@ -179,7 +162,7 @@ TEST(RodLawJohnsonCookRate, PlasticStrainOfEachLawIsTheClosedForm) {
 TEST(RodLawJohnsonCookRate, TheTangentIsTheDerivativeOfEvaluate) {
   for (RodLaw base : {linear_law(), curve_law()}) {
     base.viscosity = 20.0;
-    const JohnsonCookRateRodLaw law = rate_law(base);
+    const JohnsonCookRodLaw law = rate_law(base);
     for (double rate : {50.0, -3e3, 0.5})
       for (double eps : {0.0068, -0.02, 0.0005}) {
         const double s0 = rate > 0 ? 0.0 : 0.001;  // (committed shift: a little history)
@@ -214,7 +197,7 @@ void expect_kernel_agrees(double viscosity) {
   RodLaw base = curve_law();
   base.viscosity = viscosity;
   base.tensile_strength = 450e6;
-  const JohnsonCookRateRodLaw law = rate_law(base);
+  const JohnsonCookRodLaw law = rate_law(base);
   const double L0 = 1e-3, A = 1e-6;
   // Rod k joins particle 0 at the origin to particle k+1: stretched or compressed along a
   // direction, the far end moving at a speed that gives rates below and above rate_ref.
@@ -277,58 +260,32 @@ TEST(RodLawJohnsonCookRate, TheKernelAgreesWithEvaluatePerRod) {
   expect_kernel_agrees(50.0);
 }
 
-// One rod pulled at a constant speed through a case file (rod.law = "johnson_cook_rate") and the
-// Simulation: both particles held by grips, one fixed and one moving, so the strain is v t / L0 and
-// the rate v / L0 at every step. Perfectly plastic (k = 0), so the stress at yield is the plateau:
-// R sigma_y with the rate law, sigma_y with the paper's law run alike; every step follows the
-// closed form min(E eps, R sigma_y). Tolerance 1e-9 relative: the positions advance by v dt per
-// step, so the strain carries the rounding of a few hundred additions (about 1e-13 relative).
+// One rod pulled at a constant speed through a case file (rod.law = "johnson_cook_rate", the
+// former name of "johnson_cook") and the Simulation: both particles held by grips, one fixed and one moving, so the
+// strain is v t / L0 and the rate v / L0 at every step. Perfectly plastic (k = 0), so the stress at yield is the
+// plateau: R sigma_y with the rate law, sigma_y with the paper's law run alike; every step follows the closed form
+// min(E eps, R sigma_y). Tolerance 1e-9 relative: the positions advance by v dt per step, so the strain carries the
+// rounding of a few hundred additions (about 1e-13 relative).
 TEST(RodLawJohnsonCookRate, ARodPulledAtAConstantRateYieldsAtTheRateFactorTimesSigmaY) {
   test::TempDir dir("rate_rod");
-  constexpr double kRadius = 0.5e-3, L0 = 2 * kRadius;
-  Lattice lat;
-  lat.position = {Vec3(0, 0, 0), Vec3(L0, 0, 0)};
-  lat.radius = {kRadius, kRadius};
-  lat.rods = {{0, 1}};
-  lat.rest_length = {L0};
-  write_lattice(dir / "rod.h5", lat);
-  const double v = 0.05, rate = v / L0;  // m/s, 1/s: 50/s, R = 1 + 0.1 ln 50 = 1.391
-  const double sy = kE * kEpsY;
-  auto case_text = [&](const std::string& law_keys) {
-    return fmt::format(
-        "[workpiece]\nlattice_file = \"{}\"\n[rod]\nyoungs_modulus = 200e9\nyield_strain = 1e-3\n{}"
-        "[integrator]\nend_time = 1\n"
-        "[[group]]\nname = \"left\"\nside = \"x-\"\n"
-        "[[group]]\nname = \"right\"\nside = \"x+\"\nmotion = \"velocity\"\nvelocity = [{}, 0.0, 0.0]\n",
-        dir / "rod.h5", law_keys, v);
-  };
+  const test::PulledRod rod(dir.str());
+  const double sy = kE * kEpsY;  // (rate 50/s: R = 1 + 0.1 ln 50 = 1.391)
   auto plateau = [&](const std::string& law_keys, double R) {
-    const std::string toml = case_text(law_keys);
-    Model m = build_model(parse_case(toml, "rate_rod", {}));
-    EXPECT_EQ(describe(m.rods.law).name, R == 1.0 ? "bilinear" : "johnson_cook_rate");
-    Simulation sim(m, m.step);
-    double dev = 0.0;
-    int steps = 0, flowing = 0;
-    while (sim.time() * rate < 3 * R * kEpsY) {
-      sim.step();
-      ++steps;
-      const double eps = (m.particles.position[1].x() - m.particles.position[0].x() - L0) / L0;
-      dev = std::max(dev, std::abs(m.rods.stress[0] - std::min(kE * eps, R * sy)) / (R * sy));
-      flowing += m.rods.shift[0] != 0.0;
-    }
-    EXPECT_LT(dev, 1e-9) << law_keys;
-    EXPECT_GT(steps, 100) << law_keys;  // (the path is resolved: yield is not one step's jump)
-    EXPECT_GT(flowing, steps / 3) << law_keys;
-    return m.rods.stress[0];
+    const test::PulledRod::Result r = rod.run(rod.case_text(law_keys), R);
+    EXPECT_EQ(r.law, R == 1.0 ? "bilinear" : "johnson_cook");
+    EXPECT_LT(r.deviation, 1e-9) << law_keys;
+    EXPECT_GT(r.steps, 100) << law_keys;  // (the path is resolved: yield is not one step's jump)
+    EXPECT_GT(r.flowing, r.steps / 3) << law_keys;
+    return r.stress;
   };
   EXPECT_NEAR(plateau("", 1.0), sy, 1e-9 * sy);
-  const double R = 1.0 + kC * std::log(rate / kRef);
+  const double R = 1.0 + kC * std::log(rod.rate() / kRef);
   // (kC and kRef as TOML floats.)
   const double fast = plateau("law = \"johnson_cook_rate\"\nrate_sensitivity = 0.1\nreference_rate = 1.0\n", R);
   EXPECT_NEAR(fast, R * sy, 1e-9 * R * sy);
   // The rate keys belong to the rate law: without rod.law they are an error that names them.
-  test::expect_mentions(test::case_error(case_text("rate_sensitivity = 0.1\n")),
-                        {"rate_sensitivity", "johnson_cook_rate"});
+  test::expect_mentions(test::case_error(rod.case_text("rate_sensitivity = 0.1\n")),
+                        {"rate_sensitivity", "johnson_cook"});
 }
 
 }  // namespace

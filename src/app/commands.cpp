@@ -120,6 +120,11 @@ struct MaterialCommand final : Command {
                     "End strain of the test, a magnitude: log strain (uniaxial; compression goes to -TO), shear "
                     "gamma, the cyclic amplitude (defaults 3, 3, 0.5, 2, 2, 0.02)");
     sub->add_option("--increment", mo.increment, "Strain step: log strain, or gamma in shear (default 1e-4)");
+    sub->add_option("--temperature", mo.temperature,
+                    "Temperature (K) of every rod, for rod.law = \"johnson_cook\" (default: the law's T_ref)");
+    sub->add_option("--strain-rate", mo.strain_rate,
+                    "Equivalent plastic strain rate (1/s) the rate factor reads, for rod.law = \"johnson_cook\" "
+                    "(default: quasi-static)");
     sub->add_option("--out", mo.out_dir, "Output directory")->required();
     sub->add_option("--set", mo.overrides, "Override a case key: --set rod.failure_strain=0.5 (repeatable)")
         ->allow_extra_args(false);

@@ -207,7 +207,25 @@ int run_material(const MaterialOptions& o) {
   const Model model = build_model(cs);
   const Derived& d = model.derived;
   if (model.rods.ends.empty()) throw InputError(cs.source + ": the case has no bonded workpiece to test");
-  const CauchyBornCrystal crystal(d.law, d.cell_edge, d.rod_area);
+  // A Johnson-Cook law at a fixed temperature and rate is its base law with the flow stresses
+  // times S = R Theta (scaled_base, exact for the law's construction): the crystal runs with that.
+  const auto* jc = std::get_if<JohnsonCookRodLaw>(&d.law);
+  const bool conditions = o.temperature != 0 || o.strain_rate != 0;
+  if (conditions && !jc)
+    throw InputError("--temperature, --strain-rate: need a Johnson-Cook rod law (--set rod.law=\"johnson_cook\")");
+  if (!(o.temperature >= 0 && o.temperature < 1e4))
+    throw InputError(fmt::format("--temperature: must be a temperature in [0, 1e4) K, got {}", o.temperature));
+  if (!(o.strain_rate >= 0 && std::isfinite(o.strain_rate)))
+    throw InputError(fmt::format("--strain-rate: must be a rate >= 0 (1/s), got {}", o.strain_rate));
+  double rate_f = 1, thermal_f = 1;
+  AnyRodLaw law = d.law;
+  if (jc) {
+    // (the rod rate whose equivalent rate is the one asked: rate_eq = kappa rate_rod)
+    rate_f = rate_factor(*jc, o.strain_rate / jc->rate_to_equivalent);
+    thermal_f = thermal_factor(*jc, o.temperature > 0 ? o.temperature : jc->reference_temperature);
+    law = scaled_base(*jc, rate_f * thermal_f);
+  }
+  const CauchyBornCrystal crystal(law, d.cell_edge, d.rod_area);
   const auto C = crystal.elastic_constants();
   const double l0 = crystal.rest_length(), K = (C(0, 0) + 2 * C(0, 1)) / 3;
   const double e100 = directional_youngs_modulus(C, {1, 0, 0}), e110 = directional_youngs_modulus(C, {1, 1, 0});
@@ -217,7 +235,14 @@ int run_material(const MaterialOptions& o) {
   doc["case"] = cs.source;
   doc["overrides"] = o.overrides;
   doc["increment"] = o.increment;
-  doc["strain_rate_per_s"] = 0.0;
+  doc["strain_rate_per_s"] = o.strain_rate;
+  if (jc) {
+    // The closed form: every flow stress S times the law's at T_ref and rate_ref.
+    doc["temperature_K"] = o.temperature > 0 ? o.temperature : jc->reference_temperature;
+    doc["rate_factor"] = rate_f;
+    doc["thermal_factor"] = thermal_f;
+    doc["flow_scale"] = rate_f * thermal_f;
+  }
   doc["rod_law"] = rod_law_to_json(d.law, "");
   doc["lattice"] = {{"cell_edge_m", d.cell_edge},
                     {"rest_length_m", l0},
@@ -241,12 +266,12 @@ int run_material(const MaterialOptions& o) {
     std::vector<MaterialPoint> curve;
     double mode = 0;
     if (t->shear) {
-      curve = simple_shear_test(d.law, d.cell_edge, d.rod_area, t->direction, t->normal, to, o.increment);
+      curve = simple_shear_test(law, d.cell_edge, d.rod_area, t->direction, t->normal, to, o.increment);
       const Eigen::Vector3d s = Eigen::Vector3d(t->direction[0], t->direction[1], t->direction[2]).normalized();
       const Eigen::Vector3d m = Eigen::Vector3d(t->normal[0], t->normal[1], t->normal[2]).normalized();
       mode = 3 * simple_shear_modulus(C, s, m);
     } else {
-      curve = uniaxial_test(d.law, d.cell_edge, d.rod_area, t->direction, path, o.increment);
+      curve = uniaxial_test(law, d.cell_edge, d.rod_area, t->direction, path, o.increment);
       mode = directional_youngs_modulus(C, {t->direction[0], t->direction[1], t->direction[2]});
     }
     if (curve.size() > 1 && curve[1].plastic_strain > 1e-3 * curve[1].equivalent_strain)
@@ -298,6 +323,12 @@ int run_material(const MaterialOptions& o) {
       "material lab: {} (E_rod = {:.4g} Pa, a = {:.4g} m, A = {:.4g} m^2); lattice E100 = {:.4g} Pa, "
       "E110 = {:.4g} Pa, C44 = {:.4g} Pa\n",
       cs.source, elastic_modulus(d.law), d.cell_edge, d.rod_area, e100, e110, C(3, 3));
+  if (jc)
+    fmt::print(
+        "Johnson-Cook: T = {:.6g} K, equivalent plastic strain rate {:.6g} 1/s: R = {:.6g}, Theta = {:.6g}, "
+        "every flow stress x S = {:.6g}\n",
+        o.temperature > 0 ? o.temperature : jc->reference_temperature, o.strain_rate, rate_f, thermal_f,
+        rate_f * thermal_f);
   fmt::print("{:<15} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>9}\n", "test", "E [GPa]", "yield", "flow0.1",
              "flow0.5", "flow1", "failure", "dV_p/V", "contact");
   fmt::print("{:<15} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>9}\n", "", "", "[MPa]", "[MPa]", "[MPa]",

@@ -28,7 +28,8 @@ nlohmann::json number(double v) {
 
 nlohmann::json rod_law_to_json(const AnyRodLaw& law, const std::string& prefix) {
   // The units a law's parameters carry, as key suffixes (study_table.cpp reads them back).
-  static const std::map<std::string, std::string> suffix{{"1", ""}, {"Pa", "_Pa"}, {"Pa s", "_Pa_s"}, {"1/s", "_per_s"}};
+  static const std::map<std::string, std::string> suffix{
+      {"1", ""}, {"Pa", "_Pa"}, {"Pa s", "_Pa_s"}, {"1/s", "_per_s"}, {"K", "_K"}};
   const RodLawDescription d = describe(law);
   nlohmann::json j{{prefix + "law", d.name}};
   for (const LawParameter& p : d.parameters) {

@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -146,7 +147,8 @@ void read_material(const CaseInput& in, CaseSettings& cs) {
   if (!mt.macroscopic)
     for (const char* key :
          {"yield_stress", "hardening_modulus", "tensile_strength", "poisson_ratio", "flow_plastic_strain",
-          "flow_stress", "johnson_cook_a", "johnson_cook_b", "johnson_cook_n", "failure_strain", "calibration"})
+          "flow_stress", "johnson_cook_a", "johnson_cook_b", "johnson_cook_n", "failure_strain", "calibration",
+          "johnson_cook_c", "johnson_cook_m", "reference_rate", "melt_temperature", "reference_temperature"})
       if (r.has(key))
         r.fail(key, r.get(key), "macroscopic properties need material.youngs_modulus (Pa) or material.preset too");
   const bool table = r.has("flow_plastic_strain") || r.has("flow_stress");
@@ -170,7 +172,21 @@ void read_material(const CaseInput& in, CaseSettings& cs) {
       mt.johnson_cook_b = preset->jc_b;
       mt.johnson_cook_n = preset->jc_n;
     }
+    // Johnson-Cook's rate and temperature factors (used by rod.law = "johnson_cook").
+    if (!r.has("johnson_cook_c")) mt.johnson_cook_c = preset->jc_c;
+    if (!r.has("johnson_cook_m")) mt.johnson_cook_m = preset->jc_m;
+    if (!r.has("reference_rate")) mt.reference_rate = preset->reference_rate;
+    if (!r.has("melt_temperature")) mt.melt_temperature = preset->melt_temperature;
+    if (!r.has("reference_temperature")) mt.reference_temperature = preset->reference_temperature;
   }
+  mt.johnson_cook_keys_given.clear();
+  for (const char* key :
+       {"johnson_cook_c", "johnson_cook_m", "reference_rate", "melt_temperature", "reference_temperature"})
+    if (r.has(key)) mt.johnson_cook_keys_given.push_back(key);
+  if (!(mt.melt_temperature > mt.reference_temperature))
+    r.fail(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature",
+           r.get(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature"),
+           fmt::format("T_melt = {} K must lie above T_ref = {} K", mt.melt_temperature, mt.reference_temperature));
   if (mt.johnson_cook_a > 0) {
     mt.flow_plastic_strain = johnson_cook_points();
     mt.flow_stress = johnson_cook_stress(mt.johnson_cook_a, mt.johnson_cook_b, mt.johnson_cook_n,
@@ -202,9 +218,28 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!((d.bond_overlap > -0.2 && d.bond_overlap < 1.0) || d.bond_overlap == kInf))
     r.fail("bond_overlap", r.get("bond_overlap"),
            "must lie in (-0.2, 1) (a relative overlap; below 0 a gap), or be inf (never)");
-  if (d.law != "johnson_cook_rate")
-    for (const char* key : {"rate_sensitivity", "reference_rate"})
-      if (r.has(key)) r.fail(key, r.get(key), "belongs to the rate law: set rod.law = \"johnson_cook_rate\"");
+  // "johnson_cook_rate" is the law's former name (it had only the rate factor; without the
+  // temperature keys it is still that law).
+  const bool jc = d.law == "johnson_cook" || d.law == "johnson_cook_rate";
+  static constexpr std::array<const char*, 5> kJcKeys{
+      "rate_sensitivity", "reference_rate", "thermal_softening_exponent", "melt_temperature", "reference_temperature"};
+  for (const char* key : kJcKeys) {
+    if (r.has(key) && !jc) r.fail(key, r.get(key), "belongs to the Johnson-Cook law: set rod.law = \"johnson_cook\"");
+    if (r.has(key) && cs.material.macroscopic)
+      r.fail(key, r.get(key),
+             fmt::format("with [material] properties the law's factors are material.{} (and its neighbours)",
+                         key == std::string_view("rate_sensitivity")             ? "johnson_cook_c"
+                         : key == std::string_view("thermal_softening_exponent") ? "johnson_cook_m"
+                                                                                 : key));
+  }
+  if (!jc && !cs.material.johnson_cook_keys_given.empty())
+    r.fail("law", r.get("law"),
+           fmt::format("material.{} belongs to the Johnson-Cook law: set rod.law = \"johnson_cook\"",
+                       cs.material.johnson_cook_keys_given.front()));
+  if (jc && !(d.melt_temperature > d.reference_temperature))
+    r.fail(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature",
+           r.get(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature"),
+           fmt::format("T_melt = {} K must lie above T_ref = {} K", d.melt_temperature, d.reference_temperature));
   if (r.has("failure_elongation") && r.has("failure_strain"))
     r.fail(
         "failure_elongation", r.get("failure_elongation"),

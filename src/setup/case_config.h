@@ -97,6 +97,13 @@ struct MaterialSettings {
   double failure_strain = kInf;             ///< equivalent strain at failure in simple shear, 1; inf = never
   std::string calibration = "shear";        ///< the mode the flow curve is matched in: "shear" or "tension"
   bool flow_curve = false;                  ///< true when a table, Johnson-Cook or a preset gives the flow curve
+  // Johnson-Cook's rate and temperature factors (rod.law = "johnson_cook"); the preset's when it has them.
+  double johnson_cook_c = 0.0;                       ///< C, 1
+  double johnson_cook_m = 1.0;                       ///< m, 1
+  double reference_rate = 1.0;                       ///< equivalent plastic strain rate of the flow curve, 1/s
+  double melt_temperature = kInf;                    ///< T_melt, K; inf = no softening
+  double reference_temperature = 293.15;             ///< T_ref (the flow curve's), K
+  std::vector<std::string> johnson_cook_keys_given;  ///< which of the five the table gave (a rule in read_rod)
 };
 
 /// [rod]: the rod law (paper eqs. 23-31) between bonded neighbours.
@@ -110,9 +117,13 @@ struct RodSettings {
   double failure_elongation = kInf;         ///< stretch L - L0 at which a rod breaks, m; inf = never
   std::vector<double> flow_plastic_strain;  ///< hardening curve: plastic strains of its points, 1 (first 0)
   std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
-  std::string law = "bilinear";             ///< "bilinear" (the paper's) or "johnson_cook_rate" (rate hardening)
-  double rate_sensitivity = 0.0;            ///< johnson_cook_rate: C of R = 1 + C ln(max(|rate|/rate_ref, 1)), 1
-  double reference_rate = 1.0;              ///< johnson_cook_rate: rate_ref, 1/s
+  std::string law = "bilinear";             ///< "bilinear" (the paper's) or "johnson_cook" (rate and temperature; alias
+                                            ///< "johnson_cook_rate")
+  double rate_sensitivity = 0.0;            ///< johnson_cook: C of R = 1 + C ln(max(|rate|/rate_ref, 1)), 1
+  double reference_rate = 1.0;              ///< johnson_cook: rate_ref, 1/s (a rod strain rate)
+  double thermal_softening_exponent = 1.0;  ///< johnson_cook: m of Theta = 1 - T*^m, 1
+  double melt_temperature = kInf;           ///< johnson_cook: T_melt, K; inf = no softening
+  double reference_temperature = 293.15;    ///< johnson_cook: T_ref, K
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
   double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
   bool neighbour_exchange = false;  ///< a particle with 12 rods gives up its most stretched one for a new neighbour

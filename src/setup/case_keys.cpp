@@ -240,8 +240,8 @@ const std::vector<Key<MaterialSettings>>& material_keys() {
        .range = kPositive,
        .rule = "with `johnson_cook_b` and `johnson_cook_n`; not with a table or `yield_stress`",
        .doc = "Johnson-Cook's A: the flow curve A + B eps_p^n at the reference rate and room temperature, "
-              "tabulated at eps_p = 0, 0.01, 0.03, 0.08, 0.2, 0.5, 1, 2 (no rate or heat terms: swarf has "
-              "neither)."},
+              "tabulated at eps_p = 0, 0.01, 0.03, 0.08, 0.2, 0.5, 1, 2 (the rate and temperature factors: "
+              "`rod.law` = `\"johnson_cook\"` with `johnson_cook_c` and `johnson_cook_m`)."},
       {.name = "johnson_cook_b",
        .field = &S::johnson_cook_b,
        .unit = "Pa",
@@ -270,6 +270,44 @@ const std::vector<Key<MaterialSettings>>& material_keys() {
        .rule = "with a flow curve",
        .doc = "The mode in which the rods reproduce the flow curve: `\"shear\"`, simple shear on a cube plane "
               "(von Mises equivalent; the mode that forms a chip), or `\"tension\"`, uniaxial along [100]."},
+      {.name = "johnson_cook_c",
+       .field = &S::johnson_cook_c,
+       .unit = "1",
+       .default_note = "the preset's; 0 without one",
+       .range = kNonNegative,
+       .rule = "with `rod.law` = `\"johnson_cook\"`",
+       .doc = "Johnson-Cook's C: the flow curve scaled by 1 + C ln(max(rate / `reference_rate`, 1)), rate the "
+              "equivalent plastic strain rate (a rod's strain rate times 2/sqrt3 with `calibration` = "
+              "`\"shear\"`, times 3 with `\"tension\"`: docs/physics.md section 2)."},
+      {.name = "johnson_cook_m",
+       .field = &S::johnson_cook_m,
+       .unit = "1",
+       .default_note = "the preset's; 1 without one",
+       .range = in(0, 10, "(]"),
+       .rule = "with `rod.law` = `\"johnson_cook\"`",
+       .doc = "Johnson-Cook's m: the flow curve scaled by max(1 - T*^m, 1e-3), T* = (T - T_ref)/(T_melt - T_ref) "
+              "in [0, 1], T a rod's temperature (the mean of its ends')."},
+      {.name = "reference_rate",
+       .field = &S::reference_rate,
+       .unit = "1/s",
+       .default_note = "the preset's; 1 without one",
+       .range = kPositive,
+       .rule = "with `rod.law` = `\"johnson_cook\"`",
+       .doc = "Johnson-Cook's reference equivalent plastic strain rate (that of the flow curve)."},
+      {.name = "melt_temperature",
+       .field = &S::melt_temperature,
+       .unit = "K",
+       .default_note = "the preset's; inf (no softening) without one",
+       .range = kPositiveOrInf,
+       .rule = "with `rod.law` = `\"johnson_cook\"`; above `reference_temperature`",
+       .doc = "Johnson-Cook's T_melt."},
+      {.name = "reference_temperature",
+       .field = &S::reference_temperature,
+       .unit = "K",
+       .default_note = "the preset's; 293.15 without one",
+       .range = kPositive,
+       .rule = "with `rod.law` = `\"johnson_cook\"`",
+       .doc = "Johnson-Cook's T_ref, the temperature of the flow curve."},
   };
   return keys;
 }
@@ -347,23 +385,46 @@ const std::vector<Key<RodSettings>>& rod_keys() {
        .doc = "The flow stress of the rod in tension at the points of `flow_plastic_strain`."},
       {.name = "law",
        .field = &S::law,
-       .choices = {"bilinear", "johnson_cook_rate"},
+       .choices = {"bilinear", "johnson_cook", "johnson_cook_rate"},
        .doc = "The rod law. `\"bilinear\"`: the paper's elastic-plastic law with kinematic hardening (the single "
-              "slope or the hardening curve above). `\"johnson_cook_rate\"`: the same with all its flow stresses "
-              "(yield and back stress) scaled by Johnson-Cook's rate factor R = 1 + C ln(max(abs(rate) / rate_ref, "
-              "1)) of the rod's strain rate; failure is not scaled (docs/physics.md section 2)."},
+              "slope or the hardening curve above). `\"johnson_cook\"`: the same with all its flow stresses "
+              "(yield and back stress) scaled by Johnson-Cook's S = R Theta, the rate factor R = 1 + C "
+              "ln(max(rate / rate_ref, 1)) of the rod's strain rate and the thermal factor Theta = max(1 - T*^m, "
+              "1e-3) of the mean of its ends' temperatures (with [heat]); failure is not scaled "
+              "(docs/physics.md section 2). `\"johnson_cook_rate\"` is the same law (its former name). With "
+              "[material], C, m, the rates and temperatures are `material.johnson_cook_c` and its neighbours."},
       {.name = "rate_sensitivity",
        .field = &S::rate_sensitivity,
        .unit = "1",
        .range = kNonNegative,
-       .rule = "only with `law` = `\"johnson_cook_rate\"`",
-       .doc = "C of the rate factor (Johnson-Cook's C; about 0.01 to 0.03 for steels). 0 is the paper's law."},
+       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
+       .doc = "C of the rate factor (Johnson-Cook's C; about 0.01 to 0.03 for steels). 0: no rate term."},
       {.name = "reference_rate",
        .field = &S::reference_rate,
        .unit = "1/s",
        .range = kPositive,
-       .rule = "only with `law` = `\"johnson_cook_rate\"`",
-       .doc = "rate_ref: at rod strain rates up to this the law is the paper's law, bit for bit."},
+       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
+       .doc = "rate_ref, a rod strain rate: at rod strain rates up to this the rate factor is 1."},
+      {.name = "thermal_softening_exponent",
+       .field = &S::thermal_softening_exponent,
+       .unit = "1",
+       .range = in(0, 10, "(]"),
+       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
+       .doc = "m of the thermal factor Theta = max(1 - T*^m, 1e-3), T* = (T - T_ref)/(T_melt - T_ref) "
+              "clamped to [0, 1]."},
+      {.name = "melt_temperature",
+       .field = &S::melt_temperature,
+       .unit = "K",
+       .range = kPositiveOrInf,
+       .rule = "only with `law` = `\"johnson_cook\"`; above `reference_temperature`; not with [material] "
+               "properties",
+       .doc = "T_melt, where the rod keeps 1e-3 of its flow stress. inf: no thermal softening (the rate law)."},
+      {.name = "reference_temperature",
+       .field = &S::reference_temperature,
+       .unit = "K",
+       .range = kPositive,
+       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
+       .doc = "T_ref, the temperature of the flow curve; a particle without a temperature (no [heat]) is at it."},
       {.name = "damping_ratio",
        .field = &S::damping_ratio,
        .unit = "1",

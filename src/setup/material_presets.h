@@ -1,9 +1,10 @@
 // material_presets.h: named workpiece materials (material.preset), with their sources.
 //
 // Each preset is a macroscopic description: density, Young's modulus, a Johnson-Cook flow
-// curve at room temperature and a reference strain rate (A + B eps_p^n; the rate and
-// temperature terms are not modelled: swarf has no heat and no rate effect), and a strain at
-// failure. The sources are in docs/materials.md; the rod parameters follow from calibration.h.
+// curve at room temperature and a reference strain rate (A + B eps_p^n), a strain at failure,
+// Johnson-Cook's rate and temperature factors (C, m, T_melt, T_ref, used by rod.law =
+// "johnson_cook": laws/johnson_cook_rod_law.h) and the heat's c and k ([heat]). The sources are
+// in docs/materials.md; the rod parameters follow from calibration.h.
 #pragma once
 
 #include <string>

@@ -252,6 +252,7 @@ void Simulation::newton_tangent(double h) {
   v.coef = r.force_coef.data();
   v.x = p.position.data();
   v.v = p.velocity.data();
+  v.temperature = p.temperature.empty() ? nullptr : p.temperature.data();  // (as RodSystem::forces)
   v.axis = nk_.axis.data();
   v.axial = nk_.axial.data();
   v.lateral = nk_.lateral.data();

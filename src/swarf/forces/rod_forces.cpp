@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "swarf/core/parallel.h"
 
@@ -14,10 +15,13 @@ namespace {
 // arrays' bases after every store (the uint8_t stores may alias anything). 'Rate' is a
 // compile-time switch so a law that reads no strain rate (the undamped paper's law) does not
 // gather velocities.
-template <class Law, bool Rate, bool Wrap>
+//
+// 'Temp' (only for a law with kReadsTemperature) gives evaluate the rod's temperature, the mean
+// of its ends' (laws/johnson_cook_rod_law.h).
+template <class Law, bool Rate, bool Wrap, bool Temp>
 void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
                const double* rest_length, const double* inv_rest_length, const double* shift,
-               const std::uint8_t* intact, const Vec3* x, const Vec3* v, double* trial_shift,
+               const std::uint8_t* intact, const Vec3* x, const Vec3* v, const double* temperature, double* trial_shift,
                std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power, int& changed,
                Periodic periodic) {
   double visc = 0.0;
@@ -57,7 +61,13 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
         const Vec3 dx(dxs[0][c], dxs[1][c], dxs[2][c]);
         rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
       }
-      const RodResponse res = evaluate(law, strain, rate, shift[k]);
+      RodResponse res;
+      if constexpr (Temp) {
+        const double t = rod_temperature(law, temperature[ends[k][0]], temperature[ends[k][1]]);
+        res = evaluate(law, strain, rate, shift[k], t);
+      } else {
+        res = evaluate(law, strain, rate, shift[k]);
+      }
       trial_shift[k] = res.shift;
       trial_broken[k] = res.broken;
       stress[k] = res.stress;
@@ -74,8 +84,8 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
   changed = any;
 }
 
-// All the rods with one concrete law.
-template <class Law>
+// All the rods with one concrete law; 'Temp' as in rod_block.
+template <class Law, bool Temp>
 void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& view, Periodic periodic) {
   // Copies in locals: through references the compiler would reload them after every store
   // (the uint8_t stores may alias anything).
@@ -90,6 +100,7 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
   const std::uint8_t* intact = view.intact;
   const Vec3* x = view.x;
   const Vec3* v = view.v;
+  const double* temp = view.temperature;
   double* trial_shift = view.trial_shift;
   std::uint8_t* trial_broken = view.trial_broken;
   double* stress = view.stress;
@@ -102,17 +113,17 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
     // Compile-time switches: the common rate-free or non-periodic cases pay for neither.
     if (rate && periodic.on())
-      rod_block<Law, true, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
-                                 stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, true, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
+                                       trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
     else if (rate)
-      rod_block<Law, true, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
-                                  stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, true, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
+                                        trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
     else if (periodic.on())
-      rod_block<Law, false, true>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
-                                  stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, false, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
+                                        trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
     else
-      rod_block<Law, false, false>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, trial_shift, trial_broken,
-                                   stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, false, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
+                                         trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
   }
 }
 
@@ -120,7 +131,16 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
 
 void evaluate_rods(const AnyRodLaw& law, double area, const RodKernelView& view, Periodic periodic) {
   // One visit per call: the loops above see the concrete law.
-  std::visit([&](const auto& l) { evaluate_rods_with(l, area, view, periodic); }, law);
+  std::visit(
+      [&](const auto& l) {
+        using Law = std::decay_t<decltype(l)>;
+        // The temperature only where it can change the law and the World has one.
+        if constexpr (Law::kReadsTemperature)
+          if (view.temperature != nullptr && reads_temperature(l))
+            return evaluate_rods_with<Law, true>(l, area, view, periodic);
+        evaluate_rods_with<Law, false>(l, area, view, periodic);
+      },
+      law);
 }
 
 }  // namespace swarf

@@ -31,6 +31,7 @@ struct RodKernelView {
   const std::uint8_t* intact = nullptr;     ///< committed
   const Vec3* x = nullptr;                  ///< particle positions, m
   const Vec3* v = nullptr;                  ///< particle velocities, m/s
+  const double* temperature = nullptr;      ///< particle temperatures, K (0 = not set); nullptr: none (T_ref)
   double* trial_shift = nullptr;            ///< out, 1
   std::uint8_t* trial_broken = nullptr;     ///< out
   double* stress = nullptr;                 ///< out, Pa

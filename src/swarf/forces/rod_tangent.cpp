@@ -33,7 +33,17 @@ void rod_tangent_setup_with(const Law& law, double area, double kx, double kv, c
       rate = n.dot(v.v[ends[k][1]] - v.v[ends[k][0]]) * inv_l0;
     }
     // The branch of the trial (the law moved the shift only on the plastic branch) and its slopes.
-    const RodTangent t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
+    RodTangent t;
+    if constexpr (Law::kReadsTemperature) {
+      // (the temperature the kernel's evaluation read: constant over the step)
+      if (v.temperature != nullptr)
+        t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k],
+                    rod_temperature(law, v.temperature[ends[k][0]], v.temperature[ends[k][1]]));
+      else
+        t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
+    } else {
+      t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
+    }
     const double c = v.coef[k];
     v.axis[k] = n;
     v.axial[k] = kx * (t.stiffness * A * inv_l0 - c) + kv * t.damping * A * inv_l0;

@@ -48,6 +48,8 @@ struct RodTangentView {
   const Vec3* x = nullptr;                     ///< positions of that evaluation, m
   const Vec3* v = nullptr;                     ///< velocities of that evaluation, m/s (read only by a law
                                                ///< whose tangent depends on the rate)
+  const double* temperature = nullptr;         ///< particle temperatures, K (0 = not set); nullptr: none (T_ref);
+                                               ///< read by a law with kReadsTemperature
   Vec3* axis = nullptr;                        ///< out: unit axis n, 1
   double* axial = nullptr;                     ///< out: coefficient of n n^T in S_k, kg
   double* lateral = nullptr;                   ///< out: coefficient of I in S_k, kg

@@ -12,12 +12,12 @@
 
 #include <variant>
 
-#include "swarf/laws/johnson_cook_rate_rod_law.h"
+#include "swarf/laws/johnson_cook_rod_law.h"
 #include "swarf/laws/rod_law.h"
 
 namespace swarf {
 
-using AnyRodLaw = std::variant<BilinearRodLaw, JohnsonCookRateRodLaw>;
+using AnyRodLaw = std::variant<BilinearRodLaw, JohnsonCookRodLaw>;
 
 inline RodResponse evaluate(const AnyRodLaw& law, double strain, double strain_rate, double shift) {
   return std::visit([&](const auto& l) { return evaluate(l, strain, strain_rate, shift); }, law);

@@ -24,6 +24,8 @@
 //   elastic_modulus(law)                                the small-strain modulus E
 //   uses_rate(law)                                      whether evaluate reads the strain rate
 //   describe(law)                                       name and parameters with units (echo)
+// A law with the trait kReadsTemperature also has evaluate and tangent with a last argument, the
+// rod's temperature in K (the kernels pass the mean of its ends' Particles::temperature).
 // Consumers call these and never read a law's fields, so a second law cannot be misread.
 // Its state per rod is the shift (Rods::shift); the commit writes the converged evaluation's
 // shift and break flag back.
@@ -57,6 +59,8 @@ struct BilinearRodLaw {
 
   /// The tangent reads only the trial's shifts (forces/rod_tangent.cpp gathers no velocities).
   static constexpr bool kTangentReadsMotion = false;
+  /// evaluate and tangent take no temperature (a thermal law's take the rod's: johnson_cook_rod_law.h).
+  static constexpr bool kReadsTemperature = false;
 
   /// Half-width of the elastic band in stress, (E - k) eps_y, Pa.
   double band_half_width() const { return (youngs_modulus - hardening) * yield_strain; }

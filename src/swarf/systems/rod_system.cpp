@@ -53,6 +53,7 @@ void RodSystem::forces(World& m_) {
   view.intact = r.intact.data();
   view.x = p.position.data();
   view.v = p.velocity.data();
+  view.temperature = p.temperature.empty() ? nullptr : p.temperature.data();
   view.trial_shift = r.trial_shift.data();
   view.trial_broken = r.trial_broken.data();
   view.stress = r.stress.data();
