@@ -33,8 +33,8 @@ TEST(StudyTable, ResultUnitsComeFromTheTable) {
   EXPECT_EQ(ci95_key_of("chip.thickness_p10_m"), "") << "no interval declared";
 }
 
-// Short runs of each kind (a cut with Newton's solver, which adds the chip and the solver's
-// counts; a uniaxial loop), tabulated as a study of two cases: every metric
+// Short runs of each kind (a cut with Newton's solver and heat, which adds the chip, the
+// temperatures and the solver's counts; a uniaxial loop), tabulated as a study of two cases: every metric
 // column of study.csv and timing.csv has a declared unit.
 TEST(StudyTable, EveryResultOfARunIsDeclared) {
   test::TempDir dir("result_keys");
@@ -43,7 +43,8 @@ TEST(StudyTable, EveryResultOfARunIsDeclared) {
   const std::string bin = std::string(SWARF_BINARY) + " run ";
   const auto cut = test::run_command(bin + (dir / "cut.toml") + " --out " + (dir / "cut") +
                                      " --set integrator.solver=newton --set integrator.end_time=2e-5"
-                                     " --set output.steady_from=1e-5");
+                                     " --set output.steady_from=1e-5"
+                                     " --set heat.heat_capacity=486 --set heat.conductivity=50.7");
   ASSERT_EQ(cut.exit_code, 0) << cut.output;
   const auto bar = test::run_command(bin + (dir / "bar.toml") + " --out " + (dir / "bar") +
                                      " --set output.vtk=false --set output.plots=false");
@@ -67,7 +68,8 @@ TEST(StudyTable, EveryResultOfARunIsDeclared) {
   }
   EXPECT_GE(columns.size(), 80u);
   for (const char* key : {"run.newton_solves", "chip.friction_angle_deg", "uniaxial.measured.youngs_modulus_Pa",
-                          "results.reaction_base_N.x", "run.ns_per_particle_step"})
+                          "results.reaction_base_N.x", "run.ns_per_particle_step", "heat.heat_plastic_J",
+                          "chip.contact_length_m", "chip.rake_face_temperature_K"})
     EXPECT_NE(std::find(columns.begin(), columns.end(), key), columns.end()) << key << ": the runs did not reach it";
 }
 

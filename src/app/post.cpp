@@ -153,15 +153,15 @@ namespace {
 // returns the report's line ("" without any of them).
 std::string steady_extras(const CutSetup& setup, const CutData& data, nlohmann::json& chip) {
   std::string line;
-  const auto steady = [&](const char* col, const std::vector<double>& v, const char* key, double scale,
-                          const char* unit, int digits) {
+  const auto steady = [&](const char* col, const std::vector<double>& v, const char* key, const char* ci_key,
+                          double scale, const char* unit, int digits) {
     if (v.empty()) return;
     std::vector<double> x;
     for (std::size_t k = 0; k < data.time.size() && k < v.size(); ++k)
       if (data.time[k] >= setup.steady_from && v[k] > 0.0) x.push_back(v[k]);
     const SteadyStats st = steady_stats(x);
     chip[key] = x.empty() ? nlohmann::json() : nlohmann::json(st.mean);
-    chip[std::string(key) + "_ci95"] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
+    chip[ci_key] = st.has_interval() ? nlohmann::json(st.ci95) : nlohmann::json();
     line += line.empty() ? "  steady part: " : ", ";
     if (x.empty()) {
       line += fmt::format("{}: no steady rows", col);
@@ -171,9 +171,10 @@ std::string steady_extras(const CutSetup& setup, const CutData& data, nlohmann::
     line += st.has_interval() ? fmt::format(" (95 % CI +- {:.{}f} {})", scale * st.ci95, digits, unit)
                               : std::string(" (95 % CI unavailable: fewer than 20 rows)");
   };
-  steady("contact_length", data.contact_length, "contact_length_m", 1e3, "mm", 3);
-  steady("chip_temperature", data.chip_temperature, "chip_temperature_K", 1.0, "K", 0);
-  steady("rake_face_temperature", data.rake_face_temperature, "rake_face_temperature_K", 1.0, "K", 0);
+  steady("contact_length", data.contact_length, "contact_length_m", "contact_length_ci95_m", 1e3, "mm", 3);
+  steady("chip_temperature", data.chip_temperature, "chip_temperature_K", "chip_temperature_ci95_K", 1.0, "K", 0);
+  steady("rake_face_temperature", data.rake_face_temperature, "rake_face_temperature_K", "rake_face_temperature_ci95_K",
+         1.0, "K", 0);
   return line;
 }
 
