@@ -8,6 +8,15 @@ namespace swarf {
 
 namespace {
 constexpr double kDeg = M_PI / 180.0;
+
+// The rake face through the tip: the direction up the face and the outward normal (into the chip).
+struct RakeFrame {
+  Vec3 up, normal;
+};
+RakeFrame rake_frame(double rake_angle_deg) {
+  const double a = rake_angle_deg * kDeg;
+  return {Vec3(-std::sin(a), 0.0, std::cos(a)), Vec3(std::cos(a), 0.0, std::sin(a))};
+}
 }  // namespace
 
 double quantile(std::vector<double> v, double q) {
@@ -29,9 +38,7 @@ double merchant_shear_angle_deg(double gamma_deg, double beta_deg) { return 45.0
 
 ChipMetrics measure_chip(const ChipInput& in) {
   ChipMetrics m;
-  const double a = in.rake_angle_deg * kDeg;
-  // Rake face through the tip: direction up the face and the outward normal (into the chip).
-  const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  const auto [up, normal] = rake_frame(in.rake_angle_deg);
   const double section_end = std::min(3.0 * in.depth_of_cut, in.face_length);
   std::vector<double> dist;
   for (std::size_t i = 0; i < in.position.size(); ++i) {
@@ -53,8 +60,7 @@ ChipMetrics measure_chip(const ChipInput& in) {
 }
 
 double rake_contact_length(const ChipInput& in) {
-  const double a = in.rake_angle_deg * kDeg;
-  const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  const auto [up, normal] = rake_frame(in.rake_angle_deg);
   double length = 0.0;
   for (const Vec3& x : in.position) {
     const Vec3 rel = x - in.tool_tip;
@@ -70,8 +76,7 @@ ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<
   double sum = 0.0;
   for (std::size_t i : m.members) sum += temperature[i];
   if (!m.members.empty()) h.chip_mean = sum / double(m.members.size());
-  const double a = in.rake_angle_deg * kDeg;
-  const Vec3 up(-std::sin(a), 0.0, std::cos(a)), normal(std::cos(a), 0.0, std::sin(a));
+  const auto [up, normal] = rake_frame(in.rake_angle_deg);
   for (std::size_t i = 0; i < in.position.size(); ++i) {
     const Vec3 rel = in.position[i] - in.tool_tip;
     const double along = rel.dot(up), off = rel.dot(normal);

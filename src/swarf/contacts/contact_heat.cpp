@@ -49,17 +49,21 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
       const std::int32_t i = tris_[q].i, t = tris_[q].tri;
       const MeshBody& mb = meshes[tri_mesh_[t]];
       const double R = radius[i];
-      const SphereTriangleHit hit = triangle_hit(mb, tri_local_[t], tri_frame_[t], x[i], R);
-      if (!hit.touching) continue;
-      const Vec3 nrm = hit.normal;  // from the wall towards the sphere
       if (in.friction) {
-        const Vec3 F = tres_[q].force;  // on the sphere: fn n + ft
+        // The evaluation that made the force kept where it acts on the wall, x - R n: the
+        // normal follows from it, without finding the hit again (this runs every step).
+        const Vec3 at = tpoint_[q];
+        const Vec3 nrm = (1.0 / R) * (x[i] - at);  // from the wall towards the sphere
+        const Vec3 F = tres_[q].force;             // on the sphere: fn n + ft
         const Vec3 ft = F - F.dot(nrm) * nrm;
-        const Vec3 vrel = v[i] + w[i].cross(-R * nrm) - mb.velocity_at(x[i] - R * nrm);
+        const Vec3 vrel = v[i] + w[i].cross(-R * nrm) - mb.velocity_at(at);
         const Vec3 vt = vrel - vrel.dot(nrm) * nrm;
         tf[q] = std::max(0.0, -ft.dot(vt));
       }
-      if (T) tg[q] = hit.weight * contact_conductance(std::sqrt(R * hit.overlap), k, in.mesh_conductivity);
+      if (T) {  // (the conduction, every 10^4 steps or so: the contact circle of the positions now)
+        const SphereTriangleHit hit = triangle_hit(mb, tri_local_[t], tri_frame_[t], x[i], R);
+        if (hit.touching) tg[q] = hit.weight * contact_conductance(std::sqrt(R * hit.overlap), k, in.mesh_conductivity);
+      }
     }
   }
   const double* Tm = in.mesh_temperature;

@@ -131,13 +131,7 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts) {
   // Friction over the step: half to each body.
   assign(out_.friction, n);
   assign(out_.mesh_friction, nm);
-  if (contacts.enabled()) {
-    assign(out_.flux, n);
-    assign(out_.conductance, n);
-    assign(out_.mesh_flux, nm);
-    assign(out_.mesh_conductance, nm);
-    contacts.heat(p, ContactSystem::HeatInput{}, out_);  // (friction only)
-  }
+  if (contacts.enabled()) contacts.heat(p, ContactSystem::HeatInput{}, out_);  // (friction only: no flux written)
   const double c_heat = hp.heat_capacity;
   double* T = p.temperature.data();
   const double* m = p.mass.data();
