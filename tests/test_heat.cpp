@@ -118,7 +118,7 @@ TEST(Heat, OneConductionIsTheDiscreteRecurrence) {
   }
   EnergyLedger ledger;
   ContactSystem none;
-  th.heat(StepContext{w, 0.0, h, 0.25, 0.5, false, ledger}, none);
+  th.heat(StepContext{w, 0.0, h, 0.25, 0.5, false, ledger}, none, {});
   EXPECT_EQ(th.conductions(), 1);
   EXPECT_DOUBLE_EQ(th.conduction_step(), h);
   double before = 0, after = 0;
@@ -142,20 +142,21 @@ TEST(Heat, AConductionBeyondTheLimitIsSubStepped) {
   const double lim = explicit_limit(w, held);
   EnergyLedger ledger;
   ContactSystem none;
-  th.heat(StepContext{w, 0.0, 3.2 * lim, 0.25, 0.5, false, ledger}, none);
+  th.heat(StepContext{w, 0.0, 3.2 * lim, 0.25, 0.5, false, ledger}, none, {});
   EXPECT_NEAR(th.conduction_limit(), lim, 1e-12 * lim);
   EXPECT_NEAR(th.conduction_step(), 3.2 * lim / 7.0, 1e-12 * lim);  // ceil(3.2 / 0.5) = 7 sub-steps
   // Steps shorter than the interval only gather time.
-  th.heat(StepContext{w, 0.0, 0.2 * lim, 0.25, 0.5, false, ledger}, none);
+  th.heat(StepContext{w, 0.0, 0.2 * lim, 0.25, 0.5, false, ledger}, none, {});
   EXPECT_EQ(th.conductions(), 1);
-  th.heat(StepContext{w, 0.0, 0.3 * lim, 0.25, 0.5, false, ledger}, none);
+  th.heat(StepContext{w, 0.0, 0.3 * lim, 0.25, 0.5, false, ledger}, none, {});
   EXPECT_EQ(th.conductions(), 2);
 }
 
 // Runs the bar's conduction (no mechanics) for 'time' s in steps of the conduction interval.
 void conduct_for(World& w, ThermalSystem& th, EnergyLedger& ledger, double time, double step) {
   ContactSystem none;
-  for (double t = 0; t < time - 0.5 * step; t += step) th.heat(StepContext{w, t, step, 0.25, 0.5, false, ledger}, none);
+  for (double t = 0; t < time - 0.5 * step; t += step)
+    th.heat(StepContext{w, t, step, 0.25, 0.5, false, ledger}, none, {});
 }
 
 // The steady bar. Ends held at T1 and T2 (x faces); the lattice's steady state is the linear

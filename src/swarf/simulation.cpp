@@ -402,8 +402,9 @@ void Simulation::rod_forces() {
 }
 
 void Simulation::commit(double h) {
-  if (thermal_.enabled()) thermal_.heat(context(h), contacts_);
-  const RodSystem::PairList broke = rods_.commit(m_, ledger_);
+  const bool heat = thermal_.enabled();
+  const RodSystem::PairList broke = rods_.commit(m_, ledger_, heat ? &rod_work_ : nullptr);
+  if (heat) thermal_.heat(context(h), contacts_, rod_work_);
   const bool contacts = contacts_.enabled();
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   // The broken rods' pairs join the contact lists as they are: a full rebuild for each break

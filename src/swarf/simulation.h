@@ -218,6 +218,7 @@ class Simulation {
   GroupSystem groups_;
   FlowSystem flows_;
   ThermalSystem thermal_;
+  RodSystem::WorkList rod_work_;  // commit's scratch: the rods that flowed in the step (the heat's sources)
   auto systems() { return std::tie(bodies_, rods_, groups_, flows_, thermal_); }
   template <class F>
   void for_each_system(F&& f) {

@@ -18,6 +18,17 @@ namespace {
 //
 // 'Temp' (only for a law with kReadsTemperature) gives evaluate the rod's temperature, the mean
 // of its ends' (laws/johnson_cook_rod_law.h).
+// A law whose rate and temperature enter as one scale of its flow stresses, S = R(rate) Theta(T)
+// (Johnson-Cook): the kernel computes S for a chunk of rods in vector loops (the logarithm of the
+// rate factor is the expensive part) before the law's pass.
+template <class Law>
+concept ScalesFlow = requires(const Law& l) {
+  rate_factor(l, 0.0);
+  thermal_factor(l, 0.0);
+  linear_thermal_factor(l, 0.0);
+  evaluate_scaled(l, 0.0, 0.0, 0.0, 1.0);
+};
+
 template <class Law, bool Rate, bool Wrap, bool Temp>
 void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
                const double* rest_length, const double* inv_rest_length, const double* shift,
@@ -29,23 +40,57 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
   // In chunks, three passes: the rods' vectors (scalar gathers), their lengths and inverse
   // lengths (a loop of square roots and divisions the compiler vectorises: in one loop with
   // the law, their latency bound the kernel), then the law. The same values, bit for bit.
+  //
+  // A law that scales its flow stresses (ScalesFlow) has a fourth pass before the law's: the
+  // velocity differences and end temperatures are gathered with the vectors, and the rates and
+  // scales computed in a vector loop.
+  constexpr bool kScaled = ScalesFlow<Law>;
   constexpr std::size_t kChunk = 256;
   alignas(64) double dxs[3][kChunk], len_c[kChunk], inv_c[kChunk];
+  [[maybe_unused]] alignas(64) double dvs[3][kChunk], temp_c[kChunk], rate_c[kChunk], scale_c[kChunk];
   for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
     const std::size_t nc = std::min(kChunk, end - c0);
     for (std::size_t c = 0; c < nc; ++c) {
       const std::size_t k = c0 + c;
-      Vec3 dx = x[ends[k][1]] - x[ends[k][0]];
+      const std::int32_t i = ends[k][0], j = ends[k][1];
+      Vec3 dx = x[j] - x[i];
       if constexpr (Wrap) periodic.wrap(dx);
       dxs[0][c] = dx[0];
       dxs[1][c] = dx[1];
       dxs[2][c] = dx[2];
       len_c[c] = intact[k] ? dx.squaredNorm() : 1.0;  // (broken rods are skipped below)
+      if constexpr (kScaled && Rate) {
+        const Vec3 dv = v[j] - v[i];
+        dvs[0][c] = dv[0];
+        dvs[1][c] = dv[1];
+        dvs[2][c] = dv[2];
+      }
+      if constexpr (kScaled && Temp) temp_c[c] = rod_temperature(law, temperature[i], temperature[j]);
     }
 #pragma omp simd
     for (std::size_t c = 0; c < nc; ++c) {
       len_c[c] = std::sqrt(len_c[c]);
       inv_c[c] = 1.0 / len_c[c];
+    }
+    if constexpr (kScaled) {
+#pragma omp simd
+      for (std::size_t c = 0; c < nc; ++c) {
+        double rate = 0.0;
+        if constexpr (Rate)
+          rate = (dxs[0][c] * dvs[0][c] + dxs[1][c] * dvs[1][c] + dxs[2][c] * dvs[2][c]) * inv_c[c] *
+                 inv_rest_length[c0 + c];
+        rate_c[c] = rate;
+        scale_c[c] = rate_factor(law, rate);
+      }
+      // Theta: at m = 1 in a vector loop; otherwise (a call to pow) one rod at a time.
+      if constexpr (Temp) {
+        if (law.softening_exponent == 1.0) {
+#pragma omp simd
+          for (std::size_t c = 0; c < nc; ++c) scale_c[c] *= linear_thermal_factor(law, temp_c[c]);
+        } else {
+          for (std::size_t c = 0; c < nc; ++c) scale_c[c] *= thermal_factor(law, temp_c[c]);
+        }
+      }
     }
     for (std::size_t c = 0; c < nc; ++c) {
       const std::size_t k = c0 + c;
@@ -56,13 +101,17 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
       const double inv_l0 = inv_rest_length[k];
       const double strain = (len - l0) * inv_l0;
       double rate = 0.0;
-      if constexpr (Rate) {
+      if constexpr (kScaled) {
+        rate = rate_c[c];
+      } else if constexpr (Rate) {
         const std::int32_t i = ends[k][0], j = ends[k][1];
         const Vec3 dx(dxs[0][c], dxs[1][c], dxs[2][c]);
         rate = dx.dot(v[j] - v[i]) * inv_len * inv_l0;
       }
       RodResponse res;
-      if constexpr (Temp) {
+      if constexpr (kScaled) {
+        res = evaluate_scaled(law, strain, rate, shift[k], scale_c[c]);
+      } else if constexpr (Temp) {
         const double t = rod_temperature(law, temperature[ends[k][0]], temperature[ends[k][1]]);
         res = evaluate(law, strain, rate, shift[k], t);
       } else {

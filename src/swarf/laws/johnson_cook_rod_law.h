@@ -52,6 +52,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "swarf/core/series_log.h"
 #include "swarf/laws/rod_law.h"
 
 namespace swarf {
@@ -74,17 +75,40 @@ struct JohnsonCookRodLaw {
 };
 
 /// The rate factor R = 1 + C ln(max(kappa |rate| / rate_ref, 1)) of a rod strain rate, 1.
+/// Branch-free and with the series logarithm (core/series_log.h), so that the rod kernel computes
+/// it for a vector of rods at once; below rate_ref ln(max(x, 1)) = 0 exactly and R = 1.
 inline double rate_factor(const JohnsonCookRodLaw& law, double strain_rate) {
   const double x = law.rate_to_equivalent * std::fabs(strain_rate) / law.reference_rate;
-  return x > 1.0 ? 1.0 + law.rate_sensitivity * std::log(x) : 1.0;
+  return 1.0 + law.rate_sensitivity * series_log_at_least_one(x);
 }
 
-/// The thermal factor Theta = max(1 - T*^m, 1e-3) at the rod temperature T (K), 1.
-inline double thermal_factor(const JohnsonCookRodLaw& law, double temperature) {
+/// The homologous temperature T* = clamp((T - T_ref)/(T_melt - T_ref), 0, 1) of a rod at T (K), 1;
+/// at or below T_ref (also T = 0, not set) T* = 0. Written as a quotient computed always and
+/// selects of it, which a vector loop runs (an early return or a conditional division keeps it
+/// scalar).
+inline double homologous_temperature(const JohnsonCookRodLaw& law, double temperature) {
   const double t_ref = law.reference_temperature;
-  if (!(temperature > t_ref)) return 1.0;  // (also T = 0, not set)
-  const double ts = std::min((temperature - t_ref) / (law.melt_temperature - t_ref), 1.0);
-  return std::max(1.0 - std::pow(ts, law.softening_exponent), 1e-3);
+  double ts = (temperature - t_ref) / (law.melt_temperature - t_ref);
+  ts = ts < 0.0 ? 0.0 : ts;
+  return ts > 1.0 ? 1.0 : ts;
+}
+
+/// Theta for m = 1 (the steels' exponent), without the call to pow: a vector loop can run it.
+inline double linear_thermal_factor(const JohnsonCookRodLaw& law, double temperature) {
+  const double theta = 1.0 - homologous_temperature(law, temperature);
+  return theta < 1e-3 ? 1e-3 : theta;
+}
+
+/// The thermal factor Theta = max(1 - T*^m, 1e-3) at the rod temperature T (K), 1; Theta = 1 at
+/// or below T_ref.
+inline double thermal_factor(const JohnsonCookRodLaw& law, double temperature) {
+  if (law.softening_exponent == 1.0) return linear_thermal_factor(law, temperature);  // (pow(x, 1) is x)
+  return std::max(1.0 - std::pow(homologous_temperature(law, temperature), law.softening_exponent), 1e-3);
+}
+
+/// The flow stress scale S = R(rate) Theta(T) of a rod at its strain rate (1/s) and temperature (K).
+inline double flow_scale(const JohnsonCookRodLaw& law, double strain_rate, double temperature) {
+  return rate_factor(law, strain_rate) * thermal_factor(law, temperature);
 }
 
 /// A rod's temperature from its ends' (0 = not set: T_ref), K.

@@ -137,7 +137,8 @@ struct CommitArrays {
 // (Measured with callgrind: validation/bench/README.md, the systems restructuring.)
 template <class Law>
 void commit_block(const Law law, double A, std::size_t begin, std::size_t end, const CommitArrays arrays,
-                  double& plastic, double& fracture, std::size_t& broke_original, RodSystem::PairList& pairs) {
+                  double& plastic, double& fracture, std::size_t& broke_original, RodSystem::PairList& pairs,
+                  RodSystem::WorkList* works) {
   std::uint8_t* intact = arrays.intact;
   const std::uint8_t* trial_broken = arrays.trial_broken;
   const std::uint8_t* formed = arrays.formed;
@@ -152,8 +153,10 @@ void commit_block(const Law law, double A, std::size_t begin, std::size_t end, c
     if (!intact[k]) continue;
     const double dshift = trial_shift[k] - shift[k];
     if (dshift != 0.0) {
-      plastic_b += plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
+      const double w = plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
+      plastic_b += w;
       shift[k] = trial_shift[k];
+      if (works) works->push_back({ends[k], w});
     }
     if (trial_broken[k]) {
       intact[k] = 0;
@@ -170,7 +173,7 @@ void commit_block(const Law law, double A, std::size_t begin, std::size_t end, c
 
 }  // namespace
 
-RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
+RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList* work) {
   auto& r = m_.rods;
   const double A = r.area;
   const std::size_t m = r.size();
@@ -181,6 +184,10 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
   // The rods that break now, per block: their pairs become contact candidates (and their
   // particles may become free to rotate).
   std::vector<PairList> broken_pairs(nb);
+  if (work) {
+    work->clear();
+    if (block_work_.size() != nb) block_work_.resize(nb);
+  }
   // One visit: the loop over the blocks sees the concrete law (commit_block).
   std::visit(
       [&](const auto& law) {
@@ -189,9 +196,11 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
         const int* changed = block_changed_.data();
 #pragma omp parallel for schedule(static) if (nb > 0)
         for (std::size_t b = 0; b < nb; ++b) {
+          WorkList* wb = work ? &block_work_[b] : nullptr;
+          if (wb) wb->clear();
           if (!changed[b]) continue;  // no rod of the block yielded or broke
           commit_block(law, A, b * kBlock, std::min(m, (b + 1) * kBlock), a, plastic[b], fracture[b], broke_original[b],
-                       broken_pairs[b]);
+                       broken_pairs[b], wb);
         }
       },
       r.law);
@@ -201,6 +210,7 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger) {
     ledger.fracture_energy += fracture[b];
     broken_ += broke_original[b];
     pairs.insert(pairs.end(), broken_pairs[b].begin(), broken_pairs[b].end());
+    if (work) work->insert(work->end(), block_work_[b].begin(), block_work_[b].end());
   }
   return pairs;
 }

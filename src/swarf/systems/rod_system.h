@@ -35,6 +35,12 @@ class StateArchive;
 class RodSystem {
  public:
   using PairList = std::vector<std::array<std::int32_t, 2>>;
+  /// A rod's plastic work over a committed step, J, with its ends (the heat's source).
+  struct RodWork {
+    std::array<std::int32_t, 2> ends;
+    double work;
+  };
+  using WorkList = std::vector<RodWork>;
 
   /// Marks the rods as the lattice's own if the World does not say, finds the meshes' parting
   /// edges and sizes the per-block scratch.
@@ -45,8 +51,10 @@ class RodSystem {
   /// Evaluates every intact rod (the trial state; nothing committed changes).
   void forces(World& w);
   /// Commits the final evaluation: shifts, breaks, plastic work and fracture energy. Returns
-  /// the pairs whose rods broke now (in rod order).
-  PairList commit(World& w, EnergyLedger& ledger);
+  /// the pairs whose rods broke now (in rod order). With 'work', also the rods whose shift moved
+  /// and their plastic work, in rod order (the heat's sources: only the rods that flowed, which
+  /// the commit visits anyway, instead of a pass over every particle's rods).
+  PairList commit(World& w, EnergyLedger& ledger, WorkList* work = nullptr);
   /// Bond formation and neighbour exchange after the commit (with contacts only): new rods
   /// between pressed lattice pairs; the contact lists lose the formed pairs and gain the
   /// exchanged ones. Returns the pairs whose particles gained or lost a rod.
@@ -78,6 +86,8 @@ class RodSystem {
   std::vector<int> intact_count_;      // form's scratch: a particle's intact rods, -1 = not counted yet
   std::vector<double> block_viscous_;  // per rod block: viscous power of the last evaluation, W
   std::vector<int> block_changed_;     // per rod block: a trial shift or break to commit
+  std::vector<WorkList>
+      block_work_;  // commit's scratch per rod block: the rods that flowed (kept: no allocation per step)
 };
 
 }  // namespace swarf

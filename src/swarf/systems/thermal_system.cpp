@@ -51,9 +51,11 @@ void ThermalSystem::resize(World& w) {
   auto& p = w.particles;
   const auto& held = w.heat.held;
   held_.assign(p.size(), 0);
+  held_list_.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::int32_t g = p.group[i];
     held_[i] = g >= 0 && static_cast<std::size_t>(g) < held.size() && held[g];
+    if (held_[i]) held_list_.push_back(static_cast<std::int32_t>(i));
     if (p.temperature[i] == 0.0) p.temperature[i] = w.heat.initial_temperature;
   }
   if (tool_t_.size() != w.meshes.size()) tool_t_.resize(w.meshes.size(), w.heat.tool_temperature);
@@ -99,34 +101,26 @@ void ThermalSystem::fluxes(const World& w, const ContactSystem& contacts) {
   }
 }
 
-void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts) {
+void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts, const RodSystem::WorkList& plastic) {
   if (!enabled_) return;
   World& w = c.world;
   auto& p = w.particles;
-  const auto& r = w.rods;
   const HeatParams& hp = w.heat;
   const std::size_t n = p.size(), nm = w.meshes.size();
   const double h = c.h;
-  // Sources. The plastic work of each rod's trial, as the commit will book it (half per end).
+  // Sources. The plastic work of the rods that flowed (the commit's list, in rod order: the same
+  // sums for any thread count), half per end.
   assign(plastic_, n);
-  if (r.size() > 0 && r.row_start.size() == n + 1 && hp.taylor_quinney > 0.0) {
-    const double A = r.area, half_beta = 0.5 * hp.taylor_quinney;
+  double plastic_heat = 0.0;
+  if (hp.taylor_quinney > 0.0) {
+    const double half_beta = 0.5 * hp.taylor_quinney;
     double* q = plastic_.data();
-    std::visit(
-        [&](const auto& law) {
-#pragma omp parallel for schedule(static)
-          for (std::size_t i = 0; i < n; ++i) {
-            double s = 0.0;
-            for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
-              const std::int32_t k = r.entries[e].rod;
-              if (!r.intact[k]) continue;
-              const double dshift = r.trial_shift[k] - r.shift[k];
-              if (dshift != 0.0) s += plastic_work_density(law, r.stress[k], dshift) * A * r.rest_length[k];
-            }
-            q[i] = half_beta * s;
-          }
-        },
-        r.law);
+    for (const RodSystem::RodWork& r : plastic) {
+      const double e = half_beta * r.work;
+      q[r.ends[0]] += e;
+      q[r.ends[1]] += e;
+      plastic_heat += 2.0 * e;  // (the ledger's sum over the same list: no pass over the particles)
+    }
   }
   // Friction over the step: half to each body.
   assign(out_.friction, n);
@@ -141,8 +135,10 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
     if (m[i] > 0.0 && !held[i]) T[i] += (qp[i] + h * qf[i]) / (m[i] * c_heat);
-  c.ledger.heat_to_clamps += deterministic_sum(n, [&](std::size_t i) { return held[i] ? qp[i] + h * qf[i] : 0.0; });
-  c.ledger.heat_plastic += deterministic_sum(n, [&](std::size_t i) { return qp[i]; });
+  double clamped = 0.0;  // (over the clamps' particles only, in index order)
+  for (const std::int32_t i : held_list_) clamped += qp[i] + h * qf[i];
+  c.ledger.heat_to_clamps += clamped;
+  c.ledger.heat_plastic += plastic_heat;
   const double particle_friction = deterministic_sum(n, [&](std::size_t i) { return qf[i]; });
   double tool_friction = 0.0;
   for (std::size_t k = 0; k < nm; ++k) {

@@ -1,11 +1,11 @@
 // thermal_system.h: the heat in the workpiece and at the tools (issue 33; docs/physics.md,
 // "Heat"): a temperature per particle (Particles::temperature), its sources and conduction.
 //
-// Stages (simulation.h), after a step has converged and before the rods' commit:
-//   sources    the Taylor-Quinney fraction of each rod's plastic work of the step (the trial
-//              shift against the committed one: what the commit books as plastic work), half
-//              to each end; the frictional power of every touching contact over the step,
-//              half to each body (a mesh's half to the tool)
+// Stages (simulation.h), after a step has converged, after the rods' commit and before the
+// contacts':
+//   sources    the Taylor-Quinney fraction of each rod's plastic work of the step (the list
+//              the rods' commit hands over: what it booked as plastic work), half to each end; the frictional power of
+//              every touching contact over the step, half to each body (a mesh's half to the tool)
 //   conduction through the intact rods and the touching contacts (laws/heat_conduction.h),
 //              forward Euler, when the time since the last conduction reaches the interval
 //              set by the explicit limit (C_i / sum_j G_ij times heat.stability_fraction):
@@ -33,6 +33,7 @@
 #include "swarf/contacts/contacts.h"
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
+#include "swarf/systems/rod_system.h"
 #include "swarf/systems/step_context.h"
 
 namespace swarf {
@@ -48,8 +49,10 @@ class ThermalSystem {
   void resize(World& w);
   bool enabled() const { return enabled_; }
 
-  /// The heat of a converged step of size c.h (before the rods' commit: it reads their trial).
-  void heat(const StepContext& c, const ContactSystem& contacts);
+  /// The heat of a converged step of size c.h: 'plastic' is the rods' commit's list of the rods
+  /// that flowed and their plastic work (RodSystem::commit); before the contacts' commit (it
+  /// reads their step's friction).
+  void heat(const StepContext& c, const ContactSystem& contacts, const RodSystem::WorkList& plastic);
   /// The heat the particles flagged in 'remove' carry out of the workpiece, J (relative to the
   /// initial temperature); booked by the caller before it removes them.
   double carried(const World& w, const std::vector<std::uint8_t>& remove) const;
@@ -80,15 +83,16 @@ class ThermalSystem {
   void fluxes(const World& w, const ContactSystem& contacts);
 
   bool enabled_ = false;
-  std::vector<double> tool_t_;      // state: per mesh, K
-  double pending_ = 0.0;            // state: time since the last conduction, s
-  double interval_ = 0.0;           // state: time between conductions, s (0: at the next step)
-  double limit_ = 0.0;              // the last conduction's explicit limit, s
-  double last_step_ = 0.0;          // the last conduction's (sub-)step, s
-  std::int64_t conductions_ = 0;    // state: conduction passes so far
-  std::vector<std::uint8_t> held_;  // per particle: 1 = held at the initial temperature (heat.held)
-  std::vector<double> plastic_;     // scratch per particle: the step's plastic heat, J
-  ContactSystem::HeatOutput out_;   // scratch: friction, conduction and conductance per particle and mesh
+  std::vector<double> tool_t_;           // state: per mesh, K
+  double pending_ = 0.0;                 // state: time since the last conduction, s
+  double interval_ = 0.0;                // state: time between conductions, s (0: at the next step)
+  double limit_ = 0.0;                   // the last conduction's explicit limit, s
+  double last_step_ = 0.0;               // the last conduction's (sub-)step, s
+  std::int64_t conductions_ = 0;         // state: conduction passes so far
+  std::vector<std::uint8_t> held_;       // per particle: 1 = held at the initial temperature (heat.held)
+  std::vector<std::int32_t> held_list_;  // the held particles' indices, ascending (the clamps' heat sum)
+  std::vector<double> plastic_;          // scratch per particle: the step's plastic heat, J
+  ContactSystem::HeatOutput out_;        // scratch: friction, conduction and conductance per particle and mesh
 };
 
 }  // namespace swarf
