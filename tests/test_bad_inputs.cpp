@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -151,6 +152,77 @@ TEST(BadInput, NonsenseAndInputErrorsAreRefusedBeforeSteppingByFileKeyAndValue) 
           {"flows.toml", "inflow.box_min", "-3e+200"});
   refused(flows("outflow.0.plane_normal=[0.0,0.0,-1e-310]"), {"flows.toml", "outflow.plane_normal", "-1e-310"});
   EXPECT_FALSE(std::filesystem::exists(dir / "out/summary.json.part"));
+}
+
+// Issue 37, class A: runs that could never finish started and sat silently. Those a single key
+// makes so are refused by its range; the rest by the estimate before the first step: the step
+// count over integrator.max_steps (--allow-long passes it), an inflow asking more particles in
+// a step than its box holds, the particles of the inflows beyond the machine's memory.
+TEST(BadInput, RunsThatCannotFinishAreRefusedBeforeTheFirstStep) {
+  TempDir dir("cannot_finish");
+  const auto bar = [&](const std::string& args) { return run_bar(dir, args); };
+  const auto flows = [&](const std::string& args) { return run_text(dir, "flows.toml", kFlows, args); };
+  const auto refused = [&](const test::CommandResult& r, std::initializer_list<std::string> words) {
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    for (const std::string& w : words)
+      EXPECT_NE(r.output.find(w), std::string::npos) << "the message should name '" << w << "':\n" << r.output;
+    EXPECT_EQ(r.output.find("steps (verlet)"), std::string::npos) << "it stepped:\n" << r.output;
+  };
+  // By the keys' ranges (a stable step of 1e-150 s, an end time or a step of denormals, an
+  // iteration that cannot converge and a step that shrinks by 1e-6 a try).
+  refused(bar("--set material.youngs_modulus=3e200"), {"material.youngs_modulus", "3e+200"});
+  refused(bar("--set integrator.end_time=4e-320"), {"integrator.end_time", "4e-320"});
+  refused(bar("--set integrator.scheme='\"verlet\"' --set integrator.dt=2e-318"), {"integrator.dt", "2e-318"});
+  refused(bar("--set integrator.tolerance=1e-200"), {"integrator.tolerance", "1e-200"});
+  refused(bar("--set integrator.reject_factor=0.9999"), {"integrator.reject_factor", "0.9999"});
+  refused(bar("--set integrator.dt_min=3e-280"), {"integrator.dt_min", "3e-280"});
+  // By the step count: a given step, the step control's largest step, a stable step made tiny
+  // by an inflow's radius; each names the keys, the count and the time.
+  refused(bar("--set integrator.scheme='\"verlet\"' --set integrator.dt=2e-15"),
+          {"bar.toml", "integrator.end_time", "steps of 2e-15 s", "integrator.dt = 2e-15 s", "max_steps = 1e+08",
+           "ns per particle-step", "--allow-long"});
+  refused(bar("--set integrator.scheme='\"newmark\"' --set integrator.dt=2e-15 --set integrator.dt_min=1e-15 "
+              "--set integrator.dt_max=3e-15"),
+          {"integrator.dt_max = 3e-15 s", "steps of 3e-15 s"});
+  refused(flows("--set inflow.0.radius_min=3e-9 --set integrator.end_time=1e-3"),
+          {"flows.toml", "the stable step", "inflow radii", "3e-09 m"});
+  // The limit is a key, and --allow-long passes it on purpose (the bar then runs to its end).
+  const std::string verlet = "--set integrator.scheme='\"verlet\"' ";  // (some 30 steps of 6.6e-8 s)
+  refused(bar(verlet + "--set integrator.max_steps=20"), {"integrator.max_steps = 20"});
+  const auto on_purpose = bar(verlet + "--set integrator.max_steps=20 --allow-long");
+  EXPECT_EQ(on_purpose.exit_code, 0) << on_purpose.output;
+  // Inflows: more particles a step than the box holds; more over the run than the memory holds.
+  refused(flows("--set inflow.0.rate=4e11"), {"flows.toml", "inflow.rate", "4e+11", "more than its box can hold"});
+  refused(flows("--set integrator.end_time=5e4"), {"flows.toml", "inflow.rate", "integrator.end_time", "GB", "--force"});
+}
+
+// Issue 37, class D: an outflow half-space that holds the inflow's box (every new particle
+// removed one step after it came) stopped with "energy balance lost" and exit code 3, on both
+// schemes, with gravity. It completes now; and a run where no particle was ever present
+// writes a strict summary.json, its cost per particle-step null with the reason.
+TEST(BadInput, AnOutflowHoldingTheInflowCompletesAndAnEmptyRunHasNullFigures) {
+  TempDir dir("outflow_holds_inflow");
+  std::string held = kFlows;
+  const std::string plane = "plane_point = [0.0, 0.0, -0.01]";
+  held.replace(held.find(plane), plane.size(), "plane_point = [0.0, 0.0, 0.5]");
+  held += "[environment]\ngravity = [0.0, -3.0, -9.81]\n";
+  for (const char* scheme : {"verlet", "newmark"}) {
+    const auto r = run_text(dir, "held.toml", held,
+                            fmt::format("--set integrator.scheme='\"{}\"' --set inflow.0.rate=3e3 "
+                                        "--set integrator.end_time=2e-3",
+                                        scheme));
+    EXPECT_EQ(r.exit_code, 0) << scheme << "\n" << r.output;
+    const auto summary = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
+    EXPECT_GT(summary["flows"]["outflow_removed"].get<double>(), 2) << scheme;
+  }
+  const auto empty = run_text(dir, "held.toml", held, "--set inflow.0.rate=1.0 --set integrator.end_time=1e-4");
+  ASSERT_EQ(empty.exit_code, 0) << empty.output;
+  const std::string text = test::read_file(dir / "out/summary.json");
+  EXPECT_EQ(text.find("NaN"), std::string::npos);
+  EXPECT_EQ(text.find("Infinity"), std::string::npos);
+  const auto summary = nlohmann::json::parse(text);  // (strict: throws on anything but JSON)
+  EXPECT_TRUE(summary["run"]["ns_per_particle_step"].is_null());
+  EXPECT_NE(summary["run"]["ns_per_particle_step_reason"].get<std::string>().find("no particle"), std::string::npos);
 }
 
 TEST(BadInput, OutputIntervalsThatCouldNeverAdvanceAreRefused) {

@@ -334,8 +334,8 @@ TEST(CaseKeys, UnitsOfEveryKey) {
 // that made none of the checkpoint's state (app/run.cpp refuses the others by name).
 TEST(CaseKeys, RestartableKeysAreFlaggedInTheTable) {
   EXPECT_EQ(restartable_keys(),
-            (std::vector<std::string>{"integrator.end_time", "output.frame_interval", "output.series_interval",
-                                      "output.plots", "output.progress", "output.steady_from",
+            (std::vector<std::string>{"integrator.end_time", "integrator.max_steps", "output.frame_interval",
+                                      "output.series_interval", "output.plots", "output.progress", "output.steady_from",
                                       "output.checkpoint_every", "output.checkpoint_at_end", "output.fields"}));
   const std::string doc = test::read_file(kDoc);
   EXPECT_NE(doc.find("<!-- keys:restartable begin -->\n| key | unit |\n|---|---|\n| `integrator.end_time` | s |"),

@@ -495,6 +495,16 @@ const std::vector<Key<IntegratorSettings>>& integrator_keys() {
               "on the free components; the run stops (exit code 3) if a particle moves further, or if the state "
               "becomes non-finite. newmark: measured on the whole displacement from the start of the step, "
               "prescribed components included; the step is rejected and retried shorter."},
+      {.name = "max_steps",
+       .field = &S::max_steps,
+       .unit = "1",
+       .range = in(1, 1e15, "[]"),
+       .doc = "A run whose step count, estimated before the first step as `end_time` over the step (verlet: `dt`; "
+              "newmark: `dt_max`, the fewest it can take), exceeds this is refused (exit code 2) with the keys that "
+              "set the step, the count and the time it would take at about 100 ns per particle-step; `swarf run "
+              "--allow-long` runs it anyway. 1e8 steps is some 300 times the default cut's (a judgement: a run that "
+              "long is a mistake far more often than an intent).",
+       .restartable = true},
       {.name = "beta",
        .field = &S::beta,
        .unit = "1",
