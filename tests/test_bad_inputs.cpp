@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -75,6 +76,153 @@ TEST(BadInput, AbsurdSizesThatMakeTheStepNaNOrZeroAreRefusedNotRetriedForEver) {
   expect_refused(run_bar(dir, "--set workpiece.radius=1e-300"), "workpiece.radius");
   expect_refused(run_bar(dir, "--set material.density=1e-300"), "material.density");
   expect_refused(run_bar(dir, "--set material.density=1e300"), "material.density");
+}
+
+// A stream of spheres from an inflow box into an outflow below; a rigid box whose mass
+// properties are given (issue 37's probe tables: [[inflow]], [[outflow]], rigid bodies).
+const std::string kFlows =
+    "[material]\ndensity = 2500.0\n[contact]\nyoungs_modulus = 1e8\n"
+    "[[inflow]]\nbox_min = [0.0, 0.0, 0.0]\nbox_max = [0.01, 0.01, 0.002]\nrate = 2e4\nradius_min = 0.4e-3\n"
+    "radius_max = 0.6e-3\nvelocity = [0.0, 0.0, -2.0]\n"
+    "[[outflow]]\nplane_point = [0.0, 0.0, -0.01]\nplane_normal = [0.0, 0.0, -1.0]\n"
+    "[integrator]\nscheme = \"verlet\"\nend_time = 2e-5\n[output]\nvtk = false\nplots = false\n";
+const std::string kBody =
+    "[[particle]]\nposition = [1.0, 1.0, 1.0]\nradius = 1e-3\n[material]\ndensity = 1000.0\n[contact]\n"
+    "[integrator]\nend_time = 1e-5\n[output]\nvtk = false\nplots = false\n"
+    "[[mesh]]\nname = \"b\"\ndynamics = \"rigid_body\"\nbox_size = [0.02, 0.04, 0.06]\norigin = [0.1, 0.2, 0.3]\n"
+    "mass = 0.1\ncentre_of_mass = [0.1, 0.2, 0.3]\ninertia = [4e-5, 3e-5, 2e-5, 0.0, 0.0, 0.0]\n";
+
+// 'swarf run' of 'text' (written as NAME) with the overrides, under a time limit.
+test::CommandResult run_text(const TempDir& dir, const std::string& name, const std::string& text,
+                             const std::string& args) {
+  write_file(dir / name, text);
+  return run_command(
+      fmt::format("timeout 120 {} run {} --out {} --threads 1 {}", SWARF_BINARY, dir / name, dir / "out", args));
+}
+
+// Issue 37, classes B (nonsense accepted: exit 0 and a summary that looked complete) and C
+// (input errors reported as blow-ups: exit 3 after stepping). Each is now refused before a
+// step with exit 2 and a message naming the file, the key and the value; the values are this
+// matrix's own, not the probe's. Each case runs as it is (exit 0) without the override.
+TEST(BadInput, NonsenseAndInputErrorsAreRefusedBeforeSteppingByFileKeyAndValue) {
+  TempDir dir("nonsense");
+  ASSERT_EQ(run_bar(dir, "").exit_code, 0);
+  ASSERT_EQ(run_text(dir, "flows.toml", kFlows, "").exit_code, 0);
+  ASSERT_EQ(run_text(dir, "body.toml", kBody, "").exit_code, 0);
+  const auto refused = [&](const test::CommandResult& r, std::initializer_list<std::string> words) {
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    for (const std::string& w : words)
+      EXPECT_NE(r.output.find(w), std::string::npos) << "the message should name '" << w << "':\n" << r.output;
+  };
+  const auto bar = [&](const std::string& set) { return run_bar(dir, "--set " + set); };
+  // (the bar with a flow curve in place of its yield strain and hardening modulus)
+  std::string curved = kBar;
+  for (const std::string line : {"yield_strain = 1e-3\n", "hardening_modulus = 20e9\n"})
+    curved.erase(curved.find(line), line.size());
+  const auto curve = [&](const std::string& set) { return run_text(dir, "bar.toml", curved, "--set " + set); };
+  const auto flows = [&](const std::string& set) { return run_text(dir, "flows.toml", kFlows, "--set " + set); };
+  const auto body = [&](const std::string& set) { return run_text(dir, "body.toml", kBody, "--set " + set); };
+  const auto fine = curve("rod.flow_plastic_strain=[0.0,0.2] --set rod.flow_stress=[2e8,3e8]");
+  ASSERT_EQ(fine.exit_code, 0) << fine.output;
+  // B: a flow curve of zeros, of absurd stresses, one above E, one steeper than E.
+  refused(curve("rod.flow_plastic_strain=[0.0,0.2] --set rod.flow_stress=[0.0,0.0]"),
+          {"bar.toml", "rod.flow_stress", "[0, 0]", "entry 0 = 0"});
+  refused(curve("rod.flow_plastic_strain=[0.0,0.2] --set rod.flow_stress=[3e250,3e250]"),
+          {"bar.toml", "rod.flow_stress", "3e+250"});
+  refused(curve("rod.flow_plastic_strain=[0.0,0.2] --set rod.flow_stress=[3e11,4e11]"),
+          {"bar.toml", "rod.flow_stress", "below the Young's modulus rod.youngs_modulus = 200000000000 Pa"});
+  refused(curve("rod.flow_plastic_strain=[0.0,1e-4] --set rod.flow_stress=[4e8,9e8]"),
+          {"bar.toml", "rod.flow_stress", "rises by 500000000 Pa", "a hardening modulus above E"});
+  refused(bar("material.youngs_modulus=7e250"), {"bar.toml", "material.youngs_modulus", "7e+250", "1e15"});
+  // B: inflow boxes far away, too wide, of no volume; an outflow normal of subnormal length.
+  refused(flows("inflow.0.box_min=[4e7,0.0,0.0]"), {"flows.toml", "inflow.box_min", "40000000", "within 1 km"});
+  refused(flows("inflow.0.box_max=[3e5,0.01,0.002]"), {"flows.toml", "inflow.box_max", "300000"});
+  refused(flows("inflow.0.box_max=[0.01,0.01,0.0]"), {"flows.toml", "inflow.box_max", "no volume"});
+  refused(flows("outflow.0.plane_normal=[0.0,3e-315,0.0]"), {"flows.toml", "outflow.plane_normal", "3e-315"});
+  refused(flows("outflow.0.plane_normal=[0.0,0.0,-2e-9]"), {"flows.toml", "outflow.plane_normal", "at least 1e-6"});
+  // B: a rigid body of a negligible mass, or of an inertia that no body of its mass has.
+  refused(body("mesh.0.mass=7e-150"), {"body.toml", "mesh.mass", "7e-150", "kg"});
+  refused(body("mesh.0.inertia=[2e-230,2e-230,2e-230,0.0,0.0,0.0]"),
+          {"body.toml", "'inertia'", "2e-230", "radius of gyration"});
+  refused(body("mesh.0.inertia=[2e7,2e7,2e7,0.0,0.0,0.0]"), {"body.toml", "'inertia'", "2e+07", "radius of gyration"});
+  // C: a negative flow stress, an inflow box across the doubles, a normal of length 1e-310.
+  refused(curve("rod.flow_plastic_strain=[0.0,0.2] --set rod.flow_stress=[-2e8,3e8]"),
+          {"bar.toml", "rod.flow_stress", "-200000000"});
+  refused(flows("inflow.0.box_min=[-3e200,-3e200,-3e200] --set inflow.0.box_max=[3e200,3e200,3e200]"),
+          {"flows.toml", "inflow.box_min", "-3e+200"});
+  refused(flows("outflow.0.plane_normal=[0.0,0.0,-1e-310]"), {"flows.toml", "outflow.plane_normal", "-1e-310"});
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/summary.json.part"));
+}
+
+// Issue 37, class A: runs that could never finish started and sat silently. Those a single key
+// makes so are refused by its range; the rest by the estimate before the first step: the step
+// count over integrator.max_steps (--allow-long passes it), an inflow asking more particles in
+// a step than its box holds, the particles of the inflows beyond the machine's memory.
+TEST(BadInput, RunsThatCannotFinishAreRefusedBeforeTheFirstStep) {
+  TempDir dir("cannot_finish");
+  const auto bar = [&](const std::string& args) { return run_bar(dir, args); };
+  const auto flows = [&](const std::string& args) { return run_text(dir, "flows.toml", kFlows, args); };
+  const auto refused = [&](const test::CommandResult& r, std::initializer_list<std::string> words) {
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    for (const std::string& w : words)
+      EXPECT_NE(r.output.find(w), std::string::npos) << "the message should name '" << w << "':\n" << r.output;
+    EXPECT_EQ(r.output.find("steps (verlet)"), std::string::npos) << "it stepped:\n" << r.output;
+  };
+  // By the keys' ranges (a stable step of 1e-150 s, an end time or a step of denormals, an
+  // iteration that cannot converge and a step that shrinks by 1e-6 a try).
+  refused(bar("--set material.youngs_modulus=3e200"), {"material.youngs_modulus", "3e+200"});
+  refused(bar("--set integrator.end_time=4e-320"), {"integrator.end_time", "4e-320"});
+  refused(bar("--set integrator.scheme='\"verlet\"' --set integrator.dt=2e-318"), {"integrator.dt", "2e-318"});
+  refused(bar("--set integrator.tolerance=1e-200"), {"integrator.tolerance", "1e-200"});
+  refused(bar("--set integrator.reject_factor=0.9999"), {"integrator.reject_factor", "0.9999"});
+  refused(bar("--set integrator.dt_min=3e-280"), {"integrator.dt_min", "3e-280"});
+  // By the step count: a given step, the step control's largest step, a stable step made tiny
+  // by an inflow's radius; each names the keys, the count and the time.
+  refused(bar("--set integrator.scheme='\"verlet\"' --set integrator.dt=2e-15"),
+          {"bar.toml", "integrator.end_time", "steps of 2e-15 s", "integrator.dt = 2e-15 s", "max_steps = 1e+08",
+           "ns per particle-step", "--allow-long"});
+  refused(bar("--set integrator.scheme='\"newmark\"' --set integrator.dt=2e-15 --set integrator.dt_min=1e-15 "
+              "--set integrator.dt_max=3e-15"),
+          {"integrator.dt_max = 3e-15 s", "steps of 3e-15 s"});
+  refused(flows("--set inflow.0.radius_min=3e-9 --set integrator.end_time=1e-3"),
+          {"flows.toml", "the stable step", "inflow radii", "3e-09 m"});
+  // The limit is a key, and --allow-long passes it on purpose (the bar then runs to its end).
+  const std::string verlet = "--set integrator.scheme='\"verlet\"' ";  // (some 30 steps of 6.6e-8 s)
+  refused(bar(verlet + "--set integrator.max_steps=20"), {"integrator.max_steps = 20"});
+  const auto on_purpose = bar(verlet + "--set integrator.max_steps=20 --allow-long");
+  EXPECT_EQ(on_purpose.exit_code, 0) << on_purpose.output;
+  // Inflows: more particles a step than the box holds; more over the run than the memory holds.
+  refused(flows("--set inflow.0.rate=4e11"), {"flows.toml", "inflow.rate", "4e+11", "more than its box can hold"});
+  refused(flows("--set integrator.end_time=5e4"), {"flows.toml", "inflow.rate", "integrator.end_time", "GB", "--force"});
+}
+
+// Issue 37, class D: an outflow half-space that holds the inflow's box (every new particle
+// removed one step after it came) stopped with "energy balance lost" and exit code 3, on both
+// schemes, with gravity. It completes now; and a run where no particle was ever present
+// writes a strict summary.json, its cost per particle-step null with the reason.
+TEST(BadInput, AnOutflowHoldingTheInflowCompletesAndAnEmptyRunHasNullFigures) {
+  TempDir dir("outflow_holds_inflow");
+  std::string held = kFlows;
+  const std::string plane = "plane_point = [0.0, 0.0, -0.01]";
+  held.replace(held.find(plane), plane.size(), "plane_point = [0.0, 0.0, 0.5]");
+  held += "[environment]\ngravity = [0.0, -3.0, -9.81]\n";
+  for (const char* scheme : {"verlet", "newmark"}) {
+    const auto r = run_text(dir, "held.toml", held,
+                            fmt::format("--set integrator.scheme='\"{}\"' --set inflow.0.rate=3e3 "
+                                        "--set integrator.end_time=2e-3",
+                                        scheme));
+    EXPECT_EQ(r.exit_code, 0) << scheme << "\n" << r.output;
+    const auto summary = nlohmann::json::parse(test::read_file(dir / "out/summary.json"));
+    EXPECT_GT(summary["flows"]["outflow_removed"].get<double>(), 2) << scheme;
+  }
+  const auto empty = run_text(dir, "held.toml", held, "--set inflow.0.rate=1.0 --set integrator.end_time=1e-4");
+  ASSERT_EQ(empty.exit_code, 0) << empty.output;
+  const std::string text = test::read_file(dir / "out/summary.json");
+  EXPECT_EQ(text.find("NaN"), std::string::npos);
+  EXPECT_EQ(text.find("Infinity"), std::string::npos);
+  const auto summary = nlohmann::json::parse(text);  // (strict: throws on anything but JSON)
+  EXPECT_TRUE(summary["run"]["ns_per_particle_step"].is_null());
+  EXPECT_NE(summary["run"]["ns_per_particle_step_reason"].get<std::string>().find("no particle"), std::string::npos);
 }
 
 TEST(BadInput, OutputIntervalsThatCouldNeverAdvanceAreRefused) {
@@ -433,14 +581,17 @@ namespace {
 
 // A tool at 1e6 m/s jumped past the block in one step and reported a finished cut with no
 // force. A mesh may now move no further in a step than a particle may: the explicit step
-// stops, the Newmark step shrinks until dt_min and then stops, both naming the mesh.
+// stops, the Newmark step shrinks until dt_min and then stops, both naming the mesh. (1e6 m/s
+// is now refused by mesh.velocity's range, 10 km/s: the limit of a step is lowered instead.)
 TEST(BadInput, AMeshThatWouldJumpPastTheParticlesInOneStepStopsTheRun) {
   test::TempDir dir("fast_tool");
   for (const char* scheme : {"verlet", "newmark"}) {
-    const auto r = run_command(fmt::format(
-        "timeout 120 {} run {} --out {} --threads 1 --set mesh.0.velocity=[1e6,0,0] --set integrator.end_time=3e-6 "
-        "--set integrator.scheme='\"{}\"' --set output.plots=false --set output.vtk=false",
-        SWARF_BINARY, test::linear_cut_case(), dir / "cut", scheme));
+    const auto r = run_command(
+        fmt::format("timeout 120 {} run {} --out {} --threads 1 --set mesh.0.velocity=[1e4,0,0] --set "
+                    "integrator.max_step_displacement=1e-3 "
+                    "--set integrator.end_time=3e-6 "
+                    "--set integrator.scheme='\"{}\"' --set output.plots=false --set output.vtk=false",
+                    SWARF_BINARY, test::linear_cut_case(), dir / "cut", scheme));
     EXPECT_EQ(r.exit_code, 3) << scheme << "\n" << r.output;
     EXPECT_NE(r.output.find("mesh 'tool' moves"), std::string::npos) << scheme << "\n" << r.output;
   }

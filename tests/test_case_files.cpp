@@ -155,7 +155,8 @@ TEST(CaseFiles, OverridesApplyAndAreChecked) {
   EXPECT_EQ(cs.groups[0].motion.kind, "velocity");
   EXPECT_EQ(cs.groups[0].motion.velocity[2], 3.0);
   EXPECT_EQ(cs.rod.damping_ratio, 0.1);
-  expect_mentions(case_error(kGood, {"rod.yield_strain=-1"}), {"--set rod.yield_strain", "-1", "positive"});
+  expect_mentions(case_error(kGood, {"rod.yield_strain=-1"}),
+                  {"--set rod.yield_strain", "-1", "must lie in (0, 100], or be inf"});
   expect_mentions(case_error(kGood, {"rod.yeild=1"}), {"--set rod.yeild", "unknown key"});
   expect_mentions(case_error(kGood, {"nonsense"}), {"--set", "nonsense", "key=value"});
   expect_mentions(case_error(kGood, {"group.5.x=1"}), {"--set", "group.5.x"});

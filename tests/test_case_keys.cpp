@@ -286,6 +286,35 @@ TEST(CaseKeys, RangesKeepTheirMessagesAndDocs) {
   EXPECT_FALSE(in(0, 1, "(]").contains(0.0));
   EXPECT_FALSE(kPositive.contains(kInf));
   EXPECT_TRUE(kPositiveOrInf.contains(kInf));
+  // A range that also takes inf ("never") or 0 ("derive it"), and nothing between its ends and those.
+  const Range strain = or_inf(in(0, 100, "(]"));
+  EXPECT_TRUE(strain.contains(kInf));
+  EXPECT_TRUE(strain.contains(100.0));
+  EXPECT_FALSE(strain.contains(1e300));
+  EXPECT_EQ(strain.problem(), "must lie in (0, 100], or be inf");
+  EXPECT_EQ(strain.text(), "(0, 100] or `inf`");
+  const Range step = or_zero(in(1e-15, 1, "[]", "a step"));
+  EXPECT_TRUE(step.contains(0.0));
+  EXPECT_FALSE(step.contains(1e-320));  // (a denormal is not 0)
+  EXPECT_EQ(step.problem(), "must lie in [1e-15, 1], or be 0 (a step)");
+  EXPECT_EQ(step.text(), "[1e-15, 1] or 0");
+  EXPECT_EQ(kModulus.problem(), "must lie in [1000, 1e15] (a modulus, 1 kPa to 1e15 Pa)");
+}
+
+// Issue 37: every number key has a physical range (a number array's applies to each entry), and
+// the docs show it; "finite" alone, or nothing, admitted 1e300 and 1e-320.
+TEST(CaseKeys, EveryNumberKeyHasARange) {
+  int numbers = 0;
+  for (const KeyRow& r : case_key_rows()) {
+    if (r.type == "string" || r.type == "string[]" || r.type == "bool") continue;
+    ++numbers;
+    const std::string key = r.table + "." + r.name;
+    EXPECT_FALSE(r.allowed.empty()) << key << " has no range";
+    EXPECT_NE(r.allowed.rfind("finite", 0), 0u) << key << " is only 'finite': " << r.allowed;
+    EXPECT_EQ(r.allowed.find(", finite"), std::string::npos) << key << " has an open end: " << r.allowed;
+    EXPECT_EQ(r.allowed.find("`inf` allowed"), std::string::npos) << key << " has an open end: " << r.allowed;
+  }
+  EXPECT_GT(numbers, 150);
 }
 
 TEST(CaseKeys, UnitsOfEveryKey) {
@@ -305,8 +334,8 @@ TEST(CaseKeys, UnitsOfEveryKey) {
 // that made none of the checkpoint's state (app/run.cpp refuses the others by name).
 TEST(CaseKeys, RestartableKeysAreFlaggedInTheTable) {
   EXPECT_EQ(restartable_keys(),
-            (std::vector<std::string>{"integrator.end_time", "output.frame_interval", "output.series_interval",
-                                      "output.plots", "output.progress", "output.steady_from",
+            (std::vector<std::string>{"integrator.end_time", "integrator.max_steps", "output.frame_interval",
+                                      "output.series_interval", "output.plots", "output.progress", "output.steady_from",
                                       "output.checkpoint_every", "output.checkpoint_at_end", "output.fields"}));
   const std::string doc = test::read_file(kDoc);
   EXPECT_NE(doc.find("<!-- keys:restartable begin -->\n| key | unit |\n|---|---|\n| `integrator.end_time` | s |"),

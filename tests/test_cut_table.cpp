@@ -202,7 +202,8 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
           {"c.toml:8", "key 'mesh.file' = \"tool.stl\"", "[cut] set", "rake_angle = 10",
            "clearance_angle = ", "edge_radius", "origin", "[[mesh]] 'tool'"});
   // (found by the fuzzer: a width of 5e42 m made lround overflow under the FP traps)
-  refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "cells", "more than"});
+  refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "must lie in [0, 1000]", "0 to 1 km"});
+  refused("[cut]\n" + ok + "width = 900.0\n", {"cut.width", "cells", "more than"});
 }
 
 // tool_stiffness makes the tool a rigid body on its holder's spring: per metre of width as

@@ -176,7 +176,7 @@ TEST(Outputs, FieldsChooseThePerParticleArrays) {
   // An unknown name: exit code 2, the key, the value and the valid names.
   const auto bad = test::run_command(run + " --out " + (dir / "bad") + " --set 'output.fields=[\"damage\"]'");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("(--set output.fields): key 'output.fields' = [ 'damage' ]"), std::string::npos)
+  EXPECT_NE(bad.output.find("(--set output.fields): key 'output.fields' = [\"damage\"]"), std::string::npos)
       << bad.output;
   EXPECT_NE(bad.output.find("\"damage\" is not one of the accepted values \"velocity\", \"displacement\", "
                             "\"broken_fraction\", \"stress\", \"von_mises_stress\", \"hydrostatic_stress\", "

@@ -146,6 +146,8 @@ struct RunCommand final : Command {
         ->allow_extra_args(false);
     sub->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
     sub->add_flag("--force", ro.force, "Run even if the case's memory estimate exceeds the machine's memory");
+    sub->add_flag("--allow-long", ro.allow_long,
+                  "Run even if the case is estimated to need more steps than integrator.max_steps");
     sub->add_flag("--no-energy-check{false}", ro.energy_check,
                   "Run on when the energy error exceeds the external work and the energy held (a sign of an "
                   "unstable step; docs/outputs.md)");

@@ -16,6 +16,7 @@ struct RunOptions {
   std::vector<std::string> overrides;  ///< --set key=value
   int threads = 0;                     ///< 0 = OpenMP default
   bool force = false;                  ///< --force: run a case whose memory estimate exceeds the machine's
+  bool allow_long = false;             ///< --allow-long: run a case estimated to need more than integrator.max_steps
   bool energy_check = true;            ///< false (--no-energy-check): a lost energy balance does not stop the run
   bool check = false;                  ///< --check: build the case and print its set-up; no run, no outputs
 };

@@ -111,6 +111,18 @@ void check_box(const TableReader& r, const std::array<double, 3>& lo, const std:
     if (!(hi[c] >= lo[c])) r.fail("box_max", r.get("box_max"), "must be >= box_min in x, y and z (m)");
 }
 
+// A direction (an axis, a normal): only its direction counts, but a length below 1e-6 is a
+// zero written otherwise, and a denormal one normalised to inf or NaN (issue 37: an outflow
+// normal of length 1e-320 ran and stopped as a blow-up).
+void check_direction(const TableReader& r, const char* key, const std::array<double, 3>& v) {
+  const double length = std::hypot(v[0], v[1], v[2]);  // (no underflow of the squares)
+  if (!(length >= 1e-6))
+    r.fail(key, r.get(key),
+           fmt::format("must not be zero: a direction's length must be at least 1e-6 (it is {:.4g}; only its "
+                       "direction counts)",
+                       length));
+}
+
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
@@ -143,7 +155,7 @@ void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
     r.fail("fixed", r.get("fixed"), "does not apply with hinge_point: the axle is fixed there");
   const auto& e = m.hinge_axis;
   const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-  if (!(e2 > 0.0)) r.fail("hinge_axis", r.get("hinge_axis"), "must not be zero");
+  check_direction(r, "hinge_axis", e);
   if (m.rotation == "hinge") {
     const auto& w = m.angular_velocity;
     const double wx = w[1] * e[2] - w[2] * e[1], wy = w[2] * e[0] - w[0] * e[2], wz = w[0] * e[1] - w[1] * e[0];
@@ -178,8 +190,7 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
     if (!cyl && r.has(key)) r.fail(key, r.get(key), "is a cylinder key: give cylinder_radius (m) to make a cylinder");
   if (cyl && !r.has("cylinder_length"))
     r.fail("cylinder_radius", r.get("cylinder_radius"), "needs cylinder_length (m)");
-  if (cyl && !(m.cylinder_axis[0] != 0.0 || m.cylinder_axis[1] != 0.0 || m.cylinder_axis[2] != 0.0))
-    r.fail("cylinder_axis", r.get("cylinder_axis"), "must not be zero");
+  if (cyl) check_direction(r, "cylinder_axis", m.cylinder_axis);
   // [cut] makes the mesh named "tool" a generated tool: a [[mesh]] of that name with a file
   // gets its tool keys, and the conflict below would name keys the user never wrote.
   if (!m.file.empty()) {
@@ -300,6 +311,13 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
       if (!r.has("radius_max")) f.radius_max = f.radius_min;
       if (!(f.radius_max >= f.radius_min)) r.fail("radius_max", r.get("radius_max"), "must be >= radius_min (m)");
       check_box(r, f.box_min, f.box_max);
+      // (a box of zero volume puts every new particle on a plane or a line, where they overlap
+      // as soon as there are a few: the draws miss, silently)
+      for (int c = 0; c < 3; ++c)
+        if (!(f.box_max[c] > f.box_min[c]))
+          r.fail("box_max", r.get("box_max"),
+                 fmt::format("must lie above box_min in x, y and z: the box has no volume ({} m across along {})",
+                             f.box_max[c] - f.box_min[c], "xyz"[c]));
       cs.inflows.push_back(f);
     }
   if (const toml::array* arr = entries(in, "outflow"))
@@ -313,8 +331,7 @@ void read_free_particles(const CaseInput& in, CaseSettings& cs) {
           if (r.has(key)) r.fail(key, r.get(key), "goes with a box, not with a plane (plane_point, plane_normal)");
         for (const char* key : {"plane_point", "plane_normal"})
           if (!r.has(key)) r.fail(key, nullptr, "is required for a plane");
-        if (o.plane_normal == std::array<double, 3>{0, 0, 0})
-          r.fail("plane_normal", r.get("plane_normal"), "must not be zero");
+        check_direction(r, "plane_normal", o.plane_normal);
       } else {
         check_box(r, o.box_min, o.box_max);
       }

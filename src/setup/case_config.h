@@ -137,6 +137,7 @@ struct IntegratorSettings {
   bool allow_unstable_dt = false;       ///< run even if dt exceeds the stable step estimate
   double end_time = 0.0;                ///< simulated time, s (the [uniaxial] path sets it when 0)
   double max_step_displacement = 0.25;  ///< stop if a particle moves more than this many radii in one step, 1
+  double max_steps = 1e8;  ///< a run estimated to need more steps is refused before its first (--allow-long), 1
   // Newmark (implicit) step, solved by fixed-point iteration on the new accelerations.
   double beta = 0.25;          ///< Newmark beta, 1
   double gamma = 0.5;          ///< Newmark gamma, 1

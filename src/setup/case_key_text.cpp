@@ -11,9 +11,6 @@
 namespace swarf {
 namespace {
 
-// A bound of a range as the messages have always shown it: "0.2", "-1", "10".
-std::string bound(double v) { return fmt::format("{}", v); }
-
 // A number for the docs: the shortest decimal that reads back to the same double, in
 // scientific form outside [1e-2, 1e5) ("2e11", "1e-6"); floats keep a ".0" so that
 // "7800.0" reads as a float where "25" is an int.
@@ -37,6 +34,9 @@ std::string doc_number(double v, bool mark_float) {
   if (mark_float && s.find_first_of(".e") == std::string::npos) s += ".0";
   return s;
 }
+
+// A bound of a range as messages and docs show it: "0.2", "-1", "10", "1e13" (not 10000000000000).
+std::string bound(double v) { return doc_number(v, false); }
 
 std::string type_name(double) { return "float"; }
 std::string type_name(int) { return "int"; }
@@ -110,8 +110,10 @@ std::string checked_text(const Key<S>& k, const std::array<int, 2>&) {
   return "whole numbers in " + k.range.text(true);
 }
 template <class S, class T>
-std::string checked_text(const Key<S>&, const T&) {
-  return "finite";
+std::string checked_text(const Key<S>& k, const T&) {
+  if (k.range.any()) return "finite";
+  const std::string r = k.range.text();
+  return (r[0] == '>' || r[0] == '<' ? "each " : "each in ") + r;
 }  // number arrays
 
 template <class S>
@@ -148,6 +150,14 @@ void append(std::vector<KeyRow>& rows, std::string_view table, const std::vector
 }  // namespace
 
 std::string Range::problem() const {
+  if (or_inf || or_zero) {
+    Range plain = *this;
+    plain.or_inf = plain.or_zero = false;
+    plain.hint = {};
+    std::string out = plain.problem() + (or_inf ? ", or be inf" : "") + (or_zero ? ", or be 0" : "");
+    if (!hint.empty()) out += fmt::format(" ({})", hint);
+    return out;
+  }
   if (lo == 0.0 && lo_open && hi == kInf)
     return hi_open ? "must be positive and finite" : "must be positive (inf allowed)";
   if (lo == 0.0 && !lo_open && hi == kInf && hi_open) return "must be >= 0 and finite";
@@ -163,6 +173,11 @@ std::string Range::integer_problem() const {
 
 std::string Range::text(bool integer) const {
   if (any()) return "";
+  if (or_inf || or_zero) {
+    Range plain = *this;
+    plain.or_inf = plain.or_zero = false;
+    return plain.text(integer) + (or_inf ? " or `inf`" : "") + (or_zero ? " or 0" : "");
+  }
   if (integer) return fmt::format("[{}, {}]", static_cast<long long>(lo), static_cast<long long>(hi));
   if (hi == kInf && lo != -kInf)
     return fmt::format("{} {}, {}", lo_open ? ">" : ">=", bound(lo), hi_open ? "finite" : "`inf` allowed");

@@ -21,7 +21,11 @@ std::string repr(const toml::node& n) {
     out = '"' + s->get() + '"';
   else if (auto f = n.as_floating_point())
     out = fmt::format("{}", f->get());
-  else
+  else if (auto a = n.as_array()) {  // (on one line, numbers in their shortest form; print_toml breaks lines)
+    out = "[";
+    for (std::size_t k = 0; k < a->size(); ++k) out += (k ? ", " : "") + repr(*a->get(k));
+    out += "]";
+  } else
     out = print_toml(n);
   if (out.size() > 80) out = out.substr(0, 77) + "...";
   return out;
@@ -66,13 +70,7 @@ bool TableReader::from_cut(std::string_view key) const {
 
 std::string TableReader::value_text(std::string_view key) const {
   const toml::node* n = get(key);
-  if (!n) return {};
-  if (const toml::array* a = n->as_array()) {  // (numbers in their shortest form, not print_toml's 17 digits)
-    std::string out = "[";
-    for (std::size_t k = 0; k < a->size(); ++k) out += (k ? ", " : "") + repr(*a->get(k));
-    return out + "]";
-  }
-  return repr(*n);
+  return n ? repr(*n) : std::string();
 }
 
 void TableReader::fail(std::string_view key, const toml::node* n, const std::string& problem) const {
@@ -166,7 +164,7 @@ void TableReader::strings(std::string_view key, const std::vector<std::string_vi
   v = std::move(out);
 }
 
-void TableReader::numbers(std::string_view key, std::vector<double>& v) const {
+void TableReader::numbers(std::string_view key, const Range& range, std::vector<double>& v) const {
   const toml::node* n = get(key);
   if (!n) return;
   auto a = n->as_array();
@@ -180,15 +178,17 @@ void TableReader::numbers(std::string_view key, std::vector<double>& v) const {
     else
       fail(key, n, "must be an array of numbers");
     if (!std::isfinite(out.back())) fail(key, n, "entries must be finite");
+    if (!range.contains(out.back()))
+      fail(key, n, fmt::format("entry {} = {}: each entry {}", out.size() - 1, out.back(), range.problem()));
   }
   v = std::move(out);
 }
 
-void TableReader::vec3(std::string_view key, std::array<double, 3>& v) const {
+void TableReader::vec3(std::string_view key, const Range& range, std::array<double, 3>& v) const {
   const toml::node* n = get(key);
   if (!n) return;
   std::vector<double> x;
-  numbers(key, x);
+  numbers(key, range, x);
   if (x.size() != 3) fail(key, n, "must be an array of three numbers");
   v = {x[0], x[1], x[2]};
 }
@@ -212,14 +212,15 @@ void TableReader::ivec2(std::string_view key, const Range& range, std::array<int
   if (!n) return;
   // Whole numbers written as floats (2.0) are accepted, as for every number.
   std::vector<double> x;
-  numbers(key, x);
+  numbers(key, Range{}, x);
   if (x.size() != 2 || !range.contains(x[0]) || !range.contains(x[1]) || x[0] != std::floor(x[0]) ||
       x[1] != std::floor(x[1]))
     fail(key, n, "must be two positive integers [n1, n2]");
   v = {static_cast<int>(x[0]), static_cast<int>(x[1])};
 }
 
-void TableReader::triples(std::string_view key, std::string_view unit, std::vector<std::array<double, 3>>& v) const {
+void TableReader::triples(std::string_view key, std::string_view unit, const Range& range,
+                          std::vector<std::array<double, 3>>& v) const {
   const toml::node* n = get(key);
   if (!n) return;
   auto a = n->as_array();
@@ -237,6 +238,8 @@ void TableReader::triples(std::string_view key, std::string_view unit, std::vect
       else
         fail(key, n, "entries must be numbers");
       if (!std::isfinite(x[c])) fail(key, n, "entries must be finite");
+      if (!range.contains(x[c]))
+        fail(key, n, fmt::format("row {} entry {} = {}: each entry {}", out.size(), c, x[c], range.problem()));
     }
     out.push_back(x);
   }

@@ -74,7 +74,7 @@ class TableReader {
   }
   template <class S>
   void read_value(const Key<S>& k, std::array<double, 3>& v) {
-    vec3(k.name, v);
+    vec3(k.name, k.range, v);
   }
   template <class S>
   void read_value(const Key<S>& k, std::array<int, 3>& v) {
@@ -86,11 +86,11 @@ class TableReader {
   }
   template <class S>
   void read_value(const Key<S>& k, std::vector<double>& v) {
-    numbers(k.name, v);
+    numbers(k.name, k.range, v);
   }
   template <class S>
   void read_value(const Key<S>& k, std::vector<std::array<double, 3>>& v) {
-    triples(k.name, k.unit, v);
+    triples(k.name, k.unit, k.range, v);
   }
   template <class S>
   void read_value(const Key<S>& k, std::vector<std::string>& v) {
@@ -101,11 +101,13 @@ class TableReader {
   void integer(std::string_view key, const Range& range, int& v) const;
   void boolean(std::string_view key, bool& v) const;
   void string(std::string_view key, const std::vector<std::string_view>& choices, std::string& v) const;
-  void numbers(std::string_view key, std::vector<double>& v) const;
-  void vec3(std::string_view key, std::array<double, 3>& v) const;
+  // (number arrays: 'range' applies to each entry)
+  void numbers(std::string_view key, const Range& range, std::vector<double>& v) const;
+  void vec3(std::string_view key, const Range& range, std::array<double, 3>& v) const;
   void ivec3(std::string_view key, const Range& range, std::array<int, 3>& v) const;
   void ivec2(std::string_view key, const Range& range, std::array<int, 2>& v) const;
-  void triples(std::string_view key, std::string_view unit, std::vector<std::array<double, 3>>& v) const;
+  void triples(std::string_view key, std::string_view unit, const Range& range,
+               std::vector<std::array<double, 3>>& v) const;
   /// An array of strings, each one of 'choices' (when not empty) and none twice.
   void strings(std::string_view key, const std::vector<std::string_view>& choices, std::vector<std::string>& v) const;
 

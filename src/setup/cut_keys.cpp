@@ -28,14 +28,14 @@ const std::vector<Key<CutSettings>>& cut_keys() {
        .unit = "m",
        .no_default = true,
        .default_note = "10 h",
-       .range = kPositive,
+       .range = kLength,
        .doc = "Tool travel over the run."},
       {.name = "width",
        .field = &S::width,
        .unit = "m",
        .no_default = true,
        .default_note = "plane strain",
-       .range = kNonNegative,
+       .range = kLengthOrZero,
        .doc = "b: width of the workpiece along the cutting edge. Not given (or 0): plane strain, a slice two "
               "cells wide and periodic across y, so the forces are per unit width without side flow; given: a "
               "block of the nearest whole number of cells (at least 2) with free sides."},
@@ -55,7 +55,7 @@ const std::vector<Key<CutSettings>>& cut_keys() {
       {.name = "edge_radius",
        .field = &S::edge_radius,
        .unit = "m",
-       .range = kNonNegative,
+       .range = kLengthOrZero,
        .rule = "below the depth of cut",
        .doc = "r_n, radius of the honed cutting edge; 0 is a sharp edge."},
       {.name = "friction",
@@ -95,14 +95,14 @@ const std::vector<Key<CutSettings>>& cut_keys() {
        .unit = "m",
        .no_default = true,
        .default_note = "half the length of cut",
-       .range = kNonNegative,
+       .range = kLengthOrZero,
        .rule = "below the length of cut",
        .doc = "Tool travel from which the forces and chip figures are averaged (`output.steady_from` is this "
               "over the cutting speed)."},
       {.name = "tool_stiffness",
        .field = &S::tool_stiffness,
        .unit = "N/m/m",
-       .range = kNonNegative,
+       .range = in(0.0, 1e15, "[]", "0 to 1e15 N/m/m, a judgement: 1e5 times a stiff spindle per mm of width"),
        .rule = "with tool_mass",
        .doc = "k/b: stiffness of a compliant tool's mount per metre of the cut's width (N/m of the tool for each m "
               "of width), the same along the cutting (x) and thrust (z) directions. Given: the tool is a rigid body "
@@ -115,7 +115,7 @@ const std::vector<Key<CutSettings>>& cut_keys() {
        .unit = "kg/m",
        .no_default = true,
        .default_note = "required with tool_stiffness",
-       .range = kPositive,
+       .range = in(1e-9, 1e6, "[]", "1e-9 to 1e6 kg/m, a judgement"),
        .rule = "only with tool_stiffness",
        .doc = "m/b: modal mass of the compliant tool per metre of width. Natural frequency f_n = sqrt(k/m) / (2 "
               "pi), independent of the width."},

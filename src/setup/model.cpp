@@ -12,6 +12,7 @@
 #include "lattice_gen/lattice_disorder.h"
 #include "lattice_gen/lattice_file.h"
 #include "lattice_gen/membrane_lattice.h"
+#include "setup/case_keys.h"
 #include "swarf/core/errors.h"
 #include "swarf/geometry/mass_properties.h"
 #include "swarf/geometry/shapes.h"
@@ -320,6 +321,19 @@ static RigidBody rigid_body(const CaseSettings& cs, const Derived& d, const Mesh
     }
   } else {
     rb = rigid_body_from_mesh(cs, ms, index, mesh);
+  }
+  // Inertia and mass consistent (issue 37): each principal moment's radius of gyration
+  // sqrt(I / m) a physical length, 1 nm to 1 km as any length of a case. A moment of 1e-300
+  // kg m^2 with a mass of 1 kg was accepted, and its rotation's step would be 1e-150 s.
+  for (int c = 0; c < 3; ++c) {
+    const double gyration = std::sqrt(rb.inertia[c] / rb.mass);  // m
+    if (!(gyration >= kLength.lo && gyration <= kLength.hi))
+      throw InputError(fmt::format(
+          "{}: key '{}': principal moments ({:.6g}, {:.6g}, {:.6g}) kg m^2 with mass {:.6g} kg give a radius of "
+          "gyration sqrt(I/m) of {:.4g} m, outside {:g} m to {:g} m: the inertia and the mass do not belong to one "
+          "body",
+          where(), ms.inertia.empty() ? (ms.density > 0.0 ? "density" : "mass") : "inertia", rb.inertia[0],
+          rb.inertia[1], rb.inertia[2], rb.mass, gyration, kLength.lo, kLength.hi));
   }
   rb.state.velocity = to_vec(ms.initial_velocity);
   rb.state.omega = to_vec(ms.angular_velocity);

@@ -50,14 +50,15 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
 }
 
 void Simulation::apply_flows(double h) {
-  double out = 0.0;  // J
-  if (const auto remove = flows_.outflow(m_, out); !remove.empty()) {
+  double out = 0.0, gross = 0.0;  // J
+  if (const auto remove = flows_.outflow(m_, out, gross); !remove.empty()) {
     // (their rods' elastic energy leaves with them)
     const double elastic_before = m_.rods.size() > 0 ? elastic_energy() : 0.0;
     ledger_.heat_outflow += thermal_.carried(m_, remove);
     remove_particles(remove);
     const double elastic_after = m_.rods.size() > 0 ? elastic_energy() : 0.0;
     ledger_.flow_energy += out + (elastic_before - elastic_after);
+    ledger_.flow_through += gross + std::abs(elastic_before - elastic_after);
   }
   if (const Particles add = flows_.inflow(m_, h, ledger_); !add.position.empty()) append_particles(add);
 }

@@ -32,7 +32,10 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
     particles = 0.0;
     for (double v : n) particles += v / double(n.size());
   }
-  const double ns_per_particle_step = end.step_wall_s * 1e9 / (double(sim.steps()) * particles);
+  // (a run with no particle-steps, a flow whose inflow created none yet, has no cost per
+  // particle-step: null and the reason, not inf, which trapped as a division by zero)
+  const double particle_steps = double(sim.steps()) * particles;
+  const double ns_per_particle_step = particle_steps > 0.0 ? end.step_wall_s * 1e9 / particle_steps : 0.0;
   summary["run"] = {{"threads", end.threads},
                     {"scheme", sim.implicit() ? "newmark" : "verlet"},
                     {"steps", sim.steps()},
@@ -47,6 +50,10 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
                     {"wall_time_s", end.wall_s},
                     {"step_wall_time_s", end.step_wall_s},
                     {"ns_per_particle_step", ns_per_particle_step}};
+  if (!(particle_steps > 0.0)) {
+    summary["run"]["ns_per_particle_step"] = nullptr;
+    summary["run"]["ns_per_particle_step_reason"] = "no particle-steps: no particle was present at any series row";
+  }
   const bool newton = sim.implicit() && sim.settings().solver == Solver::Newton;
   if (newton) {
     // (only for the Newton solver: the default run's summary keeps its keys)
@@ -58,8 +65,9 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
     summary["run"]["krylov_capped"] = ns.krylov_capped;
     summary["run"]["steps_rejected_indefinite"] = ns.indefinite;
   }
-  say("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({:.1f} ns per particle-step, {} thread{})\n", sim.steps(),
-      sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s, ns_per_particle_step, end.threads,
+  say("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({} ns per particle-step, {} thread{})\n", sim.steps(),
+      sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s,
+      particle_steps > 0.0 ? fmt::format("{:.1f}", ns_per_particle_step) : std::string("no"), end.threads,
       end.threads == 1 ? "" : "s");
   if (sim.implicit())
     say("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",

@@ -18,6 +18,10 @@ struct EnergyLedger {
                                ///< particles (and their torques) and meshes; stored Hertz energy + dissipation
   double flow_energy = 0;      ///< carried out by removed particles (kinetic, potential, their rods' elastic
                                ///< energy) minus brought in by created ones (kinetic)
+  double flow_through = 0;     ///< the gross energy that crossed the flows' boundaries: the kinetic energy
+                               ///< brought in plus the kinetic, |potential| and rods' elastic energy carried
+                               ///< out. The energy check's scale and round-off floor: flow_energy is a
+                               ///< difference of such terms, which cancel when a particle leaves as it came
   // The heat (systems/thermal_system.h), apart from the mechanical balance above: what the
   // dissipation turned into heat and where it went. heat_plastic + heat_friction = stored +
   // heat_to_tools + heat_outflow + heat_to_clamps.

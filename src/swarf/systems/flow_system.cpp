@@ -46,11 +46,11 @@ void FlowSystem::setup(const World& m_) {
   }
 }
 
-std::vector<std::uint8_t> FlowSystem::outflow(World& m_, double& out) {
+std::vector<std::uint8_t> FlowSystem::outflow(World& m_, double& out, double& gross) {
   const auto& p = m_.particles;
   const Vec3 g = m_.gravity;
   std::vector<std::uint8_t> remove;
-  out = 0.0;
+  out = gross = 0.0;
   if (m_.outflows.empty()) return remove;
   // What leaves takes its kinetic and potential energy with it (and its rods' elastic energy:
   // booked by the caller, which removes them); a contact's stored energy is not tracked: it
@@ -63,8 +63,11 @@ std::vector<std::uint8_t> FlowSystem::outflow(World& m_, double& out) {
         remove[i] = 1;
         ++o.removed;
         ++count;
-        out += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.inertia[i].dot(p.omega[i].cwiseAbs2()) -
-               p.mass[i] * g.dot(p.position[i] - p.initial_position[i]);
+        const double kinetic = 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
+                               0.5 * p.inertia[i].dot(p.omega[i].cwiseAbs2());
+        const double potential = -p.mass[i] * g.dot(p.position[i] - p.initial_position[i]);
+        out += kinetic + potential;
+        gross += kinetic + std::abs(potential);
         break;
       }
   if (count == 0) remove.clear();
@@ -124,6 +127,7 @@ Particles FlowSystem::inflow(World& m_, double h, EnergyLedger& ledger) {
         add.inertia[k] = Vec3::Constant(0.4 * m * r * r);
         add.inv_inertia[k] = 1.0 / add.inertia[k][0];
         ledger.flow_energy -= 0.5 * m * f.velocity.squaredNorm();
+        ledger.flow_through += 0.5 * m * f.velocity.squaredNorm();
         ++f.created;
         placed = true;
       }
@@ -145,6 +149,7 @@ void FlowSystem::visit_state(StateArchive& ar, World& m_, EnergyLedger& ledger) 
   if (m_.inflows.empty() && m_.outflows.empty()) return;  // (only then: older checkpoints and hashes stay as they were)
   const bool load = ar.loading();
   ar.scalar("ledger/flow_energy", ledger.flow_energy);
+  ar.scalar("ledger/flow_through", ledger.flow_through);
   for (std::size_t k = 0; k < m_.inflows.size(); ++k) {
     Inflow& f = m_.inflows[k];
     const std::string at = fmt::format("flows/inflow_{}/", k);

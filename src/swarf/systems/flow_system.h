@@ -25,9 +25,10 @@ class FlowSystem {
  public:
   /// Checks the regions (finite boxes, rates, radii, densities); InputError naming the region.
   static void setup(const World& w);
-  /// The particles in an outflow region (mask; empty if none), and their kinetic and potential
-  /// energy 'out', J. Counts them in their regions.
-  static std::vector<std::uint8_t> outflow(World& w, double& out);
+  /// The particles in an outflow region (mask; empty if none), their kinetic and potential
+  /// energy 'out', J, and the same with the potential energy's size, 'gross', J (for
+  /// EnergyLedger::flow_through). Counts them in their regions.
+  static std::vector<std::uint8_t> outflow(World& w, double& out, double& gross);
   /// The particles the inflows create after a step of h, s (their kinetic energy booked).
   static Particles inflow(World& w, double h, EnergyLedger& ledger);
   /// The regions' counters and the flow energy (nothing without regions).
