@@ -15,6 +15,7 @@
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
+#include "swarf/laws/johnson_cook_rod_law.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -59,7 +60,17 @@ TEST(CutTable, TheDefaultCutAsACutTableBuildsTheDefaultModel) {
   for (std::size_t k = 0; k < a.rods.size(); ++k)
     ASSERT_NEAR(a.rods.rest_length[k], b.rods.rest_length[k], 3e-6 * a.rods.rest_length[k]);
 
-  const RodLaw &la = std::get<RodLaw>(a.rods.law), &lb = std::get<RodLaw>(b.rods.law);
+  // Both on Johnson-Cook rods: the hand-written file gives C, m, T_melt and the reference rate
+  // as a rod strain rate (0.333333 1/s: six digits of 1/3), the preset as an equivalent plastic
+  // strain rate (1 1/s) with kappa = 3 (calibrated in tension); the rates they mean agree to 1e-6.
+  const auto &ja = std::get<JohnsonCookRodLaw>(a.rods.law), &jb = std::get<JohnsonCookRodLaw>(b.rods.law);
+  EXPECT_EQ(ja.rate_sensitivity, jb.rate_sensitivity);
+  EXPECT_EQ(ja.softening_exponent, jb.softening_exponent);
+  EXPECT_EQ(ja.melt_temperature, jb.melt_temperature);
+  EXPECT_EQ(ja.reference_temperature, jb.reference_temperature);
+  const double rate_a = ja.reference_rate / ja.rate_to_equivalent, rate_b = jb.reference_rate / jb.rate_to_equivalent;
+  EXPECT_NEAR(rate_a, rate_b, 1.5e-6 * rate_b);
+  const RodLaw &la = ja.base, &lb = jb.base;
   EXPECT_NEAR(la.youngs_modulus, lb.youngs_modulus, 1e-4 * la.youngs_modulus);
   EXPECT_EQ(la.failure_strain, lb.failure_strain);
   EXPECT_NEAR(la.viscosity, lb.viscosity, 1e-4 * la.viscosity);
@@ -100,6 +111,16 @@ TEST(CutTable, TheDefaultCutAsACutTableBuildsTheDefaultModel) {
   EXPECT_EQ(hand.contact.poisson_ratio, cut.contact.poisson_ratio);
   EXPECT_EQ(hand.contact.restitution, cut.contact.restitution);
   EXPECT_EQ(hand.contact.friction, cut.contact.friction);
+  // Sticking: k0 666.2 MPa by hand (four digits), (A + B)/sqrt 3 = 666.204 MPa from the preset.
+  EXPECT_TRUE(hand.contact.sticking && cut.contact.sticking);
+  EXPECT_NEAR(hand.contact.sticking_shear_strength, cut.contact.sticking_shear_strength, 1e-5 * 666e6);
+  EXPECT_EQ(hand.contact.sticking_softening_exponent, cut.contact.sticking_softening_exponent);
+  EXPECT_EQ(hand.contact.sticking_melt_temperature, cut.contact.sticking_melt_temperature);
+  // Heat: the same c, k and clamps (the hand-written values are the preset's).
+  EXPECT_TRUE(hand.heat.present && cut.heat.present);
+  EXPECT_EQ(hand.heat.heat_capacity, cut.heat.heat_capacity);
+  EXPECT_EQ(hand.heat.conductivity, cut.heat.conductivity);
+  EXPECT_EQ(hand.heat.held_groups, cut.heat.held_groups);
   EXPECT_EQ(hand.integrator.scheme, cut.integrator.scheme);
   EXPECT_EQ(hand.integrator.dt_safety, cut.integrator.dt_safety);
   for (auto [x, y] : {std::pair{hand.integrator.end_time, cut.integrator.end_time},

@@ -1,7 +1,6 @@
 // test_golden.cpp: the refactoring gate. The built-in default cut (the C45 cut with heat) and
-// the same cut without heat run for 15 us, and the linear-law cut that was the default before, run for 30 us (0.3 mm of tool travel,
-// 31 series rows, the first chip rods breaking), must print the series of their references,
-// byte for byte.
+// the same cut without heat run for 15 us, and the linear-law cut that was the default before, run for 30 us (0.3 mm of
+// tool travel, 31 series rows, the first chip rods breaking), must print the series of their references, byte for byte.
 //
 // This is a regression gate, not a physics test: it proves that a change meant to move code
 // moved it without changing a single bit of any result. The reference was written by the

@@ -87,9 +87,11 @@ const std::vector<Key<CutSettings>>& cut_keys() {
       {.name = "workpiece_height",
        .field = &S::workpiece_height,
        .unit = "1",
-       .range = in(1.5, 1e3, "[]"),
+       .range = in(1.5, 100.0, "[]"),
        .doc = "Height of the block along z in multiples of h (rounded to whole cells): h of it is cut, the rest "
-              "carries the cut."},
+              "carries the cut. The upper bound is a judgement: below a few h the block's bending no longer "
+              "reaches the cut, and 1000 h built a model of millions of particles for minutes before any check "
+              "on the run could refuse it."},
       {.name = "steady_from",
        .field = &S::steady_from,
        .unit = "m",

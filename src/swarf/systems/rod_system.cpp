@@ -153,8 +153,16 @@ void commit_block(const Law law, double A, std::size_t begin, std::size_t end, c
     if (!intact[k]) continue;
     const double dshift = trial_shift[k] - shift[k];
     if (dshift != 0.0) {
-      const double w = plastic_work_density(law, stress[k], dshift) * A * rest_length[k];
+      const double wA = plastic_work_density(law, stress[k], dshift) * A;
+      const double w = wA * rest_length[k];
+      // The sum is the fused multiply-add the compiler made of 'plastic_b += wA * L' before the
+      // work list also read the product (a second use stops the contraction); kept so that the
+      // ledger's plastic work, and the golden series, keep their bits.
+#if defined(__FMA__)
+      plastic_b = std::fma(wA, rest_length[k], plastic_b);
+#else
       plastic_b += w;
+#endif
       shift[k] = trial_shift[k];
       if (works) works->push_back({ends[k], w});
     }
