@@ -13,13 +13,17 @@ takes the run directory as its first argument: pvpython open_in_paraview.py DIR.
 What it shows: the particles of the frame series as spheres of their own radius (Point
 Gaussian, shader "Sphere", scaled by the 'radius' array), the meshes (tool, walls) in grey, the
 chip surface of the end of the run translucent (a cutting run), in one render view per field
-side by side with linked cameras: von Mises stress (in Pa, "Cool to Warm"), equivalent
-plastic strain ("Viridis") and damage, the broken-rod fraction ("Inferno"), each ranged 0 to
-the 99th percentile of the last frame (damage: 0 to its maximum). Only the fields that the run
-wrote (output.fields) get a view. The camera looks along +y at the cutting plane (x, the
-cutting direction, to the right; z up) in parallel projection, on the tool's tip at the last
-time step when there is a tool (3 depths of cut behind it to 5 ahead), else on everything;
-the animation stands at the last time step. The rods are loaded but hidden.
+side by side with linked cameras, each with the simulated time in its corner. The fields, their
+units, ranges and colour maps come from postprocess/chip_view.json, the description the rendered
+pictures (render_chip.py) use too: damage, the broken-rod fraction (cividis, 0 to its maximum),
+equivalent plastic strain (viridis, 0 to the 99th percentile of the last frame), von Mises
+stress (in MPa, plasma, 0 to the 99th percentile) and temperature (in deg C, inferno, the lowest
+to the highest); MPa and deg C through a Calculator filter on the particles, as the pictures
+show them. Only the fields that the run wrote (output.fields) get a view. The camera looks along
++y at the cutting plane (x, the cutting direction, to the right; z up) in parallel projection, on
+the tool's tip at the last time step when there is a tool (3 depths of cut behind it to 5
+ahead), else on everything; the animation stands at the last time step. The rods are loaded
+but hidden.
 
 The frame series is read through one ParaView file-series file per part
 (DIR/particles.vtu.series, DIR/<mesh name>.vtp.series, DIR/rods.vtu.series, written here from
@@ -42,12 +46,23 @@ import xml.etree.ElementTree as ET
 
 ARGV = list(getattr(sys, "argv", None) or [])  # (an embedded interpreter, the GUI's, may have none)
 
-# (field, colour bar title, colour map preset), in the order of the views
-FIELDS = [
-    ("von_mises_stress", "von Mises stress (Pa)", "Cool to Warm"),
-    ("plastic_strain", "equivalent plastic strain (1)", "Viridis (matplotlib)"),
-    ("broken_fraction", "damage: broken-rod fraction (1)", "Inferno (matplotlib)"),
-]
+
+
+def load_view():
+    """The view's description (postprocess/chip_view.json, which render_chip.py reads too):
+    the run's copy carries it in SWARF_RUN["view"]; the template reads the file beside itself."""
+    if SWARF_RUN.get("view"):
+        return SWARF_RUN["view"]
+    try:
+        here = os.path.dirname(os.path.abspath(__file__))
+    except NameError:
+        here = "."
+    path = os.path.join(here, "chip_view.json")
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        raise SystemExit("open_in_paraview.py: cannot read the view description %s: %s" % (path, e))
 
 
 def run_directory():
@@ -118,30 +133,42 @@ def tool_tip(servermanager, source, time):
         return None
 
 
-def top_of_range(servermanager, source, field, time, percentile):
-    """The 'percentile' of the field over the particles at 'time' (numpy), else its maximum."""
+def range_of(servermanager, source, field, time):
+    """(lowest, 99th percentile, highest) of the field over the particles at 'time'."""
     try:
         source.UpdatePipeline(time)
         data = servermanager.Fetch(source)
         arr = data.GetPointData().GetArray(field)
         values = sorted(arr.GetValue(i) for i in range(arr.GetNumberOfTuples()))
-        if not values:
-            return 1.0
-        top = values[min(len(values) - 1, int(percentile / 100.0 * (len(values) - 1)))]
-        return top if top > 0 else max(values[-1], 1e-12)
-    except Exception:
+        if values:
+            return values[0], values[min(len(values) - 1, int(0.99 * (len(values) - 1)))], values[-1]
+    except Exception:  # (a ParaView without Fetch: the range ParaView knows)
         try:
-            return max(source.PointData[field].GetRange()[1], 1e-12)
+            lo, hi = source.PointData[field].GetRange()
+            return lo, hi, hi
         except Exception:
-            return 1.0
+            pass
+    return 0.0, 1.0, 1.0
+
+
+def bar_range(spec, low, p99, high):
+    """The colour bar's range in the bar's unit by the field's rule (chip_view.json)."""
+    f, o = spec["factor"], spec["offset"]
+    if spec["range"] == "min_max":
+        bottom = low * f + o
+        return bottom, max(high * f + o, bottom + 1.0)
+    top = (high if spec["range"] == "max" else p99) * f + o
+    if not top > 0:
+        top = max(high * f + o, 1e-12)
+    return 0.0, max(top, spec["min_top"])
 
 
 def main():
     from paraview import servermanager
-    from paraview.simple import (AddCameraLink, AssignViewToLayout, ColorBy, CreateView, GetActiveViewOrCreate,
-                                 GetAnimationScene, GetColorTransferFunction, GetLayout, GetOpacityTransferFunction,
-                                 GetScalarBar, Hide, OpenDataFile, RenameSource, Render, SaveScreenshot, SetActiveView,
-                                 Show)
+    from paraview.simple import (AddCameraLink, AnnotateTime, AssignViewToLayout, Calculator, ColorBy, CreateView,
+                                 GetActiveViewOrCreate, GetAnimationScene, GetColorTransferFunction, GetLayout,
+                                 GetOpacityTransferFunction, GetParaViewVersion, GetScalarBar, Hide, OpenDataFile,
+                                 RenameSource, Render, SaveScreenshot, SetActiveView, Show)
 
     run_dir = run_directory()
     parts = parts_of(os.path.join(run_dir, "particles.pvd"))
@@ -170,7 +197,11 @@ def main():
     written = SWARF_RUN.get("fields")
     if written is None:  # (the template: what the last frame holds)
         written = list(particles.PointData.keys())
-    fields = [f for f in FIELDS if f[0] in written] or [("radius", "radius (m)", "Cool to Warm")]
+    view_spec = load_view()
+    fields = [f for f in view_spec["fields"] if f["field"] in written]
+    if not fields:  # (a run that wrote no field: the radius, in m)
+        fields = [{"field": "radius", "title": "radius", "unit": "m", "factor": 1.0, "offset": 0.0,
+                   "colour_map": "viridis", "range": "max", "min_top": 0.0}]
     tool = SWARF_RUN.get("tool_mesh") or ""
     depth = float(SWARF_RUN.get("depth_of_cut_m") or 0.0)
     tip = tool_tip(servermanager, sources[tool], last) if tool in sources else None
@@ -188,6 +219,11 @@ def main():
             layout.SplitHorizontal(0, 1.0 / 3.0)
             layout.SplitHorizontal(2, 0.5)
             cells = [5, 6]
+        elif len(fields) == 4:
+            layout.SplitHorizontal(0, 0.5)
+            layout.SplitHorizontal(1, 0.5)
+            layout.SplitHorizontal(2, 0.5)
+            cells = [4, 5, 6]
     except Exception:
         cells = []
     for k in range(1, len(fields)):
@@ -199,7 +235,16 @@ def main():
         views.append(v)
         AddCameraLink(views[0], v, "swarf_camera_%d" % k)
 
-    for view, (field, title, preset) in zip(views, fields):
+    # The simulated time in every view (AnnotateTime's format is Python's from ParaView 5.10 on).
+    clock = AnnotateTime()
+    try:
+        major, minor = (int(x) for x in str(GetParaViewVersion()).split(".")[:2])
+    except Exception:
+        major, minor = 5, 10
+    clock.Format = "t = {time:.4g} s" if (major, minor) >= (5, 10) else "t = %.4g s"
+
+    for view, spec in zip(views, fields):
+        field = spec["field"]
         SetActiveView(view)
         view.OrientationAxesVisibility = 1
         view.Background = [1.0, 1.0, 1.0]
@@ -207,28 +252,48 @@ def main():
             view.UseColorPaletteForBackground = 0  # (5.11+: else the palette's background wins)
         except Exception:
             pass
-        d = Show(particles, view)
+        # The bar's unit (MPa, deg C) from the array's SI unit by a Calculator, as the pictures.
+        shown, array = particles, field
+        if spec["factor"] != 1.0 or spec["offset"] != 0.0:
+            array = "%s_%s" % (field, spec["unit"].replace(" ", ""))
+            shown = Calculator(Input=particles)
+            RenameSource("%s in %s" % (field, spec["unit"]), shown)
+            shown.AttributeType = "Point Data"
+            shown.ResultArrayName = array
+            expr = field if spec["factor"] == 1.0 else "%s*%r" % (field, spec["factor"])
+            if spec["offset"] != 0.0:
+                expr += ("+%r" if spec["offset"] > 0 else "-%r") % abs(spec["offset"])
+            shown.Function = expr
+        d = Show(shown, view)
         d.SetRepresentationType("Point Gaussian")
         d.ShaderPreset = "Sphere"
         d.ScaleByArray = 1
         d.SetScaleArray = ["POINTS", "radius"]
         d.UseScaleFunction = 0  # the radius itself, not a transfer function of it
         d.GaussianRadius = 1.0
-        ColorBy(d, ("POINTS", field))
-        lut = GetColorTransferFunction(field)
-        lut.ApplyPreset(preset, True)
-        top = top_of_range(servermanager, particles, field, last, 100.0 if field == "broken_fraction" else 99.0)
-        lut.RescaleTransferFunction(0.0, top)
-        GetOpacityTransferFunction(field).RescaleTransferFunction(0.0, top)
+        ColorBy(d, ("POINTS", array))
+        lut = GetColorTransferFunction(array)
+        samples = view_spec["colour_maps"][spec["colour_map"]]
+        lut.ColorSpace = "RGB"  # (linear in RGB between the samples, as render_chip.py)
+        points = []
+        for k, rgb in enumerate(samples):
+            points += [k / float(len(samples) - 1)] + list(rgb)
+        lut.RGBPoints = points
+        bottom, top = bar_range(spec, *range_of(servermanager, particles, field, last))
+        lut.RescaleTransferFunction(bottom, top)
+        GetOpacityTransferFunction(array).RescaleTransferFunction(bottom, top)
         lut.AutomaticRescaleRangeMode = "Never"
         d.SetScalarBarVisibility(view, True)
         bar = GetScalarBar(lut, view)
-        bar.Title = title
+        bar.Title = spec["title"] + ("" if spec["unit"] == "1" else " (%s)" % spec["unit"])
         bar.ComponentTitle = ""
         bar.Orientation = "Horizontal"  # above the uncut surface ahead of the chip, off the block
         bar.WindowLocation = "Upper Right Corner"
         bar.TitleColor = [0.0, 0.0, 0.0]
         bar.LabelColor = [0.0, 0.0, 0.0]
+        t = Show(clock, view)
+        t.WindowLocation = "Upper Left Corner"
+        t.Color = [0.0, 0.0, 0.0]
         for name, src in sources.items():
             if name == "particles":
                 continue

@@ -8,13 +8,15 @@ Reads the last particles frame RUN_DIR/frames/particles_NNNNN.vtu (point data ra
 fields), the meshes of the same frame RUN_DIR/frames/mesh_<name>_NNNNN.vtp and, if present and
 the frame is the last, the chip surface RUN_DIR/chip_surface.vtp (drawn translucent). Particles
 are spheres of their own radius, meshes grey. One picture per field of --fields (default
-broken_fraction,plastic_strain,von_mises_stress), each coloured blue (low) to red (high):
-  broken_fraction     OUTPUT (default RUN_DIR/chip.png), 0 to the largest fraction (at least
-                      0.05; --max-fraction sets it)
-  plastic_strain      OUTPUT's stem + _plastic_strain.png, 0 to the 99th percentile in view
-  von_mises_stress    OUTPUT's stem + _von_mises_stress.png, MPa, 0 to the 99th percentile in view
-  temperature         OUTPUT's stem + _temperature.png, deg C, the coolest to the hottest particle
-                      in view (a run with [heat]; the hottest is the point: no percentile cut)
+broken_fraction,plastic_strain,von_mises_stress,temperature), each with its perceptually uniform
+colour map, unit and range from postprocess/chip_view.json, which open_in_paraview.py reads too:
+  broken_fraction     OUTPUT (default RUN_DIR/chip.png), cividis, 0 to the largest fraction (at
+                      least 0.05; --max-fraction sets it)
+  plastic_strain      OUTPUT's stem + _plastic_strain.png, viridis, 0 to the 99th percentile in view
+  von_mises_stress    OUTPUT's stem + _von_mises_stress.png, plasma, MPa, 0 to the 99th percentile
+                      in view
+  temperature         OUTPUT's stem + _temperature.png, inferno, deg C, the coolest to the hottest
+                      particle in view (a run with [heat]; the hottest is the point: no percentile cut)
 A field the frame does not hold (output.fields left it out, or no [heat] for the temperature) is
 skipped, with a note if --fields named it.
 
@@ -35,6 +37,7 @@ Use /usr/bin/python3 (module vtk from python3-vtk9).
 """
 import argparse
 import glob
+import json
 import os
 import re
 import shutil
@@ -43,14 +46,35 @@ import xml.etree.ElementTree as ET
 
 XVFB_GUARD = "SWARF_RENDER_UNDER_XVFB"
 
-# field -> (picture suffix, colour bar title, factor to the bar's unit, offset after it, label format)
-FIELDS = {
-    "broken_fraction": ("", "damage: broken-rod fraction", 1.0, 0.0, "%.2f"),
-    "plastic_strain": ("_plastic_strain", "equivalent plastic strain held by the rods", 1.0, 0.0, "%.3g"),
-    "von_mises_stress": ("_von_mises_stress", "von Mises stress (MPa)", 1e-6, 0.0, "%.3g"),
-    "temperature": ("_temperature", "temperature (deg C)", 1.0, -273.15, "%.0f"),
-}
+
+def load_view():
+    """postprocess/chip_view.json: the fields' titles, units, ranges and colour maps, shared
+    with open_in_paraview.py (one description of the view)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "chip_view.json")
+    try:
+        with open(path) as f:
+            view = json.load(f)
+        return {f["field"]: f for f in view["fields"]}, view["colour_maps"]
+    except (OSError, ValueError, KeyError) as e:
+        print("render_chip.py: cannot read the view description %s: %s" % (path, e), file=sys.stderr)
+        sys.exit(1)
+
+
+FIELDS, COLOUR_MAPS = load_view()
 DEFAULT_FIELDS = "broken_fraction,plastic_strain,von_mises_stress,temperature"
+
+
+def set_colour_map(lut, samples):
+    """Fills the 256 entries of the lookup table from the colour map's equally spaced RGB
+    samples, interpolated linearly (as ParaView interpolates the same points)."""
+    n = lut.GetNumberOfTableValues()
+    last = len(samples) - 1
+    for i in range(n):
+        x = i / float(n - 1) * last
+        k = min(int(x), last - 1)
+        w = x - k
+        rgb = [(1.0 - w) * samples[k][c] + w * samples[k + 1][c] for c in range(3)]
+        lut.SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0)
 
 
 def fail(msg, code=1):
@@ -301,7 +325,6 @@ def main():
     ren.ResetCameraClippingRange()
 
     lut = vtk.vtkLookupTable()
-    lut.SetHueRange(0.667, 0.0)  # blue (low) to red (high)
     lut.SetNumberOfTableValues(256)
     lut.Build()
     bar = vtk.vtkScalarBarActor()
@@ -345,7 +368,10 @@ def main():
     stem = out[:-4] if out.lower().endswith(".png") else out
     wrote = 0
     for field in a.fields:
-        suffix, bar_title, factor, offset, fmt = FIELDS[field]
+        f = FIELDS[field]
+        suffix, factor, offset, fmt = f["suffix"], f["factor"], f["offset"], f["format"]
+        bar_title = f["title"] + ("" if f["unit"] == "1" else " (%s)" % f["unit"])
+        set_colour_map(lut, COLOUR_MAPS[f["colour_map"]])
         arr = pd.GetArray(field)
         if arr is None:
             if not a.fields_named and field == "temperature":
@@ -356,9 +382,11 @@ def main():
         values = vtk_to_numpy(arr).astype(float) * factor + offset
         shown = values[in_view] if in_view.any() else values
         bottom = 0.0
-        if field == "broken_fraction":
-            top = a.max_fraction if a.max_fraction > 0 else max(0.05, float(values.max()))
-        elif field == "temperature":
+        if field == "broken_fraction" and a.max_fraction > 0:
+            top = a.max_fraction
+        elif f["range"] == "max":
+            top = max(f["min_top"], float(values.max()))
+        elif f["range"] == "min_max":
             bottom = float(shown.min()) if len(shown) else 0.0
             top = max(float(shown.max()) if len(shown) else 0.0, bottom + 1.0)
         else:  # the 99th percentile of what is in view: a few extreme particles do not wash the map out
@@ -378,9 +406,8 @@ def main():
         glyphs.UseLookupTableScalarRangeOn()
         glyphs.ScalarVisibilityOn()
         glyphs.Modified()
-        bar.SetTitle(bar_title + ("" if field == "broken_fraction" else
-                                  ", the coolest to the hottest in view" if field == "temperature" else
-                                  ", 0 to the 99th percentile in view"))
+        bar.SetTitle(bar_title + {"max": "", "min_max": ", the lowest to the highest in view",
+                                  "p99": ", 0 to the 99th percentile in view"}[f["range"]])
         bar.SetLabelFormat(fmt)
         win.Render()
 

@@ -329,6 +329,13 @@ TEST(Outputs, ParaViewScriptWrittenAndRunsAgainstAStub) {
   EXPECT_NE(script.find("\"tool_mesh\":\"tool\""), std::string::npos) << script.substr(0, 3000);
   EXPECT_NE(script.find("\"fields\":[\"plastic_strain\"]"), std::string::npos);
   EXPECT_NE(script.find("\"depth_of_cut_m\":"), std::string::npos);
+  // The copy carries the view's description (postprocess/chip_view.json) as it is, so that the
+  // ParaView view and the pictures show the same units, ranges and colour maps.
+  const std::string head = "\nSWARF_RUN = ";
+  const auto at = script.find(head) + head.size();
+  const auto run = nlohmann::json::parse(script.substr(at, script.find('\n', at) - at));
+  EXPECT_EQ(run["view"],
+            nlohmann::json::parse(test::read_file(std::string(SWARF_SOURCE_DIR) + "/postprocess/chip_view.json")));
   const auto compiled = test::run_command("/usr/bin/python3 -m py_compile " + out + "/open_in_paraview.py");
   EXPECT_EQ(compiled.exit_code, 0) << compiled.output;
   const auto ran = test::run_command("cd / && PYTHONDONTWRITEBYTECODE=1 PYTHONPATH=" + std::string(SWARF_SOURCE_DIR) +
@@ -345,16 +352,43 @@ TEST(Outputs, ParaViewScriptWrittenAndRunsAgainstAStub) {
 }
 
 // The ParaView script's docstring gives the stress view's unit as its colour bar does (it said
-// "MPa scale" over a bar in Pa).
+// "MPa scale" over a bar in Pa); the bar's unit is the view description's (chip_view.json).
 TEST(Outputs, ParaViewScriptDocstringNamesTheStressBarsUnit) {
   const std::string script = test::read_file(std::string(SWARF_SOURCE_DIR) + "/postprocess/open_in_paraview.py");
-  const std::string bar = "(\"von_mises_stress\", \"von Mises stress (";
-  const auto at = script.find(bar);
-  ASSERT_NE(at, std::string::npos) << "the FIELDS entry of the stress view";
-  const std::string unit = script.substr(at + bar.size(), script.find(')', at + bar.size()) - at - bar.size());
+  const auto view = nlohmann::json::parse(
+      test::read_file(std::string(SWARF_SOURCE_DIR) + "/postprocess/chip_view.json"));
+  std::string unit;
+  for (const auto& f : view["fields"])
+    if (f["field"] == "von_mises_stress") unit = f["unit"];
+  ASSERT_FALSE(unit.empty()) << "chip_view.json describes no von_mises_stress view";
   const std::string doc = script.substr(0, script.find("\"\"\"", 3));
-  EXPECT_NE(doc.find("von Mises stress (in " + unit + ","), std::string::npos)
-      << "the bar is in " << unit << "; the docstring says: " << doc.substr(doc.find("von Mises stress"), 40);
+  EXPECT_NE(doc.find("stress (in " + unit + ","), std::string::npos)
+      << "the bar is in " << unit << "; the docstring says: " << doc.substr(doc.find("von Mises"), 60);
+}
+
+// One look (issue 36 item 6): every field of the view description has a perceptually uniform
+// colour map of its own samples (no rainbow), a unit, and a range rule both scripts know; a
+// map's lightness rises monotonically from its low end to its high end (the property that makes
+// viridis, cividis, plasma and inferno readable in grey and by colour-blind readers; an HSV
+// rainbow fails it), checked on the samples with Rec. 709 luma.
+TEST(Outputs, TheViewDescriptionHasPerceptualMapsUnitsAndRanges) {
+  const auto view = nlohmann::json::parse(
+      test::read_file(std::string(SWARF_SOURCE_DIR) + "/postprocess/chip_view.json"));
+  ASSERT_GE(view["fields"].size(), 4u);
+  for (const auto& f : view["fields"]) {
+    const std::string name = f["field"];
+    EXPECT_FALSE(f["unit"].get<std::string>().empty()) << name;
+    const std::string range = f["range"];
+    EXPECT_TRUE(range == "p99" || range == "max" || range == "min_max") << name << ": " << range;
+    const auto& map = view["colour_maps"][f["colour_map"].get<std::string>()];
+    ASSERT_GE(map.size(), 9u) << name;
+    double luma = -1.0;
+    for (const auto& rgb : map) {
+      const double y = 0.2126 * rgb[0].get<double>() + 0.7152 * rgb[1].get<double>() + 0.0722 * rgb[2].get<double>();
+      EXPECT_GT(y, luma) << name << ": lightness falls along " << f["colour_map"];
+      luma = y;
+    }
+  }
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ in a view stretched to the fragment).
 Also: a directory without frames exits non-zero with a message naming frames/.
 Usage: test_render.py PATH/TO/render_chip.py. Exit 77 (skipped) without xvfb-run or vtk.
 """
+import json
 import os
 import shutil
 import subprocess
@@ -31,6 +32,7 @@ def main():
     try:
         import vtk
         from vtk.util.numpy_support import vtk_to_numpy
+        import numpy as np
     except ImportError as e:
         print("SKIP: no vtk module for %s: %s" % (sys.executable, e))
         return SKIP
@@ -108,7 +110,10 @@ def main():
         check(r.returncode == 0, "render_chip.py exits 0 (got %d)" % r.returncode)
         check("no point data 'von_mises_stress'" in r.stderr, "the von Mises picture skipped with a note")
         check(not os.path.exists(os.path.join(tmp, "picture_von_mises_stress.png")), "no von Mises picture")
-        for png in (out, os.path.join(tmp, "picture_plastic_strain.png")):
+        with open(os.path.join(os.path.dirname(os.path.abspath(script)), "chip_view.json")) as f:
+            view = json.load(f)
+        maps = {fd["field"]: view["colour_maps"][fd["colour_map"]] for fd in view["fields"]}
+        for png, field in ((out, "broken_fraction"), (os.path.join(tmp, "picture_plastic_strain.png"), "plastic_strain")):
             check(("wrote " + png) in r.stdout, "prints 'wrote %s'" % png)
             check(os.path.exists(png), "the PNG exists")
             if not os.path.exists(png):
@@ -123,10 +128,17 @@ def main():
             a = a.reshape(-1, a.shape[-1] if a.ndim > 1 else 1)[:, :3].astype(int)
             colours = {tuple(c) for c in a[:: max(1, len(a) // 20000)]}
             check(len(colours) > 1, "more than one colour (%d sampled)" % len(colours))
-            red = ((a[:, 0] > 150) & (a[:, 2] < 100)).sum()
-            blue = ((a[:, 2] > 150) & (a[:, 0] < 100)).sum()
-            check(red > 200 and blue > 200, "red (high) and blue (low) particles show large, the view on the cut "
-                  "(%d, %d pixels)" % (red, blue))
+            # The colour map's two ends (chip_view.json), as the lit spheres shade them: pixels whose
+            # colour points the end's way in RGB (cosine > 0.985; the white background, the grey
+            # tool and the other end stay below 0.95) and at least a third as bright.
+            def near(end):
+                e = np.array(end) * 255.0
+                norm = np.linalg.norm(a, axis=1)
+                cos = (a @ e) / np.maximum(norm * np.linalg.norm(e), 1e-9)
+                return int(((cos > 0.985) & (norm > np.linalg.norm(e) / 3.0)).sum())
+            high, low = near(maps[field][-1]), near(maps[field][0])
+            check(high > 200 and low > 200, "the map's high and low ends (%s) show large, the view on the cut "
+                  "(%d, %d pixels)" % (field, high, low))
 
         empty = os.path.join(tmp, "empty")
         os.makedirs(empty)

@@ -64,7 +64,11 @@ def _proxy(kind):
     return make
 
 
-for _name in ("AddCameraLink", "AssignViewToLayout", "ColorBy", "CreateView", "GetActiveViewOrCreate",
+def GetParaViewVersion():
+    return "5.11"
+
+
+for _name in ("AddCameraLink", "AnnotateTime", "AssignViewToLayout", "Calculator", "ColorBy", "CreateView", "GetActiveViewOrCreate",
               "GetAnimationScene", "GetColorTransferFunction", "GetLayout", "GetOpacityTransferFunction", "GetScalarBar", "Hide",
               "RenameSource", "Render", "SetActiveView", "Show"):
     globals()[_name] = _proxy(_name)
