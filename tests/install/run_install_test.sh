@@ -3,7 +3,9 @@
 #
 # 1. installs the build tree into a temporary prefix (cmake --install --prefix);
 # 2. checks the installed files: the program, the post-processing scripts, the ParaView
-#    script's template, the docs, LICENSE, CITATION.cff and the engine's CMake package;
+#    script's template, the docs, LICENSE, CITATION.cff, Debian's copyright file, the man page,
+#    the examples and the engine's CMake package; the man page has a section for every
+#    subcommand that `swarf --help` lists, and every installed example case passes --check;
 # 3. moves the prefix elsewhere (a relocated install must still find its scripts), then checks
 #    that `swarf --version` names the moved prefix's share/swarf/postprocess as its scripts;
 # 4. runs the built-in default case's first 2 us (about 1,700 steps) from there, with its frames
@@ -37,7 +39,9 @@ for f in bin/swarf share/swarf/postprocess/plot_run.py share/swarf/postprocess/r
   share/swarf/postprocess/plot_material.py share/swarf/postprocess/study_plots.py \
   share/swarf/postprocess/open_in_paraview.py share/doc/swarf/LICENSE share/doc/swarf/CITATION.cff \
   share/doc/swarf/README.md share/doc/swarf/outputs.md share/doc/swarf/case-reference.md \
-  share/doc/swarf/examples/default_cut.toml lib/cmake/swarf/swarfConfig.cmake include/swarf/simulation.h; do
+  share/doc/swarf/copyright share/swarf/examples/default_cut.toml share/swarf/examples/cut_c45.toml \
+  share/swarf/examples/c45_cut_with_heat.toml share/man/man1/swarf.1.gz \
+  lib/cmake/swarf/swarfConfig.cmake include/swarf/simulation.h; do
   [ -e "$work/first/$f" ] || fail "not installed: $f"
 done
 echo "== install test: the prefix moved to $work/moved"
@@ -47,6 +51,15 @@ unset SWARF_POSTPROCESS_DIR
 "$prefix/bin/swarf" --version >"$work/version.txt" 2>&1 || fail "swarf --version" "$work/version.txt"
 grep -qx "scripts $prefix/share/swarf/postprocess" "$work/version.txt" ||
   fail "swarf --version does not name $prefix/share/swarf/postprocess as its scripts" "$work/version.txt"
+echo "== install test: the man page and the examples"
+gzip -dc "$prefix/share/man/man1/swarf.1.gz" >"$work/swarf.1" || fail "share/man/man1/swarf.1.gz is not gzip"
+grep -q '^\.TH SWARF 1' "$work/swarf.1" || fail "swarf.1 has no .TH line" "$work/swarf.1"
+for sub in $("$prefix/bin/swarf" --help | sed -n '/^Subcommands:/,$p' | awk 'NR > 1 && /^  [a-z]/ {print $1}'); do
+  grep -q "^\.SS swarf $sub\$" "$work/swarf.1" || fail "swarf.1 has no section for 'swarf $sub'" "$work/swarf.1"
+done
+for case in "$prefix"/share/swarf/examples/*.toml; do
+  "$prefix/bin/swarf" run "$case" --check >"$work/check.log" 2>&1 || fail "swarf run $case --check" "$work/check.log"
+done
 echo "== install test: swarf run from the moved prefix"
 (cd "$work" && "$prefix/bin/swarf" run --out "$work/out" --threads 1 --set integrator.end_time=2e-6 \
   --set output.steady_from=1e-6) >"$work/run.log" 2>&1 ||
