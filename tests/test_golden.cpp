@@ -67,8 +67,7 @@ TEST(Golden, ColdCutSeriesIsByteIdenticalToTheReference) {
 #if !defined(__FMA__) || defined(SWARF_SANITIZE_BUILD)
   GTEST_SKIP() << "the reference was written by a native Release build with fused multiply-adds";
 #endif
-  expect_series_is_the_reference(std::string(SWARF_SOURCE_DIR) + "/validation/cutting/cold_cut.toml", kDefaultCutTime,
-                                 "cold_cut_1.5e-5s_series.csv");
+  expect_series_is_the_reference(test::cold_cut_case(), kDefaultCutTime, "cold_cut_1.5e-5s_series.csv");
 }
 
 // The linear-law steel cut that was the default before (Newmark with fixed-point sweeps and

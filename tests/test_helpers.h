@@ -64,6 +64,10 @@ inline void write_file(const std::string& path, const std::string& text) {
 /// whole cut quickly (signals, full disks, locks, the golden series) run it.
 inline std::string linear_cut_case() { return std::string(SWARF_SOURCE_DIR) + "/validation/cutting/linear_cut.toml"; }
 
+/// The C45 cut without heat, the paper's rods (validation/cutting/cold_cut.toml): the default
+/// case until it gained heat; the tests that need a case whose rod law is not Johnson-Cook.
+inline std::string cold_cut_case() { return std::string(SWARF_SOURCE_DIR) + "/validation/cutting/cold_cut.toml"; }
+
 /// A small granular gas: 216 spheres (R = 0.5 mm, a 6^3 array of 1.05 mm spacing) with
 /// pseudo-random velocities (+-0.5 m/s, a fixed sequence) in a 7 mm box of triangle walls,
 /// Hertz with friction 0.5 and restitution 0.5, gravity, explicit steps of 1 us to 3 ms.

@@ -416,7 +416,7 @@ TEST(JohnsonCookRodLaw, TheCaseKeysBuildTheLaw) {
   test::expect_mentions(test::case_error(c45_case(jc), {"material.melt_temperature=200.0"}),
                         {"melt_temperature", "T_ref"});
   // The cold cut keeps the paper's law, to which the Johnson-Cook keys do not belong.
-  const std::string cold = test::read_file(std::string(SWARF_SOURCE_DIR) + "/validation/cutting/cold_cut.toml");
+  const std::string cold = test::read_file(test::cold_cut_case());
   test::expect_mentions(test::case_error(cold, {"rod.thermal_softening_exponent=0.9"}),
                         {"thermal_softening_exponent", "johnson_cook"});
 }

@@ -148,7 +148,7 @@ TEST(MaterialLab, BadOptionsExitWithTwo) {
   r = run("--set rod.flow_stress=[1e8]");  // a curve without its plastic strains
   EXPECT_EQ(r.exit_code, 2) << r.output;
   // The cold cut's law is the paper's, not Johnson-Cook: a temperature means nothing to it.
-  r = run(std::string(SWARF_SOURCE_DIR) + "/validation/cutting/cold_cut.toml --test tension100 --temperature 900");
+  r = run(test::cold_cut_case() + " --test tension100 --temperature 900");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("johnson_cook"), std::string::npos) << r.output;
 }
