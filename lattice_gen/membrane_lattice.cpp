@@ -12,18 +12,22 @@ namespace swarf {
 
 Lattice generate_membrane(const MembraneSpec& spec) {
   if (!(spec.radius > 0.0) || !std::isfinite(spec.radius))
-    throw InputError(fmt::format("membrane: radius must be a positive length in m, got {}", spec.radius));
+    throw InputError(fmt::format("key 'membrane.radius' must be a positive length in m, got {}", spec.radius));
   if (!(spec.length > 0.0) || !std::isfinite(spec.length) || !(spec.width > 0.0) || !std::isfinite(spec.width))
     throw InputError(
-        fmt::format("membrane: length and width must be positive lengths in m, got {}, {}", spec.length, spec.width));
+        fmt::format("keys 'membrane.length' and 'membrane.width' must be positive lengths in m, got {}, {}",
+                    spec.length, spec.width));
   if (!(spec.pre_strain > -0.5 && spec.pre_strain < 1.0))
-    throw InputError(fmt::format("membrane: the rods' pre-strain must lie in (-0.5, 1), got {}", spec.pre_strain));
+    throw InputError(fmt::format("key 'membrane.pre_tension' gives the rods a pre-strain of {}, outside (-0.5, 1)",
+                                 spec.pre_strain));
   const double d = 2.0 * spec.radius, row = 0.5 * std::sqrt(3.0) * d;
   const double tol = 1e-9 * d;  // keeps sites on the far edges
   const long rows = static_cast<long>(std::floor((spec.width + tol) / row)) + 1;
   const long cols = static_cast<long>(std::floor((spec.length + tol) / d)) + 1;
   if (double(rows) * double(cols) > 2.0e9)
-    throw InputError(fmt::format("membrane: {:.3g} particles is more than swarf indexes", double(rows) * cols));
+    throw InputError(fmt::format(
+        "keys 'membrane.length', 'membrane.width' and 'membrane.radius' make {:.3g} particles, more than swarf indexes",
+        double(rows) * cols));
   Lattice lat;
   const Vec3 o(spec.origin[0], spec.origin[1], spec.origin[2]);
   for (long j = 0; j < rows; ++j) {
@@ -34,7 +38,10 @@ Lattice generate_membrane(const MembraneSpec& spec) {
       lat.position.push_back(o + Vec3(x, double(j) * row, 0.0));
     }
   }
-  if (lat.position.size() < 3) throw InputError("membrane: the sheet holds fewer than 3 sites: enlarge it");
+  if (lat.position.size() < 3)
+    throw InputError(
+        "keys 'membrane.length' and 'membrane.width' make a sheet of fewer than 3 sites at membrane.radius: enlarge "
+        "it");
   lat.radius.assign(lat.position.size(), spec.radius);
   bond_nearest_neighbours(lat, d, 1e-6);
   // The rest length: shorter than the spacing by the pre-strain (the sheet is generated taut).

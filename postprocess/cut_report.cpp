@@ -91,6 +91,15 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
       {"steady_batches", fcs.batches},
       {"steady_batch_samples", fcs.batches > 0 ? fcs.batch_size : 0},
       {"broken_fraction", d.broken_rod_fraction}};
+  // Shop-floor units beside SI: kc = Fc / (b h) in N/mm^2 (Kienzle's, handbooks'), and the
+  // forces in N on the width the run simulated (a plane-strain slice's, or a finite cut's).
+  // h is the geometric depth of cut, exact, so kc's interval is Fc/w's over h.
+  const double h = s.uncut_surface_z - s.tool_tip[2];  // m
+  const bool has_kc = samples > 0 && h > 0;
+  out.cutting["specific_cutting_force_N_per_mm2"] = has_kc ? nlohmann::json(fc / h * 1e-6) : nlohmann::json(nullptr);
+  out.cutting["specific_cutting_force_ci95_N_per_mm2"] = finite_or_null(has_kc ? fcs.ci95 / h * 1e-6 : NAN);
+  out.cutting["cutting_force_N"] = samples > 0 ? nlohmann::json(fc * s.width) : nlohmann::json(nullptr);
+  out.cutting["thrust_force_N"] = samples > 0 ? nlohmann::json(ft * s.width) : nlohmann::json(nullptr);
   if (samples == 0)
     out.cutting
         ["steady_note"] = d.time.empty()
@@ -219,6 +228,14 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
              "cutting_force_per_width_std_N_per_m", "cutting_force_per_width_ci95_N_per_m");
   t += force("thrust force per width Ft/w ", "thrust_force_per_width_mean_N_per_m",
              "thrust_force_per_width_std_N_per_m", "thrust_force_per_width_ci95_N_per_m");
+  if (cutting.contains("specific_cutting_force_N_per_mm2") && cutting["specific_cutting_force_N_per_mm2"].is_number())
+    t += fmt::format("  specific cutting force kc=Fc/bh {:>10.4g} N/mm^2{}\n",
+                     nan_safe(num(cutting, "specific_cutting_force_N_per_mm2")),
+                     ci(cutting, "specific_cutting_force_ci95_N_per_mm2", 1.0, " N/mm^2", " of the mean", rows));
+  if (cutting.contains("cutting_force_N") && cutting["cutting_force_N"].is_number())
+    t += fmt::format("  Fc, Ft on the width b = {:.4g} mm {:>8.4g}, {:.4g} N\n",
+                     nan_safe(num(cutting, "width_m") * 1e3), nan_safe(num(cutting, "cutting_force_N")),
+                     nan_safe(num(cutting, "thrust_force_N")));
   if (cutting.contains("thrust_to_cutting_force_ratio"))
     t += fmt::format("  force ratio Ft/Fc               {}{}\n",
                      figure(cutting, "thrust_to_cutting_force_ratio", "{:>10.3g}", ""),

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of the readers (tests/fuzz/, clang with ASan and UBSan) into
 # build-fuzz/ and runs one of them, or each in turn, for SECONDS:
-#   scripts/fuzz.sh case_file|stl|obj|study_file|lattice_file|checkpoint|all SECONDS
+#   scripts/fuzz.sh case_file|case_model|stl|obj|study_file|lattice_file|checkpoint|all SECONDS
 # Seeds come from tests/fuzz/corpus/<name>/; the corpus grown goes to build-fuzz/corpus/<name>/
 # and findings (crash-*, timeout-*, oom-*) to build-fuzz/findings/<name>/. Once a finding is
 # fixed, copy it into tests/fuzz/regressions/<name>/: the ctest suite feeds every file there
 # to the same reader (tests/test_fuzz_regressions.cpp). The fuzzers run niced, one at a time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-all=(case_file stl obj study_file lattice_file checkpoint)
+all=(case_file case_model stl obj study_file lattice_file checkpoint)
 name=${1:?usage: scripts/fuzz.sh NAME|all SECONDS}
 seconds=${2:?usage: scripts/fuzz.sh NAME|all SECONDS}
 if [ "$name" = all ]; then names=("${all[@]}"); else names=("$name"); fi

@@ -194,6 +194,20 @@ TEST(BadInput, RunsThatCannotFinishAreRefusedBeforeTheFirstStep) {
   // Inflows: more particles a step than the box holds; more over the run than the memory holds.
   refused(flows("--set inflow.0.rate=4e11"), {"flows.toml", "inflow.rate", "4e+11", "more than its box can hold"});
   refused(flows("--set integrator.end_time=5e4"), {"flows.toml", "inflow.rate", "integrator.end_time", "GB", "--force"});
+  // Found by the case_model fuzzer: a [membrane] of 1e8 sites was built until the memory ran
+  // out; a [cut]'s refusal named keys the cut had derived without saying so.
+  const std::string sheet =
+      "[membrane]\nlength = 4e-3\nwidth = 4e-3\nradius = 0.5e-3\nthickness = 1e-4\nyoungs_modulus = 1e9\n"
+      "[integrator]\nend_time = 1e-5\n[output]\nvtk = false\nplots = false\n";
+  refused(run_text(dir, "sheet.toml", sheet,
+                   "--set membrane.length=0.2 --set membrane.width=0.2 "
+                   "--set membrane.radius=1e-5"),
+          {"sheet.toml", "membrane.length", "membrane.radius", "GB", "--force"});
+  refused(run_text(dir, "sheet.toml", sheet, "--set membrane.length=0.4e-3 --set membrane.width=0.4e-3"),
+          {"sheet.toml", "membrane.length", "membrane.width", "fewer than 3 sites"});
+  refused(run_command(fmt::format("timeout 120 {} run {}/examples/cut_c45.toml --out {} --set cut.cutting_speed=1e-4",
+                                  SWARF_BINARY, SWARF_SOURCE_DIR, dir / "cut")),
+          {"cut_c45.toml", "integrator.end_time", "[cut] derived it from cut.length_of_cut over cut.cutting_speed"});
 }
 
 // Issue 37, class D: an outflow half-space that holds the inflow's box (every new particle

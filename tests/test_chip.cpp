@@ -152,6 +152,7 @@ TEST(CutReport, SteadyMeansCarryConfidenceIntervals) {
   s.rake_angle_deg = 10.0;
   s.tool_tip = Vec3(0, 0, -5e-4);  // h = 0.5 mm
   s.radius = 1e-5;
+  s.width = 8e-5;
   CutData d;
   std::vector<double> fc, ft, hc;  // the steady rows
   for (int k = 0; k < 300; ++k) {
@@ -187,6 +188,11 @@ TEST(CutReport, SteadyMeansCarryConfidenceIntervals) {
     cr.push_back(5e-4 / bhc[k]);
     phi.push_back(shear_angle_deg(5e-4 / bhc[k], 10.0));
   }
+  // Shop-floor units: kc = Fc/(b h) in N/mm^2 with its interval, the forces in N on the width.
+  EXPECT_NEAR(c["specific_cutting_force_N_per_mm2"].get<double>(), fs.mean / 5e-4 * 1e-6, 1e-12 * fs.mean);
+  EXPECT_NEAR(c["specific_cutting_force_ci95_N_per_mm2"].get<double>(), fs.ci95 / 5e-4 * 1e-6, 1e-12 * fs.ci95);
+  EXPECT_EQ(c["cutting_force_N"].get<double>(), fs.mean * s.width);
+  EXPECT_EQ(c["thrust_force_N"].get<double>(), ts.mean * s.width);
   EXPECT_EQ(c["thrust_to_cutting_force_ratio"].get<double>(), ts.mean / fs.mean);
   EXPECT_NEAR(c["thrust_to_cutting_force_ratio_ci95"].get<double>() / batch_ci95(ratio), 1.0, 0.025);
   EXPECT_NEAR(r.chip["friction_angle_ci95_deg"].get<double>() / batch_ci95(beta), 1.0, 0.025);
@@ -198,6 +204,14 @@ TEST(CutReport, SteadyMeansCarryConfidenceIntervals) {
   const std::string table = cut_table(r.cutting, r.chip, 0.0);
   EXPECT_NE(table.find(fmt::format("(95 % CI of the mean +- {:.3g} kN/m)", fs.ci95 / 1e3)), std::string::npos) << table;
   EXPECT_NE(table.find("from 10 batch means of 20 rows (Student t, 9 dof)"), std::string::npos) << table;
+  EXPECT_NE(table.find(fmt::format("kc=Fc/bh {:>10.4g} N/mm^2 (95 % CI of the mean +- {:.3g} N/mm^2)",
+                                   fs.mean / 5e-4 * 1e-6, fs.ci95 / 5e-4 * 1e-6)),
+            std::string::npos)
+      << table;
+  EXPECT_NE(
+      table.find(fmt::format("Fc, Ft on the width b = 0.08 mm {:>8.4g}, {:.4g} N", fs.mean * 8e-5, ts.mean * 8e-5)),
+      std::string::npos)
+      << table;
 
   // 15 steady rows: no interval, but the mean and deviation as before.
   d.time.resize(30);

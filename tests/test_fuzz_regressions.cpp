@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
 
 #include "fuzz/fuzz_targets.h"
+#include "setup/case_keys.h"
 
 namespace swarf {
 namespace {
@@ -46,6 +48,24 @@ TEST_P(FuzzInputs, SeedsAndFoundInputsAreReadOrRefusedCleanly) {
     }
   }
   EXPECT_GT(files, 0) << "no seeds for " << t.name;
+}
+
+// The case_model fuzzer reaches a key through its dictionary's override "table.key=": a key
+// added to one of its tables without an entry would be fuzzed only by chance.
+TEST(FuzzDictionary, CaseModelNamesEveryKeyOfItsTables) {
+  const std::string dict = bytes_of(std::filesystem::path(SWARF_SOURCE_DIR) / "tests/fuzz/case_model.dict");
+  ASSERT_FALSE(dict.empty());
+  int keys = 0;
+  for (const KeyRow& row : case_key_rows()) {
+    static const std::set<std::string> tables{"cut",    "membrane", "heat", "contact",   "rod",
+                                              "inflow", "outflow",  "mesh", "integrator"};
+    if (!tables.contains(row.table)) continue;
+    const bool array = row.table == "inflow" || row.table == "outflow" || row.table == "mesh";
+    const std::string entry = "\"" + row.table + (array ? ".0." : ".") + row.name + "=\"";
+    EXPECT_NE(dict.find(entry), std::string::npos) << "tests/fuzz/case_model.dict lacks " << entry;
+    ++keys;
+  }
+  EXPECT_GT(keys, 90);
 }
 
 INSTANTIATE_TEST_SUITE_P(Readers, FuzzInputs, testing::ValuesIn(fuzz::targets()),

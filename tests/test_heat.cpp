@@ -11,6 +11,7 @@
 
 #include "setup/case_config.h"
 #include "setup/model.h"
+#include "swarf/core/errors.h"
 #include "swarf/laws/heat_conduction.h"
 #include "swarf/measure/particle_fields.h"
 #include "swarf/simulation.h"
@@ -150,6 +151,18 @@ TEST(Heat, AConductionBeyondTheLimitIsSubStepped) {
   EXPECT_EQ(th.conductions(), 1);
   th.heat(StepContext{w, 0.0, 0.3 * lim, 0.25, 0.5, false, ledger}, none, {});
   EXPECT_EQ(th.conductions(), 2);
+  // At most 1000 sub-steps in a step: beyond, the run stops with a SimulationError naming the
+  // limit and the key, instead of sub-stepping without end (a diffusivity no solid has, or a
+  // tiny heated tool: found by the case_model fuzzer).
+  th.heat(StepContext{w, 0.0, 499.9 * lim, 0.25, 0.5, false, ledger}, none, {});
+  EXPECT_NEAR(th.conduction_step(), 499.9 * lim / 1000.0, 1e-12 * lim);
+  try {
+    th.heat(StepContext{w, 0.0, 500.1 * lim, 0.25, 0.5, false, ledger}, none, {});
+    ADD_FAILURE() << "no error";
+  } catch (const SimulationError& e) {
+    EXPECT_NE(std::string(e.what()).find("1001 sub-steps"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("heat.heat_capacity"), std::string::npos) << e.what();
+  }
 }
 
 // Runs the bar's conduction (no mechanics) for 'time' s in steps of the conduction interval.

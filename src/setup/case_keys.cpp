@@ -866,9 +866,10 @@ const std::vector<Key<HeatSettings>>& heat_keys() {
       {.name = "tool_heat_capacity",
        .field = &S::tool_heat_capacity,
        .unit = "J/K",
-       .range = in(0.0, 1e9, "[]", "0 to 1e9 J/K"),
+       .range = or_zero(in(1e-6, 1e9, "[]", "0, or 1e-6 to 1e9 J/K")),
        .doc = "Heat capacity of each mesh (lumped: one temperature per tool). 0 means a heat sink at "
-              "`tool_temperature`."},
+              "`tool_temperature`. (1e-6 J/K is a cube of tool steel 0.1 mm across; a smaller tool would "
+              "need a conduction step far below the mechanical one.)"},
       {.name = "tool_conductivity",
        .field = &S::tool_conductivity,
        .unit = "W/(m K)",

@@ -221,6 +221,7 @@ std::string columns_csv(const StudyTable& study, const StudyTable& timing) {
 
 std::vector<std::string> default_plot_metrics(const StudyTable& t) {
   static const std::vector<std::string> wanted{"cutting.cutting_force_per_width_mean_N_per_m",
+                                               "cutting.specific_cutting_force_N_per_mm2",
                                                "cutting.thrust_force_per_width_mean_N_per_m",
                                                "cutting.cutting_force_per_width_std_N_per_m",
                                                "cutting.thrust_force_per_width_std_N_per_m",

@@ -21,6 +21,7 @@
 
 #include "app/observers/case_observers.h"
 #include "app/observers/observer_set.h"
+#include "app/run_limits.h"
 #include "app/run_outputs.h"
 #include "io/checkpoint.h"
 #include "io/h5file.h"
@@ -136,14 +137,19 @@ void write_case_files() {
 // particles; the program itself refuses cases larger than the machine's memory, app/run.cpp).
 // A metal's flow curve is not built: its calibration runs the material lab (a minute per
 // case under the sanitizers); the keys are still read and checked.
-bool small(const CaseSettings& cs) {
-  if (cs.particles.size() > 200 || cs.material.flow_curve) return false;
+// The FCC cells of a generated workpiece (0 without one, or with a lattice file).
+double workpiece_cells(const CaseSettings& cs) {
   const WorkpieceSettings& w = cs.workpiece;
-  if (!w.enabled || !w.lattice_file.empty()) return true;
+  if (!w.enabled || !w.lattice_file.empty()) return 0.0;
   double cells = 1;
   const double a = 2.0 * std::sqrt(2.0) * w.radius;
   for (int k = 0; k < 3; ++k) cells *= w.cells[0] > 0 ? double(w.cells[k]) : w.size[k] / a + 1.0;
-  return cells <= 64.0;
+  return cells;
+}
+
+bool small(const CaseSettings& cs) {
+  if (cs.particles.size() > 200 || cs.material.flow_curve) return false;
+  return workpiece_cells(cs) <= 64.0;
 }
 
 // --- Edits of an HDF5 file's contents ---
@@ -436,6 +442,73 @@ void case_file(const std::uint8_t* data, std::size_t size) {
   });
 }
 
+// The bases of case_model: a case of each table the case_file seeds hardly reach, small enough
+// to build and step in an iteration.
+const char* const kModelBases[] = {
+    // 0: a [cut] with heat, Johnson-Cook rods and sticking (the default's form), 2 layers
+    "[cut]\nuncut_chip_thickness = 0.1e-3\ncutting_speed = 10.0\nlength_of_cut = 0.05e-3\nrake_angle = 10.0\n"
+    "edge_radius = 0.0\nmaterial = \"C45\"\nlayers = 2\nworkpiece_height = 1.5\n[rod]\nlaw = \"johnson_cook\"\n"
+    "[contact]\nsticking = true\n[heat]\nheld_groups = [\"base\"]\n[output]\nvtk = false\nplots = false\n"
+    "progress = false\n",
+    // 1: spheres from an [[inflow]] into an [[outflow]]
+    "[material]\ndensity = 2500.0\n[contact]\nyoungs_modulus = 1e8\n[[inflow]]\nbox_min = [0.0, 0.0, 0.0]\n"
+    "box_max = [0.004, 0.004, 0.002]\nrate = 2e4\nradius_min = 0.4e-3\nradius_max = 0.6e-3\n"
+    "velocity = [0.0, 0.0, -2.0]\n[[outflow]]\nplane_point = [0.0, 0.0, -0.01]\nplane_normal = [0.0, 0.0, -1.0]\n"
+    "[integrator]\nscheme = \"verlet\"\nend_time = 2e-5\n[output]\nvtk = false\nplots = false\nprogress = false\n",
+    // 2: a rigid body (a box mesh with mass properties) and a particle
+    "[[particle]]\nposition = [0.1, 0.2, 0.34]\nradius = 1e-3\nvelocity = [0.0, 0.0, -1.0]\n[material]\n"
+    "density = 1000.0\n[contact]\n[integrator]\nend_time = 1e-5\n[output]\nvtk = false\nplots = false\n"
+    "progress = false\n[[mesh]]\nname = \"b\"\ndynamics = \"rigid_body\"\nbox_size = [0.02, 0.04, 0.06]\n"
+    "origin = [0.1, 0.2, 0.3]\nmass = 0.1\ncentre_of_mass = [0.1, 0.2, 0.3]\n"
+    "inertia = [4e-5, 3e-5, 2e-5, 0.0, 0.0, 0.0]\n",
+    // 3: a [membrane] with clamped edges and a ball
+    "[membrane]\nlength = 4e-3\nwidth = 4e-3\nradius = 0.5e-3\nthickness = 1e-4\nyoungs_modulus = 1e9\n"
+    "pre_tension = 10.0\nclamp_edges = true\n[[particle]]\nposition = [2e-3, 2e-3, 1.2e-3]\nradius = 0.5e-3\n"
+    "velocity = [0.0, 0.0, -1.0]\n[contact]\n[integrator]\nend_time = 1e-5\n[output]\nvtk = false\n"
+    "plots = false\nprogress = false\n",
+    // 4: a [cut] with a compliant tool, cold and on the paper's rods
+    "[cut]\nuncut_chip_thickness = 0.1e-3\ncutting_speed = 10.0\nlength_of_cut = 0.05e-3\nrake_angle = 0.0\n"
+    "material = \"Al2024-T351\"\nlayers = 2\nworkpiece_height = 1.5\ntool_stiffness = 1e9\ntool_mass = 0.1\n"
+    "[output]\nvtk = false\nplots = false\nprogress = false\n",
+};
+
+// Whether a parsed case of case_model is small enough to build and step in an iteration: the
+// memory and step checks of 'swarf run' first (their refusals are clean), then at most a few
+// hundred particles. A flow curve is built only with the closed-form calibration.
+bool small_model(const CaseSettings& cs) {
+  check_memory(cs, false);
+  if (cs.material.flow_curve && cs.material.calibration == "shear") return false;
+  if (cs.particles.size() > 200) return false;
+  if (cs.membrane.enabled) {
+    const MembraneSettings& ms = cs.membrane;
+    return (ms.width / (std::sqrt(3.0) * ms.radius) + 1.0) * (ms.length / (2.0 * ms.radius) + 1.0) <= 400.0;
+  }
+  return workpiece_cells(cs) <= 120.0;
+}
+
+void case_model(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return;
+  write_case_files();
+  const std::string base = kModelBases[data[0] % std::size(kModelBases)];
+  std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
+  std::vector<std::string> overrides;
+  while (!text.empty() && overrides.size() < 16) {
+    const std::size_t eol = text.find('\n');
+    std::string line(text.substr(0, eol));
+    text.remove_prefix(eol == std::string_view::npos ? text.size() : eol + 1);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!line.empty()) overrides.push_back(std::move(line));
+  }
+  refused_or_accepted([&] {
+    const CaseSettings cs = parse_case(base, "fuzz_model.toml", overrides, scratch());
+    if (!small_model(cs)) return;
+    Model model = build_model(cs);
+    // (a step count beyond integrator.max_steps is refused too; a few steps are taken anyway)
+    check_run_length(model, true, false, 0.0);
+    step_a_little(model, 3);
+  });
+}
+
 void stl(const std::uint8_t* data, std::size_t size) {
   const std::string path = file_of("mesh.stl", data, size);
   refused_or_accepted([&] { read_mesh(path); });
@@ -488,9 +561,13 @@ void checkpoint(const std::uint8_t* data, std::size_t size) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> t = {
-      {"case_file", case_file},  {"stl", stl}, {"obj", obj}, {"study_file", study_file}, {"lattice_file", lattice_file},
-      {"checkpoint", checkpoint}};
+  static const std::vector<Target> t = {{"case_file", case_file},
+                                        {"case_model", case_model},
+                                        {"stl", stl},
+                                        {"obj", obj},
+                                        {"study_file", study_file},
+                                        {"lattice_file", lattice_file},
+                                        {"checkpoint", checkpoint}};
   return t;
 }
 

@@ -19,6 +19,11 @@ namespace swarf::fuzz {
 /// (derived quantities, groups, meshes, the output schedule). Relative file names resolve in
 /// a directory holding tool.stl, tool.obj, particles.txt and lattice.h5.
 void case_file(const std::uint8_t* data, std::size_t size);
+/// A case of the tables added after case_file was written ([cut] with heat, [[inflow]] and
+/// [[outflow]], a rigid body, [membrane], a compliant tool): the first byte picks a valid base
+/// case, each following line is a 'key=value' override (as --set); the case passes the run's
+/// memory and step checks (app/run_limits.h), is built when small and stepped three times.
+void case_model(const std::uint8_t* data, std::size_t size);
 /// An STL file (ASCII or binary), read as a mesh.
 void stl(const std::uint8_t* data, std::size_t size);
 /// An OBJ file, read as a mesh.

@@ -15,6 +15,9 @@ namespace swarf {
 
 namespace {
 
+// Conduction sub-steps allowed within one mechanical step before the run stops.
+constexpr double kMaxConductionSubsteps = 1000.0;
+
 void assign(std::vector<double>& v, std::size_t n) { v.assign(n, 0.0); }
 
 }  // namespace
@@ -172,12 +175,24 @@ void ThermalSystem::conduct(World& w, const ContactSystem& contacts, double dt, 
       for (std::size_t i = 0; i < n; ++i)
         if (out_.conductance[i] > 0.0 && m[i] > 0.0 && !held_[i])
           limit = std::min(limit, m[i] * c_heat / out_.conductance[i]);
+      const double particle_limit = limit;
       if (hp.tool_heat_capacity > 0.0)
         for (std::size_t k = 0; k < nm; ++k)
           if (out_.mesh_conductance[k] > 0.0) limit = std::min(limit, hp.tool_heat_capacity / out_.mesh_conductance[k]);
       limit_ = limit;
       const double allowed = hp.stability_fraction * limit;
-      sub = std::isfinite(allowed) ? std::max(1, static_cast<int>(std::ceil(dt / allowed))) : 1;
+      const double wanted = std::isfinite(allowed) ? std::ceil(dt / allowed) : 1.0;
+      // A conduction far faster than the motion (a tiny heated tool, a diffusivity no solid
+      // has) would sub-step without end: stop and say which limit it is.
+      if (!(wanted <= kMaxConductionSubsteps))
+        throw SimulationError(fmt::format(
+            "heat: conduction needs {:.4g} sub-steps of {:.4g} s within one step of {:.4g} s (at most {}): its "
+            "explicit limit m c / G is set by {}; raise heat.{} or lower the conductivities",
+            wanted, allowed, dt, kMaxConductionSubsteps,
+            limit < particle_limit ? "a tool (heat.tool_heat_capacity over its contact conductance)"
+                                   : "the particles (heat.heat_capacity, heat.conductivity)",
+            limit < particle_limit ? "tool_heat_capacity" : "heat_capacity"));
+      sub = std::max(1, static_cast<int>(wanted));
       last_step_ = dt / sub;
       // Nothing conducts yet (no rod, no touching contact): look again at the next step.
       interval_ = std::isfinite(allowed) ? allowed : 0.0;
