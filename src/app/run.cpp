@@ -114,7 +114,9 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
     write_provenance_attributes(f, prov);
     write_series_datasets(f, observers.column_specs(), outputs.series());
     observers.write_results(f);
+    outputs.write_field_history(f);
   });
+  outputs.write_field_history_sidecar(kResults);  // (after results.h5, which it points into)
   nlohmann::json sum = summary_head(model, sim, restarted_from);
   sum["provenance"] = provenance_json(prov);
   const SeriesColumns series = outputs.series();
