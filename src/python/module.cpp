@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -23,6 +24,7 @@
 #include "python/py_simulation.h"
 #include "swarf/body_coupling.h"
 #include "swarf/core/errors.h"
+#include "swarf/measure/particle_fields.h"
 #include "swarf/version.h"
 
 namespace swarf::python {
@@ -68,6 +70,27 @@ struct RodsView {
   PySimulation* owner;
   Rods& r() const { return owner->model().rods; }
 };
+// The per-particle fields of the state now (measure/particle_fields.h), as the frames and
+// results.h5 carry them: each access computes them (copies, not views).
+ParticleFields fields_of(const ParticlesView& v) {
+  return particle_fields(v.p(), v.owner->model().rods, v.owner->model().periodic, &v.owner->sim().contacts());
+}
+py::array_t<double> doubles_copy(const double* data, std::size_t n, std::size_t k) {
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)};
+  if (k > 1) shape.push_back(static_cast<py::ssize_t>(k));
+  py::array_t<double> a(shape);
+  if (n > 0) std::copy(data, data + n * k, a.mutable_data());
+  return a;
+}
+
+// A property's getter: one scalar field of the particles, computed at each access (a copy).
+auto field_copy(std::vector<double> ParticleFields::*member) {
+  return [member](const ParticlesView& v) {
+    const ParticleFields f = fields_of(v);
+    return doubles_copy((f.*member).data(), (f.*member).size(), 1);
+  };
+}
+
 // A held body coupled to an outside code (swarf/body_coupling.h); keeps its Simulation alive.
 struct CouplingView {
   PySimulation* owner;
@@ -198,7 +221,26 @@ PYBIND11_MODULE(_swarf, m) {
           "(n,) index of the particle's group, -1 if none")
       .def_property_readonly(
           "prescribed", [](py::object s) { return scalars(s.cast<ParticlesView&>().p().prescribed, s, false); },
-          "(n,) bitmask of prescribed components (1 x, 2 y, 4 z)");
+          "(n,) bitmask of prescribed components (1 x, 2 y, 4 z)")
+      .def_property_readonly(
+          "temperature", [](py::object s) { return scalars(s.cast<ParticlesView&>().p().temperature, s, false); },
+          "(n,) K, read-only ([heat]; 0 without heat)")
+      .def_property_readonly(
+          "stress",
+          [](const ParticlesView& v) {
+            const ParticleFields f = fields_of(v);
+            return doubles_copy(f.stress.empty() ? nullptr : f.stress[0].data(), f.stress.size(), 6);
+          },
+          "(n, 6) Pa, the particles' virial stress (xx, yy, zz, xy, yz, xz; positive in tension), computed "
+          "at each access (a copy)")
+      .def_property_readonly("von_mises_stress", field_copy(&ParticleFields::von_mises),
+                             "(n,) Pa, von Mises stress, computed at each access (a copy)")
+      .def_property_readonly(
+          "hydrostatic_stress", field_copy(&ParticleFields::hydrostatic),
+          "(n,) Pa, trace of the stress over 3 (positive in tension), computed at each access (a copy)")
+      .def_property_readonly("plastic_strain", field_copy(&ParticleFields::plastic_strain),
+                             "(n,) 1, von Mises equivalent of the plastic strain the particle's intact rods hold, "
+                             "computed at each access (a copy)");
 
   py::class_<RodsView>(m, "Rods", "The rods (each stored once): NumPy views, SI units.")
       .def("__len__", [](const RodsView& v) { return v.r().size(); })
