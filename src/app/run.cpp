@@ -132,7 +132,9 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
   // (the chip surface only when it was written: a run that ends before the chip forms has none)
   const bool surface = sum.contains("chip") && sum["chip"].contains("surface_file");
   say("\n  outputs in {}/: summary.json, series.csv, results.h5{}{}{}\n", dir,
-      outputs.vtk() ? std::string(", particles.pvd (open in ParaView") + (surface ? "; chip_surface.vtp)" : ")") : "",
+      outputs.vtk() ? std::string(", results.xdmf (the frames as one series), particles.pvd (open in ParaView") +
+                          (surface ? "; chip_surface.vtp)" : ")")
+                    : "",
       outputs.checkpoints() ? ", checkpoint.h5" : "", pictures.empty() ? "" : "\n  pictures: " + pictures);
 }
 
