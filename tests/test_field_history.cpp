@@ -229,7 +229,7 @@ TEST_F(FieldHistory, TheXdmfSidecarReferencesEveryDatasetWithItsShape) {
 // results.h5 nor results.xdmf is there (the earlier, complete run's were removed when this
 // one began), so nothing looks complete; the restart from the checkpoint ends with a history
 // of every frame, the ones before the interrupt included.
-TEST(FieldHistoryInterrupted, AnInterruptedRunLeavesNoCompleteLookingHistory) {
+TEST_F(FieldHistory, AnInterruptedRunLeavesNoCompleteLookingHistory) {
   test::TempDir dir("field_history_sigterm");
   const std::string out = dir / "out";
   const auto first = run_tiny_cut_with_frames(dir, out);
