@@ -283,6 +283,7 @@ void run_case(const RunOptions& opt) {
     eprint("swarf: warning: cannot write {}/run.log; the run goes on without a log\n", dir);
 
   Simulation sim(model, model.step);
+  for (StepListener* l : opt.listeners) sim.add_listener(l);
   ObserverSet observers(sim, observers_for(model, opt.energy_check));
   RunOutputs outputs(dir, model, sim, observers, stored);
   // The ordered sites served the selections and the observers' setup, all done now; the

@@ -31,7 +31,11 @@ class LoadRun(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.dir = os.path.join(cls.tmp.name, "run")
         swarf.set_threads(1)
-        cls.summary = swarf.run(out=cls.dir, set=CUT, threads=1)
+        cls.force = {}  # step -> the tool's force after it, N (a listener of swarf.run)
+
+        def record(step):
+            cls.force[step.steps] = (step.time, step.mesh_force("tool"))
+        cls.summary = swarf.run(out=cls.dir, set=CUT, threads=1, after=record)
         cls.loaded = swarf.load(cls.dir)
 
     @classmethod
@@ -43,6 +47,20 @@ class LoadRun(unittest.TestCase):
             self.assertEqual(self.summary, json.load(f))
         self.assertEqual(self.summary["status"], "completed")
         self.assertEqual(self.loaded.summary, self.summary)
+
+    def test_a_listener_of_run_sees_every_step(self):
+        # The series' rows are written after the step whose end passes the row's time: at those
+        # steps the listener saw the very time and force the row holds.
+        s = self.loaded.series
+        self.assertEqual(max(self.force), int(s["step"][-1]))
+        self.assertGreater(np.abs(s["force_tool_x"]).max(), 1.0, "the tool should touch the workpiece")
+        for k, step in enumerate(s["step"].astype(int)):
+            if step == 0:
+                continue
+            t, f = self.force[step]
+            self.assertEqual(t, s["time"][k])
+            self.assertEqual(f[0], s["force_tool_x"][k], f"row {k}")
+            self.assertEqual(f[2], s["force_tool_z"][k], f"row {k}")
 
     def test_series_is_series_csv(self):
         with open(os.path.join(self.dir, "series.csv")) as f:

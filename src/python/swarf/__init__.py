@@ -22,6 +22,7 @@ from ._swarf import (  # noqa: F401
     OutputError,
     Particles,
     Rods,
+    RunStep,
     Simulation,
     SimulationError,
     __version__,
@@ -31,4 +32,4 @@ from ._swarf import (  # noqa: F401
 from .results import ChipSurface, Frame, Run, load, run  # noqa: F401
 
 __all__ = ["Body", "BodyCoupling", "ChipSurface", "Frame", "InputError", "OutputError", "Particles", "Rods", "Run",
-           "Simulation", "SimulationError", "__version__", "default_case_text", "load", "run", "set_threads"]
+           "RunStep", "Simulation", "SimulationError", "__version__", "default_case_text", "load", "run", "set_threads"]

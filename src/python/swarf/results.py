@@ -30,15 +30,18 @@ from ._swarf import run as _run_program
 __all__ = ["load", "run", "Run", "Frame", "ChipSurface"]
 
 
-def run(case=None, out=None, set=(), threads=0, restart=None, energy_check=True):  # noqa: A002 ('set' as swarf's --set)
+def run(case=None, out=None, set=(), threads=0, restart=None, energy_check=True,  # noqa: A002 ('set': --set)
+        before=None, after=None):
     """Runs a case as 'swarf run' does, every output in 'out', and returns its summary.json as a dict.
 
     case: a case file (None: the built-in default cut); out: the run directory (None: as the
     program: 'swarf-out', or the checkpoint's directory on a restart); set: 'key=value'
-    overrides; threads: 0 for OpenMP's default; restart: a checkpoint to continue.
+    overrides; threads: 0 for OpenMP's default; restart: a checkpoint to continue; before,
+    after: functions f(step) called around every step, step a swarf.RunStep (time, steps,
+    last_dt, broken_rods, mesh_names, mesh_force(name)); an exception raised in one stops the run.
     swarf.load(out) reads the rest (series, frames, chip surface).
     """
-    _run_program(case, out, list(set), threads, restart, energy_check)
+    _run_program(case, out, list(set), threads, restart, energy_check, before, after)
     if out is None:
         out = (os.path.dirname(os.fspath(restart)) or ".") if restart is not None else "swarf-out"
     with open(os.path.join(os.fspath(out), "summary.json")) as f:
