@@ -146,7 +146,7 @@ TEST(Outputs, FieldsChooseThePerParticleArrays) {
   std::vector<std::string> arrays;
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a) arrays.push_back(pd->GetArrayName(a));
   std::sort(arrays.begin(), arrays.end());
-  EXPECT_EQ(arrays, (std::vector<std::string>{"group", "plastic_strain", "radius", "velocity"}));
+  EXPECT_EQ(arrays, (std::vector<std::string>{"group", "id", "plastic_strain", "radius", "velocity"}));
   H5File h5(dir / "some/results.h5", H5File::Mode::Read);
   for (const char* kept : {"position", "radius", "group", "broken_fraction", "velocity", "plastic_strain"})
     EXPECT_TRUE(h5.has(std::string("/particles/") + kept)) << kept;

@@ -48,7 +48,7 @@ test::CommandResult* Provenance::run_ = nullptr;
 TEST_F(Provenance, EveryResultsDatasetHasAUnitAndADescription) {
   ASSERT_EQ(run_->exit_code, 0) << run_->output;
   H5File f(out("results.h5"), H5File::Mode::Read);
-  EXPECT_EQ(f.read_double_attribute("format"), 4.0);
+  EXPECT_EQ(f.read_double_attribute("format"), 5.0);
   const auto sets = f.datasets();
   ASSERT_GT(sets.size(), 20u);
   for (const auto& s : sets) {

@@ -115,7 +115,9 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
     write_provenance_attributes(f, prov);
     write_series_datasets(f, observers.column_specs(), outputs.series());
     observers.write_results(f);
+    outputs.write_field_history(f);
   });
+  outputs.write_field_history_sidecar(kResults);  // (after results.h5, which it points into)
   nlohmann::json sum = summary_head(model, sim, restarted_from);
   sum["provenance"] = provenance_json(prov);
   const SeriesColumns series = outputs.series();
@@ -131,7 +133,9 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
   // (the chip surface only when it was written: a run that ends before the chip forms has none)
   const bool surface = sum.contains("chip") && sum["chip"].contains("surface_file");
   say("\n  outputs in {}/: summary.json, series.csv, results.h5{}{}{}\n", dir,
-      outputs.vtk() ? std::string(", particles.pvd (open in ParaView") + (surface ? "; chip_surface.vtp)" : ")") : "",
+      outputs.vtk() ? std::string(", results.xdmf (the frames as one series), particles.pvd (open in ParaView") +
+                          (surface ? "; chip_surface.vtp)" : ")")
+                    : "",
       outputs.checkpoints() ? ", checkpoint.h5" : "", pictures.empty() ? "" : "\n  pictures: " + pictures);
 }
 
@@ -184,6 +188,7 @@ void run_case(const RunOptions& opt) {
     eprint("swarf: warning: cannot write {}/run.log; the run goes on without a log\n", dir);
 
   Simulation sim(model, model.step);
+  for (StepListener* l : opt.listeners) sim.add_listener(l);
   ObserverSet observers(sim, observers_for(model, opt.energy_check));
   RunOutputs outputs(dir, model, sim, observers, stored);
   // The ordered sites served the selections and the observers' setup, all done now; the

@@ -6,19 +6,21 @@
 
 #include "app/run_file.h"
 #include "app/threads.h"  // (set_threads, which the run's callers use beside run_case)
+#include "swarf/step_listener.h"
 
 namespace swarf {
 
 struct RunOptions {
-  std::string case_path;               ///< empty = the built-in default case
-  std::string out_dir;                 ///< empty: "swarf-out", or the checkpoint's directory on restart
-  std::string restart;                 ///< checkpoint to continue from (--restart)
-  std::vector<std::string> overrides;  ///< --set key=value
-  int threads = 0;                     ///< 0 = OpenMP default
-  bool force = false;                  ///< --force: run a case whose memory estimate exceeds the machine's
-  bool allow_long = false;             ///< --allow-long: run a case estimated to need more than integrator.max_steps
-  bool energy_check = true;            ///< false (--no-energy-check): a lost energy balance does not stop the run
-  bool check = false;                  ///< --check: build the case and print its set-up; no run, no outputs
+  std::string case_path;                 ///< empty = the built-in default case
+  std::string out_dir;                   ///< empty: "swarf-out", or the checkpoint's directory on restart
+  std::string restart;                   ///< checkpoint to continue from (--restart)
+  std::vector<std::string> overrides;    ///< --set key=value
+  int threads = 0;                       ///< 0 = OpenMP default
+  bool force = false;                    ///< --force: run a case whose memory estimate exceeds the machine's
+  bool allow_long = false;               ///< --allow-long: run a case estimated to need more than integrator.max_steps
+  bool energy_check = true;              ///< false (--no-energy-check): a lost energy balance does not stop the run
+  bool check = false;                    ///< --check: build the case and print its set-up; no run, no outputs
+  std::vector<StepListener*> listeners;  ///< called around every step of the run (not owned; swarf.run's)
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

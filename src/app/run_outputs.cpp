@@ -33,6 +33,7 @@ std::vector<std::string> frame_fields(const Model& model) {
 constexpr const char* kSeries = "series.csv";
 constexpr const char* kColumnTable = "series_columns.csv";
 constexpr const char* kCheckpoint = "checkpoint.h5";
+constexpr const char* kFieldHistory = "results.xdmf";
 
 }  // namespace
 
@@ -40,6 +41,7 @@ std::vector<RunFile> RunOutputs::files() {
   using K = RunFile::Keep;
   return {{kSeries},
           {kColumnTable},
+          {kFieldHistory},
           {kCheckpoint, K::on_restart},
           {"particles.pvd", K::on_restart},
           {"frames", K::on_restart}};
@@ -162,6 +164,18 @@ void RunOutputs::write_checkpoint_now() {
   rec_.wall_s = wall_before_ + seconds_since(start_);
   rec_.output_s = output_s_;
   write_checkpoint(dir_ + "/" + kCheckpoint, sim_, rec_, stored_, [&](StateArchive& ar) { observers_.visit_state(ar); });
+}
+
+void RunOutputs::write_field_history(H5File& f) {
+  if (!vtk_) return;
+  history_ = swarf::write_field_history(f, dir_, vtk_->times());
+  if (history_.size() < vtk_->frames())
+    eprint("swarf: warning: {} of the {} frames are missing from {}/frames and from the field history\n",
+           vtk_->frames() - history_.size(), vtk_->frames(), dir_);
+}
+
+void RunOutputs::write_field_history_sidecar(const std::string& results) {
+  if (vtk_) write_text_atomic(dir_ + "/" + kFieldHistory, field_history_xdmf(history_, results));
 }
 
 RunOutputs::WallTimes RunOutputs::finish() {

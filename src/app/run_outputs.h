@@ -16,6 +16,7 @@
 #include "app/run_file.h"
 #include "app/series_columns.h"
 #include "io/checkpoint.h"
+#include "io/field_history.h"
 #include "io/series.h"
 
 namespace swarf {
@@ -41,8 +42,8 @@ class RunOutputs {
   RunOutputs(const std::string& dir, const Model& model, Simulation& sim, ObserverSet& observers, CheckpointCase stored);
   ~RunOutputs();
 
-  /// The files it may write: series.csv, series_columns.csv, and kept by a restart, which
-  /// continues them, checkpoint.h5, particles.pvd and frames/ (the ParaView series).
+  /// The files it may write: series.csv, series_columns.csv, results.xdmf, and kept by a
+  /// restart, which continues them, checkpoint.h5, particles.pvd and frames/ (the ParaView series).
   static std::vector<RunFile> files();
 
   /// A fresh run: the observers begin, the initial row and frame, the schedule from t = 0.
@@ -60,6 +61,13 @@ class RunOutputs {
   };
   /// Closes series.csv (renamed from .part) and returns the wall times.
   WallTimes finish();
+
+  /// With output.vtk: the frames' per-particle fields into the results file being written, as
+  /// groups /frames/NNNNN (io/field_history.h).
+  void write_field_history(H5File& f);
+  /// DIR/results.xdmf, the XDMF sidecar of the history in DIR/'results' (written atomically,
+  /// after the results file is in place); nothing without output.vtk.
+  void write_field_history_sidecar(const std::string& results);
 
   /// Every row written, by column name.
   SeriesColumns series() const { return SeriesColumns(columns_, rec_.rows); }
@@ -87,6 +95,7 @@ class RunOutputs {
   std::unique_ptr<VtkSeries> vtk_;
   SeriesWriter series_;
   RunRecord rec_;
+  std::vector<HistoryFrame> history_;            ///< the frames write_field_history wrote
   std::chrono::steady_clock::time_point start_;  ///< of this process's steps
   double wall_before_ = 0;                       ///< wall time before a restart, s
   double output_s_ = 0;                          ///< wall time spent writing outputs (the part before a restart too), s

@@ -142,13 +142,51 @@ std::string H5File::dataset_attribute(const std::string& name, const std::string
   return out;
 }
 
-void H5File::write_attribute(const std::string& name, double value) {
+// A double attribute on the object 'obj'; false when HDF5 refuses it.
+static bool double_attribute(hid_t obj, const std::string& name, double value) {
   hid_t space = H5Screate(H5S_SCALAR);
-  hid_t attr = H5Acreate2(id_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t attr = H5Acreate2(obj, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
   herr_t st = attr >= 0 ? H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) : -1;
   if (attr >= 0) H5Aclose(attr);
   H5Sclose(space);
-  if (st < 0) throw OutputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+  return st >= 0;
+}
+
+void H5File::write_attribute(const std::string& name, double value) {
+  if (!double_attribute(id_, name, value))
+    throw OutputError("cannot write attribute '" + name + "' to '" + path_ + "'");
+}
+
+void H5File::write_attribute(const std::string& object, const std::string& name, double value) {
+  hid_t obj = H5Oopen(id_, object.c_str(), H5P_DEFAULT);
+  const bool ok = obj >= 0 && double_attribute(obj, name, value);
+  if (obj >= 0) H5Oclose(obj);
+  if (!ok) throw OutputError("cannot write attribute '" + name + "' of '" + object + "' to '" + path_ + "'");
+}
+
+double H5File::read_double_attribute(const std::string& object, const std::string& name) const {
+  hid_t obj = H5Oopen(id_, object.c_str(), H5P_DEFAULT);
+  if (obj < 0) throw InputError("HDF5 file '" + path_ + "' has no object '" + object + "'");
+  hid_t attr = H5Aopen(obj, name.c_str(), H5P_DEFAULT);
+  double v = 0.0;
+  const herr_t st = attr >= 0 ? H5Aread(attr, H5T_NATIVE_DOUBLE, &v) : -1;
+  if (attr >= 0) H5Aclose(attr);
+  H5Oclose(obj);
+  if (st < 0) throw InputError("cannot read attribute '" + name + "' of '" + object + "' in '" + path_ + "'");
+  return v;
+}
+
+std::vector<std::string> H5File::members(const std::string& group) const {
+  std::vector<std::string> out;
+  hid_t g = H5Gopen2(id_, group.c_str(), H5P_DEFAULT);
+  if (g < 0) throw InputError("HDF5 file '" + path_ + "' has no group '" + group + "'");
+  auto visit = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->push_back(name);
+    return 0;
+  };
+  H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, nullptr, visit, &out);
+  H5Gclose(g);
+  return out;
 }
 
 bool H5File::has(const std::string& name) const {

@@ -43,6 +43,8 @@ class H5File {
   std::string dataset_attribute(const std::string& name, const std::string& attribute) const;
   void write_attribute(const std::string& name, const std::string& value);
   void write_attribute(const std::string& name, double value);
+  /// A numeric attribute on the group or dataset 'object' ("/frames/00000"), which must exist.
+  void write_attribute(const std::string& object, const std::string& name, double value);
 
   bool has(const std::string& name) const;
   /// Reads a dataset; 'cols' receives 1 for 1-D datasets.
@@ -51,6 +53,10 @@ class H5File {
   std::string read_string_attribute(const std::string& name) const;
   bool has_attribute(const std::string& name) const;
   double read_double_attribute(const std::string& name) const;
+  /// A numeric attribute of the group or dataset 'object'.
+  double read_double_attribute(const std::string& object, const std::string& name) const;
+  /// The names of the members of the group 'group' ("/frames"), in name order.
+  std::vector<std::string> members(const std::string& group) const;
 
  private:
   std::string path_;

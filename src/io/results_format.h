@@ -9,13 +9,16 @@
 //      the group names; /series/<column> the time history; the root has the provenance.
 //   4: /bonds/formed marks the rods formed during the run, so that the broken-rod fraction can
 //      be taken over the lattice's own rods (before it, 'swarf post' divided by all rods).
+//   5: /frames/NNNNN hold the ParaView frames' per-particle fields over time (attribute time_s,
+//      datasets position, id and every point array of frames/particles_NNNNN.vtu, each with its
+//      unit), /frame_time their times; results.xdmf beside it opens them as one time series.
 #pragma once
 
 #include "io/h5file.h"
 
 namespace swarf {
 
-inline constexpr double kResultsFormat = 4.0;
+inline constexpr double kResultsFormat = 5.0;
 
 /// The layout of an open results.h5: its 'format' attribute, 1 when it has none.
 inline int results_format(const H5File& f) {

@@ -5,6 +5,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationStringKey.h>
@@ -13,6 +14,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -53,6 +55,17 @@ vtkNew<vtkDoubleArray> scalar_array(const char* name, const std::vector<double>&
   a->SetNumberOfValues(static_cast<vtkIdType>(v.size()));
   for (std::size_t i = 0; i < v.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), v[i]);
   return a;
+}
+
+// The frame's simulated time as the field data array TimeValue (s), which ParaView and VTK's
+// readers take for the time of a file opened alone (the .pvd gives it to the series too).
+void set_time(vtkDataSet* grid, double t) {
+  vtkNew<vtkDoubleArray> time;
+  time->SetName("TimeValue");
+  set_unit(time, "s");
+  time->SetNumberOfValues(1);
+  time->SetValue(0, t);
+  grid->GetFieldData()->AddArray(time);
 }
 
 vtkNew<vtkPoints> points_of(const Particles& p) {
@@ -227,7 +240,14 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     group->SetNumberOfValues(static_cast<vtkIdType>(p.size()));
     for (std::size_t i = 0; i < p.size(); ++i) group->SetValue(static_cast<vtkIdType>(i), p.group[i]);
     grid->GetPointData()->AddArray(group);
-    write_grid(grid, fmt::format("{}/frames/particles_{:05d}.vtu", dir_, k));
+    vtkNew<vtkTypeInt64Array> id;  // (stable ids: a particle is followed across frames whatever its row)
+    id->SetName("id");
+    set_unit(id, "1");
+    id->SetNumberOfValues(static_cast<vtkIdType>(p.size()));
+    for (std::size_t i = 0; i < p.size(); ++i) id->SetValue(static_cast<vtkIdType>(i), p.id[i]);
+    grid->GetPointData()->AddArray(id);
+    set_time(grid, t);
+    write_grid(grid, dir_ + "/" + particles_file(k));
   }
   if (with_rods_) {
     vtkNew<vtkUnstructuredGrid> grid;
@@ -253,11 +273,14 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     grid->GetCellData()->AddArray(scalar_array("strain", strain, "1"));
     grid->GetCellData()->AddArray(scalar_array("plastic_shift", shift, "1"));
     grid->GetCellData()->AddArray(state);
+    set_time(grid, t);
     write_grid(grid, fmt::format("{}/frames/rods_{:05d}.vtu", dir_, k));
   }
   times_.push_back(t);
   write_pvd();
 }
+
+std::string VtkSeries::particles_file(std::size_t k) { return fmt::format("frames/particles_{:05d}.vtu", k); }
 
 void VtkSeries::add_final_part(const std::string& name, const std::string& file) {
   final_parts_.emplace_back(name, file);

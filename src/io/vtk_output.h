@@ -4,7 +4,8 @@
 // displacement m, radius m, broken_fraction 1, group) and the rods as lines between them
 // (cell data stress Pa, strain 1, plastic_shift 1, state 1 = intact / 0 = broken), and each
 // triangle mesh (walls, tools) as polydata at its current position. The .pvd lists them as
-// parts 0, 1, 2, ... of every time step; ParaView opens it as one series.
+// parts 0, 1, 2, ... of every time step; ParaView opens it as one series. The particles carry
+// their stable ids (point data id), and every grid its time (field data TimeValue, s).
 // The .pvd is rewritten (atomically) after every frame.
 #pragma once
 
@@ -46,6 +47,8 @@ class VtkSeries {
   void set_periodic(Periodic periodic) { periodic_ = periodic; }
   /// Continues a series from a checkpoint: frames 0..times.size()-1 exist already.
   void resume(const std::vector<double>& times) { times_ = times; }
+  /// The particles' file of frame k, relative to the directory ("frames/particles_00003.vtu").
+  static std::string particles_file(std::size_t k);
   /// Lists an extra file (relative to the directory) as a part of the last time step, e.g.
   /// the chip surface; rewrites the .pvd.
   void add_final_part(const std::string& name, const std::string& file);

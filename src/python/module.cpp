@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -23,6 +24,7 @@
 #include "python/py_simulation.h"
 #include "swarf/body_coupling.h"
 #include "swarf/core/errors.h"
+#include "swarf/measure/particle_fields.h"
 #include "swarf/version.h"
 
 namespace swarf::python {
@@ -68,6 +70,27 @@ struct RodsView {
   PySimulation* owner;
   Rods& r() const { return owner->model().rods; }
 };
+// The per-particle fields of the state now (measure/particle_fields.h), as the frames and
+// results.h5 carry them: each access computes them (copies, not views).
+ParticleFields fields_of(const ParticlesView& v) {
+  return particle_fields(v.p(), v.owner->model().rods, v.owner->model().periodic, &v.owner->sim().contacts());
+}
+py::array_t<double> doubles_copy(const double* data, std::size_t n, std::size_t k) {
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)};
+  if (k > 1) shape.push_back(static_cast<py::ssize_t>(k));
+  py::array_t<double> a(shape);
+  if (n > 0) std::copy(data, data + n * k, a.mutable_data());
+  return a;
+}
+
+// A property's getter: one scalar field of the particles, computed at each access (a copy).
+auto field_copy(std::vector<double> ParticleFields::*member) {
+  return [member](const ParticlesView& v) {
+    const ParticleFields f = fields_of(v);
+    return doubles_copy((f.*member).data(), (f.*member).size(), 1);
+  };
+}
+
 // A held body coupled to an outside code (swarf/body_coupling.h); keeps its Simulation alive.
 struct CouplingView {
   PySimulation* owner;
@@ -94,10 +117,33 @@ std::size_t index_of(const Items& items, const py::object& key, const char* what
   return static_cast<std::size_t>(k);
 }
 
+// What a listener of swarf.run() is given around each step: the running Simulation of 'swarf
+// run', valid only during the call.
+struct RunStepView {
+  Simulation* sim;
+};
+
+// The Python callables of swarf.run(before=..., after=...), called with a RunStepView. Made and
+// destroyed with the GIL held (run_program); the step runs without it, a call takes it.
+class RunListener final : public StepListener {
+ public:
+  RunListener(py::object before, py::object after) : before_(std::move(before)), after_(std::move(after)) {}
+  void before_step(Simulation& s) override { call(before_, s); }
+  void after_step(Simulation& s) override { call(after_, s); }
+
+ private:
+  void call(const py::object& f, Simulation& s) {
+    if (f.is_none()) return;
+    py::gil_scoped_acquire gil;
+    f(RunStepView{&s});
+  }
+  py::object before_, after_;
+};
+
 // swarf.run(): 'swarf run' in this process. The run's SIGINT/SIGTERM handlers replace
 // Python's while it runs and are put back after, so Ctrl-C reaches Python again.
 void run_program(const py::object& case_path, const py::object& out, const std::vector<std::string>& set, int threads,
-                 const py::object& restart, bool energy_check) {
+                 const py::object& restart, bool energy_check, const py::object& before, const py::object& after) {
   RunOptions o;
   if (!case_path.is_none()) o.case_path = py::str(case_path);
   if (!out.is_none()) o.out_dir = py::str(out);
@@ -106,6 +152,8 @@ void run_program(const py::object& case_path, const py::object& out, const std::
   o.threads = threads;
   if (threads != 0) check_thread_count(threads, "threads");
   o.energy_check = energy_check;
+  RunListener listener(before, after);
+  if (!before.is_none() || !after.is_none()) o.listeners.push_back(&listener);
   struct sigaction old_int {
   }, old_term{};
   sigaction(SIGINT, nullptr, &old_int);
@@ -152,10 +200,33 @@ PYBIND11_MODULE(_swarf, m) {
       "The built-in default case (the C45 cut of docs/default-case.md) as TOML text.");
   m.def("run", &run_program, py::arg("case") = py::none(), py::arg("out") = py::none(),
         py::arg("set") = std::vector<std::string>{}, py::arg("threads") = 0, py::arg("restart") = py::none(),
-        py::arg("energy_check") = true,
+        py::arg("energy_check") = true, py::arg("before") = py::none(), py::arg("after") = py::none(),
         "Runs a case as 'swarf run' does, with every output (series.csv, summary.json, results.h5, ParaView "
         "files, plots) in 'out'. case: a case file (None: the built-in default case); set: 'key=value' "
-        "overrides; threads: 0 for OpenMP's default; restart: a checkpoint to continue.");
+        "overrides; threads: 0 for OpenMP's default; restart: a checkpoint to continue; before, after: "
+        "callables f(step) around every step (step: a RunStep).");
+
+  py::class_<RunStepView>(m, "RunStep",
+                          "What a listener of swarf.run() is given around each step: the run's clock and forces "
+                          "(valid only during the call).")
+      .def_property_readonly(
+          "time", [](const RunStepView& v) { return v.sim->time(); }, "s")
+      .def_property_readonly("steps", [](const RunStepView& v) { return v.sim->steps(); })
+      .def_property_readonly(
+          "last_dt", [](const RunStepView& v) { return v.sim->last_dt(); }, "s")
+      .def_property_readonly("broken_rods", [](const RunStepView& v) { return v.sim->broken_rods(); })
+      .def_property_readonly("mesh_names",
+                             [](const RunStepView& v) {
+                               std::vector<std::string> n;
+                               for (const auto& mb : v.sim->world().meshes) n.push_back(mb.name);
+                               return n;
+                             })
+      .def(
+          "mesh_force",
+          [](const RunStepView& v, const py::object& k) {
+            return vec3_copy(v.sim->mesh_force(index_of(v.sim->world().meshes, k, "mesh")));
+          },
+          py::arg("mesh"), "Force of the particles on a mesh (index or name) in the last step, N.");
 
   py::class_<ParticlesView>(m, "Particles", "The particles' arrays: NumPy views of the engine's storage, SI units.")
       .def("__len__", [](const ParticlesView& v) { return v.p().size(); })
@@ -198,7 +269,26 @@ PYBIND11_MODULE(_swarf, m) {
           "(n,) index of the particle's group, -1 if none")
       .def_property_readonly(
           "prescribed", [](py::object s) { return scalars(s.cast<ParticlesView&>().p().prescribed, s, false); },
-          "(n,) bitmask of prescribed components (1 x, 2 y, 4 z)");
+          "(n,) bitmask of prescribed components (1 x, 2 y, 4 z)")
+      .def_property_readonly(
+          "temperature", [](py::object s) { return scalars(s.cast<ParticlesView&>().p().temperature, s, false); },
+          "(n,) K, read-only ([heat]; 0 without heat)")
+      .def_property_readonly(
+          "stress",
+          [](const ParticlesView& v) {
+            const ParticleFields f = fields_of(v);
+            return doubles_copy(f.stress.empty() ? nullptr : f.stress[0].data(), f.stress.size(), 6);
+          },
+          "(n, 6) Pa, the particles' virial stress (xx, yy, zz, xy, yz, xz; positive in tension), computed "
+          "at each access (a copy)")
+      .def_property_readonly("von_mises_stress", field_copy(&ParticleFields::von_mises),
+                             "(n,) Pa, von Mises stress, computed at each access (a copy)")
+      .def_property_readonly(
+          "hydrostatic_stress", field_copy(&ParticleFields::hydrostatic),
+          "(n,) Pa, trace of the stress over 3 (positive in tension), computed at each access (a copy)")
+      .def_property_readonly("plastic_strain", field_copy(&ParticleFields::plastic_strain),
+                             "(n,) 1, von Mises equivalent of the plastic strain the particle's intact rods hold, "
+                             "computed at each access (a copy)");
 
   py::class_<RodsView>(m, "Rods", "The rods (each stored once): NumPy views, SI units.")
       .def("__len__", [](const RodsView& v) { return v.r().size(); })
