@@ -68,6 +68,15 @@ TEST(FuzzDictionary, CaseModelNamesEveryKeyOfItsTables) {
   EXPECT_GT(keys, 90);
 }
 
+// The case_model fuzzer reaches the stepping only from valid bases: each base, unchanged, is
+// built and stepped (a base refused by a later rule would leave the fuzzer at the reader).
+TEST(FuzzDictionary, EveryCaseModelBaseIsBuiltAndStepped) {
+  for (std::size_t k = 0; k < fuzz::case_model_bases(); ++k) {
+    const std::uint8_t pick = static_cast<std::uint8_t>(k);
+    EXPECT_EQ(fuzz::case_model_outcome(&pick, 1), fuzz::ModelOutcome::stepped) << "base " << k;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Readers, FuzzInputs, testing::ValuesIn(fuzz::targets()),
                          [](const testing::TestParamInfo<fuzz::Target>& i) { return std::string(i.param.name); });
 

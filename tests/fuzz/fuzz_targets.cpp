@@ -74,12 +74,14 @@ void refused_or_accepted(F&& f) {
 }
 
 // A few steps of a built model; a SimulationError (the run would stop, exit 3) is clean too.
-void step_a_little(Model& model, int steps) {
+bool step_a_little(Model& model, int steps) {
   Simulation sim(model, model.step);
   try {
     for (int k = 0; k < steps; ++k) sim.step();
   } catch (const SimulationError&) {
+    return false;
   }
+  return true;
 }
 
 // The small case the HDF5 targets build around their files.
@@ -442,12 +444,14 @@ void case_file(const std::uint8_t* data, std::size_t size) {
   });
 }
 
+namespace {
+
 // The bases of case_model: a case of each table the case_file seeds hardly reach, small enough
 // to build and step in an iteration.
 const char* const kModelBases[] = {
-    // 0: a [cut] with heat, Johnson-Cook rods and sticking (the default's form), 2 layers
+    // 0: a [cut] with heat, Johnson-Cook rods and sticking (the default's form), 3 layers (480 particles)
     "[cut]\nuncut_chip_thickness = 0.1e-3\ncutting_speed = 10.0\nlength_of_cut = 0.05e-3\nrake_angle = 10.0\n"
-    "edge_radius = 0.0\nmaterial = \"C45\"\nlayers = 2\nworkpiece_height = 1.5\n[rod]\nlaw = \"johnson_cook\"\n"
+    "edge_radius = 0.0\nmaterial = \"C45\"\nlayers = 3\n[rod]\nlaw = \"johnson_cook\"\n"
     "[contact]\nsticking = true\n[heat]\nheld_groups = [\"base\"]\n[output]\nvtk = false\nplots = false\n"
     "progress = false\n",
     // 1: spheres from an [[inflow]] into an [[outflow]]
@@ -468,7 +472,7 @@ const char* const kModelBases[] = {
     "plots = false\nprogress = false\n",
     // 4: a [cut] with a compliant tool, cold and on the paper's rods
     "[cut]\nuncut_chip_thickness = 0.1e-3\ncutting_speed = 10.0\nlength_of_cut = 0.05e-3\nrake_angle = 0.0\n"
-    "material = \"Al2024-T351\"\nlayers = 2\nworkpiece_height = 1.5\ntool_stiffness = 1e9\ntool_mass = 0.1\n"
+    "material = \"Al2024-T351\"\nlayers = 3\ntool_stiffness = 1e9\ntool_mass = 0.1\n"
     "[output]\nvtk = false\nplots = false\nprogress = false\n",
 };
 
@@ -483,11 +487,15 @@ bool small_model(const CaseSettings& cs) {
     const MembraneSettings& ms = cs.membrane;
     return (ms.width / (std::sqrt(3.0) * ms.radius) + 1.0) * (ms.length / (2.0 * ms.radius) + 1.0) <= 400.0;
   }
-  return workpiece_cells(cs) <= 120.0;
+  return workpiece_cells(cs) <= 200.0;
 }
 
-void case_model(const std::uint8_t* data, std::size_t size) {
-  if (size == 0) return;
+}  // namespace
+
+std::size_t case_model_bases() { return std::size(kModelBases); }
+
+ModelOutcome case_model_outcome(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return ModelOutcome::refused;
   write_case_files();
   const std::string base = kModelBases[data[0] % std::size(kModelBases)];
   std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
@@ -499,15 +507,22 @@ void case_model(const std::uint8_t* data, std::size_t size) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (!line.empty()) overrides.push_back(std::move(line));
   }
+  ModelOutcome outcome = ModelOutcome::refused;
   refused_or_accepted([&] {
     const CaseSettings cs = parse_case(base, "fuzz_model.toml", overrides, scratch());
-    if (!small_model(cs)) return;
+    if (!small_model(cs)) {
+      outcome = ModelOutcome::too_large;
+      return;
+    }
     Model model = build_model(cs);
     // (a step count beyond integrator.max_steps is refused too; a few steps are taken anyway)
     check_run_length(model, true, false, 0.0);
-    step_a_little(model, 3);
+    outcome = step_a_little(model, 3) ? ModelOutcome::stepped : ModelOutcome::stopped;
   });
+  return outcome;
 }
+
+void case_model(const std::uint8_t* data, std::size_t size) { case_model_outcome(data, size); }
 
 void stl(const std::uint8_t* data, std::size_t size) {
   const std::string path = file_of("mesh.stl", data, size);

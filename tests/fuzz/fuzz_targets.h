@@ -24,6 +24,12 @@ void case_file(const std::uint8_t* data, std::size_t size);
 /// case, each following line is a 'key=value' override (as --set); the case passes the run's
 /// memory and step checks (app/run_limits.h), is built when small and stepped three times.
 void case_model(const std::uint8_t* data, std::size_t size);
+/// How a case_model input ended: refused (an InputError), too large to build here, built and
+/// stopped by a SimulationError in its three steps, or built and stepped.
+enum class ModelOutcome { refused, too_large, stopped, stepped };
+ModelOutcome case_model_outcome(const std::uint8_t* data, std::size_t size);
+/// The number of base cases (the first byte of an input picks one, modulo this).
+std::size_t case_model_bases();
 /// An STL file (ASCII or binary), read as a mesh.
 void stl(const std::uint8_t* data, std::size_t size);
 /// An OBJ file, read as a mesh.
