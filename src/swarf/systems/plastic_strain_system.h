@@ -9,13 +9,16 @@
 //               list order (rod order: the same bits for any thread count)
 //   fit         every 'window' steps, each particle with a non-zero window solves the normal
 //               equations of its intact rods' current directions with the window as right-hand
-//               side: the plastic strain increment tensor dE_p of the window (the same least
-//               squares as the plastic strain the rods hold, particle_fields.h); PEEQ grows by
-//               sqrt(2/3 dev(dE_p):dev(dE_p)) and the rate is that over the window's time
+//               side: the deviatoric plastic strain increment tensor dE_p of the window (the
+//               least squares of the plastic strain the rods hold, particle_fields.h, over the
+//               trace-free tensors: strain_fit.h, fit_deviatoric_strain); PEEQ grows by
+//               sqrt(2/3 dE_p:dE_p) and the rate is that over the window's time
 // The fit is linear in the window, so a window's sum is the sum of per-step fits but for the
-// rods' turning within the window (a relative error of about a quarter of the window's strain in
-// a simple shear; a cut's window of 32 steps holds strains of 1e-3). Summing tensor increments
-// before taking their norm, the window also undercounts a strain path that reverses within it.
+// rods' turning within the window (in a simple shear of 0.01 per window: +0.2 % of PEEQ, +1.5 %
+// of the rate; tests/test_peeq.cpp). Summing tensor increments before taking their norm, the
+// window also undercounts a strain path that reverses within it. Outputs see PEEQ as of the last
+// full window. The window (StepSettings::plastic_strain_window) is 32 steps: cheap against the
+// step, and short in strain where the step is small (the cut's).
 // Rods that break or are given up in a neighbour exchange have already given their increments,
 // and formed rods start from no plastic strain, so the sum carries over bond formation; the
 // per-particle arrays are the World's (Particles::peeq, peeq_rate, window_normal, window_shear)
