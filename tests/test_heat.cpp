@@ -9,6 +9,7 @@
 #include <map>
 #include <random>
 
+#include "scenes/shear_layers.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -286,19 +287,8 @@ taylor_quinney = {}
 )",
                                        R, kRho, E, ey, duration, kC, k_low, beta);
   const Model plain = build_model(parse_case(head, "shear", {}));
-  const double s = std::sqrt(2.0) * R;  // (001) layer spacing, m
-  const double z0 = lowest(plain.particles, 2);
-  const int nz = layers(plain.particles, 2, s);
-  std::string groups;
-  for (int k = 0; k < nz; ++k)
-    groups += fmt::format(R"([[group]]
-name = "layer{}"
-box_min = [-1.0, -1.0, {}]
-box_max = [1.0, 1.0, {}]
-motion = "velocity"
-velocity = [{}, 0.0, 0.0]
-)",
-                          k, z0 + (k - 0.5) * s, z0 + (k + 0.5) * s, rate * k * s);
+  int nz = 0;
+  const std::string groups = test::shear_layer_groups(plain.particles, R, rate, nz);
   Model w = build_model(parse_case(head + groups, "shear", {}));
   ASSERT_EQ(w.groups.size(), static_cast<std::size_t>(nz));
   const std::vector<Vec3> x0 = w.particles.position;

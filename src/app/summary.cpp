@@ -147,6 +147,11 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
         "damage: broken rods over the particle's rods at the start");
     if (sim.world().heat.enabled && has_field(fields, "temperature"))
       put("/particles/temperature", p.temperature.data(), n, 1, "K", "particle temperature at the end ([heat])");
+    if (has_field(fields, "peeq"))
+      put("/particles/peeq", p.peeq.data(), n, 1, "1",
+          "accumulated equivalent plastic strain: the integral of the equivalent plastic strain rate");
+    if (has_field(fields, "peeq_rate"))
+      put("/particles/peeq_rate", p.peeq_rate.data(), n, 1, "1/s", "equivalent plastic strain rate");
     if (needs_particle_fields(fields)) {
       const ParticleFields pf = particle_fields(p, r, sim.world().periodic, &sim.contacts());
       if (has_field(fields, "stress"))

@@ -209,6 +209,8 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     grid->GetPointData()->AddArray(scalar_array("radius", p.radius, "m"));
     add("broken_fraction", [&] { return scalar_array("broken_fraction", broken_fraction_per_particle(p, r), "1"); });
     add("temperature", [&] { return scalar_array("temperature", p.temperature, "K"); });
+    add("peeq", [&] { return scalar_array("peeq", p.peeq, "1"); });
+    add("peeq_rate", [&] { return scalar_array("peeq_rate", p.peeq_rate, "1/s"); });
     if (fields) {
       add("stress", [&] {
         // 6 components in ParaView's order for a symmetric tensor (XX, YY, ZZ, XY, YZ, XZ).

@@ -193,9 +193,9 @@ struct UniaxialSettings {
 /// The per-particle fields of the ParaView frames and results.h5 that output.fields chooses
 /// from (docs/outputs.md); the positions, radii and groups are always written; temperature
 /// only with [heat].
-inline const std::vector<std::string> kParticleFieldNames{"velocity",       "displacement",     "broken_fraction",
-                                                          "stress",         "von_mises_stress", "hydrostatic_stress",
-                                                          "plastic_strain", "temperature"};
+inline const std::vector<std::string> kParticleFieldNames{
+    "velocity",       "displacement", "broken_fraction", "stress",     "von_mises_stress", "hydrostatic_stress",
+    "plastic_strain", "peeq",         "peeq_rate",       "temperature"};
 
 /// [output]
 struct OutputSettings {

@@ -1430,7 +1430,9 @@ const std::vector<Key<OutputSettings>>& output_keys() {
               "([outputs.md](outputs.md#choosing-the-fields-outputfields)); `[]` writes none. The positions, radii "
               "and groups are always written, and `results.h5` always holds `broken_fraction` (`swarf post` "
               "reads it). Fewer fields make smaller frames, and without `stress`, `von_mises_stress`, "
-              "`hydrostatic_stress` and `plastic_strain` the frames skip computing them.",
+              "`hydrostatic_stress` and `plastic_strain` the frames skip computing them, and without `peeq` and "
+              "`peeq_rate` the run does not accumulate PEEQ (a restart that adds them starts it from the "
+              "checkpoint's values).",
        .restartable = true},
   };
   return keys;

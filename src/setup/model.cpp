@@ -578,6 +578,12 @@ StepSettings step_settings(const CaseSettings& cs, const Derived& d) {
   s.krylov_max_iterations = g.krylov_max_iterations;
   s.max_step_displacement = g.max_step_displacement;
   s.sphere_orientations = cs.output.orientations;
+  // PEEQ is accumulated only when written: without 'peeq' and 'peeq_rate' in output.fields it costs nothing.
+  const auto& f = cs.output.fields;
+  s.plastic_strain_window = std::find(f.begin(), f.end(), "peeq") != f.end() ||
+                                    std::find(f.begin(), f.end(), "peeq_rate") != f.end()
+                                ? 32
+                                : 0;
   s.length_scale = d.nn_distance;
   s.stiffness_scale = d.rod_stiffness;
   return s;

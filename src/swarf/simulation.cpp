@@ -35,6 +35,7 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
     if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) rotations_ = true;
   }
   thermal_.setup(m_);
+  plastic_.setup(m_, set_.plastic_strain_window);
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
   rod_forces();
   contact_forces(dt_);
@@ -403,9 +404,10 @@ void Simulation::rod_forces() {
 }
 
 void Simulation::commit(double h) {
-  const bool heat = thermal_.enabled();
-  const RodSystem::PairList broke = rods_.commit(m_, ledger_, heat ? &rod_work_ : nullptr);
+  const bool heat = thermal_.enabled(), peeq = plastic_.enabled();
+  const RodSystem::PairList broke = rods_.commit(m_, ledger_, heat || peeq ? &rod_work_ : nullptr);
   if (heat) thermal_.heat(context(h), contacts_, rod_work_);
+  if (peeq) plastic_.accumulate(m_, rod_work_, h);  // (before bond formation: the rods' ends as they flowed)
   const bool contacts = contacts_.enabled();
   if (contacts && implicit_) contacts_.commit();  // explicit: committed by the final evaluation
   // The broken rods' pairs join the contact lists as they are: a full rebuild for each break

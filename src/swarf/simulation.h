@@ -44,6 +44,7 @@
 #include "swarf/systems/energy_ledger.h"
 #include "swarf/systems/flow_system.h"
 #include "swarf/systems/group_system.h"
+#include "swarf/systems/plastic_strain_system.h"
 #include "swarf/systems/rod_system.h"
 #include "swarf/systems/step_context.h"
 #include "swarf/systems/thermal_system.h"
@@ -218,8 +219,9 @@ class Simulation {
   GroupSystem groups_;
   FlowSystem flows_;
   ThermalSystem thermal_;
-  RodSystem::WorkList rod_work_;  // commit's scratch: the rods that flowed in the step (the heat's sources)
-  auto systems() { return std::tie(bodies_, rods_, groups_, flows_, thermal_); }
+  PlasticStrainSystem plastic_;
+  RodSystem::WorkList rod_work_;  // commit's scratch: the rods that flowed in the step (the heat's and PEEQ's sources)
+  auto systems() { return std::tie(bodies_, rods_, groups_, flows_, thermal_, plastic_); }
   template <class F>
   void for_each_system(F&& f) {
     std::apply([&](auto&... s) { (f(s), ...); }, systems());

@@ -43,6 +43,8 @@ struct StepSettings {
   double max_step_displacement = 0.25;  ///< radii: a particle moving further in a step stops (Verlet) or rejects
                                         ///< (Newmark) it
   bool sphere_orientations = false;  ///< integrate the free spheres' orientations (nothing in the dynamics depends on them)
+  int plastic_strain_window = 32;  ///< committed steps between the accumulated plastic strain's fits
+                                   ///< (systems/plastic_strain_system.h); 0 = off
   // Scales of the convergence measure (Newmark): the force level of a rod strained by
   // 1e-8 is stiffness_scale * length_scale * 1e-8, the floor below which forces are noise.
   double length_scale = 0;     ///< m: nearest-neighbour distance

@@ -3,10 +3,11 @@
 // contacts, a 6 x 6 least-squares solve per particle.
 #include "swarf/measure/particle_fields.h"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <cmath>
 
 #include "swarf/contacts/contacts.h"
+#include "swarf/measure/strain_fit.h"
 
 namespace swarf {
 
@@ -18,17 +19,6 @@ double von_mises(const SymTensor& t) {
   const double ss = sx * sx + sy * sy + sz * sz + 2.0 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]);
   return std::sqrt(1.5 * ss);
 }
-
-namespace {
-
-// The coefficients g of a normal strain: n.E.n = g . [Exx, Eyy, Ezz, Exy, Eyz, Exz].
-Eigen::Matrix<double, 6, 1> normal_strain_row(const Vec3& n) {
-  Eigen::Matrix<double, 6, 1> g;
-  g << n[0] * n[0], n[1] * n[1], n[2] * n[2], 2 * n[0] * n[1], 2 * n[1] * n[2], 2 * n[0] * n[2];
-  return g;
-}
-
-}  // namespace
 
 ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic& periodic,
                                const ContactSystem* contacts) {
@@ -78,34 +68,12 @@ ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic
     for (int c = 0; c < 6; ++c) out.stress[i][c] = moment[i][c] * inv_v;
     out.von_mises[i] = von_mises(out.stress[i]);
     out.hydrostatic[i] = (out.stress[i][0] + out.stress[i][1] + out.stress[i][2]) / 3.0;
-    Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    for (std::int32_t q = row_start[i]; q < row_start[i + 1]; ++q) {
-      const std::int32_t k = entries[q].rod;
-      if (!r.intact[k]) continue;
-      const Vec3 d = axis(k);
-      const double len = d.norm();
-      if (len <= 0) continue;
-      const auto g = normal_strain_row(d / len);
-      normal += g * g.transpose();
-      rhs += g * rod_plastic[k];
-    }
-    if (rhs.isZero(0.0)) continue;  // (no plastic strain in any rod: 0 without a solve)
-    // Least squares through the normal matrix's eigenvectors, keeping those it determines
-    // well: an eigenvalue below kWellDetermined of the largest (rods nearly parallel, or
-    // fewer than 6 directions) is dropped rather than inverted, which bounds each kept
-    // component by the rods' rms plastic strain / sqrt(kWellDetermined). An interior FCC
-    // particle's smallest ratio is 1/4, so it keeps all six (the fit is exact there).
-    constexpr double kWellDetermined = 0.05;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(normal);
-    const double top = eig.eigenvalues().maxCoeff();
-    Eigen::Matrix<double, 6, 1> e = Eigen::Matrix<double, 6, 1>::Zero();
-    for (int q = 0; q < 6; ++q)
-      if (eig.eigenvalues()[q] > kWellDetermined * top)
-        e += (eig.eigenvectors().col(q).dot(rhs) / eig.eigenvalues()[q]) * eig.eigenvectors().col(q);
-    // von Mises equivalent strain of the fitted tensor: sqrt(2/3 dev:dev), off-diagonals twice.
-    out.plastic_strain[i] = std::sqrt(2.0 / 3.0) * von_mises(SymTensor{e[0], e[1], e[2], e[3], e[4], e[5]}) /
-                            std::sqrt(1.5);
+    Mat6 normal = Mat6::Zero();
+    Vec6 rhs = Vec6::Zero();
+    add_rods_to_fit(p.position, r, periodic, row_start, entries, i, normal, rhs,
+                    [&](std::int32_t k) { return rod_plastic[k]; });
+    // (the least squares over the part the rods determine well: strain_fit.h)
+    out.plastic_strain[i] = equivalent_strain(fit_strain(normal, rhs));
   }
   return out;
 }

@@ -29,6 +29,13 @@ struct Particles {
   std::vector<std::uint8_t> prescribed;  ///< bitmask of prescribed components (1=x, 2=y, 4=z)
   std::vector<std::int32_t> group;       ///< index of the particle's group, -1 if none
   std::vector<double> temperature;       ///< K; 0 = not given one yet (ThermalSystem sets it; stays 0 without heat)
+  // Accumulated plastic strain (systems/plastic_strain_system.h): PEEQ, its rate over the last
+  // window and the window's sum of the rods' plastic increments, g (x) de_p (g the normal-strain
+  // row of the rod's direction: xx, yy, zz parts in 'normal', 2xy, 2yz, 2xz in 'shear').
+  std::vector<double> peeq;         ///< equivalent plastic strain, integral of its rate, 1
+  std::vector<double> peeq_rate;    ///< equivalent plastic strain rate over the last window, 1/s
+  std::vector<Vec3> window_normal;  ///< the window's sum n_a^2 de_p (a = x, y, z), 1
+  std::vector<Vec3> window_shear;   ///< the window's sum 2 n_a n_b de_p (xy, yz, xz), 1
   // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
   // so torques come from contacts; the machinery is here for them).
   std::vector<Quat> orientation;    ///< unit quaternion, body to world
@@ -57,6 +64,10 @@ struct Particles {
     f("prescribed", prescribed);
     f("group", group);
     f("temperature", temperature);
+    f("peeq", peeq);
+    f("peeq_rate", peeq_rate);
+    f("window_normal", window_normal);
+    f("window_shear", window_shear);
     f("orientation", orientation);
     f("omega", omega);
     f("omega_dot", omega_dot);
@@ -79,6 +90,10 @@ struct Particles {
     prescribed.resize(n, 0);
     group.resize(n, -1);
     temperature.resize(n, 0.0);
+    peeq.resize(n, 0.0);
+    peeq_rate.resize(n, 0.0);
+    window_normal.resize(n, Vec3::Zero());
+    window_shear.resize(n, Vec3::Zero());
     orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));
     omega.resize(n, Vec3::Zero());
     omega_dot.resize(n, Vec3::Zero());

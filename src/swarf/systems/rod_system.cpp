@@ -163,8 +163,10 @@ void commit_block(const Law law, double A, std::size_t begin, std::size_t end, c
 #else
       plastic_b += w;
 #endif
+      if (works)
+        works->push_back({ends[k], w, static_cast<std::int32_t>(k),
+                          plastic_strain(law, trial_shift[k]) - plastic_strain(law, shift[k])});
       shift[k] = trial_shift[k];
-      if (works) works->push_back({ends[k], w});
     }
     if (trial_broken[k]) {
       intact[k] = 0;

@@ -35,10 +35,13 @@ class StateArchive;
 class RodSystem {
  public:
   using PairList = std::vector<std::array<std::int32_t, 2>>;
-  /// A rod's plastic work over a committed step, J, with its ends (the heat's source).
+  /// A rod that flowed in a committed step: its plastic work, J, with its ends (the heat's
+  /// source), and its plastic strain increment (the accumulated plastic strain's source).
   struct RodWork {
     std::array<std::int32_t, 2> ends;
     double work;
+    std::int32_t rod;       ///< the rod's index
+    double plastic_strain;  ///< the law's plastic strain after the step minus before, 1 (of L0)
   };
   using WorkList = std::vector<RodWork>;
 
@@ -51,9 +54,10 @@ class RodSystem {
   /// Evaluates every intact rod (the trial state; nothing committed changes).
   void forces(World& w);
   /// Commits the final evaluation: shifts, breaks, plastic work and fracture energy. Returns
-  /// the pairs whose rods broke now (in rod order). With 'work', also the rods whose shift moved
-  /// and their plastic work, in rod order (the heat's sources: only the rods that flowed, which
-  /// the commit visits anyway, instead of a pass over every particle's rods).
+  /// the pairs whose rods broke now (in rod order). With 'work', also the rods whose shift moved,
+  /// their plastic work and plastic strain increment, in rod order (the heat's and the
+  /// accumulated plastic strain's sources: only the rods that flowed, which the commit visits
+  /// anyway, instead of a pass over every particle's rods).
   PairList commit(World& w, EnergyLedger& ledger, WorkList* work = nullptr);
   /// Bond formation and neighbour exchange after the commit (with contacts only): new rods
   /// between pressed lattice pairs; the contact lists lose the formed pairs and gain the

@@ -1,0 +1,98 @@
+// plastic_strain_system.cpp: the accumulated equivalent plastic strain (see plastic_strain_system.h).
+#include "swarf/systems/plastic_strain_system.h"
+
+#include <cmath>
+
+#include "swarf/core/state_archive.h"
+#include "swarf/measure/strain_fit.h"
+
+namespace swarf {
+
+namespace {
+// The deviatoric fit's components kept: eigenvalues above 1 % of the largest (a lattice sheared
+// by gamma 3 keeps all five: strain_fit.h), which bounds each by 10 times the rods' rms increment.
+constexpr double kWellDetermined = 0.01;
+}  // namespace
+
+void PlasticStrainSystem::setup(World& w, int window) {
+  window_ = window > 0 ? window : 0;
+  auto& p = w.particles;
+  if (p.peeq.size() != p.size()) p.resize(p.size());  // (a World built before the fields: zeros)
+}
+
+void PlasticStrainSystem::accumulate(World& w, const RodSystem::WorkList& flowed, double h) {
+  if (!enabled()) return;
+  auto& p = w.particles;
+  const auto& r = w.rods;
+  for (const RodSystem::RodWork& f : flowed) {
+    if (f.plastic_strain == 0.0) continue;
+    const auto [i, j] = f.ends;
+    Vec3 d = p.position[j] - p.position[i];
+    w.periodic.wrap(d);
+    const double len2 = d.squaredNorm();
+    if (!(len2 > 0.0)) continue;
+    // g(n) de with n = d / L and de = de_p L0 / L: g(d) de_p L0 / L^3.
+    const double s = f.plastic_strain * r.rest_length[f.rod] / (len2 * std::sqrt(len2));
+    const Vec3 normal(d[0] * d[0] * s, d[1] * d[1] * s, d[2] * d[2] * s);
+    const Vec3 shear(2 * d[0] * d[1] * s, 2 * d[1] * d[2] * s, 2 * d[0] * d[2] * s);
+    p.window_normal[i] += normal;
+    p.window_shear[i] += shear;
+    p.window_normal[j] += normal;
+    p.window_shear[j] += shear;
+    pending_ = true;
+  }
+  ++steps_;
+  window_time_ += h;
+  if (steps_ >= window_) fit(w);
+}
+
+void PlasticStrainSystem::fit(World& w) {
+  auto& p = w.particles;
+  const auto& r = w.rods;
+  const std::size_t n = p.size();
+  const double time = window_time_;
+  steps_ = 0;
+  window_time_ = 0.0;
+  if (!pending_) {
+    // (a window without flow: every rate is zero, set once)
+    if (time > 0.0)
+      for (auto& v : p.peeq_rate) v = 0.0;
+    return;
+  }
+  pending_ = false;
+  const bool rows = r.row_start.size() == n + 1 && r.entries.size() == 2 * r.size();
+  RodRows own;
+  if (!rows) build_rod_rows(r.ends, n, own);
+  const auto& row_start = rows ? r.row_start : own.row_start;
+  const auto& entries = rows ? r.entries : own.entries;
+  const double inv_time = time > 0.0 ? 1.0 / time : 0.0;
+  // Each particle on its own (its rods' directions, its window): any thread count, the same bits.
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = p.window_normal[i], b = p.window_shear[i];
+    if (a.isZero(0.0) && b.isZero(0.0)) {
+      p.peeq_rate[i] = 0.0;
+      continue;
+    }
+    Mat6 normal = Mat6::Zero();
+    Vec6 unused = Vec6::Zero();
+    add_rods_to_fit(p.position, r, w.periodic, row_start, entries, i, normal, unused, [](std::int32_t) { return 0.0; });
+    Vec6 rhs;
+    rhs << a[0], a[1], a[2], b[0], b[1], b[2];
+    // (no intact rod left: the window's increment has no tensor to fit and is dropped)
+    const double de = normal.isZero(0.0) ? 0.0 : equivalent_strain(fit_deviatoric_strain(normal, rhs, kWellDetermined));
+    p.peeq[i] += de;
+    p.peeq_rate[i] = de * inv_time;
+    p.window_normal[i] = Vec3::Zero();
+    p.window_shear[i] = Vec3::Zero();
+  }
+}
+
+void PlasticStrainSystem::visit_state(StateArchive& ar, World&, EnergyLedger&) {
+  // (also when off: a checkpoint loads whether or not the restart writes PEEQ)
+  ar.scalar("plastic_strain/window_steps", steps_);
+  ar.scalar("plastic_strain/window_time", window_time_);
+  ar.scalar("plastic_strain/pending", pending_);
+}
+
+}  // namespace swarf
