@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/observers/cut_probe.h"
 #include "case_errors.h"
 #include "io/mesh_file.h"
 #include "setup/case_config.h"
@@ -160,6 +161,32 @@ TEST(ToolFile, AShortCutWithTheFileToolGivesTheGeneratedToolsSeries) {
   const std::string a = slurp(dir / "gen/series.csv"), b = slurp(dir / "file/series.csv");
   ASSERT_FALSE(a.empty());
   EXPECT_TRUE(a == b) << "the series differ";
+}
+
+// The example's insert (scripts/make_example_insert.py: 6 deg, 7 deg, a 20 um hone faceted every
+// 2 deg, in mm to 9 digits, 1e-8 mm on its 3 mm coordinates): its angles within 1e-6 deg, its
+// edge radius within 1 nm; the cut's analysis (the cut probe's set-up) takes the measured rake
+// angle and the placed tip.
+TEST(ToolFile, TheExampleInsertMeasuresItsAnglesAndTheCutTakesThem) {
+  const CaseSettings cs = load_case(std::string(SWARF_SOURCE_DIR) + "/examples/cut_tool_from_file.toml",
+                                    {"cut.layers=4"});
+  const MeshSettings& t = tool_of(cs);
+  EXPECT_TRUE(t.tool_from_file);
+  EXPECT_NEAR(t.rake_angle, 6.0, 1e-6);
+  EXPECT_NEAR(t.clearance_angle, 7.0, 1e-6);
+  EXPECT_NEAR(t.edge_radius, 20e-6, 1e-9);
+  EXPECT_NEAR(t.face_length, 2e-3, 1e-9);
+  const Model model = build_model(cs);
+  const auto probe = CutProbe::of(model);
+  ASSERT_TRUE(probe);
+  EXPECT_EQ(probe->setup().rake_angle_deg, t.rake_angle);
+  EXPECT_EQ(probe->setup().tool_tip, Vec3(t.tool_tip[0], t.tool_tip[1], t.tool_tip[2]));
+  // The placed mesh's lowest point lies on the hone, above the sharp tip by r_n (1 / sin(wedge/2) - 1)
+  // along the bisector: between the tip's height and r_n above it.
+  double z_low = HUGE_VAL;
+  for (const Vec3& v : model.meshes[0].mesh.vertices) z_low = std::min(z_low, v.z());
+  EXPECT_GT(z_low, t.tool_tip[2]);
+  EXPECT_LT(z_low, t.tool_tip[2] + 20e-6);
 }
 
 // Files that are not tools, refused by the key and the file, with what was measured.
