@@ -79,6 +79,22 @@ TEST(ToolFile, TheGeneratedToolAsStlMeasuresItsAnglesToFloatRounding) {
     EXPECT_NEAR(t.edge_radius, a.radius, 1e-9);
     EXPECT_NEAR(t.tip.norm(), 0.0, 1e-9);
   }
+  // A CAD file's own origin 0.2 m away: its floats hold 1.5e-8 m there, the faces' normals 1e-5 rad
+  // (6e-4 deg), the tip about 1e-8 m.
+  const Vec3 far(0.1, 0.05, 0.2);
+  for (const Angles& a : kTools) {
+    TriangleMesh m = make_tool(spec(a.rake, a.clearance, a.radius));
+    for (auto& v : m.vertices) v += far;
+    const std::string path = (dir / "far.stl");
+    write_stl(path, m);
+    const ToolMeasure t = measure_tool(read_mesh(path));
+    SCOPED_TRACE(describe(t));
+    EXPECT_NEAR(t.rake_angle_deg, a.rake, 2e-3);
+    EXPECT_NEAR(t.clearance_angle_deg, a.clearance, 2e-3);
+    EXPECT_NEAR((t.tip - far).norm(), 0.0, 1e-7);
+    EXPECT_NEAR(t.edge_radius, a.radius, 1e-7);
+    EXPECT_NEAR(t.face_length, 2e-3, 1e-7);
+  }
 }
 
 // A [cut] with the generated tool, and the same [cut] with that tool written out as cut.tool_file:

@@ -14,10 +14,13 @@ namespace swarf {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-constexpr double kAlongY = 1e-3;      // |n_y| of a face parallel to y (the edge along y within 0.06 deg)
-constexpr double kSameNormal = 1e-5;  // rad: one plane (float STL coordinates scatter normals by ~1e-7)
-constexpr double kSameOffset = 1e-6;  // of the profile's extent: one plane
-constexpr double kNear = 0.3;         // of the profile's extent: a face near the lowest point
+constexpr double kAlongY = 1e-3;  // |n_y| of a face parallel to y (the edge along y within 0.06 deg)
+// One plane: normals within 1e-4 rad (a float STL's coordinates, 6e-8 of themselves, scatter the
+// normals of a 2 mm face 0.2 m from the origin by 1e-5 rad; a honed edge's facets are degrees
+// apart) and offsets within 1e-6 of the coordinates' size (extent plus distance from the origin).
+constexpr double kSameNormal = 1e-4;
+constexpr double kSameOffset = 1e-6;
+constexpr double kNear = 0.3;  // of the profile's extent: a face near the lowest point
 
 // A plane of the profile: faces parallel to y with one normal and offset in x-z.
 struct Plane {
@@ -40,6 +43,7 @@ ToolMeasure measure_tool(const TriangleMesh& m) {
   }
   const double extent = std::hypot(xhi - xlo, zhi - zlo);  // of the profile in x-z, m
   if (!(extent > 0)) throw InputError("the mesh is flat in x-z");
+  const double size = extent + std::max({std::abs(xlo), std::abs(xhi), std::abs(zlo), std::abs(zhi)});  // m
 
   // The planes of the faces parallel to y.
   std::vector<Plane> planes;
@@ -54,7 +58,7 @@ ToolMeasure measure_tool(const TriangleMesh& m) {
       const double l = std::hypot(p.nx, p.nz);
       const double px = p.nx / l, pz = p.nz / l;
       return px * ux + pz * uz > 0 && std::abs(px * uz - pz * ux) < kSameNormal &&
-             std::abs(p.offset - d) < kSameOffset * extent;
+             std::abs(p.offset - d) < kSameOffset * size;
     };
     auto it = std::find_if(planes.begin(), planes.end(), same);
     if (it == planes.end()) {
@@ -78,7 +82,7 @@ ToolMeasure measure_tool(const TriangleMesh& m) {
   // The lowest point, the most forward of the lowest.
   double px = -HUGE_VAL;
   for (const Vec3& v : m.vertices)
-    if (v.z() <= zlo + kSameOffset * extent) px = std::max(px, v.x());
+    if (v.z() <= zlo + kSameOffset * size) px = std::max(px, v.x());
   const double pz = zlo;
 
   // The largest rake-like and flank-like planes near it.
