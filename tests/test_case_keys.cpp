@@ -212,7 +212,7 @@ TEST(CaseKeys, EverySettingsMemberHasAKey) {
   expect_every_member_keyed("contact", contact_keys(), &ContactSettings::enabled);
   expect_every_member_keyed("heat", heat_keys(), &HeatSettings::present);
   expect_every_member_keyed("mesh", mesh_keys(), &MeshSettings::tool, &MeshSettings::motion,
-                            &MeshSettings::hinge_at_point);
+                            &MeshSettings::hinge_at_point, &MeshSettings::tool_from_file, &MeshSettings::file_tip);
   expect_every_member_keyed("particle", particle_keys());
   expect_every_member_keyed("particles", particles_file_keys());
   expect_every_member_keyed("inflow", inflow_keys());

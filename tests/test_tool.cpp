@@ -12,21 +12,14 @@
 #include "swarf/core/errors.h"
 #include "test_helpers.h"
 #include "tool_paths/tool_geometry.h"
+#include "tool_spec.h"
 
 namespace swarf {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-ToolSpec spec(double rake, double clearance, double radius) {
-  ToolSpec s;
-  s.rake_angle_deg = rake;
-  s.clearance_angle_deg = clearance;
-  s.edge_radius = radius;
-  s.width = 4e-3;
-  s.face_length = 2e-3;
-  return s;
-}
+ToolSpec spec(double rake, double clearance, double radius) { return test::tool_spec(rake, clearance, radius); }
 
 TEST(Tool, MeshIsClosedAndOutwardOriented) {
   for (double r : {0.0, 5e-5}) {

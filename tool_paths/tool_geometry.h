@@ -6,7 +6,8 @@
 // (ISO 3002 gamma_o; positive gamma: a sharper wedge); the flank face leaves it backwards, tilted up from -x by
 // the clearance angle alpha (ISO 3002 alpha_o). The wedge angle is 90 deg - gamma - alpha. An edge radius r > 0
 // replaces the tip by a circular arc tangent to both faces, split finely enough to resolve
-// it (at most 'max_arc_step_deg' per segment). The profile is extruded over the width.
+// it (at most 'max_arc_step_deg' per segment). The profile is extruded over the width. A tool
+// from a file is read in this frame and measured by tool_measure.h.
 #pragma once
 
 #include "swarf/state/mesh.h"

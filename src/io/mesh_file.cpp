@@ -238,4 +238,18 @@ void write_stl(const std::string& path, const TriangleMesh& m) {
   commit_file(tmp, path);
 }
 
+void write_obj(const std::string& path, const TriangleMesh& m) {
+  const std::string tmp = path + ".part";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw InputError("cannot write '" + tmp + "'");
+    out << fmt::format("# swarf mesh {}\n", m.name);
+    for (const Vec3& v : m.vertices) out << fmt::format("v {} {} {}\n", v[0], v[1], v[2]);
+    for (const auto& t : m.triangles) out << fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    out.close();
+    if (!out) throw OutputError("write to '" + tmp + "' failed (disk full?)");
+  }
+  commit_file(tmp, path);
+}
+
 }  // namespace swarf

@@ -12,9 +12,11 @@
 #include <sstream>
 
 #include "io/csv_cell.h"
+#include "io/mesh_file.h"
 #include "io/path_kind.h"
 #include "setup/case_tables.h"
 #include "swarf/core/errors.h"
+#include "tool_paths/tool_measure.h"
 
 namespace swarf {
 namespace {
@@ -174,6 +176,21 @@ void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
       seen += c;
 }
 
+// A [[mesh]] file with tool_tip: a cutting tool, measured now so that the cut's analysis has
+// its angles; the tool fields are set from the measurement, its tip placed at tool_tip.
+void measure_file_tool(const TableReader& r, MeshSettings& m) {
+  const ToolMeasure t = measure_tool_file(r, "file", m.file, m.scale);
+  m.tool = true;
+  m.tool_from_file = true;
+  m.rake_angle = t.rake_angle_deg;
+  m.clearance_angle = t.clearance_angle_deg;
+  m.edge_radius = t.edge_radius;
+  m.face_length = t.face_length;
+  m.width = t.edge_length;
+  m.origin = m.tool_tip;
+  m.file_tip = {t.tip.x(), t.tip.y(), t.tip.z()};
+}
+
 void check_mesh(const TableReader& r, const std::string& directory, MeshSettings& m) {
   if (static_cast<double>(m.divisions[0]) * m.divisions[1] > 1e7)
     r.fail("divisions", r.get("divisions"), "must be two positive integers [n1, n2]");
@@ -200,10 +217,10 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
     if (!from_cut.empty())
       r.fail("file", r.get("file"),
              fmt::format("[cut] set the keys of its generated tool on this [[mesh]] '{}' ({}), which a mesh file "
-                         "cannot take: [cut] does not take a tool from a file. Name this mesh otherwise to have it "
-                         "beside [cut]'s tool, or write the case without [cut] ('swarf run --check' prints the keys "
-                         "[cut] derives)",
-                         m.name, from_cut));
+                         "cannot take. To cut with a tool from a file, give it as cut.tool_file = \"{}\" (with "
+                         "cut.tool_scale for a file not in m): [cut] measures its angles and places it. Name this "
+                         "mesh otherwise to have it beside [cut]'s tool",
+                         m.name, from_cut, m.file));
   }
   if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) + (box ? 1 : 0) + (cyl ? 1 : 0) > 1)
     r.fail("file",
@@ -219,10 +236,14 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
   check_body(r, m, rect || m.tool);
   if (!m.file.empty() && r.has("origin"))
     r.fail("origin", r.get("origin"),
-           "places a rectangle or a generated tool; a mesh file is used where its coordinates (times scale) put it");
+           "places a rectangle or a generated tool; a mesh file is used where its coordinates (times scale) put it, "
+           "or, as a cutting tool, with its sharp tip at tool_tip (m)");
+  if (r.has("tool_tip") && m.file.empty())
+    r.fail("tool_tip", r.get("tool_tip"), "places a cutting tool from a file: it needs file = \"...stl|obj\"");
   if (!m.file.empty()) {
     m.file = resolve(m.file, directory);
     if (const std::string why = file_problem(m.file, "a mesh file"); !why.empty()) r.fail("file", r.get("file"), why);
+    if (r.has("tool_tip")) measure_file_tool(r, m);
   } else if (!m.tool && !box && !cyl) {  // a tool's angles and sizes are checked by its generator, which names them
     const auto& e1 = m.edge1;
     const auto& e2 = m.edge2;
@@ -233,6 +254,24 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
 }
 
 }  // namespace
+
+ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::string& path, double scale) {
+  if (const std::string why = file_problem(path, "a mesh file"); !why.empty()) r.fail(key, r.get(key), why);
+  TriangleMesh mesh;
+  try {
+    mesh = read_mesh(path, scale);
+  } catch (const InputError& e) {
+    r.fail(key, r.get(key), e.what());
+  }
+  try {
+    return measure_tool(mesh);
+  } catch (const InputError& e) {
+    r.fail(key, r.get(key),
+           fmt::format("'{}' is not a cutting tool in swarf's frame (cutting along +x, the edge along y, the rake "
+                       "face facing +x): {}",
+                       path, e.what()));
+  }
+}
 
 std::string resolve(const std::string& file, const std::string& directory) {
   std::filesystem::path p(file);

@@ -45,6 +45,8 @@ struct CutSettings {
   double rake_angle = 0.0;            ///< gamma_o (ISO 3002), deg
   double clearance_angle = 7.0;       ///< alpha_o (ISO 3002), deg
   double edge_radius = 0.0;           ///< r_n of the honed edge, m; 0 = sharp
+  std::string tool_file;              ///< the tool's mesh (.stl or .obj), measured and placed; empty = generated
+  double tool_scale = 1.0;            ///< factor on tool_file's coordinates (1e-3 for mm), 1
   double friction = 0.5;              ///< Coulomb coefficient between tool, chip and workpiece, 1
   std::string material;               ///< a material preset (material_presets.h)
   int layers = 10;                    ///< lattice layers across h, 1
@@ -263,10 +265,16 @@ struct MeshSettings {
   double edge_radius = 0.0;      ///< m
   double width = 0.0;            ///< m
   double face_length = 0.0;      ///< m
-  MotionSettings motion;         ///< as for groups
-  double youngs_modulus = kInf;  ///< Pa; inf = rigid
-  double poisson_ratio = 0.3;    ///< 1
-  double parting_lead = kInf;    ///< parting line at the lowest point: reach ahead of it, m; inf = none
+  // A cutting tool from 'file' (tool_tip given): measured (tool_measure.h) when the case is
+  // read, the fields above set from the measurement, 'origin' = tool_tip, and the mesh moved
+  // so that its measured tip 'file_tip' lands there.
+  bool tool_from_file = false;              ///< true when tool_tip is given with file
+  std::array<double, 3> tool_tip{0, 0, 0};  ///< where the file's sharp tip is placed, m
+  std::array<double, 3> file_tip{0, 0, 0};  ///< the sharp tip measured in the file (times scale), m
+  MotionSettings motion;                    ///< as for groups
+  double youngs_modulus = kInf;             ///< Pa; inf = rigid
+  double poisson_ratio = 0.3;               ///< 1
+  double parting_lead = kInf;               ///< parting line at the lowest point: reach ahead of it, m; inf = none
   // Generated closed shapes, centred on 'origin' (for rigid bodies):
   std::array<double, 3> box_size{0, 0, 0};       ///< m; all > 0 makes a box
   double cylinder_radius = 0.0;                  ///< m; > 0 makes a cylinder

@@ -985,6 +985,17 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .range = kLengthOrZero,
        .rule = "> 0 when the tool is built; required with `rake_angle`",
        .doc = "Length of the rake and flank faces from the sharp tip."},
+      {.name = "tool_tip",
+       .field = &S::tool_tip,
+       .unit = "m",
+       .no_default = true,
+       .default_note = "the file is not a tool",
+       .range = kCoordinate,
+       .rule = "only with `file`; the file must measure as a tool",
+       .doc = "Makes the mesh `file` a cutting tool, as `cut.tool_file` does ([A tool from a "
+              "file](#a-tool-from-a-file)): "
+              "its rake and clearance angles, sharp tip and edge are measured, and it is moved so that its sharp "
+              "tip sits here. The cut's analysis takes the measured rake angle."},
       {.name = "youngs_modulus",
        .field = &S::youngs_modulus,
        .unit = "Pa",

@@ -12,6 +12,7 @@
 
 #include "setup/case_config.h"
 #include "setup/case_reader.h"
+#include "tool_paths/tool_measure.h"
 
 namespace swarf {
 
@@ -31,6 +32,10 @@ struct CaseInput {
 
 /// 'file' relative to 'directory' unless it is absolute.
 std::string resolve(const std::string& file, const std::string& directory);
+
+/// The cutting tool in the mesh file 'path' (times 'scale') measured (tool_measure.h); a file that
+/// cannot be read or does not measure as a tool fails the reader's 'key' with what was found.
+ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::string& path, double scale);
 
 // [[group]], [[mesh]], [[particle]] and [particles] (case_bodies.cpp).
 void read_groups(const CaseInput& in, CaseSettings& cs);

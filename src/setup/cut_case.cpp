@@ -6,12 +6,15 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
+#include <tuple>
 #include <vector>
 
 #include "setup/case_keys.h"
 #include "setup/material_presets.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
+#include "tool_paths/tool_measure.h"
 
 namespace swarf {
 namespace {
@@ -114,6 +117,8 @@ toml::table* named(toml::array& arr, const std::string& name) {
 // layers, so that which particles it selects does not hang on the last bit of a coordinate.
 double between_layers(double v, double spacing) { return (std::floor(v / spacing + 1e-9) + 0.5) * spacing; }
 
+constexpr double kAngleAgreement = 0.5;  // deg: a given angle and the file's measured one agree within it
+
 constexpr int kBaseLayers = 2;             // the vice under the block: its two bottom layers
 constexpr double kStartAhead = 0.25;       // the tool's tip starts h/4 before the block's first centres
 constexpr double kEndClampReach = 0.5;     // the end clamp holds the last h/2 of the block ...
@@ -134,8 +139,12 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   c.enabled = true;
   r.read(cut_keys(), c);
   r.finish();
+  const bool from_file = r.has("tool_file");
   for (const char* key : {"uncut_chip_thickness", "cutting_speed", "rake_angle", "material"})
-    if (!r.has(key)) r.fail(key, nullptr, "is required");
+    if (!r.has(key) && !(from_file && std::string(key) == "rake_angle"))
+      r.fail(key, nullptr,
+             key == std::string("rake_angle") ? "is required (or a tool_file to measure it from)" : "is required");
+  if (r.has("tool_scale") && !from_file) r.fail("tool_scale", r.get("tool_scale"), "is used only with tool_file");
   for (const char* table : {"membrane", "uniaxial"})
     if (in.table(table))
       throw InputError(fmt::format("{}: [cut] makes a cutting case; it cannot go with [{}]", in.source, table));
@@ -149,12 +158,32 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
 
   const double h = c.uncut_chip_thickness;  // m
   const double v = c.cutting_speed;         // m/s
+  // The tool's geometry: the keys', or measured from the tool file.
+  double rake = c.rake_angle, clearance = c.clearance_angle, edge_radius = c.edge_radius;  // deg, deg, m
+  std::optional<ToolMeasure> measured;
+  if (from_file) {
+    measured = measure_tool_file(r, "tool_file", resolve(c.tool_file, in.directory), c.tool_scale);
+    rake = measured->rake_angle_deg, clearance = measured->clearance_angle_deg, edge_radius = measured->edge_radius;
+    for (auto [key, given, got] :
+         {std::tuple{"rake_angle", c.rake_angle, rake}, std::tuple{"clearance_angle", c.clearance_angle, clearance}})
+      if (r.has(key) && !(std::abs(given - got) <= kAngleAgreement))
+        r.fail(key, r.get(key),
+               fmt::format("is {} deg, but the tool in cut.tool_file '{}' measures {:.6g} deg (more than {} deg "
+                           "apart): correct it, or leave it out to take the file's",
+                           given, c.tool_file, got, kAngleAgreement));
+    if (r.has("edge_radius"))
+      r.fail("edge_radius", r.get("edge_radius"),
+             fmt::format("is not used with tool_file: the file's edge is the edge (measured r_n = {})",
+                         measured->sharp ? "0, sharp" : fmt::format("{:.4g} m", edge_radius)));
+  }
   // (the keys' defaults that depend on others; cs.cut keeps what the case gave, as every table does)
   const double length = r.has("length_of_cut") ? c.length_of_cut : 10.0 * h;                          // m
   const double block_length = r.has("workpiece_length") ? c.workpiece_length : length / h + kRunOut;  // in h
   const double steady_from = r.has("steady_from") ? c.steady_from : 0.5 * length;                     // m of travel
-  if (!(c.edge_radius < h))
-    r.fail("edge_radius", r.get("edge_radius"), fmt::format("must be below the depth of cut h = {} m", h));
+  if (!(edge_radius < h))
+    r.fail(from_file ? "tool_file" : "edge_radius", r.get(from_file ? "tool_file" : "edge_radius"),
+           fmt::format("{}must be below the depth of cut h = {} m",
+                       from_file ? fmt::format("the tool's edge radius (measured {:.4g} m) ", edge_radius) : "", h));
   if (!(steady_from < length))
     r.fail("steady_from", r.get("steady_from"),
            fmt::format("must be below the length of cut {} m (a tool travel, m)", length));
@@ -168,11 +197,14 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   const bool plane_strain = !(c.width > 0.0);
 
   Printout out;
-  out.lines.push_back(fmt::format(
-      "# derived from [cut]: h = {:.4g} mm, v_c = {:.4g} m/s, {:.4g} mm of cut, rake {} deg, clearance {} deg, edge "
-      "radius {:.4g} um, {}, {}",
-      h * 1e3, v, length * 1e3, c.rake_angle, c.clearance_angle, c.edge_radius * 1e6, c.material,
-      plane_strain ? "plane strain" : fmt::format("width {:.4g} mm", c.width * 1e3)));
+  out.lines.push_back(
+      fmt::format("# derived from [cut]: h = {:.4g} mm, v_c = {:.4g} m/s, {:.4g} mm of cut, rake {:.6g} deg, clearance "
+                  "{:.6g} deg, edge radius {:.4g} um, {}, {}",
+                  h * 1e3, v, length * 1e3, rake, clearance, edge_radius * 1e6, c.material,
+                  plane_strain ? "plane strain" : fmt::format("width {:.4g} mm", c.width * 1e3)));
+  if (measured)
+    out.lines.push_back(
+        fmt::format("# the tool from {} (x {}), measured: {}", c.tool_file, c.tool_scale, describe(*measured)));
 
   // The lattice. The keys the case gives are read back through the key table (with its
   // checks), so that what follows uses them.
@@ -282,15 +314,28 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
     out.lines.push_back("# name = \"tool\"  (given in the case; its other keys below win over [cut])");
   }
   Filler tf(*tool, "mesh", out, derived);
-  tf.put("rake_angle", c.rake_angle, "deg");
-  tf.put("clearance_angle", c.clearance_angle, "deg");
-  tf.put("edge_radius", c.edge_radius, "m");
   const double span = plane_strain ? 2 * n[1] * s : y_last;  // the period, or the block's width between centres
-  tf.put("width", span + 2 * kToolOverhang * h,
-         fmt::format("m: overhangs the workpiece by {} h on each side", kToolOverhang));
-  tf.put("face_length", kFaceLength * h, fmt::format("m: {} h", kFaceLength));
-  tf.put("origin", std::array<double, 3>{-kStartAhead * h, 0.5 * y_last, z_tip},
-         fmt::format("m: sharp tip {} h before the block, h below its top centres ({} m)", kStartAhead, z_top));
+  const std::array<double, 3> tip{-kStartAhead * h, 0.5 * y_last, z_tip};
+  const std::string tip_note = fmt::format("m: sharp tip {} h before the block, h below its top centres ({} m)",
+                                           kStartAhead, z_top);
+  if (measured) {
+    if (!(measured->edge_length >= span))
+      r.fail("tool_file", r.get("tool_file"),
+             fmt::format("the tool's edge is {:.6g} m long along y, the workpiece {:.6g} m wide{}: the edge must "
+                         "span it",
+                         measured->edge_length, span, plane_strain ? " (the period of plane strain)" : ""));
+    tf.put("file", c.tool_file, "the tool from cut.tool_file");
+    tf.put("scale", c.tool_scale, "1");
+    tf.put("tool_tip", tip, tip_note + ", the edge's middle on the block's");
+  } else {
+    tf.put("rake_angle", c.rake_angle, "deg");
+    tf.put("clearance_angle", c.clearance_angle, "deg");
+    tf.put("edge_radius", c.edge_radius, "m");
+    tf.put("width", span + 2 * kToolOverhang * h,
+           fmt::format("m: overhangs the workpiece by {} h on each side", kToolOverhang));
+    tf.put("face_length", kFaceLength * h, fmt::format("m: {} h", kFaceLength));
+    tf.put("origin", tip, tip_note);
+  }
   if (compliant) {
     // A rigid body that does not turn, pulled along the path by its mount: the spring's
     // anchor starts at the tip (its centre of mass) and moves with the holder.
@@ -299,8 +344,7 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
     tf.put("dynamics", std::string("rigid_body"),
            fmt::format("a compliant tool: f_n = sqrt(k/m) / 2 pi = {:.4g} kHz", std::sqrt(k / mass) / (2e3 * M_PI)));
     tf.put("mass", mass, fmt::format("kg: tool_mass x the width b = {} m", b));
-    tf.put("centre_of_mass", std::array<double, 3>{-kStartAhead * h, 0.5 * y_last, z_tip},
-           "m: at the sharp tip, where the mount's spring pulls");
+    tf.put("centre_of_mass", tip, "m: at the sharp tip, where the mount's spring pulls");
     const double I = mass * kFaceLength * h * kFaceLength * h / 6.0;  // kg m^2 (nominal: it does not turn)
     tf.put("inertia", std::array<double, 6>{I, I, I, 0.0, 0.0, 0.0}, "kg m^2: nominal, the tool does not turn");
     tf.put("rotation", std::string("prescribed"), "with no angular velocity: it does not turn");

@@ -43,21 +43,42 @@ const std::vector<Key<CutSettings>>& cut_keys() {
        .field = &S::rake_angle,
        .unit = "deg",
        .no_default = true,
-       .default_note = "required",
+       .default_note = "required; with `tool_file` measured",
        .range = in(-60.0, 60.0, "()"),
+       .rule = "with `tool_file`: within 0.5 deg of the measured",
        .doc = "gamma_o, the tool's orthogonal rake angle (ISO 3002): positive tilts the rake face back from the "
-              "normal to the cut surface."},
+              "normal to the cut surface. With `tool_file` it is measured from the mesh; given as well, it must "
+              "agree (a check that the file is the tool meant)."},
       {.name = "clearance_angle",
        .field = &S::clearance_angle,
        .unit = "deg",
        .range = in(0.0, 45.0, "(]"),
-       .doc = "alpha_o, the tool's orthogonal clearance angle (ISO 3002) between the flank and the cut surface."},
+       .rule = "with `tool_file`: within 0.5 deg of the measured",
+       .doc = "alpha_o, the tool's orthogonal clearance angle (ISO 3002) between the flank and the cut surface. With "
+              "`tool_file` it is measured from the mesh; given as well, it must agree."},
       {.name = "edge_radius",
        .field = &S::edge_radius,
        .unit = "m",
        .range = kLengthOrZero,
-       .rule = "below the depth of cut",
-       .doc = "r_n, radius of the honed cutting edge; 0 is a sharp edge."},
+       .rule = "below the depth of cut; not with `tool_file`",
+       .doc = "r_n, radius of the honed cutting edge; 0 is a sharp edge. With `tool_file` the file's edge is "
+              "used and its radius estimated from the mesh (printed)."},
+      {.name = "tool_file",
+       .field = &S::tool_file,
+       .default_note = "a generated tool",
+       .rule = "an existing `.stl` or `.obj` file (relative to the case file) that measures as a tool",
+       .doc = "The tool as a triangle mesh from CAD instead of the generated one, in the generated tool's frame: "
+              "it cuts along +x, its cutting edge lies along y, the rake face faces +x (toward the chip) and the "
+              "flank -z. Its rake and clearance angles, sharp tip and edge radius are measured from the faces "
+              "next to its lowest point ([below](#a-tool-from-a-file)) and printed; it is moved so that the sharp "
+              "tip sits where the generated tool's would (h below the top centres, h/4 before the block, on the "
+              "middle of the width). Its edge must span the workpiece's width."},
+      {.name = "tool_scale",
+       .field = &S::tool_scale,
+       .unit = "1",
+       .range = kScale,
+       .rule = "only with `tool_file`",
+       .doc = "Factor on `tool_file`'s coordinates, as [[mesh]] `scale`: 1e-3 for a file in mm."},
       {.name = "friction",
        .field = &S::friction,
        .unit = "1",

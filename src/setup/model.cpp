@@ -380,6 +380,10 @@ void build_meshes(const CaseSettings& cs, Model& model) {
     if (!ms.file.empty()) {
       mb.mesh = read_mesh(ms.file, ms.scale);
       mb.mesh.name = ms.name;
+      if (ms.tool_from_file) {  // its measured sharp tip to tool_tip (as a generated tool's to its origin)
+        const Vec3 shift = to_vec(ms.tool_tip) - to_vec(ms.file_tip);
+        for (auto& v : mb.mesh.vertices) v += shift;
+      }
     } else if (ms.tool) {
       ToolSpec ts;
       ts.rake_angle_deg = ms.rake_angle;

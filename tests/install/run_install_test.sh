@@ -40,7 +40,8 @@ for f in bin/swarf share/swarf/postprocess/plot_run.py share/swarf/postprocess/r
   share/swarf/postprocess/open_in_paraview.py share/doc/swarf/LICENSE share/doc/swarf/CITATION.cff \
   share/doc/swarf/README.md share/doc/swarf/outputs.md share/doc/swarf/case-reference.md \
   share/doc/swarf/copyright share/swarf/examples/default_cut.toml share/swarf/examples/cut_c45.toml \
-  share/swarf/examples/c45_cut_with_heat.toml share/man/man1/swarf.1.gz \
+  share/swarf/examples/c45_cut_with_heat.toml share/swarf/examples/cut_tool_from_file.toml \
+  share/swarf/examples/insert_r6_c7.stl share/man/man1/swarf.1.gz \
   lib/cmake/swarf/swarfConfig.cmake include/swarf/simulation.h; do
   [ -e "$work/first/$f" ] || fail "not installed: $f"
 done

@@ -1,5 +1,5 @@
-// cut_probe.h: the orthogonal cut by the first tool mesh (a [[mesh]] with rake_angle) through
-// the workpiece.
+// cut_probe.h: the orthogonal cut by the first tool mesh (a [[mesh]] with rake_angle, or a file
+// with tool_tip, its rake angle measured by tool_measure.h) through the workpiece.
 //
 // Per row: the tool's travel along x (m), the cutting force Fc (against the cutting direction
 // +x of the tool frame) and the thrust force Ft (+z, away from the workpiece), both per unit
