@@ -19,6 +19,7 @@
 #include "setup/case_tables.h"
 #include "setup/cut_case.h"
 #include "setup/material_presets.h"
+#include "setup/rod_laws/rod_laws.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 #include "swarf/laws/bond_formation.h"
@@ -234,28 +235,9 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (!(d.hardening_modulus < d.youngs_modulus))
     r.fail("hardening_modulus", r.get("hardening_modulus"),
            fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
-  // "johnson_cook_rate" is the law's former name (it had only the rate factor; without the
-  // temperature keys it is still that law).
-  const bool jc = d.law == "johnson_cook" || d.law == "johnson_cook_rate";
-  static constexpr std::array<const char*, 5> kJcKeys{
-      "rate_sensitivity", "reference_rate", "thermal_softening_exponent", "melt_temperature", "reference_temperature"};
-  for (const char* key : kJcKeys) {
-    if (r.has(key) && !jc) r.fail(key, r.get(key), "belongs to the Johnson-Cook law: set rod.law = \"johnson_cook\"");
-    if (r.has(key) && cs.material.macroscopic)
-      r.fail(key, r.get(key),
-             fmt::format("with [material] properties the law's factors are material.{} (and its neighbours)",
-                         key == std::string_view("rate_sensitivity")             ? "johnson_cook_c"
-                         : key == std::string_view("thermal_softening_exponent") ? "johnson_cook_m"
-                                                                                 : key));
-  }
-  if (!jc && !cs.material.johnson_cook_keys_given.empty())
-    r.fail("law", r.get("law"),
-           fmt::format("material.{} belongs to the Johnson-Cook law: set rod.law = \"johnson_cook\"",
-                       cs.material.johnson_cook_keys_given.front()));
-  if (jc && !(d.melt_temperature > d.reference_temperature))
-    r.fail(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature",
-           r.get(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature"),
-           fmt::format("T_melt = {} K must lie above T_ref = {} K", d.melt_temperature, d.reference_temperature));
+  // Each law's rules on its keys, whether rod.law names it or not (setup/rod_laws/).
+  const RodLawSetup& chosen = rod_law_setup(d.law);
+  for (const RodLawSetup& law : rod_law_setups()) law.rules(r, cs, &law == &chosen);
   if (r.has("failure_elongation") && r.has("failure_strain"))
     r.fail(
         "failure_elongation", r.get("failure_elongation"),

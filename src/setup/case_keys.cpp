@@ -3,6 +3,8 @@
 // 'swarf case keys --update docs/case-reference.md'.
 #include "setup/case_keys.h"
 
+#include "setup/rod_laws/rod_laws.h"
+
 namespace swarf {
 
 const std::vector<Key<WorkpieceSettings>>& workpiece_keys() {
@@ -316,9 +318,19 @@ const std::vector<Key<MaterialSettings>>& material_keys() {
   return keys;
 }
 
+// rod.law's doc line: each law's part after the other (setup/rod_laws/).
+static std::string_view rod_law_doc() {
+  static const std::string doc = [] {
+    std::string d = "The rod law.";
+    for (const RodLawSetup& law : rod_law_setups()) d += " " + std::string(law.doc);
+    return d;
+  }();
+  return doc;
+}
+
 const std::vector<Key<RodSettings>>& rod_keys() {
   using S = RodSettings;
-  static const std::vector<Key<S>> keys{
+  static const std::vector<Key<S>> head{
       {.name = "youngs_modulus",
        .field = &S::youngs_modulus,
        .unit = "Pa",
@@ -388,48 +400,10 @@ const std::vector<Key<RodSettings>>& rod_keys() {
        .rule = "as many as `flow_plastic_strain`, not decreasing; each below E, and rising by at most E times its "
                "plastic strain range",
        .doc = "The flow stress of the rod in tension at the points of `flow_plastic_strain`."},
-      {.name = "law",
-       .field = &S::law,
-       .choices = {"bilinear", "johnson_cook", "johnson_cook_rate"},
-       .doc = "The rod law. `\"bilinear\"`: the paper's elastic-plastic law with kinematic hardening (the single "
-              "slope or the hardening curve above). `\"johnson_cook\"`: the same with all its flow stresses "
-              "(yield and back stress) scaled by Johnson-Cook's S = R Theta, the rate factor R = 1 + C "
-              "ln(max(rate / rate_ref, 1)) of the rod's strain rate and the thermal factor Theta = max(1 - T*^m, "
-              "1e-3) of the mean of its ends' temperatures (with [heat]); failure is not scaled "
-              "(docs/physics.md section 2). `\"johnson_cook_rate\"` is the same law (its former name). With "
-              "[material], C, m, the rates and temperatures are `material.johnson_cook_c` and its neighbours."},
-      {.name = "rate_sensitivity",
-       .field = &S::rate_sensitivity,
-       .unit = "1",
-       .range = in(0.0, 10.0, "[]", "a judgement: measured C are below 0.1"),
-       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
-       .doc = "C of the rate factor (Johnson-Cook's C; about 0.01 to 0.03 for steels). 0: no rate term."},
-      {.name = "reference_rate",
-       .field = &S::reference_rate,
-       .unit = "1/s",
-       .range = kStrainRate,
-       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
-       .doc = "rate_ref, a rod strain rate: at rod strain rates up to this the rate factor is 1."},
-      {.name = "thermal_softening_exponent",
-       .field = &S::thermal_softening_exponent,
-       .unit = "1",
-       .range = in(0, 10, "(]"),
-       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
-       .doc = "m of the thermal factor Theta = max(1 - T*^m, 1e-3), T* = (T - T_ref)/(T_melt - T_ref) "
-              "clamped to [0, 1]."},
-      {.name = "melt_temperature",
-       .field = &S::melt_temperature,
-       .unit = "K",
-       .range = or_inf(kTemperature),
-       .rule = "only with `law` = `\"johnson_cook\"`; above `reference_temperature`; not with [material] "
-               "properties",
-       .doc = "T_melt, where the rod keeps 1e-3 of its flow stress. inf: no thermal softening (the rate law)."},
-      {.name = "reference_temperature",
-       .field = &S::reference_temperature,
-       .unit = "K",
-       .range = kTemperature,
-       .rule = "only with `law` = `\"johnson_cook\"`; not with [material] properties",
-       .doc = "T_ref, the temperature of the flow curve; a particle without a temperature (no [heat]) is at it."},
+      {.name = "law", .field = &S::law, .choices = rod_law_names(), .doc = rod_law_doc()},
+  };
+  // Then each law's own keys (setup/rod_laws/), then the keys every law shares.
+  static const std::vector<Key<S>> tail{
       {.name = "damping_ratio",
        .field = &S::damping_ratio,
        .unit = "1",
@@ -454,6 +428,12 @@ const std::vector<Key<RodSettings>>& rod_keys() {
               "then shears at a steady stress instead of hardening without bound or softening into a slip plane "
               "(validation/cutting/README.md). Without it, a particle with 12 rods forms none."},
   };
+  static const std::vector<Key<S>> keys = [] {
+    std::vector<Key<S>> all = head;
+    for (const RodLawSetup& law : rod_law_setups()) all.insert(all.end(), law.keys().begin(), law.keys().end());
+    all.insert(all.end(), tail.begin(), tail.end());
+    return all;
+  }();
   return keys;
 }
 
