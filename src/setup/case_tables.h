@@ -9,6 +9,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "setup/case_config.h"
 #include "setup/case_reader.h"
@@ -31,6 +32,11 @@ struct CaseInput {
 
 /// 'file' relative to 'directory' unless it is absolute.
 std::string resolve(const std::string& file, const std::string& directory);
+
+/// A hardening curve's rules: 2 to FlowCurve::kMaxPoints points, strains increasing from 0,
+/// stresses that never fall and stay below 'E' (named 'E_key' in messages), Pa.
+void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
+                      const std::vector<double>& sig, double E, const std::string& E_key);
 
 // [[group]], [[mesh]], [[particle]] and [particles] (case_bodies.cpp).
 void read_groups(const CaseInput& in, CaseSettings& cs);
