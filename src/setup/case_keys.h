@@ -1,8 +1,9 @@
 // case_keys.h: the case file's schema, one entry per key (name, member, unit, range, doc line).
 //
-// Each key of a case file is written once, in case_keys.cpp: the entry names the member of
-// the settings struct (case_config.h) it fills, so its type and its default come from the
-// struct. The reader (case_reader.h) takes type and range checks from the entry, and
+// Each key of a case file is written once, in case_keys.cpp or in its table's module
+// (setup/modules/: [rod], [contact], [heat]; a rod law's own keys in setup/rod_laws/), as a
+// Key (key.h): the entry names the member of the settings struct it fills, so its type and its
+// default come from the struct. The reader (case_reader.h) takes type and range checks from the entry, and
 // rejects keys that no entry names; the key tables of docs/case-reference.md are generated
 // from the entries (case_keys_doc.cpp), and a test fails when the document drifts.
 // Rules between keys ("give either cells or size") stay hand-written in the readers; the
