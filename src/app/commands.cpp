@@ -19,6 +19,7 @@
 #include "lattice_gen/lattice_file.h"
 #include "setup/case_config.h"
 #include "setup/case_keys_doc.h"
+#include "setup/rod_laws/rod_laws.h"
 #include "study/report.h"
 #include "study/sweep.h"
 #include "swarf/core/errors.h"
@@ -120,11 +121,13 @@ struct MaterialCommand final : Command {
                     "End strain of the test, a magnitude: log strain (uniaxial; compression goes to -TO), shear "
                     "gamma, the cyclic amplitude (defaults 3, 3, 0.5, 2, 2, 0.02)");
     sub->add_option("--increment", mo.increment, "Strain step: log strain, or gamma in shear (default 1e-4)");
-    sub->add_option("--temperature", mo.temperature,
-                    "Temperature (K) of every rod, for rod.law = \"johnson_cook\" (default: the law's T_ref)");
-    sub->add_option("--strain-rate", mo.strain_rate,
-                    "Equivalent plastic strain rate (1/s) the rate factor reads, for rod.law = \"johnson_cook\" "
-                    "(default: quasi-static)");
+    sub->add_option(
+        "--temperature", mo.temperature,
+        fmt::format("Temperature (K) of every rod, for {} (default: the law's T_ref)", rod_laws_with_conditions()));
+    sub->add_option(
+        "--strain-rate", mo.strain_rate,
+        fmt::format("Equivalent plastic strain rate (1/s) the rate factor reads, for {} (default: quasi-static)",
+                    rod_laws_with_conditions()));
     sub->add_option("--out", mo.out_dir, "Output directory")->required();
     sub->add_option("--set", mo.overrides, "Override a case key: --set rod.failure_strain=0.5 (repeatable)")
         ->allow_extra_args(false);

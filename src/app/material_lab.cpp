@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/plots.h"
 #include "app/summary.h"
@@ -24,6 +25,7 @@
 #include "lattice_gen/material_summary.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
+#include "setup/rod_laws/rod_laws.h"
 #include "swarf/core/errors.h"
 
 namespace swarf {
@@ -207,24 +209,18 @@ int run_material(const MaterialOptions& o) {
   const Model model = build_model(cs);
   const Derived& d = model.derived;
   if (model.rods.ends.empty()) throw InputError(cs.source + ": the case has no bonded workpiece to test");
-  // A Johnson-Cook law at a fixed temperature and rate is its base law with the flow stresses
-  // times S = R Theta (scaled_base, exact for the law's construction): the crystal runs with that.
-  const auto* jc = std::get_if<JohnsonCookRodLaw>(&d.law);
+  // A law that reads a temperature or a rate runs at fixed ones (setup/rod_laws/).
+  const RodLawSetup& law_setup = rod_law_setup_of(d.law);
   const bool conditions = o.temperature != 0 || o.strain_rate != 0;
-  if (conditions && !jc)
-    throw InputError("--temperature, --strain-rate: need a Johnson-Cook rod law (--set rod.law=\"johnson_cook\")");
+  if (conditions && !law_setup.at_conditions)
+    throw InputError("--temperature, --strain-rate: need " + rod_laws_with_conditions());
   if (!(o.temperature >= 0 && o.temperature < 1e4))
     throw InputError(fmt::format("--temperature: must be a temperature in [0, 1e4) K, got {}", o.temperature));
   if (!(o.strain_rate >= 0 && std::isfinite(o.strain_rate)))
     throw InputError(fmt::format("--strain-rate: must be a rate >= 0 (1/s), got {}", o.strain_rate));
-  double rate_f = 1, thermal_f = 1;
-  AnyRodLaw law = d.law;
-  if (jc) {
-    // (the rod rate whose equivalent rate is the one asked: rate_eq = kappa rate_rod)
-    rate_f = rate_factor(*jc, o.strain_rate / jc->rate_to_equivalent);
-    thermal_f = thermal_factor(*jc, o.temperature > 0 ? o.temperature : jc->reference_temperature);
-    law = scaled_base(*jc, rate_f * thermal_f);
-  }
+  std::optional<RodLawAtConditions> at;
+  if (law_setup.at_conditions) at = law_setup.at_conditions(d.law, o.temperature, o.strain_rate);
+  const AnyRodLaw law = at ? at->law : d.law;
   const CauchyBornCrystal crystal(law, d.cell_edge, d.rod_area);
   const auto C = crystal.elastic_constants();
   const double l0 = crystal.rest_length(), K = (C(0, 0) + 2 * C(0, 1)) / 3;
@@ -236,13 +232,8 @@ int run_material(const MaterialOptions& o) {
   doc["overrides"] = o.overrides;
   doc["increment"] = o.increment;
   doc["strain_rate_per_s"] = o.strain_rate;
-  if (jc) {
-    // The closed form: every flow stress S times the law's at T_ref and rate_ref.
-    doc["temperature_K"] = o.temperature > 0 ? o.temperature : jc->reference_temperature;
-    doc["rate_factor"] = rate_f;
-    doc["thermal_factor"] = thermal_f;
-    doc["flow_scale"] = rate_f * thermal_f;
-  }
+  if (at)
+    for (const auto& [key, value] : at->record) doc[key] = value;
   doc["rod_law"] = rod_law_to_json(d.law, "");
   doc["lattice"] = {{"cell_edge_m", d.cell_edge},
                     {"rest_length_m", l0},
@@ -323,12 +314,7 @@ int run_material(const MaterialOptions& o) {
       "material lab: {} (E_rod = {:.4g} Pa, a = {:.4g} m, A = {:.4g} m^2); lattice E100 = {:.4g} Pa, "
       "E110 = {:.4g} Pa, C44 = {:.4g} Pa\n",
       cs.source, elastic_modulus(d.law), d.cell_edge, d.rod_area, e100, e110, C(3, 3));
-  if (jc)
-    fmt::print(
-        "Johnson-Cook: T = {:.6g} K, equivalent plastic strain rate {:.6g} 1/s: R = {:.6g}, Theta = {:.6g}, "
-        "every flow stress x S = {:.6g}\n",
-        o.temperature > 0 ? o.temperature : jc->reference_temperature, o.strain_rate, rate_f, thermal_f,
-        rate_f * thermal_f);
+  if (at) fmt::print("{}", at->echo);
   fmt::print("{:<15} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>9}\n", "test", "E [GPa]", "yield", "flow0.1",
              "flow0.5", "flow1", "failure", "dV_p/V", "contact");
   fmt::print("{:<15} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>9}\n", "", "", "[MPa]", "[MPa]", "[MPa]",

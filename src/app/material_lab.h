@@ -15,7 +15,7 @@ struct MaterialOptions {
   double to = 0;                       ///< --to: the test's end strain (magnitude), or the cyclic amplitude
   bool to_given = false;
   double increment = 1e-4;  ///< strain step (log strain; gamma in shear), 1
-  // The conditions of a Johnson-Cook rod law (rod.law = "johnson_cook"): the tests run with the law
+  // The conditions of a rod law that reads them (setup/rod_laws/): the tests run with the law
   // at this temperature and equivalent plastic strain rate held fixed (its flow stresses times S).
   double temperature = 0;  ///< --temperature, K; 0 = the law's T_ref
   double strain_rate = 0;  ///< --strain-rate, equivalent plastic strain rate, 1/s; 0 = quasi-static

@@ -10,6 +10,8 @@
 #include "app/build_info.h"
 #include "io/console.h"
 #include "setup/model.h"
+#include "setup/modules/contacts.h"
+#include "setup/modules/heat.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -119,23 +121,8 @@ void print_setup(const Model& m, int threads) {
     say("  lattice: E100 = {:.4g} Pa, C11 = {:.4g} Pa, C12 = C44 = {:.4g} Pa, nu100 = 1/3, bulk density {:.5g} "
         "kg/m^3\n",
         d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
-  if (m.heat.enabled) {
-    const HeatParams& h = m.heat;
-    std::string held;
-    for (std::size_t g = 0; g < m.groups.size() && g < h.held.size(); ++g)
-      if (h.held[g]) held += (held.empty() ? "" : ", ") + m.groups[g].name;
-    say("  heat: c = {:.4g} J/(kg K), k = {:.4g} W/(m K) (rod conductance k d/(2 sqrt 2) = {:.4g} W/K), "
-        "Taylor-Quinney {:.3g}, start {:.5g} K; tools at {:.5g} K{}; held at the start temperature: {}\n",
-        h.heat_capacity, h.conductivity, h.conductivity * d.nn_distance / (2.0 * std::sqrt(2.0)), h.taylor_quinney,
-        h.initial_temperature, h.tool_temperature,
-        h.tool_heat_capacity > 0 ? fmt::format(" (lumped, {:.4g} J/K)", h.tool_heat_capacity) : std::string(" (held)"),
-        held.empty() ? std::string("none") : held);
-  }
-  if (m.contacts && m.contact.sticking.shear_strength > 0)
-    say("  sticking: tool friction capped at 4 R^2 k0 (1 - T*^{:.3g}), k0 = {:.4g} Pa, T_melt {:.5g} K: {:.4g} N per "
-        "particle cold\n",
-        m.contact.sticking.softening_exponent, m.contact.sticking.shear_strength, m.contact.sticking.melt_temperature,
-        sticking_cap(m.contact.sticking, d.radius, 0.0));
+  say("{}", heat_echo(m));
+  say("{}", contacts_echo(m));
   say("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
       d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
       d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",

@@ -19,6 +19,7 @@
 #include "setup/case_tables.h"
 #include "setup/cut_case.h"
 #include "setup/material_presets.h"
+#include "setup/rod_laws/rod_laws.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
 #include "swarf/laws/bond_formation.h"
@@ -109,50 +110,6 @@ void read_membrane(const CaseInput& in, CaseSettings& cs) {
                         in.source, k.str()));
 }
 
-// A hardening curve's points: 2 to FlowCurve::kMaxPoints (1 point would be perfectly plastic:
-// the yield stress alone says that), increasing strains from 0, stresses that never fall.
-// 'E' is the Young's modulus the curve goes with, Pa, named 'E_key' in messages.
-void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
-                      const std::vector<double>& sig, double E, const std::string& E_key) {
-  if (eps.empty() || sig.empty()) {
-    const char* given = eps.empty() ? stress_key : strain_key;
-    r.fail(given, r.get(given),
-           fmt::format("a hardening curve needs both {} (1) and {} (Pa); {} is not given", strain_key, stress_key,
-                       eps.empty() ? strain_key : stress_key));
-  }
-  if (eps.size() != sig.size())
-    r.fail(stress_key, r.get(stress_key),
-           fmt::format("has {} values where {} has {}: one stress per point", sig.size(), strain_key, eps.size()));
-  if (eps.size() < 2 || eps.size() > static_cast<std::size_t>(FlowCurve::kMaxPoints))
-    r.fail(strain_key, r.get(strain_key),
-           fmt::format("needs 2 to {} points, has {}", FlowCurve::kMaxPoints, eps.size()));
-  if (eps[0] != 0.0) r.fail(strain_key, r.get(strain_key), "the first point must be 0 (plastic strain 0: the yield)");
-  for (std::size_t i = 1; i < eps.size(); ++i) {
-    if (!(eps[i] > eps[i - 1]))
-      r.fail(strain_key, r.get(strain_key),
-             fmt::format("must be strictly increasing: value {} is not above {}", eps[i], eps[i - 1]));
-    if (!(sig[i] >= sig[i - 1]))
-      r.fail(
-          stress_key, r.get(stress_key),
-          fmt::format("must not decrease (softening is not modelled): value {} Pa is below {} Pa", sig[i], sig[i - 1]));
-  }
-  // Rules between the curve and E (issue 37): each stress below E (an elastic strain below 1:
-  // beyond it a rod's elastic stretch exceeds its length), and each segment rising by at most E
-  // times its plastic strain range (a hardening modulus above the elastic one is no metal; a
-  // judgement: the presets' Johnson-Cook curves, steepest on their first segment, rise at most 0.1 E there).
-  for (std::size_t i = 0; i < sig.size(); ++i) {
-    if (!(sig[i] < E))
-      r.fail(stress_key, r.get(stress_key),
-             fmt::format("value {} = {} Pa must lie below the Young's modulus {} = {} Pa (an elastic strain below 1)",
-                         i, sig[i], E_key, E));
-    if (i > 0 && !(sig[i] - sig[i - 1] <= E * (eps[i] - eps[i - 1])))
-      r.fail(stress_key, r.get(stress_key),
-             fmt::format("rises by {} Pa from value {} to {}, more than {} = {} Pa times its plastic strain range {} "
-                         "(a hardening modulus above E)",
-                         sig[i] - sig[i - 1], i - 1, i, E_key, E, eps[i] - eps[i - 1]));
-  }
-}
-
 void read_material(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("material"), "material");
   auto& mt = cs.material;
@@ -220,57 +177,6 @@ void read_material(const CaseInput& in, CaseSettings& cs) {
            fmt::format("must be below material.youngs_modulus = {} Pa", mt.youngs_modulus));
 }
 
-void read_rod(const CaseInput& in, CaseSettings& cs) {
-  TableReader r = in.reader(in.table("rod"), "rod");
-  auto& d = cs.rod;
-  r.know(rod_keys());
-  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-  if (cs.material.macroscopic)
-    for (const char* key : {"youngs_modulus", "yield_strain", "hardening_modulus", "tensile_strength", "failure_strain",
-                            "flow_plastic_strain", "flow_stress"})
-      if (r.has(key))
-        r.fail(key, r.get(key), "the rod law comes from the [material] properties here; give one or the other");
-  r.read(rod_keys(), d);
-  if (!(d.hardening_modulus < d.youngs_modulus))
-    r.fail("hardening_modulus", r.get("hardening_modulus"),
-           fmt::format("must be below rod.youngs_modulus = {} Pa", d.youngs_modulus));
-  // "johnson_cook_rate" is the law's former name (it had only the rate factor; without the
-  // temperature keys it is still that law).
-  const bool jc = d.law == "johnson_cook" || d.law == "johnson_cook_rate";
-  static constexpr std::array<const char*, 5> kJcKeys{
-      "rate_sensitivity", "reference_rate", "thermal_softening_exponent", "melt_temperature", "reference_temperature"};
-  for (const char* key : kJcKeys) {
-    if (r.has(key) && !jc) r.fail(key, r.get(key), "belongs to the Johnson-Cook law: set rod.law = \"johnson_cook\"");
-    if (r.has(key) && cs.material.macroscopic)
-      r.fail(key, r.get(key),
-             fmt::format("with [material] properties the law's factors are material.{} (and its neighbours)",
-                         key == std::string_view("rate_sensitivity")             ? "johnson_cook_c"
-                         : key == std::string_view("thermal_softening_exponent") ? "johnson_cook_m"
-                                                                                 : key));
-  }
-  if (!jc && !cs.material.johnson_cook_keys_given.empty())
-    r.fail("law", r.get("law"),
-           fmt::format("material.{} belongs to the Johnson-Cook law: set rod.law = \"johnson_cook\"",
-                       cs.material.johnson_cook_keys_given.front()));
-  if (jc && !(d.melt_temperature > d.reference_temperature))
-    r.fail(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature",
-           r.get(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature"),
-           fmt::format("T_melt = {} K must lie above T_ref = {} K", d.melt_temperature, d.reference_temperature));
-  if (r.has("failure_elongation") && r.has("failure_strain"))
-    r.fail(
-        "failure_elongation", r.get("failure_elongation"),
-        "sets the failure strain (failure_elongation / L0): give one of rod.failure_strain and rod.failure_elongation");
-  if (d.neighbour_exchange && !BondFormation{d.bond_overlap}.enabled())
-    r.fail("neighbour_exchange", r.get("neighbour_exchange"),
-           "exchanges neighbours through bond formation: set bond_overlap");
-  if (r.has("flow_plastic_strain") || r.has("flow_stress")) {
-    for (const char* key : {"yield_strain", "hardening_modulus"})
-      if (r.has(key)) r.fail(key, r.get(key), "the hardening curve (flow_plastic_strain, flow_stress) replaces it");
-    check_flow_curve(r, "flow_plastic_strain", "flow_stress", d.flow_plastic_strain, d.flow_stress, d.youngs_modulus,
-                     "rod.youngs_modulus");
-  }
-}
-
 void read_integrator(const CaseInput& in, CaseSettings& cs) {
   TableReader r = in.reader(in.table("integrator"), "integrator");
   auto& g = cs.integrator;
@@ -306,52 +212,8 @@ void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
       throw InputError(fmt::format("{}: group name '{}' is reserved for the [uniaxial] grips", in.source, g.name));
 }
 
-// [contact] and [environment]: present or not, no rules between their keys.
-// [contact] sticking: its keys only with sticking = true; what they leave out from the preset.
-void read_sticking(TableReader& r, CaseSettings& cs) {
-  ContactSettings& c = cs.contact;
-  for (const char* key : {"sticking_shear_strength", "sticking_softening_exponent", "sticking_melt_temperature"})
-    if (r.has(key) && !c.sticking) r.fail(key, r.get(key), "is used only with contact.sticking = true");
-  if (!c.sticking) return;
-  const MaterialPreset* preset = cs.material.preset.empty() ? nullptr : find_material_preset(cs.material.preset);
-  if (preset && !r.has("sticking_shear_strength"))
-    c.sticking_shear_strength = (preset->jc_a + preset->jc_b) / std::sqrt(3.0);
-  if (!r.has("sticking_softening_exponent")) c.sticking_softening_exponent = preset ? preset->jc_m : 1.0;
-  if (preset && !r.has("sticking_melt_temperature")) c.sticking_melt_temperature = preset->melt_temperature;
-  for (const char* key : {"sticking_shear_strength", "sticking_melt_temperature"})
-    if (!r.has(key) && !preset)
-      r.fail(key, nullptr,
-             "sticking needs the shear flow strength (Pa) and the melting temperature (K): give them "
-             "or material.preset");
-}
-
-void read_contact_and_environment(const CaseInput& in, CaseSettings& cs) {
-  if (const toml::table* t = in.table("contact")) {
-    TableReader r = in.reader(t, "contact");
-    cs.contact.enabled = true;
-    r.read(contact_keys(), cs.contact);
-    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-    read_sticking(r, cs);
-  }
-  if (const toml::table* t = in.table("heat")) {
-    TableReader r = in.reader(t, "heat");
-    cs.heat.present = true;
-    r.read(heat_keys(), cs.heat);
-    r.finish();
-    for (const std::string& g : cs.heat.held_groups)
-      if (std::none_of(cs.groups.begin(), cs.groups.end(), [&](const GroupSettings& s) { return s.name == g; }))
-        r.fail("held_groups", r.get("held_groups"), fmt::format("names no [[group]]: '{}'", g));
-    // The material preset fills what the table does not give.
-    const MaterialPreset* preset = cs.material.preset.empty() ? nullptr : find_material_preset(cs.material.preset);
-    if (preset && !r.has("heat_capacity")) cs.heat.heat_capacity = preset->heat_capacity;
-    if (preset && !r.has("conductivity")) cs.heat.conductivity = preset->conductivity;
-    if (cs.heat.enabled)
-      for (const char* key : {"heat_capacity", "conductivity"})
-        if (!r.has(key) && !preset)
-          r.fail(key, nullptr,
-                 "the workpiece's heat capacity (J/(kg K)) and conductivity (W/(m K)) are needed: give them or "
-                 "material.preset");
-  }
+// [environment]: present or not, no rules between its keys.
+void read_environment(const CaseInput& in, CaseSettings& cs) {
   if (const toml::table* t = in.table("environment")) {
     TableReader r = in.reader(t, "environment");
     r.read(environment_keys(), cs);
@@ -410,6 +272,50 @@ void check_top_level(const toml::table& root, const std::string& source, const s
 
 }  // namespace
 
+// A hardening curve's points: 2 to FlowCurve::kMaxPoints (1 point would be perfectly plastic:
+// the yield stress alone says that), increasing strains from 0, stresses that never fall.
+// 'E' is the Young's modulus the curve goes with, Pa, named 'E_key' in messages.
+void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
+                      const std::vector<double>& sig, double E, const std::string& E_key) {
+  if (eps.empty() || sig.empty()) {
+    const char* given = eps.empty() ? stress_key : strain_key;
+    r.fail(given, r.get(given),
+           fmt::format("a hardening curve needs both {} (1) and {} (Pa); {} is not given", strain_key, stress_key,
+                       eps.empty() ? strain_key : stress_key));
+  }
+  if (eps.size() != sig.size())
+    r.fail(stress_key, r.get(stress_key),
+           fmt::format("has {} values where {} has {}: one stress per point", sig.size(), strain_key, eps.size()));
+  if (eps.size() < 2 || eps.size() > static_cast<std::size_t>(FlowCurve::kMaxPoints))
+    r.fail(strain_key, r.get(strain_key),
+           fmt::format("needs 2 to {} points, has {}", FlowCurve::kMaxPoints, eps.size()));
+  if (eps[0] != 0.0) r.fail(strain_key, r.get(strain_key), "the first point must be 0 (plastic strain 0: the yield)");
+  for (std::size_t i = 1; i < eps.size(); ++i) {
+    if (!(eps[i] > eps[i - 1]))
+      r.fail(strain_key, r.get(strain_key),
+             fmt::format("must be strictly increasing: value {} is not above {}", eps[i], eps[i - 1]));
+    if (!(sig[i] >= sig[i - 1]))
+      r.fail(
+          stress_key, r.get(stress_key),
+          fmt::format("must not decrease (softening is not modelled): value {} Pa is below {} Pa", sig[i], sig[i - 1]));
+  }
+  // Rules between the curve and E (issue 37): each stress below E (an elastic strain below 1:
+  // beyond it a rod's elastic stretch exceeds its length), and each segment rising by at most E
+  // times its plastic strain range (a hardening modulus above the elastic one is no metal; a
+  // judgement: the presets' Johnson-Cook curves, steepest on their first segment, rise at most 0.1 E there).
+  for (std::size_t i = 0; i < sig.size(); ++i) {
+    if (!(sig[i] < E))
+      r.fail(stress_key, r.get(stress_key),
+             fmt::format("value {} = {} Pa must lie below the Young's modulus {} = {} Pa (an elastic strain below 1)",
+                         i, sig[i], E_key, E));
+    if (i > 0 && !(sig[i] - sig[i - 1] <= E * (eps[i] - eps[i - 1])))
+      r.fail(stress_key, r.get(stress_key),
+             fmt::format("rises by {} Pa from value {} to {}, more than {} = {} Pa times its plastic strain range {} "
+                         "(a hardening modulus above E)",
+                         sig[i] - sig[i - 1], i - 1, i, E_key, E, eps[i] - eps[i - 1]));
+  }
+}
+
 CaseSettings parse_case(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
                         const std::string& directory) {
   toml::table root = parse_toml_input(text, source);
@@ -434,7 +340,9 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   read_integrator(in, cs);
   read_groups(in, cs);
   read_uniaxial(in, cs);
-  read_contact_and_environment(in, cs);
+  read_contact(in, cs);
+  read_heat(in, cs);
+  read_environment(in, cs);
   read_meshes(in, cs);
   read_free_particles(in, cs);
   // A cutting run's analysis takes the workpiece as the first particles (Model::lattice_particles):

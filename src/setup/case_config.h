@@ -4,7 +4,8 @@
 // key's default. The key table (case_keys.cpp) names each key once, with its field, unit,
 // range and doc line: the reader checks against it and the key tables of
 // docs/case-reference.md are generated from it, so a new key is a field here and an entry
-// there. Reading rejects unknown keys, wrong types and out-of-range values with the file,
+// there; the rods', contacts' and heat's structs, tables, rules and builds are in their modules
+// (setup/modules/). Reading rejects unknown keys, wrong types and out-of-range values with the file,
 // the key and the value. Command-line overrides (--set key=value) are applied to the TOML
 // tree before reading, so they are checked exactly like keys in the file.
 #pragma once
@@ -15,9 +16,12 @@
 #include <string>
 #include <vector>
 
-namespace swarf {
+#include "setup/key.h"
+#include "setup/modules/contacts.h"
+#include "setup/modules/heat.h"
+#include "setup/modules/rods.h"
 
-inline constexpr double kInf = std::numeric_limits<double>::infinity();
+namespace swarf {
 
 /// [workpiece]: the bonded FCC block (optional when [[particle]] or [particles] give particles).
 struct WorkpieceSettings {
@@ -108,29 +112,6 @@ struct MaterialSettings {
   std::vector<std::string> johnson_cook_keys_given;  ///< which of the five the table gave (a rule in read_rod)
 };
 
-/// [rod]: the rod law (paper eqs. 23-31) between bonded neighbours.
-struct RodSettings {
-  double youngs_modulus = 200e9;            ///< E of the rod, Pa
-  double area = 0.0;                        ///< cross-section A, m^2; 0 = pi R^2
-  double yield_strain = kInf;               ///< eps_y = sigma_02/E, 1; inf = elastic
-  double hardening_modulus = 0.0;           ///< slope k of the plastic branch, Pa, 0 <= k < E
-  double tensile_strength = kInf;           ///< sigma_max, Pa; inf = unbreakable
-  double failure_strain = kInf;             ///< rod strain in tension at which a rod breaks, 1; inf = never
-  double failure_elongation = kInf;         ///< stretch L - L0 at which a rod breaks, m; inf = never
-  std::vector<double> flow_plastic_strain;  ///< hardening curve: plastic strains of its points, 1 (first 0)
-  std::vector<double> flow_stress;          ///< flow stress at those points, Pa (first: the yield stress)
-  std::string law = "bilinear";             ///< "bilinear" (the paper's) or "johnson_cook" (rate and temperature; alias
-                                            ///< "johnson_cook_rate")
-  double rate_sensitivity = 0.0;            ///< johnson_cook: C of R = 1 + C ln(max(|rate|/rate_ref, 1)), 1
-  double reference_rate = 1.0;              ///< johnson_cook: rate_ref, 1/s (a rod strain rate)
-  double thermal_softening_exponent = 1.0;  ///< johnson_cook: m of Theta = 1 - T*^m, 1
-  double melt_temperature = kInf;           ///< johnson_cook: T_melt, K; inf = no softening
-  double reference_temperature = 293.15;    ///< johnson_cook: T_ref, K
-  double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
-  double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
-  bool neighbour_exchange = false;  ///< a particle with 12 rods gives up its most stretched one for a new neighbour
-};
-
 /// [integrator]
 struct IntegratorSettings {
   std::string scheme = "auto";          ///< "verlet", "newmark", or "auto": newmark if rods can break, else verlet
@@ -212,41 +193,6 @@ struct OutputSettings {
   bool checkpoint_at_end = false;  ///< also write DIR/checkpoint.h5 after the last step (to extend the run)
   bool orientations = false;       ///< integrate the spheres' orientations and write them and the angular velocities
   std::vector<std::string> fields = kParticleFieldNames;  ///< per-particle fields written (frames, results.h5)
-};
-
-/// [contact]: Hertz contacts with friction between unbonded particles and with meshes.
-struct ContactSettings {
-  bool enabled = false;           ///< true when the table is present
-  double youngs_modulus = 200e9;  ///< E of the particles' material for contacts, Pa
-  double poisson_ratio = 0.3;     ///< nu of the particles, 1
-  double restitution = 0.5;       ///< normal coefficient of restitution, 1 (0.01..1)
-  double friction = 0.0;          ///< Coulomb coefficient mu, 1
-  std::string
-      friction_law = "spring";  ///< "spring" (Cundall-Strack, capped by Coulomb), "regularized" (tanh slip law), "none"
-  double regularization_speed = 1e-3;  ///< v0 in tanh(|v_t|/v0) of the regularized law, m/s
-  double tangential_damping = 0.0;  ///< spring law: tangential dashpot as a multiple of the normal damping coefficient, 1
-  double skin = 0.2;                ///< Verlet-list skin as a fraction of the largest radius, 1
-  bool sticking = false;            ///< cap the tool contacts' friction at the shear flow strength
-  double sticking_shear_strength = 0.0;      ///< k0, Pa; 0 = not given (the preset's)
-  double sticking_softening_exponent = 0.0;  ///< m, 1; 0 = not given (the preset's, else 1)
-  double sticking_melt_temperature = 0.0;    ///< T_melt, K; 0 = not given (the preset's)
-};
-
-/// [heat]: temperatures, heat from plastic and frictional work, conduction (issue 33;
-/// swarf/laws/heat_params.h). On when the table is present and `enabled` is true.
-struct HeatSettings {
-  bool present = false;                  ///< the table was given
-  bool enabled = true;                   ///< heat.enabled (with the table)
-  double heat_capacity = 0.0;            ///< c, J/(kg K); 0 = not given (the material preset's)
-  double conductivity = 0.0;             ///< k, W/(m K); 0 = not given (the material preset's)
-  double taylor_quinney = 0.9;           ///< 1
-  double initial_temperature = 293.15;   ///< K
-  bool contact_conduction = true;        ///< conduction through touching contacts too
-  double tool_temperature = 293.15;      ///< K
-  double tool_heat_capacity = 0.0;       ///< J/K per mesh; 0 = held at tool_temperature
-  double tool_conductivity = 0.0;        ///< W/(m K); 0 = no conduction into the tools
-  double stability_fraction = 0.5;       ///< 1
-  std::vector<std::string> held_groups;  ///< [[group]] names held at the initial temperature (clamps)
 };
 
 /// [[mesh]]: a rigid triangle mesh (wall, tool) from a file or a built-in rectangle.

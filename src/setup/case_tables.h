@@ -9,6 +9,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "setup/case_config.h"
 #include "setup/case_reader.h"
@@ -36,6 +37,11 @@ std::string resolve(const std::string& file, const std::string& directory);
 /// The cutting tool in the mesh file 'path' (times 'scale') measured (tool_measure.h); a file that
 /// cannot be read or does not measure as a tool fails the reader's 'key' with what was found.
 ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::string& path, double scale);
+
+/// A hardening curve's rules: 2 to FlowCurve::kMaxPoints points, strains increasing from 0,
+/// stresses that never fall and stay below 'E' (named 'E_key' in messages), Pa.
+void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
+                      const std::vector<double>& sig, double E, const std::string& E_key);
 
 // [[group]], [[mesh]], [[particle]] and [particles] (case_bodies.cpp).
 void read_groups(const CaseInput& in, CaseSettings& cs);

@@ -9,6 +9,7 @@
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/membrane_lattice.h"
 #include "setup/calibration.h"
+#include "setup/rod_laws/rod_laws.h"
 #include "swarf/core/errors.h"
 #include "swarf/laws/bond_formation.h"
 
@@ -264,30 +265,7 @@ Derived compute_derived(const CaseSettings& cs, const Lattice& lat) {
     // The hardening curve carries the hardening; its first stress is the yield stress.
     law.flow = make_flow_curve(rod.flow_plastic_strain, rod.flow_stress);
   }
-  d.law = law;
-  if (rod.law == "johnson_cook" || rod.law == "johnson_cook_rate") {
-    JohnsonCookRodLaw jc{.base = law,
-                         .rate_sensitivity = rod.rate_sensitivity,
-                         .reference_rate = rod.reference_rate,
-                         .rate_to_equivalent = 1.0,
-                         .softening_exponent = rod.thermal_softening_exponent,
-                         .melt_temperature = rod.melt_temperature,
-                         .reference_temperature = rod.reference_temperature};
-    if (cs.material.macroscopic) {
-      // The material's factors, its rate an equivalent plastic strain rate: a rod's rate times the
-      // factor by which the calibration relates the rod's plastic strain to the equivalent one
-      // (calibration.h; laws/johnson_cook_rod_law.h): 2/sqrt3 in cube-plane shear, 3 along [100]
-      // (also for the bilinear [material] route, which is matched along [100]).
-      const auto& mt = cs.material;
-      jc.rate_sensitivity = mt.johnson_cook_c;
-      jc.reference_rate = mt.reference_rate;
-      jc.rate_to_equivalent = mt.flow_curve && mt.calibration == "shear" ? 2.0 / std::sqrt(3.0) : 3.0;
-      jc.softening_exponent = mt.johnson_cook_m;
-      jc.melt_temperature = mt.melt_temperature;
-      jc.reference_temperature = mt.reference_temperature;
-    }
-    d.law = jc;
-  }
+  d.law = rod_law_setup(rod.law).build(law, cs, rod);  // (the law rod.law names: setup/rod_laws/)
 
   return choose_step(cs, d, std::isfinite(rod.tensile_strength) || std::isfinite(rod.failure_strain), modal, zeta);
 }

@@ -421,30 +421,6 @@ void build_meshes(const CaseSettings& cs, Model& model) {
   }
 }
 
-// [contact]: the contact law's parameters.
-ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
-  ContactParams c;
-  c.youngs_modulus = cs.contact.youngs_modulus;
-  c.poisson_ratio = cs.contact.poisson_ratio;
-  c.alpha = restitution_to_alpha(cs.contact.restitution);
-  c.friction = cs.contact.friction;
-  c.law = cs.contact.friction_law == "spring"        ? FrictionLaw::Spring
-          : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
-                                                     : FrictionLaw::None;
-  c.regularization_speed = cs.contact.regularization_speed;
-  c.tangential_damping = cs.contact.tangential_damping;
-  double rmax = 0;
-  for (double rr : p.radius) rmax = std::max(rmax, rr);
-  for (const auto& f : cs.inflows) rmax = std::max(rmax, f.radius_max);
-  c.skin = cs.contact.skin * rmax;
-  if (cs.contact.sticking)
-    c.sticking = StickingRule{.shear_strength = cs.contact.sticking_shear_strength,
-                              .softening_exponent = cs.contact.sticking_softening_exponent,
-                              .melt_temperature = cs.contact.sticking_melt_temperature,
-                              .reference_temperature = 293.15};
-  return c;
-}
-
 // The run's end and its output intervals: each a finite positive time, and no more rows or
 // frames than a run can write (an interval below the time's rounding would never advance the
 // next output time: 'next += interval' leaves it where it is).
@@ -496,17 +472,7 @@ Model build_model(const CaseSettings& cs) {
   // The lattice's sites and radii are in the particles now: freed before the rods are built.
   lat.position = {};
   lat.radius = {};
-  auto& r = model.rods;
-  r.law = model.derived.law;
-  r.area = model.derived.rod_area;
-  r.formation.overlap = cs.rod.bond_overlap;
-  r.formation.exchange = cs.rod.neighbour_exchange;
-  // Moved, not copied: the lattice's arrays are not needed after this, and a copy would hold
-  // the largest arrays of the build twice.
-  r.ends = std::move(lat.rods);
-  r.rest_length = std::move(lat.rest_length);
-  r.reset_state();
-  r.build_rows(model.particles.size());
+  build_rods(cs, model.derived, lat, model.particles.size(), model.rods);
   // Spacing of lattice layers along a cube axis; a membrane's sites are d/2 apart in x on
   // alternate rows.
   const double h = cs.membrane.enabled ? 0.5 * model.derived.nn_distance : 0.5 * model.derived.cell_edge;
@@ -535,25 +501,8 @@ Model build_model(const CaseSettings& cs) {
     out.plane_normal = to_vec(o.plane_normal).normalized();  // (zero stays zero: a box)
     model.outflows.push_back(out);
   }
-  if (cs.contact.enabled) model.contact = contact_params(cs, model.particles);
-  model.contacts = cs.contact.enabled;
-  if (cs.heat.present && cs.heat.enabled) {
-    HeatParams& h = model.heat;
-    const HeatSettings& s = cs.heat;
-    h.enabled = true;
-    h.heat_capacity = s.heat_capacity;
-    h.conductivity = s.conductivity;
-    h.taylor_quinney = s.taylor_quinney;
-    h.initial_temperature = s.initial_temperature;
-    h.contact_conduction = s.contact_conduction;
-    h.tool_temperature = s.tool_temperature;
-    h.tool_heat_capacity = s.tool_heat_capacity;
-    h.tool_conductivity = s.tool_conductivity;
-    h.stability_fraction = s.stability_fraction;
-    h.held.assign(model.groups.size(), 0);
-    for (std::size_t g = 0; g < model.groups.size(); ++g)
-      h.held[g] = std::find(s.held_groups.begin(), s.held_groups.end(), model.groups[g].name) != s.held_groups.end();
-  }
+  build_contacts(cs, model);
+  build_heat(cs, model);
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
   model.step = step_settings(model.settings, model.derived);
   check_output_schedule(model.settings);

@@ -1,0 +1,159 @@
+// contacts.cpp: the contacts' module of setup (see contacts.h).
+#include "setup/modules/contacts.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "setup/case_tables.h"
+#include "setup/material_presets.h"
+#include "setup/model.h"
+#include "swarf/laws/hertz.h"
+
+namespace swarf {
+
+const std::vector<Key<ContactSettings>>& contact_keys() {
+  using S = ContactSettings;
+  static const std::vector<Key<S>> keys{
+      {.name = "youngs_modulus",
+       .field = &S::youngs_modulus,
+       .unit = "Pa",
+       .range = kModulus,
+       .doc = "E of the particles in contacts (independent of `rod.youngs_modulus`)."},
+      {.name = "poisson_ratio",
+       .field = &S::poisson_ratio,
+       .unit = "1",
+       .range = in(-1, 0.5, "()"),
+       .doc = "nu of the particles."},
+      {.name = "restitution",
+       .field = &S::restitution,
+       .unit = "1",
+       .range = in(0.01, 1, "[]"),
+       .doc = "Normal coefficient of restitution e, the same at every impact speed. 1 means no damping."},
+      {.name = "friction",
+       .field = &S::friction,
+       .unit = "1",
+       .range = in(0.0, 10.0, "[]", "a judgement: measured coefficients are below 2"),
+       .doc = "Coulomb coefficient mu. 0 means frictionless."},
+      {.name = "friction_law",
+       .field = &S::friction_law,
+       .choices = {"spring", "regularized", "none"},
+       .doc = "Tangential law, see [Tangential force](#tangential-force). `\"none\"` is frictionless whatever "
+              "`friction` says."},
+      {.name = "regularization_speed",
+       .field = &S::regularization_speed,
+       .unit = "m/s",
+       .range = in(1e-9, 1e3, "[]", "1e-9 to 1e3 m/s"),
+       .doc = "v0 of the `\"regularized\"` law."},
+      {.name = "tangential_damping",
+       .field = &S::tangential_damping,
+       .unit = "1",
+       .range = in(0, 10, "[]"),
+       .doc = "`\"spring\"` law only: tangential dashpot as a multiple of the normal damping coefficient. 0 means "
+              "none."},
+      {.name = "skin",
+       .field = &S::skin,
+       .unit = "1",
+       .range = in(0, 2, "(]"),
+       .doc = "Verlet-list skin s as a fraction of the largest particle radius: s = `skin` x R_max (m)."},
+      {.name = "sticking",
+       .field = &S::sticking,
+       .doc = "Cap the friction of the tool (triangle) contacts at the particle's share of the shear flow "
+              "strength, 4 R^2 k(T): Zorev's sticking zone where mu times the pressure exceeds k "
+              "([physics.md section 5](physics.md#5-hertz-contacts-with-restitution-damping-and-friction))."},
+      {.name = "sticking_shear_strength",
+       .field = &S::sticking_shear_strength,
+       .unit = "Pa",
+       .no_default = true,
+       .default_note = "the preset's (A + B)/sqrt 3",
+       .range = in(1e3, 1e11, "[]"),
+       .doc = "k0, the workpiece's shear flow strength at room temperature; the preset's default is its "
+              "Johnson-Cook flow stress at plastic strain 1 over sqrt 3 (von Mises)."},
+      {.name = "sticking_softening_exponent",
+       .field = &S::sticking_softening_exponent,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "the preset's Johnson-Cook m, else 1",
+       .range = in(0.01, 10, "[]"),
+       .doc = "m of the thermal factor 1 - T*^m of k (T* = (T - 293.15 K)/(T_melt - 293.15 K), clamped to "
+              "[0, 1]); T is the particle's temperature ([heat]; without it the cap stays at k0)."},
+      {.name = "sticking_melt_temperature",
+       .field = &S::sticking_melt_temperature,
+       .unit = "K",
+       .no_default = true,
+       .default_note = "the preset's",
+       .range = in(300, 1e4, "[]"),
+       .doc = "T_melt of the thermal factor of k."},
+  };
+  return keys;
+}
+
+// [contact] sticking: its keys only with sticking = true; what they leave out from the preset.
+static void read_sticking(TableReader& r, CaseSettings& cs) {
+  ContactSettings& c = cs.contact;
+  for (const char* key : {"sticking_shear_strength", "sticking_softening_exponent", "sticking_melt_temperature"})
+    if (r.has(key) && !c.sticking) r.fail(key, r.get(key), "is used only with contact.sticking = true");
+  if (!c.sticking) return;
+  const MaterialPreset* preset = cs.material.preset.empty() ? nullptr : find_material_preset(cs.material.preset);
+  if (preset && !r.has("sticking_shear_strength"))
+    c.sticking_shear_strength = (preset->jc_a + preset->jc_b) / std::sqrt(3.0);
+  if (!r.has("sticking_softening_exponent")) c.sticking_softening_exponent = preset ? preset->jc_m : 1.0;
+  if (preset && !r.has("sticking_melt_temperature")) c.sticking_melt_temperature = preset->melt_temperature;
+  for (const char* key : {"sticking_shear_strength", "sticking_melt_temperature"})
+    if (!r.has(key) && !preset)
+      r.fail(key, nullptr,
+             "sticking needs the shear flow strength (Pa) and the melting temperature (K): give them "
+             "or material.preset");
+}
+
+void read_contact(const CaseInput& in, CaseSettings& cs) {
+  if (const toml::table* t = in.table("contact")) {
+    TableReader r = in.reader(t, "contact");
+    cs.contact.enabled = true;
+    r.read(contact_keys(), cs.contact);
+    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
+    read_sticking(r, cs);
+  }
+}
+
+// [contact]: the contact law's parameters.
+static ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
+  ContactParams c;
+  c.youngs_modulus = cs.contact.youngs_modulus;
+  c.poisson_ratio = cs.contact.poisson_ratio;
+  c.alpha = restitution_to_alpha(cs.contact.restitution);
+  c.friction = cs.contact.friction;
+  c.law = cs.contact.friction_law == "spring"        ? FrictionLaw::Spring
+          : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
+                                                     : FrictionLaw::None;
+  c.regularization_speed = cs.contact.regularization_speed;
+  c.tangential_damping = cs.contact.tangential_damping;
+  double rmax = 0;
+  for (double rr : p.radius) rmax = std::max(rmax, rr);
+  for (const auto& f : cs.inflows) rmax = std::max(rmax, f.radius_max);
+  c.skin = cs.contact.skin * rmax;
+  if (cs.contact.sticking)
+    c.sticking = StickingRule{.shear_strength = cs.contact.sticking_shear_strength,
+                              .softening_exponent = cs.contact.sticking_softening_exponent,
+                              .melt_temperature = cs.contact.sticking_melt_temperature,
+                              .reference_temperature = 293.15};
+  return c;
+}
+
+void build_contacts(const CaseSettings& cs, World& world) {
+  if (cs.contact.enabled) world.contact = contact_params(cs, world.particles);
+  world.contacts = cs.contact.enabled;
+}
+
+std::string contacts_echo(const Model& m) {
+  if (!(m.contacts && m.contact.sticking.shear_strength > 0)) return {};
+  const Derived& d = m.derived;
+  return fmt::format(
+      "  sticking: tool friction capped at 4 R^2 k0 (1 - T*^{:.3g}), k0 = {:.4g} Pa, T_melt {:.5g} K: {:.4g} N per "
+      "particle cold\n",
+      m.contact.sticking.softening_exponent, m.contact.sticking.shear_strength, m.contact.sticking.melt_temperature,
+      sticking_cap(m.contact.sticking, d.radius, 0.0));
+}
+
+}  // namespace swarf
