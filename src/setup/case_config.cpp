@@ -22,7 +22,6 @@
 #include "setup/rod_laws/rod_laws.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
-#include "swarf/laws/bond_formation.h"
 #include "swarf/laws/flow_curve.h"
 
 namespace swarf {
@@ -361,11 +360,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
                     source));
   if (cs.uniaxial.enabled && !cs.workpiece.enabled)
     throw InputError(fmt::format("{}: [uniaxial] needs a [workpiece] (the bar)", source));
-  if (BondFormation{cs.rod.bond_overlap}.enabled() && !cs.contact.enabled)
-    throw InputError(
-        fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
-                    "contacts: add a [contact] table",
-                    source, cs.rod.bond_overlap));
+  check_rods_across_tables(cs);
   if (!cs.workpiece.enabled && !cs.membrane.enabled && cs.particles.empty() && cs.particles_file.file.empty() &&
       cs.inflows.empty())
     throw InputError(fmt::format(

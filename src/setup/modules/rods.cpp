@@ -9,6 +9,7 @@
 #include "setup/case_tables.h"
 #include "setup/derived.h"
 #include "setup/rod_laws/rod_laws.h"
+#include "swarf/core/errors.h"
 #include "swarf/laws/bond_formation.h"
 #include "swarf/state/rods.h"
 
@@ -163,6 +164,14 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
     check_flow_curve(r, "flow_plastic_strain", "flow_stress", d.flow_plastic_strain, d.flow_stress, d.youngs_modulus,
                      "rod.youngs_modulus");
   }
+}
+
+void check_rods_across_tables(const CaseSettings& cs) {
+  if (BondFormation{cs.rod.bond_overlap}.enabled() && !cs.contact.enabled)
+    throw InputError(
+        fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
+                    "contacts: add a [contact] table",
+                    cs.source, cs.rod.bond_overlap));
 }
 
 void build_rods(const CaseSettings& cs, const Derived& d, Lattice& lat, std::size_t particles, Rods& r) {

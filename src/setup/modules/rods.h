@@ -47,6 +47,9 @@ const std::vector<Key<RodSettings>>& rod_keys();
 /// Reads [rod] (absent: the defaults) and checks its rules, after [material].
 void read_rod(const CaseInput& in, CaseSettings& cs);
 
+/// The rods' rules on other tables, once every table is read: bond formation needs [contact].
+void check_rods_across_tables(const CaseSettings& cs);
+
 /// The World's rods: the derived law and area, bond formation, and the lattice's rods and rest
 /// lengths (moved out of 'lattice'), for 'particles' particles.
 void build_rods(const CaseSettings& cs, const Derived& d, Lattice& lattice, std::size_t particles, Rods& rods);
