@@ -11,7 +11,7 @@ Steps, as one would type them in a notebook:
   2. r = swarf.load(DIR)  reads the run: r.series (series.csv as a NumPy structured array, with
      r.units), r.times and r.frame(k) (the frames' per-particle fields from results.h5);
   3. OUT/forces.png: the tool's force over time; OUT/chip.png: the last frame's particles seen
-     along the width (x, z), coloured by the field (default: the plastic strain), 1 mm around
+     along the width (x, z), coloured by the field (default: peeq, the accumulated equivalent plastic strain), 1 mm around
      the field's peak.
 """
 import argparse
@@ -26,8 +26,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("case", nargs="?", help="case file (default: the built-in default cut)")
     ap.add_argument("--end-time", type=float, default=2e-5, help="simulated time, s (default 2e-5)")
-    ap.add_argument("--field", default="plastic_strain",
-                    help="the frames' field that colours the chip (default plastic_strain)")
+    ap.add_argument("--field", default="peeq",
+                    help="the frames' field that colours the chip (default peeq, the accumulated equivalent plastic strain)")
     ap.add_argument("--threads", type=int, default=0, help="OpenMP threads (0: OpenMP's default)")
     ap.add_argument("--out", default="load_run", help="run directory and pictures")
     a = ap.parse_args()
@@ -86,7 +86,7 @@ def main():
     ax.set_ylabel("z (mm)")
     ax.set_title(f"t = {f.time * 1e6:.3g} us")
     fig.tight_layout()
-    fig.savefig(os.path.join(a.out, "chip.png"), dpi=120)
+    fig.savefig(os.path.join(a.out, "chip.png"), dpi=120, bbox_inches="tight")  # (equal axes leave margins)
     plt.close(fig)
     print(f"frames at {', '.join(f'{t * 1e6:.3g}' for t in r.times)} us; {a.field} up to {v.max():.4g}")
     print(f"wrote {a.out}/forces.png and {a.out}/chip.png")
