@@ -126,7 +126,9 @@ TEST(Heat, OneConductionIsTheDiscreteRecurrence) {
   double before = 0, after = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     EXPECT_NEAR(p.temperature[i], expect[i], 1e-12 * T0[i]) << i;
-    if (held[i]) EXPECT_EQ(p.temperature[i], T0[i]);
+    if (held[i]) {
+      EXPECT_EQ(p.temperature[i], T0[i]);
+    }
     before += p.mass[i] * kC * T0[i];
     after += p.mass[i] * kC * p.temperature[i];
   }

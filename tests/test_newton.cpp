@@ -1,4 +1,4 @@
-// test_newton.cpp: the Newton-Krylov solve of the Newmark step (simulation_newton.cpp)
+// test_newton.cpp: the Newton-Krylov solve of the Newmark step (integrate/newton.cpp)
 // against the discrete Newmark recurrence, the fixed-point solver, and its own guarantees:
 // rejection without a trace, the same bits for any thread count, steps beyond the explicit
 // limit.

@@ -102,7 +102,9 @@ TEST(ParticleFields, PlasticStrainOfRodsFromOneTensorIsItsVonMisesEquivalent) {
   }
   const ParticleFields g = particle_fields(m.particles, m.rods, m.periodic, nullptr);
   for (std::size_t i = 0; i < m.particles.size(); ++i)
-    if (rods_of(m, i) == 12) ASSERT_NEAR(g.plastic_strain[i], e / std::sqrt(3.0), 1e-10 * e) << i;
+    if (rods_of(m, i) == 12) {
+      ASSERT_NEAR(g.plastic_strain[i], e / std::sqrt(3.0), 1e-10 * e) << i;
+    }
 }
 
 // Two spheres pressed together at rest: each carries -R f/V along the line of centres (f the

@@ -48,7 +48,9 @@ TEST(MassProperties, ABoxMatchesItsClosedFormsAlsoTurned) {
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(mp.inertia(i, i), I[i], 1e-12 * I.maxCoeff());
     for (int j = 0; j < 3; ++j)
-      if (i != j) EXPECT_NEAR(mp.inertia(i, j), 0.0, 1e-12 * I.maxCoeff());
+      if (i != j) {
+        EXPECT_NEAR(mp.inertia(i, j), 0.0, 1e-12 * I.maxCoeff());
+      }
   }
   // Turned by 30 deg about (1, 1, 1): the same principal moments (ascending), and the
   // principal axes map the body's moments onto the turned tensor.
@@ -84,7 +86,9 @@ TEST(MassProperties, ACylinderIsExactForItsPrismAndConvergesToTheRoundOne) {
     const double m0 = rho * std::numbers::pi * r * r * L, Ia0 = 0.5 * m0 * r * r;
     EXPECT_NEAR(mp.mass, m0, 0.5 * t * t * m0) << n;
     EXPECT_NEAR(sorted[2], Ia0, 0.5 * t * t * Ia0) << n;
-    if (n == 256) EXPECT_LT(std::abs(Ia - Ia0) / Ia0, 2.1e-4);  // (t^2/3 = 2.0e-4)
+    if (n == 256) {
+      EXPECT_LT(std::abs(Ia - Ia0) / Ia0, 2.1e-4);  // (t^2/3 = 2.0e-4)
+    }
   }
 }
 

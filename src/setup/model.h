@@ -14,8 +14,8 @@
 
 #include "setup/case_config.h"
 #include "setup/derived.h"
+#include "swarf/integrate/step_settings.h"
 #include "swarf/state/world.h"
-#include "swarf/step_settings.h"
 
 namespace swarf {
 

@@ -15,12 +15,12 @@ namespace swarf {
 
 void Simulation::resize_scratch() {
   const std::size_t n = m_.particles.size();
-  for_each_system([&](auto& s) {
+  sys_.for_each([&](auto& s) {
     if constexpr (requires { s.resize(m_); }) s.resize(m_);
   });
-  if (contacts_.enabled()) contact_force_.resize(n, Vec3::Zero());
-  if (rotations_) update_free_to_rotate();
-  moved2_ = -1.0;
+  if (sys_.contacts.enabled()) ms_.contact_force.resize(n, Vec3::Zero());
+  if (ms_.rotations) integrate::update_free_to_rotate(m_, ms_);
+  ms_.moved2 = -1.0;
   update_mesh_step_limit();
 }
 
@@ -28,9 +28,9 @@ void Simulation::reindex_all(const Reindex& r) {
   reindex(m_.particles, r);
   reindex(m_.rods, r);
   reindex(m_.groups, r);
-  if (contacts_.enabled()) {
-    reindex_array(contact_force_, r);
-    contacts_.reindex(r.new_index, r.new_count, m_.particles);
+  if (sys_.contacts.enabled()) {
+    reindex_array(ms_.contact_force, r);
+    sys_.contacts.reindex(r.new_index, r.new_count, m_.particles);
   }
   resize_scratch();
 }
@@ -79,12 +79,12 @@ void Simulation::append_particles(const Particles& extra) {
   // rows to the new count, so that the rebuild at the next evaluation carries the committed
   // friction histories over (it does when the rows match the particles) and a checkpoint
   // written before it holds lists of the particles' size.
-  if (contacts_.enabled()) {
+  if (sys_.contacts.enabled()) {
     std::vector<std::int32_t> same(p.size() - k);
     for (std::size_t i = 0; i < same.size(); ++i) same[i] = static_cast<std::int32_t>(i);
-    contacts_.reindex(same, p.size(), p);
+    sys_.contacts.reindex(same, p.size(), p);
   }
-  rebuild_lists_ = true;  // (the lists' build reference no longer matches the particles)
+  ms_.rebuild_lists = true;  // (the lists' build reference no longer matches the particles)
   resize_scratch();
 }
 
@@ -111,7 +111,7 @@ void Simulation::set_body_pose(std::size_t b, const Vec3& position, const Quat& 
                     name));
   rb.state.position = position;
   rb.state.orientation = q;
-  bodies_.place_mesh(m_, b);  // (the contact lists see the jump: they measure the meshes' moves from their build)
+  sys_.bodies.place_mesh(m_, b);  // (the contact lists see the jump: they measure the meshes' moves from their build)
 }
 
 }  // namespace swarf

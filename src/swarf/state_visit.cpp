@@ -1,13 +1,13 @@
-// state_visit.cpp: every field of the step's state, named once (see state_archive.h).
-// Simulation::visit_state and ContactSystem::visit_state are here so that everything a
-// checkpoint holds, and everything the state hash covers, is listed in one file.
+// state_visit.cpp: every field of the step's state, named once (see state_archive.h): the
+// World's variable part, then each system's own visit (systems/systems.h), the step's counters
+// and the contacts' lists (contacts/contact_state.cpp), in this one order for a checkpoint, its
+// load and the state hash.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "swarf/contacts/contacts.h"
 #include "swarf/core/bounds.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
@@ -15,60 +15,6 @@
 #include "swarf/simulation.h"
 
 namespace swarf {
-
-void ContactSystem::visit_state(StateArchive& ar, const Particles& p) {
-  const bool load = ar.loading();
-  // Lists as flat index arrays (i, j) and (i, triangle), their histories beside them.
-  std::vector<std::int32_t> pairs(2 * pairs_.size()), tris(2 * tris_.size());
-  std::vector<Vec3> th(tris_.size());
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    pairs[2 * k] = pairs_[k].i;
-    pairs[2 * k + 1] = pairs_[k].j;
-  }
-  for (std::size_t k = 0; k < tris_.size(); ++k) {
-    tris[2 * k] = tris_[k].i;
-    tris[2 * k + 1] = tris_[k].tri;
-    th[k] = tris_[k].history;
-  }
-  ar.array("contacts/pairs", pairs, StateArchive::kAnySize);
-  const std::size_t np = pairs.size() / 2;
-  ar.array("contacts/pair_history", phist_, load ? np : StateArchive::kAnySize);
-  ar.array("contacts/triangle_contacts", tris, StateArchive::kAnySize);
-  const std::size_t nt = tris.size() / 2;
-  ar.array("contacts/triangle_history", th, load ? nt : StateArchive::kAnySize);
-  ar.array("contacts/x_build", x_build_, load ? p.size() : StateArchive::kAnySize);
-  ar.array("contacts/mesh_build", mesh_build_, load ? meshes_->size() : StateArchive::kAnySize);
-  ar.scalar("contacts/builds", builds_);
-  if (std::any_of(meshes_->begin(), meshes_->end(), [](const MeshBody& mb) { return mb.turns; }))
-    ar.array("contacts/mesh_build_turn", mesh_build_turn_, load ? meshes_->size() : StateArchive::kAnySize);
-  if (!load) return;
-  // The build positions lie where positions may (the particles' check below): beyond, their
-  // distance to the particles overflowed in the skin check (1e289 m, the checkpoint fuzzer).
-  for (const auto* build : {&x_build_, &mesh_build_})
-    for (std::size_t i = 0; i < build->size(); ++i)
-      if (!((*build)[i].cwiseAbs().maxCoeff() <= kMaxMeshCoordinate))
-        throw InputError(fmt::format("state field 'contacts/{}': entry {} lies beyond {:g} m",
-                                     build == &x_build_ ? "x_build" : "mesh_build", i, kMaxMeshCoordinate));
-  if (pairs.size() % 2 != 0 || tris.size() % 2 != 0)
-    throw InputError("state field 'contacts/pairs' or 'contacts/triangle_contacts' is not a list of index pairs");
-  pairs_.resize(np);
-  for (std::size_t k = 0; k < np; ++k) {
-    pairs_[k] = Pair{pairs[2 * k], pairs[2 * k + 1]};
-    const Pair& q = pairs_[k];
-    if (q.i < 0 || q.j <= q.i || std::size_t(q.j) >= p.size())
-      throw InputError(fmt::format("state field 'contacts/pairs': contact pair ({}, {}) out of range", q.i, q.j));
-  }
-  tris_.assign(nt, TriPair{});
-  for (std::size_t k = 0; k < nt; ++k) {
-    tris_[k].i = tris[2 * k];
-    tris_[k].tri = tris[2 * k + 1];
-    tris_[k].history = th[k];
-    if (tris_[k].i < 0 || std::size_t(tris_[k].i) >= p.size() || tris_[k].tri < 0 ||
-        std::size_t(tris_[k].tri) >= tri_mesh_.size())
-      throw InputError(fmt::format("state field 'contacts/triangle_contacts': triangle contact {} out of range", k));
-  }
-  finish_build(p);
-}
 
 void Simulation::visit_state(StateArchive& ar) {
   const bool load = ar.loading();
@@ -91,16 +37,16 @@ void Simulation::visit_state(StateArchive& ar) {
   r.for_each_field([&](const char* name, auto& v) { ar.array(std::string("rods/") + name, v, load ? any : m); });
   for (std::size_t g = 0; g < ng; ++g) ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
   if (load) check_loaded_world(ends);
-  for_each_system([&](auto& s) { s.visit_state(ar, m_, ledger_); });
+  sys_.for_each([&](auto& s) { s.visit_state(ar, m_, ledger_); });
   const std::size_t n_now = p.size();
-  ar.array("mesh_force", mesh_force_, StateArchive::kAnySize);
-  ar.array("contact_force", contact_force_, contacts_.enabled() ? n_now : 0);
+  ar.array("mesh_force", ms_.mesh_force, StateArchive::kAnySize);
+  ar.array("contact_force", ms_.contact_force, sys_.contacts.enabled() ? n_now : 0);
   ar.scalar("time", time_);
   ar.scalar("dt", dt_);
   ar.scalar("last_dt", last_dt_);
-  ar.scalar("rotations", rotations_);
-  ar.scalar("rebuild_lists", rebuild_lists_);
-  ar.scalar("contact_power_old", contact_power_old_);
+  ar.scalar("rotations", ms_.rotations);
+  ar.scalar("rebuild_lists", ms_.rebuild_lists);
+  ar.scalar("contact_power_old", ms_.contact_power_old);
   ar.scalar("ledger/external_work", ledger_.external_work);
   ar.scalar("ledger/plastic_work", ledger_.plastic_work);
   ar.scalar("ledger/viscous_work", ledger_.viscous_work);
@@ -112,7 +58,7 @@ void Simulation::visit_state(StateArchive& ar) {
   ar.scalar("stats/force_evaluations", stats_.force_evaluations);
   ar.scalar("stats/max_iterations", stats_.max_iterations);
   ar.scalar("stats/last_iterations", stats_.last_iterations);
-  if (contacts_.enabled()) contacts_.visit_state(ar, p);
+  if (sys_.contacts.enabled()) sys_.contacts.visit_state(ar, p);
   if (load) {
     // (finite first: an ordered comparison with a NaN raises FE_INVALID, a trap in the test build)
     if (!(std::isfinite(time_) && time_ >= 0.0) || !(std::isfinite(dt_) && dt_ > 0.0) || !std::isfinite(last_dt_))
@@ -128,8 +74,8 @@ void Simulation::visit_state(StateArchive& ar) {
           implicit_ ? fmt::format("state field 'dt' = {} s lies outside the case's [dt_min, dt_max] = [{}, {}] s", dt_,
                                   set_.dt_min, set_.dt_max)
                     : fmt::format("state field 'dt' = {} s is not the case's constant step {} s", dt_, set_.dt));
-    if (mesh_force_.size() != nm && !mesh_force_.empty())
-      throw InputError(fmt::format("state field 'mesh_force' has {} entries, expected {}", mesh_force_.size(), nm));
+    if (ms_.mesh_force.size() != nm && !ms_.mesh_force.empty())
+      throw InputError(fmt::format("state field 'mesh_force' has {} entries, expected {}", ms_.mesh_force.size(), nm));
     resize_scratch();
   }
 }

@@ -3,7 +3,7 @@
 // Every intact rod is evaluated from its COMMITTED state (plastic shift, intact flag): the law
 // gives a trial shift, a trial break flag and the stress; the force is stored as one
 // coefficient per rod (force on end i = coef (x_j - x_i)). Nothing committed changes here, so
-// an implicit step may evaluate as often as it sweeps and commit once (Simulation::commit).
+// an implicit step may evaluate as often as it sweeps and commit once (integrate::commit).
 //
 // The law is a template parameter of the block loop (no virtual call per rod): a law is a
 // value type with a pure evaluate(law, strain, rate, shift) -> RodResponse (laws/rod_law.h);

@@ -1,6 +1,6 @@
 // rod_tangent.h: the rods' part of the Newmark step's Jacobian, matrix-free (Newton solver).
 //
-// The Newton solve of the implicit step (simulation_newton.cpp) needs products of
+// The Newton solve of the implicit step (integrate/newton.cpp) needs products of
 // J = M + beta h^2 K + gamma h C with a vector d of acceleration corrections. For one rod k
 // between particles i and j, with unit axis n (i to j), current length L, rest length L0 and
 // force coefficient c (force on i = c (x_j - x_i), so c = T / L with T the axial force):

@@ -1,6 +1,6 @@
 // newton_newmark.h: the scratch of the Newton-Krylov solve of the Newmark step.
 //
-// Simulation::try_newton (simulation_newton.cpp) solves the step's residual in the new
+// integrate::newton_try (newton.cpp) solves the step's residual in the new
 // accelerations a,  R(a) = M a - F(x(a), v(a)),  with
 //   x = x_n + h v_n + h^2 ((1/2 - beta) a_n + beta a),  v = v_n + h ((1 - gamma) a_n + gamma a),
 // by Newton: J d = -R with J = M + beta h^2 K + gamma h C (forces/rod_tangent.h), solved by

@@ -1,7 +1,7 @@
 // body_system.cpp: the rigid bodies' part of the step (state/rigid_body.h): their
 // wrench from the contacts, loads and gravity; their translation and rotation by the step's
 // scheme; their meshes placed from their poses; the prescribed meshes' motions (see
-// body_system.h and simulation.h for the stages).
+// body_system.h and integrate/integration.h for the stages).
 //
 // Newmark: the bodies take part in the fixed point like particles. place() puts each body at
 // x+ = x + h v + h^2 ((1/2 - beta) a + beta a+), with a+ from the latest wrench, and turns

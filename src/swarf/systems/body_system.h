@@ -1,7 +1,7 @@
 // body_system.h: the meshes' motions: prescribed (tools on their paths) or as rigid bodies
 // under the contacts, their loads and gravity (state/rigid_body.h).
 //
-// Stages (simulation.h):
+// Stages (integrate/integration.h):
 //   prescribe   the prescribed meshes at t + h (offset and the step's velocity)
 //   place       Newmark: each body at x+ from the latest wrench, turned by the quaternion
 //               Newmark update; Verlet: drift before the contacts, kick after them

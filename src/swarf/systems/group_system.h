@@ -1,7 +1,7 @@
 // group_system.h: groups of particles whose components follow prescribed motions (grips,
 // clamps, the workpiece's base), and the reactions they exert.
 //
-// Stages (simulation.h): prescribe puts the prescribed components at their displacement at
+// Stages (integrate/integration.h): prescribe puts the prescribed components at their displacement at
 // t + h with the step's velocity; account takes the reactions of the converged step (minus
 // the internal forces on the members) and books the work the motions did on the body, by the
 // trapezoid over the step, plus the change of the members' own kinetic energy (a grip that

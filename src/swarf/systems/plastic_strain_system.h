@@ -1,7 +1,7 @@
 // plastic_strain_system.h: the accumulated equivalent plastic strain per particle (PEEQ), as FEM
 // codes define it: the time integral of the equivalent plastic strain rate (docs/outputs.md).
 //
-// Stages (simulation.h), after a step has converged, after the rods' commit:
+// Stages (integrate/integration.h), after a step has converged, after the rods' commit:
 //   accumulate  every rod that flowed in the step (the list the rods' commit hands over) adds its
 //               logarithmic plastic increment de = de_p L0 / L (de_p the law's plastic strain
 //               increment, of the rest length L0; L the rod's length now) to both ends' windows as

@@ -2,7 +2,7 @@
 // the commit of plasticity and breakage, bond formation and neighbour exchange, and the rods'
 // energy.
 //
-// Stages (simulation.h):
+// Stages (integrate/integration.h):
 //   forces      every intact rod evaluated from its COMMITTED state (forces/rod_forces.h):
 //               trial shift, trial break flag, force coefficient; then the rods on a mesh's
 //               parting line break in this trial (laws/parting_rule.h)

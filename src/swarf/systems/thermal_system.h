@@ -1,7 +1,7 @@
 // thermal_system.h: the heat in the workpiece and at the tools (issue 33; docs/physics.md,
 // "Heat"): a temperature per particle (Particles::temperature), its sources and conduction.
 //
-// Stages (simulation.h), after a step has converged, after the rods' commit and before the
+// Stages (integrate/integration.h), after a step has converged, after the rods' commit and before the
 // contacts':
 //   sources    the Taylor-Quinney fraction of each rod's plastic work of the step (the list
 //              the rods' commit hands over: what it booked as plastic work), half to each end; the frictional power of

@@ -15,7 +15,7 @@ enum class Scheme {
 /// How the Newmark step's equations are solved (ignored by Verlet).
 enum class Solver {
   FixedPoint,  ///< sweeps {place, forces, gather}: converge only below the explicit stable step
-  Newton,      ///< Newton-Krylov on the residual in the accelerations (simulation_newton.cpp); rods only
+  Newton,      ///< Newton-Krylov on the residual in the accelerations (integrate/newton.cpp); rods only
 };
 
 struct StepSettings {

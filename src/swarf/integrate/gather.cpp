@@ -1,29 +1,36 @@
-// simulation_gather.cpp: the gather stage: each particle's rod and contact forces summed in a
+// gather.cpp: the gather stage: each particle's rod and contact forces summed in a
 // fixed order, the accelerations, the convergence measure of the Newmark sweeps, and the
-// explicit scheme's corrector fused with it (see simulation.h).
+// explicit scheme's corrector fused with it (see integration.h).
 #include <algorithm>
 #include <cmath>
 
 #include "swarf/core/parallel.h"
-#include "swarf/simulation.h"
+#include "swarf/integrate/integration.h"
 
-namespace swarf {
+namespace swarf::integrate {
 
 namespace {
 constexpr double kForceFloorStrain = 1e-8;  // see gather_impl
-}  // namespace
+enum class GatherMode { Plain, Measure, Kick };
 
-template <Simulation::GatherMode Mode, bool Wrap>
-double Simulation::gather_impl(double h) {
+// The particles' part of the sweep's convergence measure, for the bodies' part.
+SweepMeasure sweep_measure(const Integration& it) {
+  return {it.implicit, it.ms.sweep_dt, it.set.beta, it.ms.sweep_force_level2, it.ms.step_disp2};
+}
+
+template <GatherMode Mode, bool Wrap>
+double gather_impl(Integration& it, double h) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
   constexpr bool Measure = Mode == GatherMode::Measure, Kick = Mode == GatherMode::Kick;
-  auto& p = m_.particles;
-  const auto& r = m_.rods;
+  auto& p = world.particles;
+  const auto& r = world.rods;
   const std::size_t n = p.size();
-  const double d = set_.length_scale;
-  const bool contacts = contacts_.enabled();
-  const bool rot = rotations_;
-  const Vec3 gravity = m_.gravity;
-  const Periodic periodic = m_.periodic;
+  const double d = it.set.length_scale;
+  const bool contacts = it.sys.contacts.enabled();
+  const bool rot = ms.rotations;
+  const Vec3 gravity = world.gravity;
+  const Periodic periodic = world.periodic;
   // Convergence measure of the fixed-point iteration: the largest change of a particle's
   // force between sweeps, relative to the largest force level in the body, which is the
   // larger of the net forces and the sums of rod force magnitudes |sigma A| on a particle.
@@ -34,7 +41,7 @@ double Simulation::gather_impl(double h) {
   // over the blocks in order (the same rounding for any thread count).
   constexpr std::size_t kPowerBlock = 256;
   const std::size_t nb = (n + kPowerBlock - 1) / kPowerBlock;
-  if constexpr (Kick) block_power_.assign(nb, 0.0);
+  if constexpr (Kick) ms.block_power.assign(nb, 0.0);
   // Raw pointers in locals: Eigen's vector stores may alias anything, and through the
   // containers every array's base was loaded again after each store.
   const Vec3* x = p.position.data();
@@ -50,14 +57,14 @@ double Simulation::gather_impl(double h) {
   const double* radius = p.radius.data();
   const double* inv_inertia = p.inv_inertia.data();
   const std::uint8_t* prescribed = p.prescribed.data();
-  const std::uint8_t* free_to_rotate = free_to_rotate_.data();
+  const std::uint8_t* free_to_rotate = ms.free_to_rotate.data();
   const std::int32_t* row_start = r.row_start.data();
   const Rods::Entry* entries = r.entries.data();
   const double* force_coef = r.force_coef.data();
-  Vec3* contact_force = contact_force_.data();
-  const ContactSystem::Sums sums = contacts ? contacts_.sums() : ContactSystem::Sums{};
+  Vec3* contact_force = ms.contact_force.data();
+  const ContactSystem::Sums sums = contacts ? it.sys.contacts.sums() : ContactSystem::Sums{};
   [[maybe_unused]] const double half = 0.5 * h;
-  const bool turn_spheres = set_.sphere_orientations;
+  const bool turn_spheres = it.set.sphere_orientations;
   // One block of particles; dmax_, fmax_, damax_ are the calling thread's reduction copies.
   // (Contacts: a compile-time switch, so that the rods-only loop keeps its registers.)
   auto block = [&]<bool Contacts>(std::size_t b, double& dmax_, double& fmax_, double& damax_) {
@@ -112,12 +119,12 @@ double Simulation::gather_impl(double h) {
           if (inv_inertia[i] > 0.0)
             sphere_rotation_step(orient[i], omega[i], omega_dot[i], torque[i], inv_inertia[i], h, 0.5, turn_spheres);
           else
-            rotate_one(i, h, 0.0, 0.5);
+            rotate_one(it, i, h, 0.0, 0.5);
         }
         if constexpr (Contacts) power += fc.dot(vel[i]) + (rot ? torque[i].dot(omega[i]) : 0.0);
       }
     }
-    if constexpr (Kick) block_power_[b] = power;
+    if constexpr (Kick) ms.block_power[b] = power;
   };
   // Static, as the passes that move the particles and the pair loop: each thread finds its
   // particles' data in its own core's cache (dynamic blocks were slower: validation/bench/README.md).
@@ -128,48 +135,55 @@ double Simulation::gather_impl(double h) {
     else
       block.template operator()<false>(b, dmax, fmax, damax);
   }
-  if constexpr (Measure) sweep_force_level2_ = fmax;  // (the bodies' measure compares with it)
+  if constexpr (Measure) ms.sweep_force_level2 = fmax;  // (the bodies' measure compares with it)
   if constexpr (Kick) {
-    kick_power_ = 0.0;
-    for (double w : block_power_) kick_power_ += w;
+    ms.kick_power = 0.0;
+    for (double w : ms.block_power) ms.kick_power += w;
   }
   if (!Measure || dmax == 0.0) return 0.0;
   // A body at rest and unstressed (before the tool touches it) has forces that are rounding
   // noise: measured against them, the sweeps never "converge" and the step shrinks to dt_min
   // (seen as a 2-cycle of a 1e-13 N change at the first contact of a sharp tool). The force
   // level therefore never counts below that of a rod strained by 1e-8.
-  const double floor = kForceFloorStrain * set_.stiffness_scale * d;
+  const double floor = kForceFloorStrain * it.set.stiffness_scale * d;
   fmax = std::max(fmax, floor * floor);
   // Two scale-aware measures; the iteration has converged when either is small:
   //  - the force change relative to the force level (quasi-static, stressed states);
   //  - the position correction beta h^2 |da| relative to the largest displacement of the
   //    step (fast motion through unstressed states, where the force level vanishes).
   const double by_force = fmax > 0.0 ? std::sqrt(dmax / fmax) : HUGE_VAL;
-  const double by_motion = step_disp2_ > 0.0 ? set_.beta * h * h * std::sqrt(damax / step_disp2_) : HUGE_VAL;
+  const double by_motion = ms.step_disp2 > 0.0 ? it.set.beta * h * h * std::sqrt(damax / ms.step_disp2) : HUGE_VAL;
   return std::min(by_force, by_motion);
 }
 
-double Simulation::gather() {
-  const double h = sweep_dt_;
+}  // namespace
+
+double gather(Integration& it) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  const double h = ms.sweep_dt;
   double change;
-  if (!implicit_)
-    change = m_.periodic.on() ? gather_impl<GatherMode::Plain, true>(h) : gather_impl<GatherMode::Plain, false>(h);
+  if (!it.implicit)
+    change = world.periodic.on() ? gather_impl<GatherMode::Plain, true>(it, h)
+                                 : gather_impl<GatherMode::Plain, false>(it, h);
   else
-    change = m_.periodic.on() ? gather_impl<GatherMode::Measure, true>(h) : gather_impl<GatherMode::Measure, false>(h);
-  if (m_.bodies.empty()) return change;
-  const double bodies = bodies_.wrenches(
-      m_, contacts_, sweep_measure());  // (NaN-safe: a NaN change fails the isfinite test of the caller)
+    change = world.periodic.on() ? gather_impl<GatherMode::Measure, true>(it, h)
+                                 : gather_impl<GatherMode::Measure, false>(it, h);
+  if (world.bodies.empty()) return change;
+  const double bodies = it.sys.bodies.wrenches(
+      world, it.sys.contacts, sweep_measure(it));  // (NaN-safe: a NaN change fails the isfinite test of the caller)
   return std::isnan(bodies) ? bodies : std::max(change, bodies);
 }
 
-void Simulation::gather_kick(double h) {
-  if (m_.periodic.on())
-    gather_impl<GatherMode::Kick, true>(h);
+void gather_kick(Integration& it, double h) {
+  World& world = it.world;
+  if (world.periodic.on())
+    gather_impl<GatherMode::Kick, true>(it, h);
   else
-    gather_impl<GatherMode::Kick, false>(h);
-  if (m_.bodies.empty()) return;
-  bodies_.wrenches(m_, contacts_, sweep_measure());
-  bodies_.kick(m_, time_, h);
+    gather_impl<GatherMode::Kick, false>(it, h);
+  if (world.bodies.empty()) return;
+  it.sys.bodies.wrenches(world, it.sys.contacts, sweep_measure(it));
+  it.sys.bodies.kick(world, it.t, h);
 }
 
-}  // namespace swarf
+}  // namespace swarf::integrate

@@ -1,5 +1,5 @@
-// simulation_newton.cpp: the Newton-Krylov solve of the implicit Newmark step (see
-// newton_newmark.h and simulation.h).
+// newton.cpp: the Newton-Krylov solve of the implicit Newmark step (see
+// newton_newmark.h and integration.h).
 //
 // Choices, and why:
 // - Unknowns: the new accelerations a, as the fixed-point sweeps use (the step's
@@ -11,7 +11,7 @@
 //   residual and its tangent. A rod that keeps flipping between branches (a piecewise-linear
 //   law can make Newton cycle) exhausts max_iterations and rejects the step, which is retried
 //   shorter, where the flip is resolved. Plasticity and breakage are committed afterwards,
-//   from the converged evaluation, exactly as for the fixed-point solver (Simulation::commit).
+//   from the converged evaluation, exactly as for the fixed-point solver (integrate::commit).
 // - Matrix-free products (forces/rod_tangent.h): one pass over the particles' rows per CG
 //   iteration, each rod applied from both ends (twice the flops of a pass over the rods, but
 //   no per-rod store, no second pass and no barrier between them), and no sparse matrix to
@@ -39,9 +39,9 @@
 
 #include "swarf/core/parallel.h"
 #include "swarf/forces/rod_tangent.h"
-#include "swarf/simulation.h"
+#include "swarf/integrate/integration.h"
 
-namespace swarf {
+namespace swarf::integrate {
 
 namespace {
 
@@ -81,93 +81,21 @@ inline void mask_prescribed(Vec3& v, std::uint8_t mask) {
       if (mask & (1u << c)) v[c] = 0.0;
 }
 
-}  // namespace
-
-bool Simulation::try_newton(double h) {
-  const StepSettings& g = set_;
-  if (!prescribe(h)) return false;  // (a mesh would move too far in the step: a shorter one)
-  clock_.lap(Stage::Prescribe);
-  auto& acc = m_.particles.acceleration;
-  const std::size_t n = acc.size();
-  const double kx = g.beta * h * h;
-  int solves = 0, growing = 0, cg_total = 0;
-  bool capped = false;
-  double previous = HUGE_VAL, before_previous = HUGE_VAL, correction = HUGE_VAL;
-  while (true) {
-    if (!place(h)) return false;  // also rejects a particle moving further than max_step_displacement
-    clock_.lap(Stage::Integrate);
-    rod_forces();
-    clock_.lap(Stage::Rods);
-    contact_forces(h);  // (the trial evaluation from the committed histories, as the sweeps')
-    const double res = newton_residual(h);
-    clock_.lap(Stage::Gather);
-    if (!std::isfinite(res)) return false;
-    // Converged: the residual is small against the force level, or the last correction
-    // moved the particles by little against the step's displacement (fast motion through
-    // unstressed states, where the force level vanishes; the same two measures as the gather).
-    if (res <= g.tolerance || correction <= g.tolerance) break;
-    if (solves >= g.max_iterations) return false;
-    // Newton near the solution shrinks the residual every iteration; two growing in a row
-    // mean it is not converging (a step too long for the nonlinearity): give up early.
-    growing = res > previous && res > 10.0 * g.tolerance ? growing + 1 : 0;
-    if (growing >= 2) return false;
-    // Nor does it stall: a rod or a contact that flips its branch at every iteration (a
-    // piecewise-linear law, a contact at the edge of touching) makes a 2-cycle whose
-    // residuals alternate, so they never grow twice in a row. Seen on the cut: 25 iterations
-    // between the same two residuals before the step was rejected anyway. From the fourth
-    // iteration on, the residual must have halved over the last two.
-    if (solves >= 3 && res > 0.5 * before_previous && res > 10.0 * g.tolerance) return false;
-    before_previous = previous;
-    previous = res;
-    newton_tangent(h);
-    const int cg = newton_krylov();
-    clock_.lap(Stage::Krylov);
-    ++solves;
-    ++newton_stats_.solves;
-    if (cg < 0) {
-      ++newton_stats_.indefinite;
-      return false;
-    }
-    cg_total += cg;
-    if (cg >= g.krylov_max_iterations) {
-      capped = true;
-      ++newton_stats_.krylov_capped;
-    }
-    double dmax2 = 0.0;
-    const Vec3* d = nk_.d.data();
-    Vec3* a = acc.data();
-#pragma omp parallel for schedule(static) reduction(max : dmax2)
-    for (std::size_t i = 0; i < n; ++i) {
-      a[i] += d[i];  // (d is zero in the prescribed components)
-      dmax2 = std::max(dmax2, d[i].squaredNorm());
-    }
-    correction = step_disp2_ > 0.0 ? kx * std::sqrt(dmax2 / step_disp2_) : HUGE_VAL;
-  }
-  // The rotations of particles without rods were placed with the torques of the evaluation
-  // before the last; place them (and nothing else: a is unchanged) with the converged ones,
-  // as the sweeps do after their last gather.
-  if (rotations_ && !free_list_.empty() && !place(h)) return false;
-  stats_.last_iterations = solves;
-  stats_.iterations += solves;
-  stats_.max_iterations = std::max(stats_.max_iterations, solves);
-  newton_stats_.last_krylov = cg_total;
-  newton_stats_.last_capped = capped;
-  return true;
-}
-
 template <bool Wrap, bool Contacts>
-double Simulation::newton_residual_impl() {
-  auto& p = m_.particles;
-  const auto& r = m_.rods;
+double newton_residual_impl(Integration& it) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  auto& p = world.particles;
+  const auto& r = world.rods;
   const std::size_t n = p.size();
-  nk_.residual.resize(n);
-  const double d = set_.length_scale;
-  const Vec3 gravity = m_.gravity;
-  const Periodic periodic = m_.periodic;
+  ms.newton.residual.resize(n);
+  const double d = it.set.length_scale;
+  const Vec3 gravity = world.gravity;
+  const Periodic periodic = world.periodic;
   const Vec3* x = p.position.data();
   Vec3* force = p.force.data();
   Vec3* acc = p.acceleration.data();
-  Vec3* res = nk_.residual.data();
+  Vec3* res = ms.newton.residual.data();
   const double* mass = p.mass.data();
   const double* inv_mass = p.inv_mass.data();
   const std::uint8_t* prescribed = p.prescribed.data();
@@ -176,8 +104,8 @@ double Simulation::newton_residual_impl() {
   const double* force_coef = r.force_coef.data();
   const double* radius = p.radius.data();
   Vec3* torque = p.torque.data();
-  Vec3* contact_force = contact_force_.data();
-  const ContactSystem::Sums sums = Contacts ? contacts_.sums() : ContactSystem::Sums{};
+  Vec3* contact_force = ms.contact_force.data();
+  const ContactSystem::Sums sums = Contacts ? it.sys.contacts.sums() : ContactSystem::Sums{};
   // The residual's largest component against the force level: the largest of the net
   // forces, the inertial forces m a and the sums of rod force magnitudes on a particle.
   double rmax = 0.0, fmax = 0.0;
@@ -220,27 +148,32 @@ double Simulation::newton_residual_impl() {
     rmax = std::max(rmax, std::isnan(r2) ? HUGE_VAL : r2);
     fmax = std::max({fmax, ff.squaredNorm(), ma.squaredNorm(), level * level * d * d});
   }
-  const double floor = kForceFloorStrain * set_.stiffness_scale * d;
+  const double floor = kForceFloorStrain * it.set.stiffness_scale * d;
   fmax = std::max(fmax, floor * floor);
-  nk_.level2 = fmax;
+  ms.newton.level2 = fmax;
   return std::sqrt(rmax / fmax);
 }
 
-double Simulation::newton_residual(double h) {
-  sweep_dt_ = h;
-  const bool wrap = m_.periodic.on();
-  if (contacts_.enabled()) return wrap ? newton_residual_impl<true, true>() : newton_residual_impl<false, true>();
-  return wrap ? newton_residual_impl<true, false>() : newton_residual_impl<false, false>();
+double newton_residual(Integration& it, double h) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  ms.sweep_dt = h;
+  const bool wrap = world.periodic.on();
+  if (it.sys.contacts.enabled())
+    return wrap ? newton_residual_impl<true, true>(it) : newton_residual_impl<false, true>(it);
+  return wrap ? newton_residual_impl<true, false>(it) : newton_residual_impl<false, false>(it);
 }
 
-void Simulation::newton_tangent(double h) {
-  const auto& p = m_.particles;
-  const auto& r = m_.rods;
+void newton_tangent(Integration& it, double h) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  const auto& p = world.particles;
+  const auto& r = world.rods;
   const std::size_t n = p.size(), m = r.size();
-  nk_.axis.resize(m);
-  nk_.axial.resize(m);
-  nk_.lateral.resize(m);
-  nk_.block_inverse.resize(n);
+  ms.newton.axis.resize(m);
+  ms.newton.axial.resize(m);
+  ms.newton.lateral.resize(m);
+  ms.newton.block_inverse.resize(n);
   RodTangentView v;
   v.rods = m;
   v.ends = r.ends.data();
@@ -253,23 +186,23 @@ void Simulation::newton_tangent(double h) {
   v.x = p.position.data();
   v.v = p.velocity.data();
   v.temperature = p.temperature.empty() ? nullptr : p.temperature.data();  // (as RodSystem::forces)
-  v.axis = nk_.axis.data();
-  v.axial = nk_.axial.data();
-  v.lateral = nk_.lateral.data();
-  if (m > 0) rod_tangent_setup(r.law, r.area, set_.beta * h * h, set_.gamma * h, v, m_.periodic);
-  const bool contacts = contacts_.enabled();
-  if (contacts) contacts_.tangent(p, h, set_.beta * h * h, set_.gamma * h);
-  const ContactSystem::TangentRows ct = contacts ? contacts_.tangent_rows() : ContactSystem::TangentRows{};
+  v.axis = ms.newton.axis.data();
+  v.axial = ms.newton.axial.data();
+  v.lateral = ms.newton.lateral.data();
+  if (m > 0) rod_tangent_setup(r.law, r.area, it.set.beta * h * h, it.set.gamma * h, v, world.periodic);
+  const bool contacts = it.sys.contacts.enabled();
+  if (contacts) it.sys.contacts.tangent(p, h, it.set.beta * h * h, it.set.gamma * h);
+  const ContactSystem::TangentRows ct = contacts ? it.sys.contacts.tangent_rows() : ContactSystem::TangentRows{};
   // Block-Jacobi: particle i's 3x3 diagonal block m_i I + sum of its rods' S_k, with the
   // prescribed components' rows and columns replaced by the identity (their d stays 0).
   const double* mass = p.mass.data();
   const std::uint8_t* prescribed = p.prescribed.data();
   const std::int32_t* row_start = r.row_start.data();
   const Rods::Entry* entries = r.entries.data();
-  const Vec3* axis = nk_.axis.data();
-  const double* axial = nk_.axial.data();
-  const double* lateral = nk_.lateral.data();
-  Eigen::Matrix3d* inv = nk_.block_inverse.data();
+  const Vec3* axis = ms.newton.axis.data();
+  const double* axial = ms.newton.axial.data();
+  const double* lateral = ms.newton.lateral.data();
+  Eigen::Matrix3d* inv = ms.newton.block_inverse.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::Matrix3d b = mass[i] * Eigen::Matrix3d::Identity();
@@ -291,22 +224,24 @@ void Simulation::newton_tangent(double h) {
   }
 }
 
-void Simulation::newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& out, double& dot) {
-  const auto& p = m_.particles;
-  const auto& r = m_.rods;
+void newton_product(Integration& it, const std::vector<Vec3>& x, std::vector<Vec3>& out, double& dot) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  const auto& p = world.particles;
+  const auto& r = world.rods;
   const std::size_t n = p.size();
   const double* mass = p.mass.data();
   const std::uint8_t* prescribed = p.prescribed.data();
   const std::int32_t* row_start = r.row_start.data();
   const Rods::Entry* entries = r.entries.data();
-  const Vec3* axis = nk_.axis.data();
-  const double* axial = nk_.axial.data();
-  const double* lateral = nk_.lateral.data();
+  const Vec3* axis = ms.newton.axis.data();
+  const double* axial = ms.newton.axial.data();
+  const double* lateral = ms.newton.lateral.data();
   const Vec3* xs = x.data();
   Vec3* o = out.data();
-  ++newton_stats_.tangent_products;
-  const bool contacts = contacts_.enabled();
-  const ContactSystem::TangentRows ct = contacts ? contacts_.tangent_rows() : ContactSystem::TangentRows{};
+  ++ms.newton_stats.tangent_products;
+  const bool contacts = it.sys.contacts.enabled();
+  const ContactSystem::TangentRows ct = contacts ? it.sys.contacts.tangent_rows() : ContactSystem::TangentRows{};
   // (J x)_i = m_i x_i - sum over i's rods of S_k (x_other - x_i), in the rows' order.
   dot = deterministic_sum(n, [&](std::size_t i) {
     Vec3 s = mass[i] * xs[i];
@@ -323,9 +258,11 @@ void Simulation::newton_product(const std::vector<Vec3>& x, std::vector<Vec3>& o
   });
 }
 
-int Simulation::newton_krylov() {
-  const std::size_t n = m_.particles.size();
-  NewtonWork& w = nk_;
+int newton_krylov(Integration& it) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  const std::size_t n = world.particles.size();
+  NewtonWork& w = ms.newton;
   w.d.assign(n, Vec3::Zero());
   w.r.resize(n);
   w.z.resize(n);
@@ -346,15 +283,15 @@ int Simulation::newton_krylov() {
   // below half the Newton tolerance of the force level (2-norm, so every particle's too):
   // solving further would buy nothing the Newton test can see, and a step that starts near
   // its solution (slow loading, a good predictor) then needs one short solve.
-  const double eta = set_.krylov_tolerance, half_tol = 0.5 * set_.tolerance;
-  const double target = std::max(eta * eta * rr, half_tol * half_tol * nk_.level2);
-  const int kmax = set_.krylov_max_iterations;
+  const double eta = it.set.krylov_tolerance, half_tol = 0.5 * it.set.tolerance;
+  const double target = std::max(eta * eta * rr, half_tol * half_tol * ms.newton.level2);
+  const int kmax = it.set.krylov_max_iterations;
   int k = 0;
   while (k < kmax) {
     ++k;
-    ++newton_stats_.krylov_iterations;
+    ++ms.newton_stats.krylov_iterations;
     double pq = 0.0;
-    newton_product(w.p, w.q, pq);
+    newton_product(it, w.p, w.q, pq);
     if (!(pq > 0.0)) return -1;  // J is not positive definite on this direction (or NaN)
     const double alpha = rz / pq;
     const auto [rz_new, rr_new] = deterministic_sums2(n, [&](std::size_t i) {
@@ -372,4 +309,80 @@ int Simulation::newton_krylov() {
   return k;
 }
 
-}  // namespace swarf
+}  // namespace
+
+bool newton_try(Integration& it, double h) {
+  World& world = it.world;
+  MotionState& ms = it.ms;
+  const StepSettings& g = it.set;
+  if (!prescribe(it, h)) return false;  // (a mesh would move too far in the step: a shorter one)
+  it.clock.lap(Stage::Prescribe);
+  auto& acc = world.particles.acceleration;
+  const std::size_t n = acc.size();
+  const double kx = g.beta * h * h;
+  int solves = 0, growing = 0, cg_total = 0;
+  bool capped = false;
+  double previous = HUGE_VAL, before_previous = HUGE_VAL, correction = HUGE_VAL;
+  while (true) {
+    if (!place(it, h)) return false;  // also rejects a particle moving further than max_step_displacement
+    it.clock.lap(Stage::Integrate);
+    rod_forces(it);
+    it.clock.lap(Stage::Rods);
+    contact_forces(it, h);  // (the trial evaluation from the committed histories, as the sweeps')
+    const double res = newton_residual(it, h);
+    it.clock.lap(Stage::Gather);
+    if (!std::isfinite(res)) return false;
+    // Converged: the residual is small against the force level, or the last correction
+    // moved the particles by little against the step's displacement (fast motion through
+    // unstressed states, where the force level vanishes; the same two measures as the gather).
+    if (res <= g.tolerance || correction <= g.tolerance) break;
+    if (solves >= g.max_iterations) return false;
+    // Newton near the solution shrinks the residual every iteration; two growing in a row
+    // mean it is not converging (a step too long for the nonlinearity): give up early.
+    growing = res > previous && res > 10.0 * g.tolerance ? growing + 1 : 0;
+    if (growing >= 2) return false;
+    // Nor does it stall: a rod or a contact that flips its branch at every iteration (a
+    // piecewise-linear law, a contact at the edge of touching) makes a 2-cycle whose
+    // residuals alternate, so they never grow twice in a row. Seen on the cut: 25 iterations
+    // between the same two residuals before the step was rejected anyway. From the fourth
+    // iteration on, the residual must have halved over the last two.
+    if (solves >= 3 && res > 0.5 * before_previous && res > 10.0 * g.tolerance) return false;
+    before_previous = previous;
+    previous = res;
+    newton_tangent(it, h);
+    const int cg = newton_krylov(it);
+    it.clock.lap(Stage::Krylov);
+    ++solves;
+    ++ms.newton_stats.solves;
+    if (cg < 0) {
+      ++ms.newton_stats.indefinite;
+      return false;
+    }
+    cg_total += cg;
+    if (cg >= g.krylov_max_iterations) {
+      capped = true;
+      ++ms.newton_stats.krylov_capped;
+    }
+    double dmax2 = 0.0;
+    const Vec3* d = ms.newton.d.data();
+    Vec3* a = acc.data();
+#pragma omp parallel for schedule(static) reduction(max : dmax2)
+    for (std::size_t i = 0; i < n; ++i) {
+      a[i] += d[i];  // (d is zero in the prescribed components)
+      dmax2 = std::max(dmax2, d[i].squaredNorm());
+    }
+    correction = ms.step_disp2 > 0.0 ? kx * std::sqrt(dmax2 / ms.step_disp2) : HUGE_VAL;
+  }
+  // The rotations of particles without rods were placed with the torques of the evaluation
+  // before the last; place them (and nothing else: a is unchanged) with the converged ones,
+  // as the sweeps do after their last gather.
+  if (ms.rotations && !ms.free_list.empty() && !place(it, h)) return false;
+  it.stats.last_iterations = solves;
+  it.stats.iterations += solves;
+  it.stats.max_iterations = std::max(it.stats.max_iterations, solves);
+  ms.newton_stats.last_krylov = cg_total;
+  ms.newton_stats.last_capped = capped;
+  return true;
+}
+
+}  // namespace swarf::integrate
