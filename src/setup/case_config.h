@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "io/output_fields.h"
 #include "setup/key.h"
 #include "setup/modules/contacts.h"
 #include "setup/modules/heat.h"
@@ -174,11 +175,8 @@ struct UniaxialSettings {
 };
 
 /// The per-particle fields of the ParaView frames and results.h5 that output.fields chooses
-/// from (docs/outputs.md); the positions, radii and groups are always written; temperature
-/// only with [heat].
-inline const std::vector<std::string> kParticleFieldNames{
-    "velocity",       "displacement", "broken_fraction", "stress",     "von_mises_stress", "hydrostatic_stress",
-    "plastic_strain", "peeq",         "peeq_rate",       "temperature"};
+/// from: the table's (io/output_fields.h).
+inline const std::vector<std::string> kParticleFieldNames = output_field_names();
 
 /// [output]
 struct OutputSettings {
