@@ -2,15 +2,25 @@
 // complete, its consumers read it (the key's allowed values, the frames' order), and
 // docs/outputs.md holds its generated table.
 #include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationStringKey.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "io/h5file.h"
 #include "io/output_fields.h"
+#include "scenes/tiny_uniaxial.h"
 #include "setup/case_config.h"
 #include "setup/case_keys.h"
+#include "swarf/core/errors.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -75,6 +85,54 @@ TEST(OutputFields, TheFramesKeepTheirArraysOrder) {
   for (const std::string& n : order)
     if (std::find(before.begin(), before.end(), n) != before.end()) old_ones.push_back(n);
   EXPECT_EQ(old_ones, before);
+}
+
+// The coordination number, added as one row of the table: a run writes it to the frames and
+// results.h5 (and so to the field history), with its unit, and it counts the intact rods.
+TEST(OutputFields, CoordinationReachesTheFramesAndResults) {
+  test::TempDir dir("coordination");
+  test::write_file(dir / "tiny.toml", test::kTinyUniaxial);
+  const auto r = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "tiny.toml") + " --out " +
+                                   (dir / "out") + " --set integrator.end_time=2e-5 --set output.plots=false");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName((dir / "out/frames/particles_00001.vtu").c_str());
+  reader->Update();
+  vtkDataArray* a = reader->GetOutput()->GetPointData()->GetArray("coordination");
+  ASSERT_NE(a, nullptr);
+  ASSERT_TRUE(a->GetInformation()->Has(vtkDataArray::UNITS_LABEL()));
+  EXPECT_STREQ(a->GetInformation()->Get(vtkDataArray::UNITS_LABEL()), "1");
+  EXPECT_EQ(a->GetNumberOfComponents(), 1);
+  double lo = 1e9, hi = -1e9;
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
+    lo = std::min(lo, a->GetComponent(i, 0));
+    hi = std::max(hi, a->GetComponent(i, 0));
+  }
+  EXPECT_EQ(hi, 12.0) << "an interior particle of the FCC lattice";
+  EXPECT_GE(lo, 0.0);
+  EXPECT_LT(lo, 12.0) << "the block's surface particles have fewer";
+
+  H5File h5(dir / "out/results.h5", H5File::Mode::Read);
+  ASSERT_TRUE(h5.has("/particles/coordination"));
+  EXPECT_EQ(h5.dataset_attribute("/particles/coordination", "unit"), "1");
+  EXPECT_EQ(h5.dataset_attribute("/particles/coordination", "description"),
+            "coordination number: the particle's intact rods");
+  std::size_t rows = 0, cols = 0, radius_rows = 0;
+  const std::vector<double> c = h5.read_doubles("/particles/coordination", rows, cols);
+  EXPECT_EQ(cols, 1u);
+  h5.read_doubles("/particles/radius", radius_rows, cols);
+  ASSERT_EQ(rows, radius_rows);
+  EXPECT_EQ(*std::max_element(c.begin(), c.end()), 12.0);
+  EXPECT_TRUE(h5.has("/frames/00001/coordination")) << "the field history copies it";
+
+  // Left out when output.fields does not name it.
+  const auto some = test::run_command(std::string(SWARF_BINARY) + " run " + (dir / "tiny.toml") + " --out " +
+                                      (dir / "some") +
+                                      " --set integrator.end_time=2e-5 --set output.plots=false "
+                                      "--set 'output.fields=[\"velocity\"]'");
+  ASSERT_EQ(some.exit_code, 0) << some.output;
+  H5File h5some(dir / "some/results.h5", H5File::Mode::Read);
+  EXPECT_FALSE(h5some.has("/particles/coordination"));
 }
 
 }  // namespace

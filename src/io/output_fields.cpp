@@ -141,6 +141,22 @@ constexpr std::array kFields{
         .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.particles.temperature, out); },
         .results_with_heat = true,
     },
+    OutputField{
+        .name = "coordination",
+        .unit = "1",
+        .kind = FieldKind::Measured,
+        .doc = "coordination number: the particle's intact rods, 12 inside the FCC lattice, fewer at free surfaces, "
+               "along cracks and in the chip's loose fragments, 0 for a particle without rods (rods formed by bond "
+               "formation count too)",
+        .description = "coordination number: the particle's intact rods",
+        .compute =
+            [](const FieldInput& in, std::vector<double>& out) {
+              const Rods& r = in.rods;
+              for (std::size_t i = 0; i + 1 < r.row_start.size() && i < out.size(); ++i)
+                for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e)
+                  out[i] += r.intact[r.entries[e].rod] ? 1.0 : 0.0;
+            },
+    },
 };
 
 constexpr std::array<FixedArrayDoc, 4> kFixed{{
