@@ -285,6 +285,26 @@ struct CaseKeysCommand final : Command {
   }
 };
 
+// swarf case fields
+struct CaseFieldsCommand final : Command {
+  std::string update;
+  explicit CaseFieldsCommand(CLI::App& case_cmd) {
+    sub = case_cmd.add_subcommand("fields",
+                                  "Print the table of the per-particle output fields (output.fields) of "
+                                  "docs/outputs.md, with its marker lines");
+    sub->add_option("--update", update, "Rewrite the fields' table between the marker lines of this markdown file");
+  }
+  int run() override {
+    if (!update.empty()) {
+      update_output_fields_file(update);
+      fmt::print("updated the output fields' table of {}\n", update);
+    } else {
+      fmt::print("{}\n", output_fields_markdown());
+    }
+    return 0;
+  }
+};
+
 // swarf case default
 struct CaseDefaultCommand final : Command {
   bool cut = false;
@@ -316,6 +336,7 @@ std::vector<std::unique_ptr<Command>> make_commands(CLI::App& app) {
   CLI::App* case_cmd = app.add_subcommand("case", "Describe the case file format; print the default case");
   case_cmd->require_subcommand(1);
   c.push_back(std::make_unique<CaseKeysCommand>(*case_cmd));
+  c.push_back(std::make_unique<CaseFieldsCommand>(*case_cmd));
   c.push_back(std::make_unique<CaseDefaultCommand>(*case_cmd));
   return c;
 }

@@ -11,6 +11,7 @@
 #include "app/case_echo.h"
 #include "io/atomic_file.h"
 #include "io/h5file.h"
+#include "io/output_fields.h"
 #include "io/results_format.h"
 #include "io/vtk_output.h"
 #include "setup/case_keys.h"
@@ -128,44 +129,25 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
     H5File f(tmp, H5File::Mode::Create);
     const std::size_t n = p.size(), m = r.size();
     // Each dataset with its unit and meaning (docs/outputs.md has the full definitions).
-    auto put = [&f](const std::string& name, const auto* data, std::size_t rows, std::size_t cols, const char* unit,
-                    const char* what) {
+    auto put = [&f](const std::string& name, const auto* data, std::size_t rows, std::size_t cols,
+                    const std::string& unit, const std::string& what) {
       f.write(name, data, rows, cols);
       f.describe(name, unit, what);
     };
     put("/particles/position", n ? p.position[0].data() : nullptr, n, 3, "m", "particle centre at the end");
-    if (has_field(fields, "velocity"))
-      put("/particles/velocity", n ? p.velocity[0].data() : nullptr, n, 3, "m/s", "particle velocity at the end");
-    if (has_field(fields, "displacement")) {
-      std::vector<Vec3> disp(n);
-      for (std::size_t i = 0; i < n; ++i) disp[i] = p.position[i] - p.initial_position[i];
-      put("/particles/displacement", n ? disp[0].data() : nullptr, n, 3, "m", "position minus initial position");
+    // The table's rows (io/output_fields.h): the chosen ones, and those results.h5 always holds.
+    ParticleFields measured;
+    if (needs_particle_fields(fields)) measured = particle_fields(p, r, sim.world().periodic, &sim.contacts());
+    const FieldInput in{p, r, needs_particle_fields(fields) ? &measured : nullptr};
+    for (const OutputField* field : output_fields_in_write_order()) {
+      const bool chosen = field->choice == FieldChoice::Always || field->results_always ||
+                          has_field(fields, field->name);
+      if (!chosen || (field->results_with_heat && !sim.world().heat.enabled)) continue;
+      const std::vector<double> v = compute_output_field(*field, in);
+      put("/particles/" + std::string(field->name), n ? v.data() : nullptr, n,
+          static_cast<std::size_t>(field->components), std::string(field->unit), std::string(field->description));
     }
-    put("/particles/radius", p.radius.data(), n, 1, "m", "particle radius");
     put("/particles/mass", p.mass.data(), n, 1, "kg", "particle mass");
-    put("/particles/broken_fraction", broken_fraction_per_particle(p, r).data(), n, 1, "1",
-        "damage: broken rods over the particle's rods at the start");
-    if (sim.world().heat.enabled && has_field(fields, "temperature"))
-      put("/particles/temperature", p.temperature.data(), n, 1, "K", "particle temperature at the end ([heat])");
-    if (has_field(fields, "peeq"))
-      put("/particles/peeq", p.peeq.data(), n, 1, "1",
-          "accumulated equivalent plastic strain: the integral of the equivalent plastic strain rate");
-    if (has_field(fields, "peeq_rate"))
-      put("/particles/peeq_rate", p.peeq_rate.data(), n, 1, "1/s", "equivalent plastic strain rate");
-    if (needs_particle_fields(fields)) {
-      const ParticleFields pf = particle_fields(p, r, sim.world().periodic, &sim.contacts());
-      if (has_field(fields, "stress"))
-        put("/particles/stress", n ? pf.stress[0].data() : nullptr, n, 6, "Pa",
-            "virial stress of rods and contacts over 4 sqrt(2) R^3: xx, yy, zz, xy, yz, xz; positive in tension");
-      if (has_field(fields, "von_mises_stress"))
-        put("/particles/von_mises_stress", pf.von_mises.data(), n, 1, "Pa", "von Mises stress sqrt(3/2 s:s)");
-      if (has_field(fields, "hydrostatic_stress"))
-        put("/particles/hydrostatic_stress", pf.hydrostatic.data(), n, 1, "Pa",
-            "trace of the stress over 3, positive in tension (pressure = -this)");
-      if (has_field(fields, "plastic_strain"))
-        put("/particles/plastic_strain", pf.plastic_strain.data(), n, 1, "1",
-            "von Mises equivalent of the plastic strain tensor fitted to the particle's intact rods");
-    }
     if (sim.settings().sphere_orientations) {
       put("/particles/orientation", n ? p.orientation[0].data() : nullptr, n, 4, "1",
           "unit quaternion [q0 (scalar), q1, q2, q3], body to world");

@@ -57,6 +57,28 @@ vtkNew<vtkDoubleArray> scalar_array(const char* name, const std::vector<double>&
   return a;
 }
 
+// A field of the table (output_fields.h) as a point array: its name, unit, components and
+// their names (the stress: ParaView's order for a symmetric tensor, XX, YY, ZZ, XY, YZ, XZ).
+vtkNew<vtkDoubleArray> field_array(const OutputField& f, const std::vector<double>& values) {
+  vtkNew<vtkDoubleArray> a;
+  const std::string name(f.name), unit(f.unit);
+  a->SetName(name.c_str());
+  set_unit(a, unit.c_str());
+  a->SetNumberOfComponents(f.components);
+  std::size_t c = 0, start = 0;
+  const std::string names(f.component_names);
+  while (start < names.size()) {
+    const std::size_t end = std::min(names.find(' ', start), names.size());
+    a->SetComponentName(static_cast<vtkIdType>(c++), names.substr(start, end - start).c_str());
+    start = end + 1;
+  }
+  const std::size_t n = values.size() / static_cast<std::size_t>(f.components);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    a->SetTypedTuple(static_cast<vtkIdType>(i), values.data() + i * static_cast<std::size_t>(f.components));
+  return a;
+}
+
 // The frame's simulated time as the field data array TimeValue (s), which ParaView and VTK's
 // readers take for the time of a file opened alone (the .pvd gives it to the series too).
 void set_time(vtkDataSet* grid, double t) {
@@ -165,16 +187,6 @@ std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods&
   return out;
 }
 
-bool has_field(const std::vector<std::string>& fields, std::string_view name) {
-  return std::find(fields.begin(), fields.end(), name) != fields.end();
-}
-
-bool needs_particle_fields(const std::vector<std::string>& fields) {
-  for (const char* f : {"stress", "von_mises_stress", "hydrostatic_stress", "plastic_strain"})
-    if (has_field(fields, f)) return true;
-  return false;
-}
-
 VtkSeries::VtkSeries(const std::string& dir, bool with_rods, bool with_orientations, std::vector<std::string> fields)
     : dir_(dir), with_rods_(with_rods), with_orientations_(with_orientations), fields_(std::move(fields)) {
   std::filesystem::create_directories(std::filesystem::path(dir) / "frames");
@@ -197,36 +209,12 @@ void VtkSeries::write_frame(double t, const Particles& p, const Rods& r, const s
     std::vector<vtkIdType> conn(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) conn[i] = static_cast<vtkIdType>(i);
     set_cells(grid, VTK_VERTEX, 1, conn);
-    auto add = [&](const char* name, auto make) {
-      if (has_field(fields_, name)) grid->GetPointData()->AddArray(make());
-    };
-    add("velocity", [&] { return vector_array("velocity", p.velocity, "m/s"); });
-    add("displacement", [&] {
-      std::vector<Vec3> disp(p.size());
-      for (std::size_t i = 0; i < p.size(); ++i) disp[i] = p.position[i] - p.initial_position[i];
-      return vector_array("displacement", disp, "m");
-    });
-    grid->GetPointData()->AddArray(scalar_array("radius", p.radius, "m"));
-    add("broken_fraction", [&] { return scalar_array("broken_fraction", broken_fraction_per_particle(p, r), "1"); });
-    add("temperature", [&] { return scalar_array("temperature", p.temperature, "K"); });
-    add("peeq", [&] { return scalar_array("peeq", p.peeq, "1"); });
-    add("peeq_rate", [&] { return scalar_array("peeq_rate", p.peeq_rate, "1/s"); });
-    if (fields) {
-      add("stress", [&] {
-        // 6 components in ParaView's order for a symmetric tensor (XX, YY, ZZ, XY, YZ, XZ).
-        vtkNew<vtkDoubleArray> s;
-        s->SetName("stress");
-        set_unit(s, "Pa");
-        s->SetNumberOfComponents(6);
-        for (int c = 0; c < 6; ++c) s->SetComponentName(c, std::array{"XX", "YY", "ZZ", "XY", "YZ", "XZ"}[c]);
-        s->SetNumberOfTuples(static_cast<vtkIdType>(p.size()));
-        for (std::size_t i = 0; i < p.size(); ++i)
-          s->SetTypedTuple(static_cast<vtkIdType>(i), fields->stress[i].data());
-        return s;
-      });
-      add("von_mises_stress", [&] { return scalar_array("von_mises_stress", fields->von_mises, "Pa"); });
-      add("hydrostatic_stress", [&] { return scalar_array("hydrostatic_stress", fields->hydrostatic, "Pa"); });
-      add("plastic_strain", [&] { return scalar_array("plastic_strain", fields->plastic_strain, "1"); });
+    // The table's rows (output_fields.h): the chosen ones and those always written.
+    const FieldInput in{p, r, fields};
+    for (const OutputField* f : output_fields_in_write_order()) {
+      if (f->choice == FieldChoice::Chosen && !has_field(fields_, f->name)) continue;
+      if (f->measured && !fields) continue;
+      grid->GetPointData()->AddArray(field_array(*f, compute_output_field(*f, in)));
     }
     if (with_orientations_) {
       vtkNew<vtkDoubleArray> q;

@@ -1,7 +1,7 @@
 // vtk_output.h: the ParaView series DIR/particles.pvd over frames/*.vtu.
 //
-// Each frame is two unstructured grids: the particles as vertices (point data velocity m/s,
-// displacement m, radius m, broken_fraction 1, group) and the rods as lines between them
+// Each frame is two unstructured grids: the particles as vertices (point data: the per-particle
+// fields of output_fields.h, then orientations, group and id) and the rods as lines between them
 // (cell data stress Pa, strain 1, plastic_shift 1, state 1 = intact / 0 = broken), and each
 // triangle mesh (walls, tools) as polydata at its current position. The .pvd lists them as
 // parts 0, 1, 2, ... of every time step; ParaView opens it as one series. The particles carry
@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/output_fields.h"
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/periodic.h"
 #include "swarf/measure/particle_fields.h"
@@ -22,23 +23,16 @@
 
 namespace swarf {
 
-/// Whether 'fields' (the names of output.fields) holds 'name'.
-bool has_field(const std::vector<std::string>& fields, std::string_view name);
-/// Whether 'fields' holds one of the fields computed by particle_fields() (stress, von Mises and
-/// hydrostatic stress, plastic strain).
-bool needs_particle_fields(const std::vector<std::string>& fields);
-
 class VtkSeries {
  public:
   /// 'with_orientations': the particles' orientations and angular velocities as point data.
-  /// 'fields': the point arrays written besides the radius and the group, by name (output.fields:
-  /// velocity, displacement, broken_fraction, stress, von_mises_stress, hydrostatic_stress,
-  /// plastic_strain).
+  /// 'fields': the point arrays of the table (output_fields.h) written besides those always
+  /// written, by name (output.fields).
   VtkSeries(const std::string& dir, bool with_rods, bool with_orientations, std::vector<std::string> fields);
   /// Writes frame number 'frames()' at simulated time t (s): particles, rods and each mesh at
   /// its current placement (reference vertices + offset).
-  /// 'fields' (may be null): the per-particle stress, von Mises and hydrostatic stress and
-  /// plastic strain (measure/particle_fields.h), written as point arrays if chosen.
+  /// 'fields' (may be null): the measured fields (measure/particle_fields.h) that the table's
+  /// rows marked 'measured' need; without them those rows are left out.
   void write_frame(double t, const Particles& p, const Rods& r, const std::vector<MeshBody>& meshes = {},
                    const ParticleFields* fields = nullptr);
   std::size_t frames() const { return times_.size(); }

@@ -220,12 +220,6 @@ void read_environment(const CaseInput& in, CaseSettings& cs) {
   }
 }
 
-void read_output(const CaseInput& in, CaseSettings& cs) {
-  TableReader r = in.reader(in.table("output"), "output");
-  r.read(output_keys(), cs.output);
-  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-}
-
 // The tables and keys the tree holds (CaseSettings::given); the top level is checked already.
 std::set<std::string> given_keys(const toml::table& root) {
   std::set<std::string> given;

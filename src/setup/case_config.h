@@ -4,7 +4,7 @@
 // key's default. The key table (case_keys.cpp) names each key once, with its field, unit,
 // range and doc line: the reader checks against it and the key tables of
 // docs/case-reference.md are generated from it, so a new key is a field here and an entry
-// there; the rods', contacts' and heat's structs, tables, rules and builds are in their modules
+// there; the rods', contacts', heat's and outputs' structs, tables, rules and builds are in their modules
 // (setup/modules/). Reading rejects unknown keys, wrong types and out-of-range values with the file,
 // the key and the value. Command-line overrides (--set key=value) are applied to the TOML
 // tree before reading, so they are checked exactly like keys in the file.
@@ -19,6 +19,7 @@
 #include "setup/key.h"
 #include "setup/modules/contacts.h"
 #include "setup/modules/heat.h"
+#include "setup/modules/output.h"
 #include "setup/modules/rods.h"
 
 namespace swarf {
@@ -171,28 +172,6 @@ struct UniaxialSettings {
       grip_dofs = "axis";  ///< "axis": grips hold only the axial component (free lateral contraction); "xyz": clamped
   std::vector<double> strain_path{0.0};  ///< turning points of the nominal strain, 1, first 0
   double strain_rate = 10.0;             ///< |d strain/dt| of the grips, 1/s
-};
-
-/// The per-particle fields of the ParaView frames and results.h5 that output.fields chooses
-/// from (docs/outputs.md); the positions, radii and groups are always written; temperature
-/// only with [heat].
-inline const std::vector<std::string> kParticleFieldNames{
-    "velocity",       "displacement", "broken_fraction", "stress",     "von_mises_stress", "hydrostatic_stress",
-    "plastic_strain", "peeq",         "peeq_rate",       "temperature"};
-
-/// [output]
-struct OutputSettings {
-  double frame_interval = 0.0;   ///< ParaView frame interval, s; 0 = first and last state only
-  double series_interval = 0.0;  ///< series.csv row interval, s; 0 = end_time/2000
-  bool vtk = true;               ///< write the ParaView series
-  bool rods_in_vtk = true;       ///< include the rods as lines in each frame
-  bool plots = true;             ///< write PNG plots at the end (needs python3-matplotlib)
-  bool progress = true;          ///< progress line on stderr
-  double steady_from = -1.0;     ///< cutting: force statistics over rows with time >= this, s; < 0 = half the end time
-  int checkpoint_every = 0;      ///< write DIR/checkpoint.h5 every this many steps; 0 = never
-  bool checkpoint_at_end = false;  ///< also write DIR/checkpoint.h5 after the last step (to extend the run)
-  bool orientations = false;       ///< integrate the spheres' orientations and write them and the angular velocities
-  std::vector<std::string> fields = kParticleFieldNames;  ///< per-particle fields written (frames, results.h5)
 };
 
 /// [[mesh]]: a rigid triangle mesh (wall, tool) from a file or a built-in rectangle.

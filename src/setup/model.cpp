@@ -421,27 +421,6 @@ void build_meshes(const CaseSettings& cs, Model& model) {
   }
 }
 
-// The run's end and its output intervals: each a finite positive time, and no more rows or
-// frames than a run can write (an interval below the time's rounding would never advance the
-// next output time: 'next += interval' leaves it where it is).
-void check_output_schedule(const CaseSettings& cs) {
-  const double end = cs.integrator.end_time;
-  if (!(end > 0.0 && std::isfinite(end)))
-    throw InputError(fmt::format("{}: key 'integrator.end_time' = {} s must be a finite positive time", cs.source, end));
-  constexpr double kMaxRows = 1e7, kMaxFrames = 1e5;
-  const double si = cs.output.series_interval, fi = cs.output.frame_interval;
-  if (si > 0.0 && !(end / si <= kMaxRows))
-    throw InputError(
-        fmt::format("{}: key 'output.series_interval' = {} s gives {:.3g} rows over end_time = {} s; at "
-                    "most {:.0e}",
-                    cs.source, si, end / si, end, kMaxRows));
-  if (fi > 0.0 && !(end / fi <= kMaxFrames))
-    throw InputError(
-        fmt::format("{}: key 'output.frame_interval' = {} s gives {:.3g} frames over end_time = {} s; at "
-                    "most {:.0e}",
-                    cs.source, fi, end / fi, end, kMaxFrames));
-}
-
 }  // namespace
 
 Model build_model(const CaseSettings& cs) {
@@ -530,13 +509,7 @@ StepSettings step_settings(const CaseSettings& cs, const Derived& d) {
   s.krylov_tolerance = g.krylov_tolerance;
   s.krylov_max_iterations = g.krylov_max_iterations;
   s.max_step_displacement = g.max_step_displacement;
-  s.sphere_orientations = cs.output.orientations;
-  // PEEQ is accumulated only when written: without 'peeq' and 'peeq_rate' in output.fields it costs nothing.
-  const auto& f = cs.output.fields;
-  s.plastic_strain_window = std::find(f.begin(), f.end(), "peeq") != f.end() ||
-                                    std::find(f.begin(), f.end(), "peeq_rate") != f.end()
-                                ? 32
-                                : 0;
+  build_output(cs, s);
   s.length_scale = d.nn_distance;
   s.stiffness_scale = d.rod_stiffness;
   return s;
