@@ -8,7 +8,7 @@
 #include "setup/case_config.h"
 #include "setup/case_tables.h"
 #include "swarf/core/errors.h"
-#include "swarf/step_settings.h"
+#include "swarf/integrate/step_settings.h"
 
 namespace swarf {
 namespace {
