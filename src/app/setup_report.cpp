@@ -12,6 +12,7 @@
 #include "setup/model.h"
 #include "setup/modules/contacts.h"
 #include "setup/modules/heat.h"
+#include "setup/modules/material.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -74,24 +75,7 @@ void print_setup(const Model& m, int threads) {
         d.membrane_wave_longitudinal, d.membrane_wave_shear, d.membrane_wave_transverse, d.membrane_dt_cfl,
         2.0 / d.omega_max);
   } else if (!m.rods.ends.empty()) {
-    const auto& mt = m.settings.material;
-    if (d.converted && mt.flow_curve) {
-      std::string pts;
-      for (std::size_t i = 0; i < mt.flow_plastic_strain.size(); ++i)
-        pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", mt.flow_plastic_strain[i], mt.flow_stress[i] * 1e-6);
-      say("  material{}: E = {:.4g} Pa, flow curve (equivalent plastic strain, true stress): {}\n",
-          mt.preset.empty() ? std::string() : " " + mt.preset, mt.youngs_modulus, pts);
-      say("  rod law calibrated in {} ({}), failure at equivalent strain {:.4g}:\n",
-          mt.calibration == "shear" ? "simple shear on a cube plane" : "uniaxial tension along [100]", "calibration.h",
-          mt.failure_strain);
-      if (mt.calibration == "shear")
-        say("  finite-strain shear correction: {} of {} points reached, largest mismatch left {:.1f} %\n",
-            d.calibration_points, mt.flow_plastic_strain.size() - 1, 100.0 * d.calibration_mismatch);
-    } else if (d.converted)
-      say("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
-          "strength {:.4g} Pa):\n",
-          m.settings.material.youngs_modulus, m.settings.material.yield_stress, m.settings.material.hardening_modulus,
-          m.settings.material.tensile_strength);
+    say("{}", material_echo(m));
     // The law as it describes itself: its name, then each parameter (a table as a list).
     const RodLawDescription law = describe(d.law);
     std::string params;

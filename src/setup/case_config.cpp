@@ -14,11 +14,9 @@
 #include <sstream>
 
 #include "io/path_kind.h"
-#include "setup/calibration.h"
 #include "setup/case_override.h"
 #include "setup/case_tables.h"
 #include "setup/cut_case.h"
-#include "setup/material_presets.h"
 #include "setup/rod_laws/rod_laws.h"
 #include "setup/toml_parse.h"
 #include "swarf/core/errors.h"
@@ -107,73 +105,6 @@ void read_membrane(const CaseInput& in, CaseSettings& cs) {
             fmt::format("{}: key 'material.{}' does not apply to a [membrane] (its material is in "
                         "[membrane]; [material] gives only the free particles' density)",
                         in.source, k.str()));
-}
-
-void read_material(const CaseInput& in, CaseSettings& cs) {
-  TableReader r = in.reader(in.table("material"), "material");
-  auto& mt = cs.material;
-  r.read(material_keys(), mt);
-  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-  const MaterialPreset* preset = mt.preset.empty() ? nullptr : find_material_preset(mt.preset);
-  mt.macroscopic = r.has("youngs_modulus") || preset;
-  if (!mt.macroscopic)
-    for (const char* key :
-         {"yield_stress", "hardening_modulus", "tensile_strength", "poisson_ratio", "flow_plastic_strain",
-          "flow_stress", "johnson_cook_a", "johnson_cook_b", "johnson_cook_n", "failure_strain", "calibration",
-          "johnson_cook_c", "johnson_cook_m", "reference_rate", "melt_temperature", "reference_temperature"})
-      if (r.has(key))
-        r.fail(key, r.get(key), "macroscopic properties need material.youngs_modulus (Pa) or material.preset too");
-  const bool table = r.has("flow_plastic_strain") || r.has("flow_stress");
-  const bool jc = r.has("johnson_cook_a") || r.has("johnson_cook_b") || r.has("johnson_cook_n");
-  if (table && jc)
-    r.fail("johnson_cook_a", r.get("johnson_cook_a"), "give the flow curve as a table or as Johnson-Cook, not both");
-  for (const char* key : {"yield_stress", "hardening_modulus"})
-    if (r.has(key) && (table || jc))
-      r.fail(key, r.get(key), "the flow curve (a table or Johnson-Cook) gives the yield and the hardening");
-  if (jc)
-    for (const char* key : {"johnson_cook_a", "johnson_cook_b", "johnson_cook_n"})
-      if (!r.has(key)) r.fail(key, nullptr, "a Johnson-Cook flow curve needs johnson_cook_a (Pa), _b (Pa) and _n (1)");
-  if (table)
-    check_flow_curve(r, "flow_plastic_strain", "flow_stress", mt.flow_plastic_strain, mt.flow_stress,
-                     !r.has("youngs_modulus") && preset ? preset->youngs_modulus : mt.youngs_modulus,
-                     !r.has("youngs_modulus") && preset ? "the preset's E" : "material.youngs_modulus");
-  if (preset) {
-    // The preset fills what the table does not give.
-    if (!r.has("density")) mt.density = preset->density;
-    if (!r.has("youngs_modulus")) mt.youngs_modulus = preset->youngs_modulus;
-    if (!r.has("failure_strain")) mt.failure_strain = preset->failure_strain;
-    if (!table && !jc && !r.has("yield_stress")) {
-      mt.johnson_cook_a = preset->jc_a;
-      mt.johnson_cook_b = preset->jc_b;
-      mt.johnson_cook_n = preset->jc_n;
-    }
-    // Johnson-Cook's rate and temperature factors (used by rod.law = "johnson_cook").
-    if (!r.has("johnson_cook_c")) mt.johnson_cook_c = preset->jc_c;
-    if (!r.has("johnson_cook_m")) mt.johnson_cook_m = preset->jc_m;
-    if (!r.has("reference_rate")) mt.reference_rate = preset->reference_rate;
-    if (!r.has("melt_temperature")) mt.melt_temperature = preset->melt_temperature;
-    if (!r.has("reference_temperature")) mt.reference_temperature = preset->reference_temperature;
-  }
-  mt.johnson_cook_keys_given.clear();
-  for (const char* key :
-       {"johnson_cook_c", "johnson_cook_m", "reference_rate", "melt_temperature", "reference_temperature"})
-    if (r.has(key)) mt.johnson_cook_keys_given.push_back(key);
-  if (!(mt.melt_temperature > mt.reference_temperature))
-    r.fail(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature",
-           r.get(r.has("melt_temperature") ? "melt_temperature" : "reference_temperature"),
-           fmt::format("T_melt = {} K must lie above T_ref = {} K", mt.melt_temperature, mt.reference_temperature));
-  if (mt.johnson_cook_a > 0) {
-    mt.flow_plastic_strain = johnson_cook_points();
-    mt.flow_stress = johnson_cook_stress(mt.johnson_cook_a, mt.johnson_cook_b, mt.johnson_cook_n,
-                                         mt.flow_plastic_strain);
-  }
-  mt.flow_curve = !mt.flow_plastic_strain.empty();
-  for (const char* key : {"failure_strain", "calibration"})
-    if (r.has(key) && !mt.flow_curve)
-      r.fail(key, r.get(key), "needs a flow curve: material.flow_plastic_strain/flow_stress, johnson_cook_* or preset");
-  if (mt.macroscopic && !(mt.hardening_modulus < mt.youngs_modulus))
-    r.fail("hardening_modulus", r.get("hardening_modulus"),
-           fmt::format("must be below material.youngs_modulus = {} Pa", mt.youngs_modulus));
 }
 
 void read_integrator(const CaseInput& in, CaseSettings& cs) {

@@ -19,6 +19,7 @@
 #include "setup/key.h"
 #include "setup/modules/contacts.h"
 #include "setup/modules/heat.h"
+#include "setup/modules/material.h"
 #include "setup/modules/rods.h"
 
 namespace swarf {
@@ -79,37 +80,6 @@ struct MembraneSettings {
   double pre_tension = 0.0;               ///< isotropic in-plane tension of the sheet as generated, N/m
   double damping_ratio = 0.0;             ///< rod dashpot as a fraction of critical for two particles, 1
   bool clamp_edges = false;               ///< hold every edge site (fewer than 6 rods) fixed
-};
-
-/// [material]: what the particles are made of.
-struct MaterialSettings {
-  double density = 7800.0;          ///< kg/m^3
-  std::string mass_basis = "cell";  ///< "cell": m = rho a^3/4 (bulk density right); "sphere": m = rho 4/3 pi R^3
-  // Macroscopic properties along a cube axis [100]; when youngs_modulus is given, swarf
-  // derives the rod parameters from them through the FCC lattice relations (derived.h).
-  bool macroscopic = false;        ///< true when youngs_modulus is given here
-  double youngs_modulus = 0.0;     ///< E along [100], Pa
-  double yield_stress = kInf;      ///< uniaxial yield stress along [100], Pa; inf = elastic
-  double hardening_modulus = 0.0;  ///< tangent after yield, Pa
-  double tensile_strength = kInf;  ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
-  double poisson_ratio = -1.0;     ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
-  // A metal's flow curve and failure (calibration.h turns them into the rod law).
-  std::string preset;                       ///< a named material (material_presets.h); "" = none
-  std::vector<double> flow_plastic_strain;  ///< equivalent plastic strain of the flow curve's points, 1
-  std::vector<double> flow_stress;          ///< true flow stress at those points, Pa
-  double johnson_cook_a = 0.0;              ///< Johnson-Cook A, Pa (0 = not given)
-  double johnson_cook_b = 0.0;              ///< Johnson-Cook B, Pa
-  double johnson_cook_n = 0.0;              ///< Johnson-Cook n, 1
-  double failure_strain = kInf;             ///< equivalent strain at failure in simple shear, 1; inf = never
-  std::string calibration = "shear";        ///< the mode the flow curve is matched in: "shear" or "tension"
-  bool flow_curve = false;                  ///< true when a table, Johnson-Cook or a preset gives the flow curve
-  // Johnson-Cook's rate and temperature factors (rod.law = "johnson_cook"); the preset's when it has them.
-  double johnson_cook_c = 0.0;                       ///< C, 1
-  double johnson_cook_m = 1.0;                       ///< m, 1
-  double reference_rate = 1.0;                       ///< equivalent plastic strain rate of the flow curve, 1/s
-  double melt_temperature = kInf;                    ///< T_melt, K; inf = no softening
-  double reference_temperature = 293.15;             ///< T_ref (the flow curve's), K
-  std::vector<std::string> johnson_cook_keys_given;  ///< which of the five the table gave (a rule in read_rod)
 };
 
 /// [integrator]

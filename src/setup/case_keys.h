@@ -27,7 +27,6 @@ namespace swarf {
 const std::vector<Key<CutSettings>>& cut_keys();
 const std::vector<Key<WorkpieceSettings>>& workpiece_keys();
 const std::vector<Key<MembraneSettings>>& membrane_keys();
-const std::vector<Key<MaterialSettings>>& material_keys();
 const std::vector<Key<IntegratorSettings>>& integrator_keys();
 const std::vector<Key<GroupSettings>>& group_keys();
 const std::vector<Key<MotionSettings>>& motion_keys();
