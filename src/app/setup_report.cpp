@@ -13,6 +13,7 @@
 #include "setup/modules/contacts.h"
 #include "setup/modules/heat.h"
 #include "setup/modules/material.h"
+#include "setup/modules/workpiece.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -53,18 +54,7 @@ void print_setup(const Model& m, int threads) {
   else
     say("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
         d.particle_mass);
-  if (d.position_jitter > 0.0) {
-    const auto [lo, hi] = std::minmax_element(m.rods.rest_length.begin(), m.rods.rest_length.end());
-    say("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed, d.position_jitter,
-        d.position_jitter * d.radius);
-    if (lo != m.rods.rest_length.end())
-      say("; rods at rest, {:.6g} to {:.6g} m; stable step for kb_max = {:.4g} N/m", *lo, *hi, d.rod_stiffness_max);
-    say("\n");
-  } else if (d.disorder_seed > 0) {
-    say("  disorder: seed {} with position_jitter = 0: the ordered lattice\n", d.disorder_seed);
-  }
-  if (m.periodic.on())
-    say("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n", m.periodic.period);
+  say("{}", workpiece_echo(m));
   if (d.membrane) {
     say("  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (rod "
         "pre-strain {:.4g}); rod k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",

@@ -21,22 +21,9 @@
 #include "setup/modules/heat.h"
 #include "setup/modules/material.h"
 #include "setup/modules/rods.h"
+#include "setup/modules/workpiece.h"
 
 namespace swarf {
-
-/// [workpiece]: the bonded FCC block (optional when [[particle]] or [particles] give particles).
-struct WorkpieceSettings {
-  bool enabled = false;                 ///< true when the table is present
-  std::string lattice_file;             ///< HDF5 lattice from 'swarf lattice'; empty = generate
-  std::array<int, 3> cells{0, 0, 0};    ///< conventional FCC cells per axis (generate by cells)
-  std::array<double, 3> size{0, 0, 0};  ///< box size, m (generate by size, if cells not given)
-  double radius = 0.5e-3;               ///< particle radius R, m (nearest-neighbour distance 2R)
-  double bond_tolerance = 1e-6;         ///< relative tolerance on the rod length 2R, 1
-  bool periodic_width = false;          ///< periodic along y (plane strain): period = cells[1] x a
-  double lattice_rotation = 0.0;        ///< turn of the lattice about y, deg (fcc_lattice.h)
-  int disorder_seed = 0;                ///< seed of the position jitter (lattice_disorder.h); 0 = the ordered lattice
-  double position_jitter = 0.02;        ///< largest jitter displacement, in radii R, 1 (used when disorder_seed > 0)
-};
 
 /// [cut]: an orthogonal cut in cutting terms. swarf derives from it the lattice, the clamps,
 /// the tool, its path, the end time and the steady window (cut_case.h), and inserts them as

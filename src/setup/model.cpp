@@ -5,12 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "io/mesh_file.h"
 #include "io/particle_file.h"
 #include "lattice_gen/lattice_disorder.h"
-#include "lattice_gen/lattice_file.h"
 #include "lattice_gen/membrane_lattice.h"
 #include "setup/case_keys.h"
 #include "swarf/core/errors.h"
@@ -85,68 +83,20 @@ static std::uint8_t dof_mask(const std::string& dofs) {
 
 namespace {
 
-// Bonds the two y faces across the periodic boundary: the layer at y = 0 and the one at
-// y = period - a/2 are nearest neighbours through the periodic image.
-void bond_across_periodic_width(const CaseSettings& cs, const FccSpec& spec, Lattice& lat, Periodic& periodic) {
-  const double a = lat.cell_edge, L = cs.workpiece.cells[1] * a, d0 = 2.0 * spec.radius;
-  periodic = Periodic::along_y(L);
-  std::vector<std::int32_t> low, high;
-  for (std::size_t i = 0; i < lat.position.size(); ++i) {
-    if (lat.position[i][1] < 0.25 * a) low.push_back(static_cast<std::int32_t>(i));
-    if (lat.position[i][1] > L - 0.75 * a) high.push_back(static_cast<std::int32_t>(i));
+// The membrane's sheet of sites (triangular lattice).
+Lattice membrane_lattice(const CaseSettings& cs) {
+  const MembraneSettings& ms = cs.membrane;
+  MembraneSpec spec;
+  spec.radius = ms.radius;
+  spec.length = ms.length;
+  spec.width = ms.width;
+  spec.origin = ms.origin;
+  spec.pre_strain = membrane_relations_of(cs).pre_strain;
+  try {
+    return generate_membrane(spec);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", cs.source, e.what()));
   }
-  const double tol = spec.bond_tolerance;
-  for (auto i : low)
-    for (auto j : high) {
-      Vec3 dx = lat.position[j] - lat.position[i];
-      periodic.wrap(dx);
-      const double len = dx.norm();
-      if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
-      lat.rods.push_back({std::min(i, j), std::max(i, j)});
-      lat.rest_length.push_back(len);
-    }
-  // Keep the rods sorted as the generator gives them (the gather order follows the rods).
-  std::vector<std::size_t> order(lat.rods.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.rods[x] < lat.rods[y]; });
-  std::vector<std::array<std::int32_t, 2>> sorted(order.size());
-  std::vector<double> rest(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    sorted[k] = lat.rods[order[k]];
-    rest[k] = lat.rest_length[order[k]];
-  }
-  lat.rods.swap(sorted);
-  lat.rest_length.swap(rest);
-}
-
-// The workpiece's lattice: from a lattice file, generated, or none (free particles only).
-Lattice workpiece_lattice(const CaseSettings& cs, Periodic& periodic) {
-  Lattice lat;
-  if (cs.membrane.enabled) {
-    const MembraneSettings& ms = cs.membrane;
-    MembraneSpec spec;
-    spec.radius = ms.radius;
-    spec.length = ms.length;
-    spec.width = ms.width;
-    spec.origin = ms.origin;
-    spec.pre_strain = membrane_relations_of(cs).pre_strain;
-    try {
-      return generate_membrane(spec);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: {}", cs.source, e.what()));
-    }
-  }
-  if (!cs.workpiece.enabled) return lat;
-  if (!cs.workpiece.lattice_file.empty()) return read_lattice(cs.workpiece.lattice_file);
-  FccSpec spec;
-  spec.radius = cs.workpiece.radius;
-  spec.cells = cs.workpiece.cells;
-  spec.size = cs.workpiece.size;
-  spec.bond_tolerance = cs.workpiece.bond_tolerance;
-  spec.rotation_y = cs.workpiece.lattice_rotation * std::numbers::pi / 180.0;
-  lat = generate_fcc(spec);
-  if (cs.workpiece.periodic_width) bond_across_periodic_width(cs, spec, lat, periodic);
-  return lat;
 }
 
 // The free particles ([[particle]] and [particles] file) appended to the lattice's
@@ -447,7 +397,7 @@ void check_output_schedule(const CaseSettings& cs) {
 Model build_model(const CaseSettings& cs) {
   Model model;
   model.settings = cs;
-  Lattice lat = workpiece_lattice(cs, model.periodic);
+  Lattice lat = cs.membrane.enabled ? membrane_lattice(cs) : workpiece_lattice(cs, model.periodic);
   model.lattice_particles = lat.position.size();
   std::vector<Vec3> free_velocity, free_spin;
   append_free_particles(cs, lat, free_velocity, free_spin);
