@@ -12,6 +12,7 @@
 #include "setup/model.h"
 #include "setup/modules/contacts.h"
 #include "setup/modules/heat.h"
+#include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
 #include "setup/modules/workpiece.h"
 #include "swarf/version.h"
@@ -97,10 +98,7 @@ void print_setup(const Model& m, int threads) {
         d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
   say("{}", heat_echo(m));
   say("{}", contacts_echo(m));
-  say("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
-      d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
-      d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
-      m.settings.integrator.end_time);
+  say("{}", integrator_echo(m));
   if (m.uniaxial.enabled)
     say("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
         m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);

@@ -64,21 +64,6 @@ void read_membrane(const CaseInput& in, CaseSettings& cs) {
                         in.source, k.str()));
 }
 
-void read_integrator(const CaseInput& in, CaseSettings& cs) {
-  TableReader r = in.reader(in.table("integrator"), "integrator");
-  auto& g = cs.integrator;
-  r.read(integrator_keys(), g);
-  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-  if (g.dt_min > 0 && g.dt_max > 0 && g.dt_min > g.dt_max)
-    r.fail("dt_min", r.get("dt_min"), fmt::format("must not exceed dt_max = {} s", g.dt_max));
-  if (g.iterations_grow >= g.iterations_shrink)
-    r.fail("iterations_grow", r.get("iterations_grow"), "must be below iterations_shrink");
-  if (g.iterations_shrink > g.max_iterations)
-    r.fail("iterations_shrink", r.get("iterations_shrink"), "must not exceed max_iterations");
-  if (g.solver == "newton" && g.scheme == "verlet")
-    r.fail("solver", r.get("solver"), "solves the implicit Newmark step: not with scheme = \"verlet\"");
-}
-
 void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
   const toml::table* t = in.table("uniaxial");
   if (!t) return;

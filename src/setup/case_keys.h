@@ -26,7 +26,6 @@ namespace swarf {
 // (The rods', contacts' and heat's are declared in their modules, setup/modules/.)
 const std::vector<Key<CutSettings>>& cut_keys();
 const std::vector<Key<MembraneSettings>>& membrane_keys();
-const std::vector<Key<IntegratorSettings>>& integrator_keys();
 const std::vector<Key<GroupSettings>>& group_keys();
 const std::vector<Key<MotionSettings>>& motion_keys();
 const std::vector<Key<UniaxialSettings>>& uniaxial_keys();

@@ -459,37 +459,4 @@ Model build_model(const CaseSettings& cs) {
   return model;
 }
 
-StepSettings step_settings(const CaseSettings& cs, const Derived& d) {
-  const IntegratorSettings& g = cs.integrator;
-  StepSettings s;
-  s.scheme = d.implicit ? Scheme::Newmark : Scheme::Verlet;
-  s.dt = d.dt;
-  s.beta = g.beta;
-  s.gamma = g.gamma;
-  s.dt_min = d.dt_min;
-  s.dt_max = d.dt_max;
-  s.tolerance = g.tolerance;
-  s.max_iterations = g.max_iterations;
-  s.iterations_grow = g.iterations_grow;
-  s.iterations_shrink = g.iterations_shrink;
-  s.grow_factor = g.grow_factor;
-  s.shrink_factor = g.shrink_factor;
-  s.reject_factor = g.reject_factor;
-  s.relaxation = g.relaxation;
-  s.solver = g.solver == "newton" ? Solver::Newton : Solver::FixedPoint;
-  s.krylov_tolerance = g.krylov_tolerance;
-  s.krylov_max_iterations = g.krylov_max_iterations;
-  s.max_step_displacement = g.max_step_displacement;
-  s.sphere_orientations = cs.output.orientations;
-  // PEEQ is accumulated only when written: without 'peeq' and 'peeq_rate' in output.fields it costs nothing.
-  const auto& f = cs.output.fields;
-  s.plastic_strain_window = std::find(f.begin(), f.end(), "peeq") != f.end() ||
-                                    std::find(f.begin(), f.end(), "peeq_rate") != f.end()
-                                ? 32
-                                : 0;
-  s.length_scale = d.nn_distance;
-  s.stiffness_scale = d.rod_stiffness;
-  return s;
-}
-
 }  // namespace swarf

@@ -46,10 +46,6 @@ struct Model : World {
   std::vector<Vec3> sites;
 };
 
-/// The step's settings of a case: [integrator] and [output] orientations, and the derived
-/// stable step.
-StepSettings step_settings(const CaseSettings& cs, const Derived& d);
-
 /// Builds the model; throws InputError (naming the file and key) on anything inconsistent.
 Model build_model(const CaseSettings& cs);
 
