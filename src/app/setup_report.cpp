@@ -14,6 +14,7 @@
 #include "setup/modules/heat.h"
 #include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
+#include "setup/modules/membrane.h"
 #include "setup/modules/workpiece.h"
 #include "swarf/version.h"
 
@@ -57,14 +58,7 @@ void print_setup(const Model& m, int threads) {
         d.particle_mass);
   say("{}", workpiece_echo(m));
   if (d.membrane) {
-    say("  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (rod "
-        "pre-strain {:.4g}); rod k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",
-        d.membrane_modulus_2d, d.membrane_areal_density, d.membrane_tension, d.membrane_pre_strain, d.rod_stiffness,
-        d.rod_damping);
-    say("  membrane waves: c_L = {:.4g} m/s, c_S = {:.4g} m/s, c_T = sqrt(T/rho_A) = {:.4g} m/s; CFL step d/c_L = "
-        "{:.4g} s, stable step sqrt(4m/(6(k+f/d))) = {:.4g} s\n",
-        d.membrane_wave_longitudinal, d.membrane_wave_shear, d.membrane_wave_transverse, d.membrane_dt_cfl,
-        2.0 / d.omega_max);
+    say("{}", membrane_echo(m));
   } else if (!m.rods.ends.empty()) {
     say("{}", material_echo(m));
     // The law as it describes itself: its name, then each parameter (a table as a list).

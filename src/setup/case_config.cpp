@@ -25,45 +25,6 @@
 namespace swarf {
 namespace {
 
-// [membrane]: the sheet in place of the workpiece, with its own material.
-void read_membrane(const CaseInput& in, CaseSettings& cs) {
-  const toml::table* t = in.table("membrane");
-  if (!t) return;
-  TableReader r = in.reader(t, "membrane");
-  auto& m = cs.membrane;
-  m.enabled = true;
-  r.read(membrane_keys(), m);
-  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-  for (const char* key : {"length", "width", "thickness", "youngs_modulus"})
-    if (!r.has(key)) r.fail(key, nullptr, "is required (the sheet's extent, thickness and modulus)");
-  if (std::abs(m.poisson_ratio - 1.0 / 3.0) > 1e-6)
-    r.fail("poisson_ratio", r.get("poisson_ratio"),
-           "cannot be represented: a triangular lattice of central springs has nu = 1/3 in the plane, fixed "
-           "(give 1/3 or leave the key out)");
-  // T = sqrt(3) k eps0 / (1 + eps0) with k = sqrt(3)/2 E t: a rod pre-strain below 1 holds T < 3/4 E t.
-  if (!(m.pre_tension < 0.75 * m.youngs_modulus * m.thickness))
-    r.fail("pre_tension", r.get("pre_tension"),
-           fmt::format("needs a rod pre-strain of 1 or more: must be below 3/4 E t = {:.6g} N/m",
-                       0.75 * m.youngs_modulus * m.thickness));
-  if (r.has("density") && r.has("areal_density"))
-    r.fail("areal_density", r.get("areal_density"), "give either density (kg/m^3, times thickness) or areal_density");
-  if (cs.workpiece.enabled)
-    throw InputError(fmt::format("{}: a case has either a [workpiece] or a [membrane], not both", in.source));
-  if (in.table("rod"))
-    throw InputError(
-        fmt::format("{}: [rod] does not apply to a [membrane], whose rods follow from its own modulus "
-                    "and damping_ratio: remove the table",
-                    in.source));
-  // [material] then only gives the free particles' density.
-  if (const toml::table* mt = in.table("material"))
-    for (const auto& [k, v] : *mt)
-      if (k.str() != "density")
-        throw InputError(
-            fmt::format("{}: key 'material.{}' does not apply to a [membrane] (its material is in "
-                        "[membrane]; [material] gives only the free particles' density)",
-                        in.source, k.str()));
-}
-
 void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
   const toml::table* t = in.table("uniaxial");
   if (!t) return;

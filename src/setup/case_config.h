@@ -21,6 +21,7 @@
 #include "setup/modules/heat.h"
 #include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
+#include "setup/modules/membrane.h"
 #include "setup/modules/rods.h"
 #include "setup/modules/workpiece.h"
 
@@ -50,24 +51,6 @@ struct CutSettings {
   double tool_stiffness = 0.0;       ///< per metre of width, N/m per m; 0 = the tool follows its path rigidly
   double tool_mass = 0.0;            ///< modal mass per metre of width, kg/m
   double tool_damping_ratio = 0.05;  ///< of the mount's critical damping, 1
-};
-
-/// [membrane]: a sheet of bonded spheres on a triangular lattice (membrane_lattice.h), in place
-/// of [workpiece], with its own material ([rod] and [material] do not apply to it).
-struct MembraneSettings {
-  bool enabled = false;                   ///< true when the table is present
-  double length = 0.0;                    ///< extent along x, m
-  double width = 0.0;                     ///< extent along y, m
-  std::array<double, 3> origin{0, 0, 0};  ///< corner of the sheet (it lies in the plane z = origin z), m
-  double radius = 0.5e-3;                 ///< particle radius R, m (site spacing 2R)
-  double thickness = 0.0;                 ///< t, m
-  double youngs_modulus = 0.0;            ///< E of the sheet's material, Pa (in-plane modulus E t)
-  double poisson_ratio = 1.0 / 3.0;       ///< only checked: the triangular lattice has 1/3
-  double density = 1000.0;                ///< rho, kg/m^3 (areal density rho t)
-  double areal_density = 0.0;             ///< kg/m^2, replaces density x thickness when > 0
-  double pre_tension = 0.0;               ///< isotropic in-plane tension of the sheet as generated, N/m
-  double damping_ratio = 0.0;             ///< rod dashpot as a fraction of critical for two particles, 1
-  bool clamp_edges = false;               ///< hold every edge site (fewer than 6 rods) fixed
 };
 
 /// The prescribed translation of a group or a mesh (keys shared by [[group]] and [[mesh]]).

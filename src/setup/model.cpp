@@ -83,22 +83,6 @@ static std::uint8_t dof_mask(const std::string& dofs) {
 
 namespace {
 
-// The membrane's sheet of sites (triangular lattice).
-Lattice membrane_lattice(const CaseSettings& cs) {
-  const MembraneSettings& ms = cs.membrane;
-  MembraneSpec spec;
-  spec.radius = ms.radius;
-  spec.length = ms.length;
-  spec.width = ms.width;
-  spec.origin = ms.origin;
-  spec.pre_strain = membrane_relations_of(cs).pre_strain;
-  try {
-    return generate_membrane(spec);
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("{}: {}", cs.source, e.what()));
-  }
-}
-
 // The free particles ([[particle]] and [particles] file) appended to the lattice's
 // positions and radii (no rods); their velocities and spins returned beside.
 void append_free_particles(const CaseSettings& cs, Lattice& lat, std::vector<Vec3>& free_velocity,
