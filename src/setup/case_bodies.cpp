@@ -95,36 +95,6 @@ void check_name(const TableReader& r, const std::string& name) {
   if (name.empty()) r.fail("name", r.get("name"), "must not be empty");
 }
 
-// The entries of an array of tables ([[group]]), or none when the key is absent.
-const toml::array* entries(const CaseInput& in, const char* name) {
-  const toml::node* n = in.root.get(name);
-  if (!n) return nullptr;
-  auto arr = n->as_array();
-  if (!arr || !arr->is_array_of_tables())
-    throw InputError(fmt::format("{}: '{}' must be an array of tables ([[{}]])", in.source, name, name));
-  return arr;
-}
-
-// An inflow's or outflow's box: both corners given, the upper one above the lower.
-void check_box(const TableReader& r, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
-  for (const char* key : {"box_min", "box_max"})
-    if (!r.has(key)) r.fail(key, nullptr, "is required");
-  for (int c = 0; c < 3; ++c)
-    if (!(hi[c] >= lo[c])) r.fail("box_max", r.get("box_max"), "must be >= box_min in x, y and z (m)");
-}
-
-// A direction (an axis, a normal): only its direction counts, but a length below 1e-6 is a
-// zero written otherwise, and a denormal one normalised to inf or NaN (issue 37: an outflow
-// normal of length 1e-320 ran and stopped as a blow-up).
-void check_direction(const TableReader& r, const char* key, const std::array<double, 3>& v) {
-  const double length = std::hypot(v[0], v[1], v[2]);  // (no underflow of the squares)
-  if (!(length >= 1e-6))
-    r.fail(key, r.get(key),
-           fmt::format("must not be zero: a direction's length must be at least 1e-6 (it is {:.4g}; only its "
-                       "direction counts)",
-                       length));
-}
-
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
@@ -255,6 +225,28 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
 
 }  // namespace
 
+// The entries of an array of tables ([[group]]), or none when the key is absent.
+const toml::array* entries(const CaseInput& in, const char* name) {
+  const toml::node* n = in.root.get(name);
+  if (!n) return nullptr;
+  auto arr = n->as_array();
+  if (!arr || !arr->is_array_of_tables())
+    throw InputError(fmt::format("{}: '{}' must be an array of tables ([[{}]])", in.source, name, name));
+  return arr;
+}
+
+// A direction (an axis, a normal): only its direction counts, but a length below 1e-6 is a
+// zero written otherwise, and a denormal one normalised to inf or NaN (issue 37: an outflow
+// normal of length 1e-320 ran and stopped as a blow-up).
+void check_direction(const TableReader& r, const char* key, const std::array<double, 3>& v) {
+  const double length = std::hypot(v[0], v[1], v[2]);  // (no underflow of the squares)
+  if (!(length >= 1e-6))
+    r.fail(key, r.get(key),
+           fmt::format("must not be zero: a direction's length must be at least 1e-6 (it is {:.4g}; only its "
+                       "direction counts)",
+                       length));
+}
+
 ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::string& path, double scale) {
   if (const std::string why = file_problem(path, "a mesh file"); !why.empty()) r.fail(key, r.get(key), why);
   TriangleMesh mesh;
@@ -321,71 +313,6 @@ void read_meshes(const CaseInput& in, CaseSettings& cs) {
     if (!names.insert(m.name).second) r.fail("name", r.get("name"), "two meshes have this name");
     check_mesh(r, in.directory, m);
     cs.meshes.push_back(m);
-  }
-}
-
-void read_free_particles(const CaseInput& in, CaseSettings& cs) {
-  if (const toml::array* arr = entries(in, "particle")) {
-    for (std::size_t k = 0; k < arr->size(); ++k) {
-      TableReader r = in.reader((*arr)[k].as_table(), "particle");
-      ParticleSettings p;
-      r.read(particle_keys(), p);
-      r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-      if (!r.has("radius")) r.fail("radius", nullptr, "every particle needs a radius in m");
-      if (!r.has("position")) r.fail("position", nullptr, "every particle needs a position [x, y, z] in m");
-      cs.particles.push_back(p);
-    }
-  }
-  if (const toml::array* arr = entries(in, "inflow"))
-    for (std::size_t k = 0; k < arr->size(); ++k) {
-      TableReader r = in.reader((*arr)[k].as_table(), "inflow");
-      InflowSettings f;
-      r.read(inflow_keys(), f);
-      r.finish();
-      if (!r.has("radius_min")) r.fail("radius_min", nullptr, "is required");
-      if (r.has("rate") == r.has("mass_rate"))
-        r.fail("rate", r.get("rate"),
-               r.has("rate") ? "and mass_rate both given: give one (particles per second, or kg/s)"
-                             : "is required (particles per second), or mass_rate (kg/s)");
-      if (!r.has("radius_max")) f.radius_max = f.radius_min;
-      if (!(f.radius_max >= f.radius_min)) r.fail("radius_max", r.get("radius_max"), "must be >= radius_min (m)");
-      check_box(r, f.box_min, f.box_max);
-      // (a box of zero volume puts every new particle on a plane or a line, where they overlap
-      // as soon as there are a few: the draws miss, silently)
-      for (int c = 0; c < 3; ++c)
-        if (!(f.box_max[c] > f.box_min[c]))
-          r.fail("box_max", r.get("box_max"),
-                 fmt::format("must lie above box_min in x, y and z: the box has no volume ({} m across along {})",
-                             f.box_max[c] - f.box_min[c], "xyz"[c]));
-      cs.inflows.push_back(f);
-    }
-  if (const toml::array* arr = entries(in, "outflow"))
-    for (std::size_t k = 0; k < arr->size(); ++k) {
-      TableReader r = in.reader((*arr)[k].as_table(), "outflow");
-      OutflowSettings o;
-      r.read(outflow_keys(), o);
-      r.finish();
-      if (r.has("plane_point") || r.has("plane_normal")) {
-        for (const char* key : {"box_min", "box_max"})
-          if (r.has(key)) r.fail(key, r.get(key), "goes with a box, not with a plane (plane_point, plane_normal)");
-        for (const char* key : {"plane_point", "plane_normal"})
-          if (!r.has(key)) r.fail(key, nullptr, "is required for a plane");
-        check_direction(r, "plane_normal", o.plane_normal);
-      } else {
-        check_box(r, o.box_min, o.box_max);
-      }
-      cs.outflows.push_back(o);
-    }
-  if (const toml::table* t = in.table("particles")) {
-    TableReader r = in.reader(t, "particles");
-    auto& f = cs.particles_file;
-    r.read(particles_file_keys(), f);
-    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-    f.file = resolve(f.file, in.directory);
-    if (!r.has("file")) r.fail("file", nullptr, "[particles] needs file = \"...\" (columns id x y z vx vy vz)");
-    if (!r.has("radius")) r.fail("radius", nullptr, "[particles] needs radius in m");
-    if (const std::string why = file_problem(f.file, "a particles file"); !why.empty())
-      r.fail("file", r.get("file"), why);
   }
 }
 

@@ -177,7 +177,9 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   read_heat(in, cs);
   read_environment(in, cs);
   read_meshes(in, cs);
-  read_free_particles(in, cs);
+  read_particles(in, cs);
+  read_flows(in, cs);
+  read_particles_file(in, cs);
   // A cutting run's analysis takes the workpiece as the first particles (Model::lattice_particles):
   // an outflow's removals would renumber them under it. (An inflow appends after them.)
   const bool cutting = cs.workpiece.enabled &&

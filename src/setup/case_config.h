@@ -18,10 +18,12 @@
 
 #include "setup/key.h"
 #include "setup/modules/contacts.h"
+#include "setup/modules/flows.h"
 #include "setup/modules/heat.h"
 #include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
 #include "setup/modules/membrane.h"
+#include "setup/modules/particles.h"
 #include "setup/modules/rods.h"
 #include "setup/modules/workpiece.h"
 
@@ -159,43 +161,6 @@ struct MeshSettings {
   std::array<double, 3> holder_velocity{0, 0, 0};   ///< the mount's anchor moves at it, m/s
   double damping = 0.0;                             ///< force -damping v, N s/m
   double torque_damping = 0.0;                      ///< torque -torque_damping omega, N m s/rad
-};
-
-/// [[particle]]: a single free particle (contact tests, packings written by hand).
-struct ParticleSettings {
-  std::array<double, 3> position{0, 0, 0};          ///< m
-  std::array<double, 3> velocity{0, 0, 0};          ///< m/s
-  std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s (world frame)
-  double radius = 0.0;                              ///< m
-};
-
-/// [[inflow]]: a box that creates free spheres during the run (swarf/state/particle_flows.h);
-/// they are made of the [material] density, as [[particle]]s are.
-struct InflowSettings {
-  std::array<double, 3> box_min{0, 0, 0};   ///< m
-  std::array<double, 3> box_max{0, 0, 0};   ///< m
-  double rate = 0.0;                        ///< particles per second
-  double mass_rate = 0.0;                   ///< kg/s (instead of rate)
-  double radius_min = 0.0;                  ///< m
-  double radius_max = 0.0;                  ///< m; 0 = radius_min
-  std::array<double, 3> velocity{0, 0, 0};  ///< m/s
-  int seed = 1;                             ///< 1
-  double overlap = 0.0;                     ///< largest relative overlap with any particle at creation, 1
-  int attempts = 20;                        ///< placement draws per particle, 1
-};
-
-/// [[outflow]]: a box that removes the particles whose centres enter it.
-struct OutflowSettings {
-  std::array<double, 3> box_min{0, 0, 0};       ///< m
-  std::array<double, 3> box_max{0, 0, 0};       ///< m
-  std::array<double, 3> plane_point{0, 0, 0};   ///< m (a plane instead of a box)
-  std::array<double, 3> plane_normal{0, 0, 0};  ///< 1, towards the side removed
-};
-
-/// [particles]: free particles from a text file (columns id x y z vx vy vz, SI units).
-struct ParticlesFileSettings {
-  std::string file;
-  double radius = 0.0;  ///< m
 };
 
 struct CaseSettings {

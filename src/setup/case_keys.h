@@ -30,10 +30,6 @@ const std::vector<Key<MotionSettings>>& motion_keys();
 const std::vector<Key<UniaxialSettings>>& uniaxial_keys();
 const std::vector<Key<CaseSettings>>& environment_keys();
 const std::vector<Key<MeshSettings>>& mesh_keys();
-const std::vector<Key<ParticleSettings>>& particle_keys();
-const std::vector<Key<InflowSettings>>& inflow_keys();
-const std::vector<Key<OutflowSettings>>& outflow_keys();
-const std::vector<Key<ParticlesFileSettings>>& particles_file_keys();
 const std::vector<Key<OutputSettings>>& output_keys();
 
 /// One key as text, for the docs and for the units in summary.json.

@@ -43,9 +43,16 @@ ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::
 void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
                       const std::vector<double>& sig, double E, const std::string& E_key);
 
-// [[group]], [[mesh]], [[particle]] and [particles] (case_bodies.cpp).
+// [[group]] and [[mesh]] (case_bodies.cpp).
 void read_groups(const CaseInput& in, CaseSettings& cs);
 void read_meshes(const CaseInput& in, CaseSettings& cs);
-void read_free_particles(const CaseInput& in, CaseSettings& cs);
+
+// Helpers the bodies' tables share (case_bodies.cpp).
+
+/// The entries of an array of tables ([[group]]), or none when the key is absent.
+const toml::array* entries(const CaseInput& in, const char* name);
+
+/// A direction (an axis, a normal): at least 1e-6 long (only its direction counts).
+void check_direction(const TableReader& r, const char* key, const std::array<double, 3>& v);
 
 }  // namespace swarf

@@ -83,25 +83,6 @@ static std::uint8_t dof_mask(const std::string& dofs) {
 
 namespace {
 
-// The free particles ([[particle]] and [particles] file) appended to the lattice's
-// positions and radii (no rods); their velocities and spins returned beside.
-void append_free_particles(const CaseSettings& cs, Lattice& lat, std::vector<Vec3>& free_velocity,
-                           std::vector<Vec3>& free_spin) {
-  for (const auto& ps : cs.particles) {
-    lat.position.emplace_back(ps.position[0], ps.position[1], ps.position[2]);
-    lat.radius.push_back(ps.radius);
-    free_velocity.emplace_back(ps.velocity[0], ps.velocity[1], ps.velocity[2]);
-    free_spin.emplace_back(ps.angular_velocity[0], ps.angular_velocity[1], ps.angular_velocity[2]);
-  }
-  if (!cs.particles_file.file.empty())
-    for (const FreeParticleRow& row : read_particle_file(cs.particles_file.file)) {
-      lat.position.push_back(row.position);
-      lat.radius.push_back(cs.particles_file.radius);
-      free_velocity.push_back(row.velocity);
-      free_spin.emplace_back(Vec3::Zero());
-    }
-}
-
 // Masses and inertias (lattice particles from the derived mass basis, free ones as solid
 // spheres), positions, the free particles' velocities and spins.
 void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vector<Vec3>& free_velocity,
@@ -415,26 +396,7 @@ Model build_model(const CaseSettings& cs) {
   build_groups(cs, model.sites, h, model);
   if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);
-  for (const auto& f : cs.inflows) {
-    Inflow in;
-    in.box_min = to_vec(f.box_min);
-    in.box_max = to_vec(f.box_max);
-    in.radius_min = f.radius_min;
-    in.radius_max = f.radius_max;
-    in.density = cs.material.density;  // (as [[particle]]s: solid spheres of the material)
-    in.rate = f.mass_rate > 0.0 ? f.mass_rate / inflow_mean_mass(in) : f.rate;
-    in.velocity = to_vec(f.velocity);
-    in.seed = static_cast<std::uint64_t>(f.seed);
-    in.overlap = f.overlap;
-    in.attempts = f.attempts;
-    model.inflows.push_back(in);
-  }
-  for (const auto& o : cs.outflows) {
-    Outflow out{to_vec(o.box_min), to_vec(o.box_max)};
-    out.plane_point = to_vec(o.plane_point);
-    out.plane_normal = to_vec(o.plane_normal).normalized();  // (zero stays zero: a box)
-    model.outflows.push_back(out);
-  }
+  build_flows(cs, model);
   build_contacts(cs, model);
   build_heat(cs, model);
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
