@@ -11,6 +11,7 @@
 #include "io/console.h"
 #include "setup/model.h"
 #include "setup/modules/contacts.h"
+#include "setup/modules/groups.h"
 #include "setup/modules/heat.h"
 #include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
@@ -36,7 +37,7 @@ void print_setup(const Model& m, int threads) {
     say("{}", text);
   }
   say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
-  for (const auto& g : m.groups) say("  group '{}': {} particles\n", g.name, g.members.size());
+  say("{}", groups_echo(m));
   for (const RigidBody& rb : m.bodies) {
     const Vec3& c = rb.state.position;
     say("  rigid body '{}': mass {:.4g} kg, centre of mass ({:.4g}, {:.4g}, {:.4g}) m, principal inertia ({:.4g}, "

@@ -21,80 +21,6 @@
 namespace swarf {
 namespace {
 
-// Reads a CSV velocity table 'time,vx,vy,vz' (header line first) for motion = "velocity_table".
-void read_velocity_csv(const TableReader& r, const std::string& path, MotionSettings& m) {
-  std::ifstream in(path);
-  if (!in) r.fail("velocity_file", r.get("velocity_file"), "file not found or unreadable: " + path);
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (lineno == 1 || line.empty() || line == "\r") continue;  // header
-    std::vector<double> x;
-    std::istringstream ls(line);
-    bool ok = true;
-    for (std::string cell; std::getline(ls, cell, ',');) {
-      double c = 0;
-      ok = ok && parse_csv_number(cell, c) && std::isfinite(c);
-      x.push_back(c);
-    }
-    if (!ok || x.size() != 4)
-      r.fail("velocity_file", r.get("velocity_file"),
-             fmt::format("{}:{}: expected 'time,vx,vy,vz': four finite numbers in s and m/s, got '{}'", path, lineno,
-                         line));
-    m.table_time.push_back(x[0]);
-    m.table_velocity.push_back({x[1], x[2], x[3]});
-  }
-}
-
-// The rules of the motion keys shared by [[group]] and [[mesh]] (read by motion_keys()).
-void check_motion(const TableReader& r, const std::string& directory, MotionSettings& m) {
-  // Every key only where the motion uses it.
-  const std::map<std::string, std::vector<std::string>> uses{
-      {"velocity", {"velocity", "ramp"}},          {"ramp_time", {"ramp"}},
-      {"table_time", {"table", "velocity_table"}}, {"table_displacement", {"table"}},
-      {"table_velocity", {"velocity_table"}},      {"velocity_file", {"velocity_table"}}};
-  for (const auto& [key, kinds] : uses)
-    if (r.has(key) && std::find(kinds.begin(), kinds.end(), m.kind) == kinds.end())
-      r.fail(key, r.get(key), fmt::format("is not used with motion = \"{}\"", m.kind));
-  if ((m.kind == "velocity" || m.kind == "ramp") && !r.has("velocity"))
-    r.fail("velocity", nullptr, fmt::format("motion = \"{}\" needs a velocity [vx, vy, vz] in m/s", m.kind));
-  if (m.kind == "ramp" && !r.has("ramp_time")) r.fail("ramp_time", nullptr, "motion = \"ramp\" needs ramp_time in s");
-  if (m.kind == "velocity_table") {
-    if (!m.velocity_file.empty()) {
-      if (r.has("table_time") || r.has("table_velocity"))
-        r.fail("velocity_file", r.get("velocity_file"), "give either velocity_file or table_time/table_velocity");
-      read_velocity_csv(r, resolve(m.velocity_file, directory), m);
-    }
-    if (m.table_time.size() < 2 || m.table_time.size() != m.table_velocity.size())
-      r.fail("table_time", r.get("table_time"),
-             "motion = \"velocity_table\" needs table_time (s) and table_velocity (m/s) of equal length >= 2, "
-             "or velocity_file");
-  }
-  if (m.kind == "table") {
-    if (m.table_time.size() < 2 || m.table_time.size() != m.table_displacement.size())
-      r.fail("table_time", r.get("table_time"),
-             "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
-    for (double u : m.table_displacement[0])
-      if (u != 0.0)
-        r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
-  }
-  if (m.kind == "table" || m.kind == "velocity_table") {
-    const char* key = r.has("table_time") ? "table_time" : "velocity_file";
-    if (m.table_time[0] != 0.0) r.fail(key, r.get(key), "the table must start at 0 s");
-    for (std::size_t k = 1; k < m.table_time.size(); ++k)
-      if (!(m.table_time[k] > m.table_time[k - 1])) r.fail(key, r.get(key), "times must be strictly ascending");
-  }
-}
-
-// Names become CSV columns (reaction_<name>_x, force_<name>_x).
-void check_name(const TableReader& r, const std::string& name) {
-  for (char ch : name)
-    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
-      r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");
-  if (name.empty()) r.fail("name", r.get("name"), "must not be empty");
-}
-
 // dynamics = "rigid_body": its keys only there, and the rules between them.
 void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
   const bool body = m.dynamics == "rigid_body";
@@ -225,6 +151,14 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
 
 }  // namespace
 
+// Names become CSV columns (reaction_<name>_x, force_<name>_x).
+void check_name(const TableReader& r, const std::string& name) {
+  for (char ch : name)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
+      r.fail("name", r.get("name"), "use letters, digits, '_' and '-' only (it names CSV columns)");
+  if (name.empty()) r.fail("name", r.get("name"), "must not be empty");
+}
+
 // The entries of an array of tables ([[group]]), or none when the key is absent.
 const toml::array* entries(const CaseInput& in, const char* name) {
   const toml::node* n = in.root.get(name);
@@ -269,33 +203,6 @@ std::string resolve(const std::string& file, const std::string& directory) {
   std::filesystem::path p(file);
   if (p.is_relative()) p = std::filesystem::path(directory) / p;
   return p.string();
-}
-
-void read_groups(const CaseInput& in, CaseSettings& cs) {
-  const toml::array* arr = entries(in, "group");
-  if (!arr) return;
-  std::set<std::string> names;
-  for (std::size_t g = 0; g < arr->size(); ++g) {
-    TableReader r = in.reader((*arr)[g].as_table(), "group");
-    GroupSettings gs;
-    r.read(group_keys(), gs);
-    r.read(motion_keys(), gs.motion);
-    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-    if (!r.has("name")) gs.name = fmt::format("group{}", g);
-    if (!names.insert(gs.name).second) r.fail("name", r.get("name"), "two groups have this name");
-    check_motion(r, in.directory, gs.motion);
-    const bool has_box = r.has("box_min") || r.has("box_max");
-    if (!gs.side.empty() && has_box) {
-      const char* key = r.has("box_min") ? "box_min" : "box_max";
-      r.fail(key, r.get(key), "give either side (with layers) or box_min/box_max, not both");
-    }
-    if (gs.side.empty() && r.has("layers")) r.fail("layers", r.get("layers"), "layers needs side");
-    if (gs.side.empty() && !has_box) r.fail("side", nullptr, "a group needs side = \"x-\" ... or box_min/box_max (m)");
-    for (int c = 0; c < 3; ++c)
-      if (gs.box_min[c] > gs.box_max[c]) r.fail("box_min", r.get("box_min"), "must not exceed box_max");
-    check_name(r, gs.name);
-    cs.groups.push_back(gs);
-  }
 }
 
 void read_meshes(const CaseInput& in, CaseSettings& cs) {

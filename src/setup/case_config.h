@@ -19,6 +19,7 @@
 #include "setup/key.h"
 #include "setup/modules/contacts.h"
 #include "setup/modules/flows.h"
+#include "setup/modules/groups.h"
 #include "setup/modules/heat.h"
 #include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
@@ -53,28 +54,6 @@ struct CutSettings {
   double tool_stiffness = 0.0;       ///< per metre of width, N/m per m; 0 = the tool follows its path rigidly
   double tool_mass = 0.0;            ///< modal mass per metre of width, kg/m
   double tool_damping_ratio = 0.05;  ///< of the mount's critical damping, 1
-};
-
-/// The prescribed translation of a group or a mesh (keys shared by [[group]] and [[mesh]]).
-struct MotionSettings {
-  std::string kind = "fixed";               ///< key 'motion': "fixed", "velocity", "ramp", "table" or "velocity_table"
-  std::array<double, 3> velocity{0, 0, 0};  ///< m/s ("velocity"; the final velocity of "ramp")
-  double ramp_time = 0.0;                   ///< s: "ramp" reaches 'velocity' linearly in this time
-  std::vector<double> table_time;           ///< s, ascending, first 0 ("table", "velocity_table")
-  std::vector<std::array<double, 3>> table_displacement;  ///< m, piecewise linear in time ("table")
-  std::vector<std::array<double, 3>> table_velocity;      ///< m/s, piecewise linear in time ("velocity_table")
-  std::string velocity_file;  ///< CSV 'time,vx,vy,vz' (s, m/s) for "velocity_table" instead of the arrays
-};
-
-/// [[group]]: particles selected by a side of the box or a region, fixed or moved.
-struct GroupSettings {
-  std::string name;
-  std::string side;  ///< "x-", "x+", "y-", "y+", "z-", "z+" (lattice layers at that face), or empty
-  int layers = 1;    ///< number of lattice layers taken at 'side'
-  std::array<double, 3> box_min{-kInf, -kInf, -kInf};  ///< region selection, m (used when side is empty)
-  std::array<double, 3> box_max{kInf, kInf, kInf};     ///< m
-  std::string dofs = "xyz";                            ///< prescribed components ("x", "xz", "xyz", ...)
-  MotionSettings motion;
 };
 
 /// [uniaxial]: a bar between two grips driven along a strain path (hysteresis test).

@@ -25,8 +25,6 @@ namespace swarf {
 // The keys of each table, in reading order. [[group]] and [[mesh]] read the motion keys too.
 // (The rods', contacts' and heat's are declared in their modules, setup/modules/.)
 const std::vector<Key<CutSettings>>& cut_keys();
-const std::vector<Key<GroupSettings>>& group_keys();
-const std::vector<Key<MotionSettings>>& motion_keys();
 const std::vector<Key<UniaxialSettings>>& uniaxial_keys();
 const std::vector<Key<CaseSettings>>& environment_keys();
 const std::vector<Key<MeshSettings>>& mesh_keys();

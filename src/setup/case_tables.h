@@ -43,14 +43,16 @@ ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::
 void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
                       const std::vector<double>& sig, double E, const std::string& E_key);
 
-// [[group]] and [[mesh]] (case_bodies.cpp).
-void read_groups(const CaseInput& in, CaseSettings& cs);
+// [[mesh]] (case_bodies.cpp).
 void read_meshes(const CaseInput& in, CaseSettings& cs);
 
 // Helpers the bodies' tables share (case_bodies.cpp).
 
 /// The entries of an array of tables ([[group]]), or none when the key is absent.
 const toml::array* entries(const CaseInput& in, const char* name);
+
+/// A [[group]]'s or [[mesh]]'s name: letters, digits, '_' and '-' (it names CSV columns).
+void check_name(const TableReader& r, const std::string& name);
 
 /// A direction (an axis, a normal): at least 1e-6 long (only its direction counts).
 void check_direction(const TableReader& r, const char* key, const std::array<double, 3>& v);

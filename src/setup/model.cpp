@@ -20,44 +20,6 @@
 
 namespace swarf {
 
-std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const std::string& side, int layers,
-                                      double layer_spacing) {
-  const int c = side[0] - 'x';
-  const bool upper = side[1] == '+';
-  double ext = position[0][c];
-  for (const auto& p : position) ext = upper ? std::max(ext, p[c]) : std::min(ext, p[c]);
-  const double reach = (layers - 0.5) * layer_spacing;
-  std::vector<std::int32_t> out;
-  for (std::size_t i = 0; i < position.size(); ++i)
-    if (std::abs(position[i][c] - ext) < reach) out.push_back(static_cast<std::int32_t>(i));
-  return out;
-}
-
-static Motion motion_from(const MotionSettings& ms) {
-  Motion m;
-  auto vec = [](const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); };
-  m.velocity = vec(ms.velocity);
-  m.time = ms.table_time;
-  if (ms.kind == "velocity") {
-    m.kind = Motion::Kind::Velocity;
-  } else if (ms.kind == "ramp") {
-    m.kind = Motion::Kind::Ramp;
-    m.ramp_time = ms.ramp_time;
-  } else if (ms.kind == "table") {
-    m.kind = Motion::Kind::Table;
-    for (const auto& u : ms.table_displacement) m.displacement.push_back(vec(u));
-  } else if (ms.kind == "velocity_table") {
-    m.kind = Motion::Kind::VelocityTable;
-    // Displacement at each table time: the exact integral of the piecewise-linear velocity.
-    m.displacement.push_back(Vec3::Zero());
-    for (const auto& v : ms.table_velocity) m.table_velocity.push_back(vec(v));
-    for (std::size_t k = 1; k < m.time.size(); ++k)
-      m.displacement.push_back(m.displacement.back() +
-                               0.5 * (m.table_velocity[k - 1] + m.table_velocity[k]) * (m.time[k] - m.time[k - 1]));
-  }
-  return m;
-}
-
 static TriangleMesh rectangle_mesh(const MeshSettings& ms) {
   TriangleMesh m;
   m.name = ms.name;
@@ -72,12 +34,6 @@ static TriangleMesh rectangle_mesh(const MeshSettings& ms) {
       m.triangles.push_back({id(a, b), id(a + 1, b), id(a + 1, b + 1)});
       m.triangles.push_back({id(a, b), id(a + 1, b + 1), id(a, b + 1)});
     }
-  return m;
-}
-
-static std::uint8_t dof_mask(const std::string& dofs) {
-  std::uint8_t m = 0;
-  for (char ch : dofs) m |= static_cast<std::uint8_t>(1u << (ch - 'x'));
   return m;
 }
 
@@ -111,38 +67,6 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
     p.inv_inertia[i] = 1.0 / p.inertia[i][0];
     p.velocity[i] = free_velocity[k];
     p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
-  }
-}
-
-void add_group(Model& model, const std::string& source, const std::string& name, std::vector<std::int32_t> members,
-               std::uint8_t dofs, Motion motion) {
-  auto& p = model.particles;
-  if (members.empty()) throw InputError(fmt::format("{}: group '{}' selects no particle", source, name));
-  for (auto i : members) {
-    if (p.group[i] >= 0)
-      throw InputError(fmt::format("{}: particle {} belongs to groups '{}' and '{}'; groups must not overlap", source,
-                                   i, model.groups[p.group[i]].name, name));
-    p.group[i] = static_cast<std::int32_t>(model.groups.size());
-    p.prescribed[i] = dofs;
-  }
-  model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
-}
-
-// The [[group]] tables: by a side of the box or by a region, on the ordered sites.
-void build_groups(const CaseSettings& cs, const std::vector<Vec3>& sites, double h, Model& model) {
-  const std::size_t n = sites.size();
-  for (const auto& gs : cs.groups) {
-    std::vector<std::int32_t> members;
-    if (!gs.side.empty()) {
-      members = select_side(sites, gs.side, gs.layers, h);
-    } else {
-      for (std::size_t i = 0; i < n; ++i) {
-        bool in = true;
-        for (int c = 0; c < 3; ++c) in = in && sites[i][c] >= gs.box_min[c] && sites[i][c] <= gs.box_max[c];
-        if (in) members.push_back(static_cast<std::int32_t>(i));
-      }
-    }
-    add_group(model, cs.source, gs.name, std::move(members), dof_mask(gs.dofs), motion_from(gs.motion));
   }
 }
 
