@@ -16,6 +16,7 @@
 #include "setup/modules/integrator.h"
 #include "setup/modules/material.h"
 #include "setup/modules/membrane.h"
+#include "setup/modules/meshes.h"
 #include "setup/modules/workpiece.h"
 #include "swarf/version.h"
 
@@ -38,19 +39,7 @@ void print_setup(const Model& m, int threads) {
   }
   say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
   say("{}", groups_echo(m));
-  for (const RigidBody& rb : m.bodies) {
-    const Vec3& c = rb.state.position;
-    say("  rigid body '{}': mass {:.4g} kg, centre of mass ({:.4g}, {:.4g}, {:.4g}) m, principal inertia ({:.4g}, "
-        "{:.4g}, {:.4g}) kg m^2{}\n",
-        m.meshes[rb.mesh].name, rb.mass, c[0], c[1], c[2], rb.inertia[0], rb.inertia[1], rb.inertia[2],
-        rb.rotation == BodyRotation::Hinge ? fmt::format(", {:.4g} kg m^2 about the hinge", rb.axis_inertia()) : "");
-  }
-  for (const MeshSettings& ms : m.settings.meshes)  // (the angles the cut's analysis takes)
-    if (ms.tool_from_file)
-      say("  tool '{}' from {}: measured rake {:.6g} deg, clearance {:.6g} deg, edge radius {:.4g} m, rake face {:.4g} "
-          "m; its sharp tip placed at ({:.6g}, {:.6g}, {:.6g}) m\n",
-          ms.name, ms.file, ms.rake_angle, ms.clearance_angle, ms.edge_radius, ms.face_length, ms.tool_tip[0],
-          ms.tool_tip[1], ms.tool_tip[2]);
+  say("{}", meshes_echo(m));
   if (d.membrane)
     say("  radius R = {:.4g} m, site spacing d = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.nn_distance,
         d.particle_mass);

@@ -27,7 +27,6 @@ namespace swarf {
 const std::vector<Key<CutSettings>>& cut_keys();
 const std::vector<Key<UniaxialSettings>>& uniaxial_keys();
 const std::vector<Key<CaseSettings>>& environment_keys();
-const std::vector<Key<MeshSettings>>& mesh_keys();
 const std::vector<Key<OutputSettings>>& output_keys();
 
 /// One key as text, for the docs and for the units in summary.json.

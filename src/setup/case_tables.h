@@ -43,9 +43,6 @@ ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::
 void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
                       const std::vector<double>& sig, double E, const std::string& E_key);
 
-// [[mesh]] (case_bodies.cpp).
-void read_meshes(const CaseInput& in, CaseSettings& cs);
-
 // Helpers the bodies' tables share (case_bodies.cpp).
 
 /// The entries of an array of tables ([[group]]), or none when the key is absent.
