@@ -17,6 +17,7 @@
 #include "setup/modules/material.h"
 #include "setup/modules/membrane.h"
 #include "setup/modules/meshes.h"
+#include "setup/modules/uniaxial.h"
 #include "setup/modules/workpiece.h"
 #include "swarf/version.h"
 
@@ -83,9 +84,7 @@ void print_setup(const Model& m, int threads) {
   say("{}", heat_echo(m));
   say("{}", contacts_echo(m));
   say("{}", integrator_echo(m));
-  if (m.uniaxial.enabled)
-    say("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
-        m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
+  say("{}", uniaxial_echo(m));
   std::fflush(stdout);
 }
 

@@ -15,8 +15,6 @@
 #include "tool_paths/tool_measure.h"
 
 namespace swarf {
-namespace {}  // namespace
-
 // Names become CSV columns (reaction_<name>_x, force_<name>_x).
 void check_name(const TableReader& r, const std::string& name) {
   for (char ch : name)

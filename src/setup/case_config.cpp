@@ -1,5 +1,8 @@
-// case_config.cpp: reading a case file: the tables in order, each through its key table
-// (case_keys.cpp) and its rules, and the rules between tables (see case_config.h).
+// case_config.cpp: reading a case file: parse_case calls each table's reader in order (most are in
+// their modules, setup/modules/; [environment] and [output] here), then checks the rules between
+// tables that no one module owns (see parse_case). A module's own rules on other tables stay in its
+// reader ([heat]'s held groups, [membrane]'s on [workpiece], [rod] and [material], [uniaxial]'s grip
+// names; the rods' in check_rods_across_tables).
 #include "setup/case_config.h"
 
 #include <fmt/format.h>
@@ -24,26 +27,6 @@
 
 namespace swarf {
 namespace {
-
-void read_uniaxial(const CaseInput& in, CaseSettings& cs) {
-  const toml::table* t = in.table("uniaxial");
-  if (!t) return;
-  TableReader r = in.reader(t, "uniaxial");
-  auto& u = cs.uniaxial;
-  u.enabled = true;
-  r.read(uniaxial_keys(), u);
-  r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-  if (u.strain_path.size() < 2 || u.strain_path[0] != 0.0)
-    r.fail("strain_path", r.get("strain_path"), "needs at least two turning points, the first 0");
-  for (double s : u.strain_path)
-    if (std::abs(s) >= 0.5) r.fail("strain_path", r.get("strain_path"), "strains must lie in (-0.5, 0.5)");
-  for (std::size_t k = 1; k < u.strain_path.size(); ++k)
-    if (u.strain_path[k] == u.strain_path[k - 1])
-      r.fail("strain_path", r.get("strain_path"), "consecutive turning points must differ");
-  for (const auto& g : cs.groups)
-    if (g.name == "grip_min" || g.name == "grip_max")
-      throw InputError(fmt::format("{}: group name '{}' is reserved for the [uniaxial] grips", in.source, g.name));
-}
 
 // [environment]: present or not, no rules between its keys.
 void read_environment(const CaseInput& in, CaseSettings& cs) {
@@ -180,6 +163,9 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   read_particles(in, cs);
   read_flows(in, cs);
   read_particles_file(in, cs);
+  // The rules between tables that no one module owns: they need several modules' settings at once,
+  // read in full (the meshes with the outflows, the bodies with [contact], [uniaxial] with
+  // [workpiece], any particles at all, and integrator.end_time with [uniaxial] after [output]).
   // A cutting run's analysis takes the workpiece as the first particles (Model::lattice_particles):
   // an outflow's removals would renumber them under it. (An inflow appends after them.)
   const bool cutting = cs.workpiece.enabled &&

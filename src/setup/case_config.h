@@ -1,13 +1,13 @@
 // case_config.h: the case file (TOML) as settings structs with defaults and units.
 //
-// Every key of a case file maps to one field below, whose default member initialiser is the
-// key's default. The key table (case_keys.cpp) names each key once, with its field, unit,
-// range and doc line: the reader checks against it and the key tables of
-// docs/case-reference.md are generated from it, so a new key is a field here and an entry
-// there; the rods', contacts' and heat's structs, tables, rules and builds are in their modules
-// (setup/modules/). Reading rejects unknown keys, wrong types and out-of-range values with the file,
-// the key and the value. Command-line overrides (--set key=value) are applied to the TOML
-// tree before reading, so they are checked exactly like keys in the file.
+// Every key of a case file maps to one field of a settings struct, whose default member initialiser
+// is the key's default. The key table names each key once, with its field, unit, range and doc line:
+// the reader checks against it and the key tables of docs/case-reference.md are generated from it, so
+// a new key is a field and an entry. The engine-facing tables are modules (setup/modules/: struct,
+// key table, rules, build, echo, included below); [cut], [environment] and [output] are here (their
+// keys in cut_keys.cpp and case_keys.cpp), with CaseSettings, which holds one member per table. Reading rejects unknown
+// keys, wrong types and out-of-range values with the file, the key and the value. Command-line overrides (--set
+// key=value) are applied to the TOML tree before reading, so they are checked exactly like keys in the file.
 #pragma once
 
 #include <array>
@@ -27,6 +27,7 @@
 #include "setup/modules/meshes.h"
 #include "setup/modules/particles.h"
 #include "setup/modules/rods.h"
+#include "setup/modules/uniaxial.h"
 #include "setup/modules/workpiece.h"
 
 namespace swarf {
@@ -55,17 +56,6 @@ struct CutSettings {
   double tool_stiffness = 0.0;       ///< per metre of width, N/m per m; 0 = the tool follows its path rigidly
   double tool_mass = 0.0;            ///< modal mass per metre of width, kg/m
   double tool_damping_ratio = 0.05;  ///< of the mount's critical damping, 1
-};
-
-/// [uniaxial]: a bar between two grips driven along a strain path (hysteresis test).
-struct UniaxialSettings {
-  bool enabled = false;    ///< true when the table is present
-  std::string axis = "x";  ///< bar axis: "x", "y" or "z"
-  int grip_layers = 1;     ///< lattice layers held by each grip
-  std::string
-      grip_dofs = "axis";  ///< "axis": grips hold only the axial component (free lateral contraction); "xyz": clamped
-  std::vector<double> strain_path{0.0};  ///< turning points of the nominal strain, 1, first 0
-  double strain_rate = 10.0;             ///< |d strain/dt| of the grips, 1/s
 };
 
 /// The per-particle fields of the ParaView frames and results.h5 that output.fields chooses

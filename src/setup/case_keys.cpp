@@ -1,43 +1,10 @@
-// case_keys.cpp: every key of a case file, once (see case_keys.h). The docs' key tables are
+// case_keys.cpp: the keys of the tables that are not modules ([environment], [output]), once (see
+// case_keys.h; the modules' keys are in setup/modules/, [cut]'s in cut_keys.cpp). The docs' key tables are
 // generated from these entries: edit a doc line here, then run
 // 'swarf case keys --update docs/case-reference.md'.
 #include "setup/case_keys.h"
 
 namespace swarf {
-
-const std::vector<Key<UniaxialSettings>>& uniaxial_keys() {
-  using S = UniaxialSettings;
-  static const std::vector<Key<S>> keys{
-      {.name = "axis",
-       .field = &S::axis,
-       .choices = {"x", "y", "z"},
-       .doc = "Bar axis. The grips are the sides `<axis>-` and `<axis>+`."},
-      {.name = "grip_layers",
-       .field = &S::grip_layers,
-       .unit = "1",
-       .range = in(1, 1000, "[]"),
-       .rule = "the gauge length must stay > h/2",
-       .doc = "Lattice layers held by each grip. Selection is the same as for `side`."},
-      {.name = "grip_dofs",
-       .field = &S::grip_dofs,
-       .choices = {"axis", "xyz"},
-       .doc = "`\"axis\"`: the grips hold only the axial component, so the bar contracts freely. `\"xyz\"`: "
-              "clamped ends."},
-      {.name = "strain_path",
-       .field = &S::strain_path,
-       .unit = "1",
-       .default_note = "invalid, so effectively required",
-       .range = in(-0.5, 0.5, "()"),
-       .rule = "at least 2 entries, first 0, no two consecutive equal",
-       .doc = "Turning points of the nominal strain."},
-      {.name = "strain_rate",
-       .field = &S::strain_rate,
-       .unit = "1/s",
-       .range = kStrainRate,
-       .doc = "Absolute rate of change of the nominal strain."},
-  };
-  return keys;
-}
 
 const std::vector<Key<CaseSettings>>& environment_keys() {
   using S = CaseSettings;

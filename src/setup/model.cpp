@@ -1,4 +1,9 @@
-// model.cpp: building particles, rods and groups from the settings (see model.h).
+// model.cpp: build_model, the list of the modules' builds in order (setup/modules/), and what lies
+// between them and belongs to no one table: the particles' masses (lattice and free ones, from the
+// derived mass basis and [material]'s density), the check for coincident particles (the lattice and
+// the free particles together), the disorder (its amplitude is derived), the membrane's clamped edge
+// (a group added after the rods) and the run's end against the output intervals ([integrator] and
+// [output]). See model.h.
 #include "setup/model.h"
 
 #include <fmt/format.h>
@@ -6,20 +11,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/mesh_file.h"
-#include "io/particle_file.h"
 #include "lattice_gen/lattice_disorder.h"
 #include "lattice_gen/membrane_lattice.h"
-#include "setup/case_keys.h"
 #include "swarf/core/errors.h"
-#include "swarf/geometry/mass_properties.h"
-#include "swarf/geometry/shapes.h"
-#include "swarf/laws/hertz.h"
 #include "swarf/neighbors/neighbor_pairs.h"
-#include "tool_paths/tool_geometry.h"
 
 namespace swarf {
-
 namespace {
 
 // Masses and inertias (lattice particles from the derived mass basis, free ones as solid
@@ -50,55 +47,6 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
     p.inv_inertia[i] = 1.0 / p.inertia[i][0];
     p.velocity[i] = free_velocity[k];
     p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
-  }
-}
-
-// [uniaxial]: the grips as two groups moving along the strain path, the bar's gauge length
-// and cross-section, and the rods through its mid-plane (all on the ordered sites).
-void build_uniaxial(const CaseSettings& cs, const std::vector<Vec3>& sites, double h, Model& model) {
-  const auto& r = model.rods;
-  const auto& u = cs.uniaxial;
-  auto& info = model.uniaxial;
-  info.enabled = true;
-  info.axis = u.axis[0] - 'x';
-  const int ax = info.axis;
-  Vec3 lo = sites[0], hi = sites[0];
-  for (const auto& x : sites) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  info.gauge_length = (hi[ax] - lo[ax]) - 2.0 * (u.grip_layers - 1) * h;
-  if (!(info.gauge_length > 0.5 * h))
-    throw InputError(fmt::format("{}: key 'uniaxial.grip_layers' = {}: the grips leave no free bar between them",
-                                 cs.source, u.grip_layers));
-  info.cross_section = 1.0;
-  for (int c = 0; c < 3; ++c)
-    if (c != ax) info.cross_section *= (hi[c] - lo[c]) + h;
-  // Grip motion: each grip moves half the separation change, along the strain path.
-  Motion mmin, mmax;
-  mmin.kind = mmax.kind = Motion::Kind::Table;
-  double t = 0.0;
-  for (std::size_t k = 0; k < u.strain_path.size(); ++k) {
-    if (k > 0) t += std::abs(u.strain_path[k] - u.strain_path[k - 1]) / u.strain_rate;
-    const double half = 0.5 * u.strain_path[k] * info.gauge_length;
-    Vec3 e = Vec3::Zero();
-    e[ax] = half;
-    mmin.time.push_back(t);
-    mmax.time.push_back(t);
-    mmin.displacement.push_back(-e);
-    mmax.displacement.push_back(e);
-  }
-  const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
-  const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
-  info.grip_min = static_cast<int>(model.groups.size());
-  add_group(model, cs.source, "grip_min", select_side(sites, smin, u.grip_layers, h), dofs, mmin);
-  info.grip_max = static_cast<int>(model.groups.size());
-  add_group(model, cs.source, "grip_max", select_side(sites, smax, u.grip_layers, h), dofs, mmax);
-  if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
-  const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
-  for (std::size_t b = 0; b < r.size(); ++b) {
-    const double xi = sites[r.ends[b][0]][ax], xj = sites[r.ends[b][1]][ax];
-    if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
   }
 }
 
