@@ -1,8 +1,9 @@
-// case_tables.h: the readers of a case file's tables, internal to setup/.
+// case_tables.h: what the readers of a case file's tables share, internal to setup/: the parsed
+// tree (CaseInput) and the helpers of several tables.
 //
-// Each reader reads its table's keys through the key table (type and range checks, unknown
-// keys), then checks by hand the rules that involve several keys or files, in the order
-// parse_case calls them (case_config.cpp).
+// Each reader (a module's read_<name>, setup/modules/) reads its table's keys through the key
+// table (type and range checks, unknown keys), then checks by hand the rules that involve several
+// keys or files, in the order parse_case calls them (case_config.cpp).
 #pragma once
 
 #include <toml++/toml.h>
