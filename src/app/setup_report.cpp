@@ -11,7 +11,14 @@
 #include "io/console.h"
 #include "setup/model.h"
 #include "setup/modules/contacts.h"
+#include "setup/modules/groups.h"
 #include "setup/modules/heat.h"
+#include "setup/modules/integrator.h"
+#include "setup/modules/material.h"
+#include "setup/modules/membrane.h"
+#include "setup/modules/meshes.h"
+#include "setup/modules/uniaxial.h"
+#include "setup/modules/workpiece.h"
 #include "swarf/version.h"
 
 namespace swarf {
@@ -32,66 +39,19 @@ void print_setup(const Model& m, int threads) {
     say("{}", text);
   }
   say("  particles {}  rods {}  groups {}  threads {}\n", m.particles.size(), m.rods.size(), m.groups.size(), threads);
-  for (const auto& g : m.groups) say("  group '{}': {} particles\n", g.name, g.members.size());
-  for (const RigidBody& rb : m.bodies) {
-    const Vec3& c = rb.state.position;
-    say("  rigid body '{}': mass {:.4g} kg, centre of mass ({:.4g}, {:.4g}, {:.4g}) m, principal inertia ({:.4g}, "
-        "{:.4g}, {:.4g}) kg m^2{}\n",
-        m.meshes[rb.mesh].name, rb.mass, c[0], c[1], c[2], rb.inertia[0], rb.inertia[1], rb.inertia[2],
-        rb.rotation == BodyRotation::Hinge ? fmt::format(", {:.4g} kg m^2 about the hinge", rb.axis_inertia()) : "");
-  }
-  for (const MeshSettings& ms : m.settings.meshes)  // (the angles the cut's analysis takes)
-    if (ms.tool_from_file)
-      say("  tool '{}' from {}: measured rake {:.6g} deg, clearance {:.6g} deg, edge radius {:.4g} m, rake face {:.4g} "
-          "m; its sharp tip placed at ({:.6g}, {:.6g}, {:.6g}) m\n",
-          ms.name, ms.file, ms.rake_angle, ms.clearance_angle, ms.edge_radius, ms.face_length, ms.tool_tip[0],
-          ms.tool_tip[1], ms.tool_tip[2]);
+  say("{}", groups_echo(m));
+  say("{}", meshes_echo(m));
   if (d.membrane)
     say("  radius R = {:.4g} m, site spacing d = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.nn_distance,
         d.particle_mass);
   else
     say("  radius R = {:.4g} m, cell edge a = {:.4g} m, particle mass m = {:.4g} kg\n", d.radius, d.cell_edge,
         d.particle_mass);
-  if (d.position_jitter > 0.0) {
-    const auto [lo, hi] = std::minmax_element(m.rods.rest_length.begin(), m.rods.rest_length.end());
-    say("  disorder: seed {}, sites moved uniformly within {:.3g} R = {:.4g} m", d.disorder_seed, d.position_jitter,
-        d.position_jitter * d.radius);
-    if (lo != m.rods.rest_length.end())
-      say("; rods at rest, {:.6g} to {:.6g} m; stable step for kb_max = {:.4g} N/m", *lo, *hi, d.rod_stiffness_max);
-    say("\n");
-  } else if (d.disorder_seed > 0) {
-    say("  disorder: seed {} with position_jitter = 0: the ordered lattice\n", d.disorder_seed);
-  }
-  if (m.periodic.on())
-    say("  periodic width: period {:.4g} m along y (rods and contacts through the nearest image)\n", m.periodic.period);
+  say("{}", workpiece_echo(m));
   if (d.membrane) {
-    say("  membrane: E_2D = E t = {:.4g} N/m, nu = 1/3, rho_A = {:.4g} kg/m^2, pre-tension T = {:.4g} N/m (rod "
-        "pre-strain {:.4g}); rod k = sqrt(3)/2 E_2D = {:.4g} N/m, damping c = {:.4g} N s/m\n",
-        d.membrane_modulus_2d, d.membrane_areal_density, d.membrane_tension, d.membrane_pre_strain, d.rod_stiffness,
-        d.rod_damping);
-    say("  membrane waves: c_L = {:.4g} m/s, c_S = {:.4g} m/s, c_T = sqrt(T/rho_A) = {:.4g} m/s; CFL step d/c_L = "
-        "{:.4g} s, stable step sqrt(4m/(6(k+f/d))) = {:.4g} s\n",
-        d.membrane_wave_longitudinal, d.membrane_wave_shear, d.membrane_wave_transverse, d.membrane_dt_cfl,
-        2.0 / d.omega_max);
+    say("{}", membrane_echo(m));
   } else if (!m.rods.ends.empty()) {
-    const auto& mt = m.settings.material;
-    if (d.converted && mt.flow_curve) {
-      std::string pts;
-      for (std::size_t i = 0; i < mt.flow_plastic_strain.size(); ++i)
-        pts += fmt::format("{}({:.4g}, {:.4g} MPa)", i ? " " : "", mt.flow_plastic_strain[i], mt.flow_stress[i] * 1e-6);
-      say("  material{}: E = {:.4g} Pa, flow curve (equivalent plastic strain, true stress): {}\n",
-          mt.preset.empty() ? std::string() : " " + mt.preset, mt.youngs_modulus, pts);
-      say("  rod law calibrated in {} ({}), failure at equivalent strain {:.4g}:\n",
-          mt.calibration == "shear" ? "simple shear on a cube plane" : "uniaxial tension along [100]", "calibration.h",
-          mt.failure_strain);
-      if (mt.calibration == "shear")
-        say("  finite-strain shear correction: {} of {} points reached, largest mismatch left {:.1f} %\n",
-            d.calibration_points, mt.flow_plastic_strain.size() - 1, 100.0 * d.calibration_mismatch);
-    } else if (d.converted)
-      say("  rod law from [material] (along [100]: E = {:.4g} Pa, yield {:.4g} Pa, hardening {:.4g} Pa, "
-          "strength {:.4g} Pa):\n",
-          m.settings.material.youngs_modulus, m.settings.material.yield_stress, m.settings.material.hardening_modulus,
-          m.settings.material.tensile_strength);
+    say("{}", material_echo(m));
     // The law as it describes itself: its name, then each parameter (a table as a list).
     const RodLawDescription law = describe(d.law);
     std::string params;
@@ -123,13 +83,8 @@ void print_setup(const Model& m, int threads) {
         d.youngs_modulus_100, d.c11, d.c12, d.bulk_density);
   say("{}", heat_echo(m));
   say("{}", contacts_echo(m));
-  say("  scheme {}; stable step {:.4g} s; dt = {:.4g} s ({:.3g} of it){}; end time {:.4g} s\n",
-      d.implicit ? "newmark" : "verlet", d.dt_stable, d.dt, d.dt / d.dt_stable,
-      d.implicit ? fmt::format(" first, controlled in [{:.3g}, {:.3g}] s", d.dt_min, d.dt_max) : "",
-      m.settings.integrator.end_time);
-  if (m.uniaxial.enabled)
-    say("  uniaxial bar: gauge length {:.4g} m, cross-section {:.4g} m^2, predicted yield {:.4g} Pa at strain {:.4g}\n",
-        m.uniaxial.gauge_length, m.uniaxial.cross_section, d.bar_yield_stress, d.bar_yield_strain);
+  say("{}", integrator_echo(m));
+  say("{}", uniaxial_echo(m));
   std::fflush(stdout);
 }
 

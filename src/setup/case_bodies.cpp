@@ -1,17 +1,13 @@
-// case_bodies.cpp: the tables that repeat or name files: [[group]] with its motion, [[mesh]],
-// [[particle]] and [particles] (see case_tables.h). The key tables check each key; the
-// rules here check the keys against each other and against the files they name.
+// case_bodies.cpp: the helpers that the bodies' modules share (see case_tables.h): an array of
+// tables' entries, a name that becomes CSV columns, a direction, a file relative to the case and a
+// tool measured from its mesh file. The bodies' tables themselves are modules (setup/modules/:
+// groups, motion, meshes, particles, flows, membrane, uniaxial).
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
 
-#include "io/csv_cell.h"
 #include "io/mesh_file.h"
 #include "io/path_kind.h"
 #include "setup/case_tables.h"
@@ -19,74 +15,6 @@
 #include "tool_paths/tool_measure.h"
 
 namespace swarf {
-namespace {
-
-// Reads a CSV velocity table 'time,vx,vy,vz' (header line first) for motion = "velocity_table".
-void read_velocity_csv(const TableReader& r, const std::string& path, MotionSettings& m) {
-  std::ifstream in(path);
-  if (!in) r.fail("velocity_file", r.get("velocity_file"), "file not found or unreadable: " + path);
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (lineno == 1 || line.empty() || line == "\r") continue;  // header
-    std::vector<double> x;
-    std::istringstream ls(line);
-    bool ok = true;
-    for (std::string cell; std::getline(ls, cell, ',');) {
-      double c = 0;
-      ok = ok && parse_csv_number(cell, c) && std::isfinite(c);
-      x.push_back(c);
-    }
-    if (!ok || x.size() != 4)
-      r.fail("velocity_file", r.get("velocity_file"),
-             fmt::format("{}:{}: expected 'time,vx,vy,vz': four finite numbers in s and m/s, got '{}'", path, lineno,
-                         line));
-    m.table_time.push_back(x[0]);
-    m.table_velocity.push_back({x[1], x[2], x[3]});
-  }
-}
-
-// The rules of the motion keys shared by [[group]] and [[mesh]] (read by motion_keys()).
-void check_motion(const TableReader& r, const std::string& directory, MotionSettings& m) {
-  // Every key only where the motion uses it.
-  const std::map<std::string, std::vector<std::string>> uses{
-      {"velocity", {"velocity", "ramp"}},          {"ramp_time", {"ramp"}},
-      {"table_time", {"table", "velocity_table"}}, {"table_displacement", {"table"}},
-      {"table_velocity", {"velocity_table"}},      {"velocity_file", {"velocity_table"}}};
-  for (const auto& [key, kinds] : uses)
-    if (r.has(key) && std::find(kinds.begin(), kinds.end(), m.kind) == kinds.end())
-      r.fail(key, r.get(key), fmt::format("is not used with motion = \"{}\"", m.kind));
-  if ((m.kind == "velocity" || m.kind == "ramp") && !r.has("velocity"))
-    r.fail("velocity", nullptr, fmt::format("motion = \"{}\" needs a velocity [vx, vy, vz] in m/s", m.kind));
-  if (m.kind == "ramp" && !r.has("ramp_time")) r.fail("ramp_time", nullptr, "motion = \"ramp\" needs ramp_time in s");
-  if (m.kind == "velocity_table") {
-    if (!m.velocity_file.empty()) {
-      if (r.has("table_time") || r.has("table_velocity"))
-        r.fail("velocity_file", r.get("velocity_file"), "give either velocity_file or table_time/table_velocity");
-      read_velocity_csv(r, resolve(m.velocity_file, directory), m);
-    }
-    if (m.table_time.size() < 2 || m.table_time.size() != m.table_velocity.size())
-      r.fail("table_time", r.get("table_time"),
-             "motion = \"velocity_table\" needs table_time (s) and table_velocity (m/s) of equal length >= 2, "
-             "or velocity_file");
-  }
-  if (m.kind == "table") {
-    if (m.table_time.size() < 2 || m.table_time.size() != m.table_displacement.size())
-      r.fail("table_time", r.get("table_time"),
-             "motion = \"table\" needs table_time (s) and table_displacement (m) of equal length >= 2");
-    for (double u : m.table_displacement[0])
-      if (u != 0.0)
-        r.fail("table_displacement", r.get("table_displacement"), "must start at [0, 0, 0] m (no jump at t = 0)");
-  }
-  if (m.kind == "table" || m.kind == "velocity_table") {
-    const char* key = r.has("table_time") ? "table_time" : "velocity_file";
-    if (m.table_time[0] != 0.0) r.fail(key, r.get(key), "the table must start at 0 s");
-    for (std::size_t k = 1; k < m.table_time.size(); ++k)
-      if (!(m.table_time[k] > m.table_time[k - 1])) r.fail(key, r.get(key), "times must be strictly ascending");
-  }
-}
-
 // Names become CSV columns (reaction_<name>_x, force_<name>_x).
 void check_name(const TableReader& r, const std::string& name) {
   for (char ch : name)
@@ -105,14 +33,6 @@ const toml::array* entries(const CaseInput& in, const char* name) {
   return arr;
 }
 
-// An inflow's or outflow's box: both corners given, the upper one above the lower.
-void check_box(const TableReader& r, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
-  for (const char* key : {"box_min", "box_max"})
-    if (!r.has(key)) r.fail(key, nullptr, "is required");
-  for (int c = 0; c < 3; ++c)
-    if (!(hi[c] >= lo[c])) r.fail("box_max", r.get("box_max"), "must be >= box_min in x, y and z (m)");
-}
-
 // A direction (an axis, a normal): only its direction counts, but a length below 1e-6 is a
 // zero written otherwise, and a denormal one normalised to inf or NaN (issue 37: an outflow
 // normal of length 1e-320 ran and stopped as a blow-up).
@@ -124,136 +44,6 @@ void check_direction(const TableReader& r, const char* key, const std::array<dou
                        "direction counts)",
                        length));
 }
-
-// dynamics = "rigid_body": its keys only there, and the rules between them.
-void check_body(const TableReader& r, const MeshSettings& m, bool open_shape) {
-  const bool body = m.dynamics == "rigid_body";
-  for (const char* key : {"density", "mass", "centre_of_mass", "inertia", "initial_velocity", "angular_velocity",
-                          "rotation", "hinge_axis", "hinge_point", "fixed", "force", "torque", "damping",
-                          "torque_damping", "spring_stiffness", "holder_velocity"})
-    if (!body && r.has(key)) r.fail(key, r.get(key), "is a rigid body's key: it needs dynamics = \"rigid_body\"");
-  if (!body) return;
-  const bool given = r.has("inertia");
-  if (open_shape && !given)
-    r.fail("dynamics", r.get("dynamics"),
-           "a rigid body needs a closed mesh: file, box_size or cylinder_radius (a rectangle or a tool is open), "
-           "or its mass, centre_of_mass and inertia given");
-  if (given) {
-    if (m.inertia.size() != 6)
-      r.fail("inertia", r.get("inertia"), "give 6 numbers [Ixx, Iyy, Izz, Ixy, Iyz, Ixz] in kg m^2");
-    if (!r.has("mass") || r.has("density"))
-      r.fail("inertia", r.get("inertia"), "goes with mass (kg), not density: the mesh's volume is not used");
-    if (!r.has("centre_of_mass")) r.fail("inertia", r.get("inertia"), "needs centre_of_mass (m) too");
-  } else if (r.has("centre_of_mass")) {
-    r.fail("centre_of_mass", r.get("centre_of_mass"), "is given with inertia (kg m^2)");
-  }
-  if (r.has("motion")) r.fail("motion", r.get("motion"), "a rigid body moves by its dynamics, not by a motion");
-  if (r.has("density") == r.has("mass")) r.fail("density", r.get("density"), "give density (kg/m^3) or mass (kg)");
-  if (r.has("hinge_axis") && m.rotation != "hinge")
-    r.fail("hinge_axis", r.get("hinge_axis"), "is used only with rotation = \"hinge\"");
-  if (r.has("hinge_point") && m.rotation != "hinge")
-    r.fail("hinge_point", r.get("hinge_point"), "is used only with rotation = \"hinge\"");
-  if (r.has("hinge_point") && r.has("fixed"))
-    r.fail("fixed", r.get("fixed"), "does not apply with hinge_point: the axle is fixed there");
-  const auto& e = m.hinge_axis;
-  const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-  check_direction(r, "hinge_axis", e);
-  if (m.rotation == "hinge") {
-    const auto& w = m.angular_velocity;
-    const double wx = w[1] * e[2] - w[2] * e[1], wy = w[2] * e[0] - w[0] * e[2], wz = w[0] * e[1] - w[1] * e[0];
-    if (!(std::sqrt(wx * wx + wy * wy + wz * wz) <=
-          1e-12 * std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * std::sqrt(e2)))
-      r.fail("angular_velocity", r.get("angular_velocity"), "must lie along hinge_axis with rotation = \"hinge\"");
-  }
-  for (double k : m.spring_stiffness)
-    if (!(k >= 0.0 && std::isfinite(k)))
-      r.fail("spring_stiffness", r.get("spring_stiffness"), "each stiffness must be >= 0 and finite (N/m)");
-  std::string seen;
-  for (char c : m.fixed)
-    if ((c != 'x' && c != 'y' && c != 'z') || seen.find(c) != std::string::npos)
-      r.fail("fixed", r.get("fixed"), "use the letters x, y and z, each at most once (\"xyz\", \"z\", ...)");
-    else
-      seen += c;
-}
-
-// A [[mesh]] file with tool_tip: a cutting tool, measured now so that the cut's analysis has
-// its angles; the tool fields are set from the measurement, its tip placed at tool_tip.
-void measure_file_tool(const TableReader& r, MeshSettings& m) {
-  const ToolMeasure t = measure_tool_file(r, "file", m.file, m.scale);
-  m.tool = true;
-  m.tool_from_file = true;
-  m.rake_angle = t.rake_angle_deg;
-  m.clearance_angle = t.clearance_angle_deg;
-  m.edge_radius = t.edge_radius;
-  m.face_length = t.face_length;
-  m.width = t.edge_length;
-  m.origin = m.tool_tip;
-  m.file_tip = {t.tip.x(), t.tip.y(), t.tip.z()};
-}
-
-void check_mesh(const TableReader& r, const std::string& directory, MeshSettings& m) {
-  if (static_cast<double>(m.divisions[0]) * m.divisions[1] > 1e7)
-    r.fail("divisions", r.get("divisions"), "must be two positive integers [n1, n2]");
-  m.tool = r.has("rake_angle");
-  m.hinge_at_point = r.has("hinge_point");
-  for (const char* key : {"clearance_angle", "edge_radius", "width", "face_length"})
-    if (!m.tool && r.has(key)) r.fail(key, r.get(key), "is a tool key: give rake_angle (deg) to make a tool");
-  if (m.tool && (!r.has("width") || !r.has("face_length")))
-    r.fail("rake_angle", r.get("rake_angle"), "a tool needs width (m) and face_length (m) too");
-  check_motion(r, directory, m.motion);
-  const bool rect = r.has("edge1") || r.has("edge2") || r.has("divisions");
-  const bool box = r.has("box_size"), cyl = r.has("cylinder_radius");
-  for (const char* key : {"cylinder_length", "cylinder_axis", "cylinder_segments"})
-    if (!cyl && r.has(key)) r.fail(key, r.get(key), "is a cylinder key: give cylinder_radius (m) to make a cylinder");
-  if (cyl && !r.has("cylinder_length"))
-    r.fail("cylinder_radius", r.get("cylinder_radius"), "needs cylinder_length (m)");
-  if (cyl) check_direction(r, "cylinder_axis", m.cylinder_axis);
-  // [cut] makes the mesh named "tool" a generated tool: a [[mesh]] of that name with a file
-  // gets its tool keys, and the conflict below would name keys the user never wrote.
-  if (!m.file.empty()) {
-    std::string from_cut;
-    for (const char* key : {"rake_angle", "clearance_angle", "edge_radius", "width", "face_length", "origin"})
-      if (r.from_cut(key)) from_cut += fmt::format("{}{} = {}", from_cut.empty() ? "" : ", ", key, r.value_text(key));
-    if (!from_cut.empty())
-      r.fail("file", r.get("file"),
-             fmt::format("[cut] set the keys of its generated tool on this [[mesh]] '{}' ({}), which a mesh file "
-                         "cannot take. To cut with a tool from a file, give it as cut.tool_file = \"{}\" (with "
-                         "cut.tool_scale for a file not in m): [cut] measures its angles and places it. Name this "
-                         "mesh otherwise to have it beside [cut]'s tool",
-                         m.name, from_cut, m.file));
-  }
-  if ((!m.file.empty() ? 1 : 0) + (rect ? 1 : 0) + (m.tool ? 1 : 0) + (box ? 1 : 0) + (cyl ? 1 : 0) > 1)
-    r.fail("file",
-           r.get("file")         ? r.get("file")
-           : r.get("rake_angle") ? r.get("rake_angle")
-                                 : r.get("box_size"),
-           "give one of: file, a rectangle (edge1, edge2, divisions), a tool (rake_angle, ...), box_size or "
-           "cylinder_radius");
-  if (m.file.empty() && !m.tool && !box && !cyl && !(r.has("edge1") && r.has("edge2")))
-    r.fail("file", nullptr,
-           "a mesh needs file = \"...stl|obj\", a rectangle (origin, edge1, edge2 in m), a tool (rake_angle, ...), "
-           "box_size or cylinder_radius");
-  check_body(r, m, rect || m.tool);
-  if (!m.file.empty() && r.has("origin"))
-    r.fail("origin", r.get("origin"),
-           "places a rectangle or a generated tool; a mesh file is used where its coordinates (times scale) put it, "
-           "or, as a cutting tool, with its sharp tip at tool_tip (m)");
-  if (r.has("tool_tip") && m.file.empty())
-    r.fail("tool_tip", r.get("tool_tip"), "places a cutting tool from a file: it needs file = \"...stl|obj\"");
-  if (!m.file.empty()) {
-    m.file = resolve(m.file, directory);
-    if (const std::string why = file_problem(m.file, "a mesh file"); !why.empty()) r.fail("file", r.get("file"), why);
-    if (r.has("tool_tip")) measure_file_tool(r, m);
-  } else if (!m.tool && !box && !cyl) {  // a tool's angles and sizes are checked by its generator, which names them
-    const auto& e1 = m.edge1;
-    const auto& e2 = m.edge2;
-    const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
-                 cz = e1[0] * e2[1] - e1[1] * e2[0];
-    if (!(cx * cx + cy * cy + cz * cz > 0.0)) r.fail("edge2", r.get("edge2"), "edge1 and edge2 must span a rectangle");
-  }
-}
-
-}  // namespace
 
 ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::string& path, double scale) {
   if (const std::string why = file_problem(path, "a mesh file"); !why.empty()) r.fail(key, r.get(key), why);
@@ -277,116 +67,6 @@ std::string resolve(const std::string& file, const std::string& directory) {
   std::filesystem::path p(file);
   if (p.is_relative()) p = std::filesystem::path(directory) / p;
   return p.string();
-}
-
-void read_groups(const CaseInput& in, CaseSettings& cs) {
-  const toml::array* arr = entries(in, "group");
-  if (!arr) return;
-  std::set<std::string> names;
-  for (std::size_t g = 0; g < arr->size(); ++g) {
-    TableReader r = in.reader((*arr)[g].as_table(), "group");
-    GroupSettings gs;
-    r.read(group_keys(), gs);
-    r.read(motion_keys(), gs.motion);
-    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-    if (!r.has("name")) gs.name = fmt::format("group{}", g);
-    if (!names.insert(gs.name).second) r.fail("name", r.get("name"), "two groups have this name");
-    check_motion(r, in.directory, gs.motion);
-    const bool has_box = r.has("box_min") || r.has("box_max");
-    if (!gs.side.empty() && has_box) {
-      const char* key = r.has("box_min") ? "box_min" : "box_max";
-      r.fail(key, r.get(key), "give either side (with layers) or box_min/box_max, not both");
-    }
-    if (gs.side.empty() && r.has("layers")) r.fail("layers", r.get("layers"), "layers needs side");
-    if (gs.side.empty() && !has_box) r.fail("side", nullptr, "a group needs side = \"x-\" ... or box_min/box_max (m)");
-    for (int c = 0; c < 3; ++c)
-      if (gs.box_min[c] > gs.box_max[c]) r.fail("box_min", r.get("box_min"), "must not exceed box_max");
-    check_name(r, gs.name);
-    cs.groups.push_back(gs);
-  }
-}
-
-void read_meshes(const CaseInput& in, CaseSettings& cs) {
-  const toml::array* arr = entries(in, "mesh");
-  if (!arr) return;
-  std::set<std::string> names;
-  for (std::size_t k = 0; k < arr->size(); ++k) {
-    TableReader r = in.reader((*arr)[k].as_table(), "mesh");
-    MeshSettings m;
-    r.read(mesh_keys(), m);
-    r.read(motion_keys(), m.motion);
-    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-    if (!r.has("name")) m.name = fmt::format("mesh{}", k);
-    check_name(r, m.name);
-    if (!names.insert(m.name).second) r.fail("name", r.get("name"), "two meshes have this name");
-    check_mesh(r, in.directory, m);
-    cs.meshes.push_back(m);
-  }
-}
-
-void read_free_particles(const CaseInput& in, CaseSettings& cs) {
-  if (const toml::array* arr = entries(in, "particle")) {
-    for (std::size_t k = 0; k < arr->size(); ++k) {
-      TableReader r = in.reader((*arr)[k].as_table(), "particle");
-      ParticleSettings p;
-      r.read(particle_keys(), p);
-      r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-      if (!r.has("radius")) r.fail("radius", nullptr, "every particle needs a radius in m");
-      if (!r.has("position")) r.fail("position", nullptr, "every particle needs a position [x, y, z] in m");
-      cs.particles.push_back(p);
-    }
-  }
-  if (const toml::array* arr = entries(in, "inflow"))
-    for (std::size_t k = 0; k < arr->size(); ++k) {
-      TableReader r = in.reader((*arr)[k].as_table(), "inflow");
-      InflowSettings f;
-      r.read(inflow_keys(), f);
-      r.finish();
-      if (!r.has("radius_min")) r.fail("radius_min", nullptr, "is required");
-      if (r.has("rate") == r.has("mass_rate"))
-        r.fail("rate", r.get("rate"),
-               r.has("rate") ? "and mass_rate both given: give one (particles per second, or kg/s)"
-                             : "is required (particles per second), or mass_rate (kg/s)");
-      if (!r.has("radius_max")) f.radius_max = f.radius_min;
-      if (!(f.radius_max >= f.radius_min)) r.fail("radius_max", r.get("radius_max"), "must be >= radius_min (m)");
-      check_box(r, f.box_min, f.box_max);
-      // (a box of zero volume puts every new particle on a plane or a line, where they overlap
-      // as soon as there are a few: the draws miss, silently)
-      for (int c = 0; c < 3; ++c)
-        if (!(f.box_max[c] > f.box_min[c]))
-          r.fail("box_max", r.get("box_max"),
-                 fmt::format("must lie above box_min in x, y and z: the box has no volume ({} m across along {})",
-                             f.box_max[c] - f.box_min[c], "xyz"[c]));
-      cs.inflows.push_back(f);
-    }
-  if (const toml::array* arr = entries(in, "outflow"))
-    for (std::size_t k = 0; k < arr->size(); ++k) {
-      TableReader r = in.reader((*arr)[k].as_table(), "outflow");
-      OutflowSettings o;
-      r.read(outflow_keys(), o);
-      r.finish();
-      if (r.has("plane_point") || r.has("plane_normal")) {
-        for (const char* key : {"box_min", "box_max"})
-          if (r.has(key)) r.fail(key, r.get(key), "goes with a box, not with a plane (plane_point, plane_normal)");
-        for (const char* key : {"plane_point", "plane_normal"})
-          if (!r.has(key)) r.fail(key, nullptr, "is required for a plane");
-        check_direction(r, "plane_normal", o.plane_normal);
-      } else {
-        check_box(r, o.box_min, o.box_max);
-      }
-      cs.outflows.push_back(o);
-    }
-  if (const toml::table* t = in.table("particles")) {
-    TableReader r = in.reader(t, "particles");
-    auto& f = cs.particles_file;
-    r.read(particles_file_keys(), f);
-    r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
-    f.file = resolve(f.file, in.directory);
-    if (!r.has("file")) r.fail("file", nullptr, "[particles] needs file = \"...\" (columns id x y z vx vy vz)");
-    if (!r.has("radius")) r.fail("radius", nullptr, "[particles] needs radius in m");
-    if (const std::string why = file_problem(f.file, "a particles file"); !why.empty())
-      r.fail("file", r.get("file"), why);
-  }
 }
 
 }  // namespace swarf

@@ -1,13 +1,13 @@
 // case_config.h: the case file (TOML) as settings structs with defaults and units.
 //
-// Every key of a case file maps to one field below, whose default member initialiser is the
-// key's default. The key table (case_keys.cpp) names each key once, with its field, unit,
-// range and doc line: the reader checks against it and the key tables of
-// docs/case-reference.md are generated from it, so a new key is a field here and an entry
-// there; the rods', contacts', heat's and outputs' structs, tables, rules and builds are in their modules
-// (setup/modules/). Reading rejects unknown keys, wrong types and out-of-range values with the file,
-// the key and the value. Command-line overrides (--set key=value) are applied to the TOML
-// tree before reading, so they are checked exactly like keys in the file.
+// Every key of a case file maps to one field of a settings struct, whose default member initialiser
+// is the key's default. The key table names each key once, with its field, unit, range and doc line:
+// the reader checks against it and the key tables of docs/case-reference.md are generated from it, so
+// a new key is a field and an entry. The engine-facing tables are modules (setup/modules/: struct,
+// key table, rules, build, echo, included below); [cut] and [environment] are here (their
+// keys in cut_keys.cpp and case_keys.cpp), with CaseSettings, which holds one member per table. Reading rejects unknown
+// keys, wrong types and out-of-range values with the file, the key and the value. Command-line overrides (--set
+// key=value) are applied to the TOML tree before reading, so they are checked exactly like keys in the file.
 #pragma once
 
 #include <array>
@@ -18,25 +18,20 @@
 
 #include "setup/key.h"
 #include "setup/modules/contacts.h"
+#include "setup/modules/flows.h"
+#include "setup/modules/groups.h"
 #include "setup/modules/heat.h"
+#include "setup/modules/integrator.h"
+#include "setup/modules/material.h"
+#include "setup/modules/membrane.h"
+#include "setup/modules/meshes.h"
 #include "setup/modules/output.h"
+#include "setup/modules/particles.h"
 #include "setup/modules/rods.h"
+#include "setup/modules/uniaxial.h"
+#include "setup/modules/workpiece.h"
 
 namespace swarf {
-
-/// [workpiece]: the bonded FCC block (optional when [[particle]] or [particles] give particles).
-struct WorkpieceSettings {
-  bool enabled = false;                 ///< true when the table is present
-  std::string lattice_file;             ///< HDF5 lattice from 'swarf lattice'; empty = generate
-  std::array<int, 3> cells{0, 0, 0};    ///< conventional FCC cells per axis (generate by cells)
-  std::array<double, 3> size{0, 0, 0};  ///< box size, m (generate by size, if cells not given)
-  double radius = 0.5e-3;               ///< particle radius R, m (nearest-neighbour distance 2R)
-  double bond_tolerance = 1e-6;         ///< relative tolerance on the rod length 2R, 1
-  bool periodic_width = false;          ///< periodic along y (plane strain): period = cells[1] x a
-  double lattice_rotation = 0.0;        ///< turn of the lattice about y, deg (fcc_lattice.h)
-  int disorder_seed = 0;                ///< seed of the position jitter (lattice_disorder.h); 0 = the ordered lattice
-  double position_jitter = 0.02;        ///< largest jitter displacement, in radii R, 1 (used when disorder_seed > 0)
-};
 
 /// [cut]: an orthogonal cut in cutting terms. swarf derives from it the lattice, the clamps,
 /// the tool, its path, the end time and the steady window (cut_case.h), and inserts them as
@@ -62,206 +57,6 @@ struct CutSettings {
   double tool_stiffness = 0.0;       ///< per metre of width, N/m per m; 0 = the tool follows its path rigidly
   double tool_mass = 0.0;            ///< modal mass per metre of width, kg/m
   double tool_damping_ratio = 0.05;  ///< of the mount's critical damping, 1
-};
-
-/// [membrane]: a sheet of bonded spheres on a triangular lattice (membrane_lattice.h), in place
-/// of [workpiece], with its own material ([rod] and [material] do not apply to it).
-struct MembraneSettings {
-  bool enabled = false;                   ///< true when the table is present
-  double length = 0.0;                    ///< extent along x, m
-  double width = 0.0;                     ///< extent along y, m
-  std::array<double, 3> origin{0, 0, 0};  ///< corner of the sheet (it lies in the plane z = origin z), m
-  double radius = 0.5e-3;                 ///< particle radius R, m (site spacing 2R)
-  double thickness = 0.0;                 ///< t, m
-  double youngs_modulus = 0.0;            ///< E of the sheet's material, Pa (in-plane modulus E t)
-  double poisson_ratio = 1.0 / 3.0;       ///< only checked: the triangular lattice has 1/3
-  double density = 1000.0;                ///< rho, kg/m^3 (areal density rho t)
-  double areal_density = 0.0;             ///< kg/m^2, replaces density x thickness when > 0
-  double pre_tension = 0.0;               ///< isotropic in-plane tension of the sheet as generated, N/m
-  double damping_ratio = 0.0;             ///< rod dashpot as a fraction of critical for two particles, 1
-  bool clamp_edges = false;               ///< hold every edge site (fewer than 6 rods) fixed
-};
-
-/// [material]: what the particles are made of.
-struct MaterialSettings {
-  double density = 7800.0;          ///< kg/m^3
-  std::string mass_basis = "cell";  ///< "cell": m = rho a^3/4 (bulk density right); "sphere": m = rho 4/3 pi R^3
-  // Macroscopic properties along a cube axis [100]; when youngs_modulus is given, swarf
-  // derives the rod parameters from them through the FCC lattice relations (derived.h).
-  bool macroscopic = false;        ///< true when youngs_modulus is given here
-  double youngs_modulus = 0.0;     ///< E along [100], Pa
-  double yield_stress = kInf;      ///< uniaxial yield stress along [100], Pa; inf = elastic
-  double hardening_modulus = 0.0;  ///< tangent after yield, Pa
-  double tensile_strength = kInf;  ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
-  double poisson_ratio = -1.0;     ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
-  // A metal's flow curve and failure (calibration.h turns them into the rod law).
-  std::string preset;                       ///< a named material (material_presets.h); "" = none
-  std::vector<double> flow_plastic_strain;  ///< equivalent plastic strain of the flow curve's points, 1
-  std::vector<double> flow_stress;          ///< true flow stress at those points, Pa
-  double johnson_cook_a = 0.0;              ///< Johnson-Cook A, Pa (0 = not given)
-  double johnson_cook_b = 0.0;              ///< Johnson-Cook B, Pa
-  double johnson_cook_n = 0.0;              ///< Johnson-Cook n, 1
-  double failure_strain = kInf;             ///< equivalent strain at failure in simple shear, 1; inf = never
-  std::string calibration = "shear";        ///< the mode the flow curve is matched in: "shear" or "tension"
-  bool flow_curve = false;                  ///< true when a table, Johnson-Cook or a preset gives the flow curve
-  // Johnson-Cook's rate and temperature factors (rod.law = "johnson_cook"); the preset's when it has them.
-  double johnson_cook_c = 0.0;                       ///< C, 1
-  double johnson_cook_m = 1.0;                       ///< m, 1
-  double reference_rate = 1.0;                       ///< equivalent plastic strain rate of the flow curve, 1/s
-  double melt_temperature = kInf;                    ///< T_melt, K; inf = no softening
-  double reference_temperature = 293.15;             ///< T_ref (the flow curve's), K
-  std::vector<std::string> johnson_cook_keys_given;  ///< which of the five the table gave (a rule in read_rod)
-};
-
-/// [integrator]
-struct IntegratorSettings {
-  std::string scheme = "auto";          ///< "verlet", "newmark", or "auto": newmark if rods can break, else verlet
-  double dt = 0.0;                      ///< s; 0 = dt_safety * stable step (newmark: the first step)
-  double dt_safety = 0.5;               ///< fraction of the stable step used when dt = 0, 1
-  bool allow_unstable_dt = false;       ///< run even if dt exceeds the stable step estimate
-  double end_time = 0.0;                ///< simulated time, s (the [uniaxial] path sets it when 0)
-  double max_step_displacement = 0.25;  ///< stop if a particle moves more than this many radii in one step, 1
-  double max_steps = 1e8;  ///< a run estimated to need more steps is refused before its first (--allow-long), 1
-  // Newmark (implicit) step, solved by fixed-point iteration on the new accelerations.
-  double beta = 0.25;          ///< Newmark beta, 1
-  double gamma = 0.5;          ///< Newmark gamma, 1
-  double tolerance = 1e-6;     ///< converged when the force change or the position correction of a sweep is below this,
-                               ///< relative (Simulation::gather), 1
-  int max_iterations = 25;     ///< sweeps before the step is rejected
-  double dt_min = 0.0;         ///< s; 0 = 1e-3 * stable step. Below it the run stops
-  double dt_max = 0.0;         ///< s; 0 = 0.8 x the stable step (the fixed-point limit for beta = 1/4 is 1x)
-  int iterations_grow = 4;     ///< a step that needed at most this many sweeps grows the next one
-  int iterations_shrink = 10;  ///< a step that needed at least this many sweeps shrinks the next one
-  double grow_factor = 1.2;    ///< 1
-  double shrink_factor = 0.7;  ///< 1
-  double reject_factor = 0.5;  ///< a rejected step is retried with dt times this, 1
-  double relaxation = 1.0;     ///< w in (0, 1]: each sweep places with (1 - w) a_guess + w a_swept, 1
-  std::string solver = "fixed_point";  ///< "fixed_point" (sweeps) or "newton" (Newton-Krylov, rods only)
-  double krylov_tolerance = 1e-2;      ///< newton: CG stops at |r| <= this x |R|, 1
-  int krylov_max_iterations = 500;     ///< newton: CG iterations per Newton iteration
-};
-
-/// The prescribed translation of a group or a mesh (keys shared by [[group]] and [[mesh]]).
-struct MotionSettings {
-  std::string kind = "fixed";               ///< key 'motion': "fixed", "velocity", "ramp", "table" or "velocity_table"
-  std::array<double, 3> velocity{0, 0, 0};  ///< m/s ("velocity"; the final velocity of "ramp")
-  double ramp_time = 0.0;                   ///< s: "ramp" reaches 'velocity' linearly in this time
-  std::vector<double> table_time;           ///< s, ascending, first 0 ("table", "velocity_table")
-  std::vector<std::array<double, 3>> table_displacement;  ///< m, piecewise linear in time ("table")
-  std::vector<std::array<double, 3>> table_velocity;      ///< m/s, piecewise linear in time ("velocity_table")
-  std::string velocity_file;  ///< CSV 'time,vx,vy,vz' (s, m/s) for "velocity_table" instead of the arrays
-};
-
-/// [[group]]: particles selected by a side of the box or a region, fixed or moved.
-struct GroupSettings {
-  std::string name;
-  std::string side;  ///< "x-", "x+", "y-", "y+", "z-", "z+" (lattice layers at that face), or empty
-  int layers = 1;    ///< number of lattice layers taken at 'side'
-  std::array<double, 3> box_min{-kInf, -kInf, -kInf};  ///< region selection, m (used when side is empty)
-  std::array<double, 3> box_max{kInf, kInf, kInf};     ///< m
-  std::string dofs = "xyz";                            ///< prescribed components ("x", "xz", "xyz", ...)
-  MotionSettings motion;
-};
-
-/// [uniaxial]: a bar between two grips driven along a strain path (hysteresis test).
-struct UniaxialSettings {
-  bool enabled = false;    ///< true when the table is present
-  std::string axis = "x";  ///< bar axis: "x", "y" or "z"
-  int grip_layers = 1;     ///< lattice layers held by each grip
-  std::string
-      grip_dofs = "axis";  ///< "axis": grips hold only the axial component (free lateral contraction); "xyz": clamped
-  std::vector<double> strain_path{0.0};  ///< turning points of the nominal strain, 1, first 0
-  double strain_rate = 10.0;             ///< |d strain/dt| of the grips, 1/s
-};
-
-/// [[mesh]]: a rigid triangle mesh (wall, tool) from a file or a built-in rectangle.
-struct MeshSettings {
-  std::string name;
-  std::string file;                       ///< .stl or .obj; empty = rectangle
-  double scale = 1.0;                     ///< coordinate factor applied to the file (e.g. 1e-3 for mm), 1
-  std::array<double, 3> origin{0, 0, 0};  ///< rectangle corner, m
-  std::array<double, 3> edge1{0, 0, 0};   ///< rectangle edge, m
-  std::array<double, 3> edge2{0, 0, 0};   ///< rectangle edge, m (normal = edge1 x edge2)
-  std::array<int, 2> divisions{1, 1};     ///< rectangle cells along edge1, edge2 (2 triangles each)
-  // Generated cutting tool (tool_geometry.h), placed with its sharp tip at 'origin':
-  bool tool = false;             ///< true when rake_angle is given
-  double rake_angle = 0.0;       ///< deg
-  double clearance_angle = 7.0;  ///< deg
-  double edge_radius = 0.0;      ///< m
-  double width = 0.0;            ///< m
-  double face_length = 0.0;      ///< m
-  // A cutting tool from 'file' (tool_tip given): measured (tool_measure.h) when the case is
-  // read, the fields above set from the measurement, 'origin' = tool_tip, and the mesh moved
-  // so that its measured tip 'file_tip' lands there.
-  bool tool_from_file = false;              ///< true when tool_tip is given with file
-  std::array<double, 3> tool_tip{0, 0, 0};  ///< where the file's sharp tip is placed, m
-  std::array<double, 3> file_tip{0, 0, 0};  ///< the sharp tip measured in the file (times scale), m
-  MotionSettings motion;                    ///< as for groups
-  double youngs_modulus = kInf;             ///< Pa; inf = rigid
-  double poisson_ratio = 0.3;               ///< 1
-  double parting_lead = kInf;               ///< parting line at the lowest point: reach ahead of it, m; inf = none
-  // Generated closed shapes, centred on 'origin' (for rigid bodies):
-  std::array<double, 3> box_size{0, 0, 0};       ///< m; all > 0 makes a box
-  double cylinder_radius = 0.0;                  ///< m; > 0 makes a cylinder
-  double cylinder_length = 0.0;                  ///< m
-  std::array<double, 3> cylinder_axis{0, 1, 0};  ///< direction of the cylinder's axis
-  int cylinder_segments = 32;                    ///< flat sides of the faceted round face
-  // dynamics = "rigid_body": the mesh moves as a rigid body (swarf/state/rigid_body.h).
-  std::string dynamics = "prescribed";              ///< "prescribed" or "rigid_body"
-  double density = 0.0;                             ///< kg/m^3 (0: from 'mass')
-  double mass = 0.0;                                ///< kg (0: from 'density')
-  std::array<double, 3> centre_of_mass{0, 0, 0};    ///< m, mesh coordinates (with 'inertia')
-  std::vector<double> inertia;                      ///< Ixx Iyy Izz Ixy Iyz Ixz about it, kg m^2 (empty: from the mesh)
-  std::array<double, 3> initial_velocity{0, 0, 0};  ///< m/s, of the centre of mass
-  std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s, world frame
-  std::string rotation = "free";                    ///< "free", "hinge" or "prescribed"
-  std::array<double, 3> hinge_axis{0, 1, 0};        ///< hinge direction, world frame
-  std::array<double, 3> hinge_point{0, 0, 0};       ///< a point of the hinge's axis, m (if given)
-  bool hinge_at_point = false;                      ///< hinge_point given: the axis is fixed there
-  std::string fixed;                                ///< translation components held: a subset of "xyz"
-  std::array<double, 3> force{0, 0, 0};             ///< constant external force, N
-  std::array<double, 3> torque{0, 0, 0};            ///< constant external torque, N m
-  std::array<double, 3> spring_stiffness{0, 0, 0};  ///< mount's stiffness along x, y, z, N/m
-  std::array<double, 3> holder_velocity{0, 0, 0};   ///< the mount's anchor moves at it, m/s
-  double damping = 0.0;                             ///< force -damping v, N s/m
-  double torque_damping = 0.0;                      ///< torque -torque_damping omega, N m s/rad
-};
-
-/// [[particle]]: a single free particle (contact tests, packings written by hand).
-struct ParticleSettings {
-  std::array<double, 3> position{0, 0, 0};          ///< m
-  std::array<double, 3> velocity{0, 0, 0};          ///< m/s
-  std::array<double, 3> angular_velocity{0, 0, 0};  ///< rad/s (world frame)
-  double radius = 0.0;                              ///< m
-};
-
-/// [[inflow]]: a box that creates free spheres during the run (swarf/state/particle_flows.h);
-/// they are made of the [material] density, as [[particle]]s are.
-struct InflowSettings {
-  std::array<double, 3> box_min{0, 0, 0};   ///< m
-  std::array<double, 3> box_max{0, 0, 0};   ///< m
-  double rate = 0.0;                        ///< particles per second
-  double mass_rate = 0.0;                   ///< kg/s (instead of rate)
-  double radius_min = 0.0;                  ///< m
-  double radius_max = 0.0;                  ///< m; 0 = radius_min
-  std::array<double, 3> velocity{0, 0, 0};  ///< m/s
-  int seed = 1;                             ///< 1
-  double overlap = 0.0;                     ///< largest relative overlap with any particle at creation, 1
-  int attempts = 20;                        ///< placement draws per particle, 1
-};
-
-/// [[outflow]]: a box that removes the particles whose centres enter it.
-struct OutflowSettings {
-  std::array<double, 3> box_min{0, 0, 0};       ///< m
-  std::array<double, 3> box_max{0, 0, 0};       ///< m
-  std::array<double, 3> plane_point{0, 0, 0};   ///< m (a plane instead of a box)
-  std::array<double, 3> plane_normal{0, 0, 0};  ///< 1, towards the side removed
-};
-
-/// [particles]: free particles from a text file (columns id x y z vx vy vz, SI units).
-struct ParticlesFileSettings {
-  std::string file;
-  double radius = 0.0;  ///< m
 };
 
 struct CaseSettings {

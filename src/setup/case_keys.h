@@ -1,7 +1,7 @@
 // case_keys.h: the case file's schema, one entry per key (name, member, unit, range, doc line).
 //
 // Each key of a case file is written once, in case_keys.cpp or in its table's module
-// (setup/modules/: [rod], [contact], [heat]; a rod law's own keys in setup/rod_laws/), as a
+// (setup/modules/: every engine-facing table; a rod law's own keys in setup/rod_laws/), as a
 // Key (key.h): the entry names the member of the settings struct it fills, so its type and its
 // default come from the struct. The reader (case_reader.h) takes type and range checks from the entry, and
 // rejects keys that no entry names; the key tables of docs/case-reference.md are generated
@@ -22,22 +22,10 @@
 
 namespace swarf {
 
-// The keys of each table, in reading order. [[group]] and [[mesh]] read the motion keys too.
-// (The rods', contacts' and heat's are declared in their modules, setup/modules/.)
+// The keys of the tables that are not modules, in reading order. (The modules' are declared in
+// their headers, setup/modules/; [[group]] and [[mesh]] read the motion keys of modules/motion.h too.)
 const std::vector<Key<CutSettings>>& cut_keys();
-const std::vector<Key<WorkpieceSettings>>& workpiece_keys();
-const std::vector<Key<MembraneSettings>>& membrane_keys();
-const std::vector<Key<MaterialSettings>>& material_keys();
-const std::vector<Key<IntegratorSettings>>& integrator_keys();
-const std::vector<Key<GroupSettings>>& group_keys();
-const std::vector<Key<MotionSettings>>& motion_keys();
-const std::vector<Key<UniaxialSettings>>& uniaxial_keys();
 const std::vector<Key<CaseSettings>>& environment_keys();
-const std::vector<Key<MeshSettings>>& mesh_keys();
-const std::vector<Key<ParticleSettings>>& particle_keys();
-const std::vector<Key<InflowSettings>>& inflow_keys();
-const std::vector<Key<OutflowSettings>>& outflow_keys();
-const std::vector<Key<ParticlesFileSettings>>& particles_file_keys();
 
 /// One key as text, for the docs and for the units in summary.json.
 struct KeyRow {

@@ -1,8 +1,9 @@
-// case_tables.h: the readers of a case file's tables, internal to setup/.
+// case_tables.h: what the readers of a case file's tables share, internal to setup/: the parsed
+// tree (CaseInput) and the helpers of several tables.
 //
-// Each reader reads its table's keys through the key table (type and range checks, unknown
-// keys), then checks by hand the rules that involve several keys or files, in the order
-// parse_case calls them (case_config.cpp).
+// Each reader (a module's read_<name>, setup/modules/) reads its table's keys through the key
+// table (type and range checks, unknown keys), then checks by hand the rules that involve several
+// keys or files, in the order parse_case calls them (case_config.cpp).
 #pragma once
 
 #include <toml++/toml.h>
@@ -43,9 +44,15 @@ ToolMeasure measure_tool_file(const TableReader& r, const char* key, const std::
 void check_flow_curve(TableReader& r, const char* strain_key, const char* stress_key, const std::vector<double>& eps,
                       const std::vector<double>& sig, double E, const std::string& E_key);
 
-// [[group]], [[mesh]], [[particle]] and [particles] (case_bodies.cpp).
-void read_groups(const CaseInput& in, CaseSettings& cs);
-void read_meshes(const CaseInput& in, CaseSettings& cs);
-void read_free_particles(const CaseInput& in, CaseSettings& cs);
+// Helpers the bodies' tables share (case_bodies.cpp).
+
+/// The entries of an array of tables ([[group]]), or none when the key is absent.
+const toml::array* entries(const CaseInput& in, const char* name);
+
+/// A [[group]]'s or [[mesh]]'s name: letters, digits, '_' and '-' (it names CSV columns).
+void check_name(const TableReader& r, const std::string& name);
+
+/// A direction (an axis, a normal): at least 1e-6 long (only its direction counts).
+void check_direction(const TableReader& r, const char* key, const std::array<double, 3>& v);
 
 }  // namespace swarf

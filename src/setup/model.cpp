@@ -1,172 +1,23 @@
-// model.cpp: building particles, rods and groups from the settings (see model.h).
+// model.cpp: build_model, the list of the modules' builds in order (setup/modules/), and what lies
+// between them and belongs to no one table: the particles' masses (lattice and free ones, from the
+// derived mass basis and [material]'s density), the check for coincident particles (the lattice and
+// the free particles together), the disorder (its amplitude is derived), the membrane's clamped edge
+// (a group added after the rods) and the run's end against the output intervals ([integrator] and
+// [output]). See model.h.
 #include "setup/model.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
-#include "io/mesh_file.h"
-#include "io/particle_file.h"
 #include "lattice_gen/lattice_disorder.h"
-#include "lattice_gen/lattice_file.h"
 #include "lattice_gen/membrane_lattice.h"
-#include "setup/case_keys.h"
 #include "swarf/core/errors.h"
-#include "swarf/geometry/mass_properties.h"
-#include "swarf/geometry/shapes.h"
-#include "swarf/laws/hertz.h"
 #include "swarf/neighbors/neighbor_pairs.h"
-#include "tool_paths/tool_geometry.h"
 
 namespace swarf {
-
-std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const std::string& side, int layers,
-                                      double layer_spacing) {
-  const int c = side[0] - 'x';
-  const bool upper = side[1] == '+';
-  double ext = position[0][c];
-  for (const auto& p : position) ext = upper ? std::max(ext, p[c]) : std::min(ext, p[c]);
-  const double reach = (layers - 0.5) * layer_spacing;
-  std::vector<std::int32_t> out;
-  for (std::size_t i = 0; i < position.size(); ++i)
-    if (std::abs(position[i][c] - ext) < reach) out.push_back(static_cast<std::int32_t>(i));
-  return out;
-}
-
-static Motion motion_from(const MotionSettings& ms) {
-  Motion m;
-  auto vec = [](const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); };
-  m.velocity = vec(ms.velocity);
-  m.time = ms.table_time;
-  if (ms.kind == "velocity") {
-    m.kind = Motion::Kind::Velocity;
-  } else if (ms.kind == "ramp") {
-    m.kind = Motion::Kind::Ramp;
-    m.ramp_time = ms.ramp_time;
-  } else if (ms.kind == "table") {
-    m.kind = Motion::Kind::Table;
-    for (const auto& u : ms.table_displacement) m.displacement.push_back(vec(u));
-  } else if (ms.kind == "velocity_table") {
-    m.kind = Motion::Kind::VelocityTable;
-    // Displacement at each table time: the exact integral of the piecewise-linear velocity.
-    m.displacement.push_back(Vec3::Zero());
-    for (const auto& v : ms.table_velocity) m.table_velocity.push_back(vec(v));
-    for (std::size_t k = 1; k < m.time.size(); ++k)
-      m.displacement.push_back(m.displacement.back() +
-                               0.5 * (m.table_velocity[k - 1] + m.table_velocity[k]) * (m.time[k] - m.time[k - 1]));
-  }
-  return m;
-}
-
-static TriangleMesh rectangle_mesh(const MeshSettings& ms) {
-  TriangleMesh m;
-  m.name = ms.name;
-  const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]), e1(ms.edge1[0], ms.edge1[1], ms.edge1[2]),
-      e2(ms.edge2[0], ms.edge2[1], ms.edge2[2]);
-  const int n1 = ms.divisions[0], n2 = ms.divisions[1];
-  for (int b = 0; b <= n2; ++b)
-    for (int a = 0; a <= n1; ++a) m.vertices.push_back(o + (double(a) / n1) * e1 + (double(b) / n2) * e2);
-  auto id = [&](int a, int b) { return b * (n1 + 1) + a; };
-  for (int b = 0; b < n2; ++b)
-    for (int a = 0; a < n1; ++a) {
-      m.triangles.push_back({id(a, b), id(a + 1, b), id(a + 1, b + 1)});
-      m.triangles.push_back({id(a, b), id(a + 1, b + 1), id(a, b + 1)});
-    }
-  return m;
-}
-
-static std::uint8_t dof_mask(const std::string& dofs) {
-  std::uint8_t m = 0;
-  for (char ch : dofs) m |= static_cast<std::uint8_t>(1u << (ch - 'x'));
-  return m;
-}
-
 namespace {
-
-// Bonds the two y faces across the periodic boundary: the layer at y = 0 and the one at
-// y = period - a/2 are nearest neighbours through the periodic image.
-void bond_across_periodic_width(const CaseSettings& cs, const FccSpec& spec, Lattice& lat, Periodic& periodic) {
-  const double a = lat.cell_edge, L = cs.workpiece.cells[1] * a, d0 = 2.0 * spec.radius;
-  periodic = Periodic::along_y(L);
-  std::vector<std::int32_t> low, high;
-  for (std::size_t i = 0; i < lat.position.size(); ++i) {
-    if (lat.position[i][1] < 0.25 * a) low.push_back(static_cast<std::int32_t>(i));
-    if (lat.position[i][1] > L - 0.75 * a) high.push_back(static_cast<std::int32_t>(i));
-  }
-  const double tol = spec.bond_tolerance;
-  for (auto i : low)
-    for (auto j : high) {
-      Vec3 dx = lat.position[j] - lat.position[i];
-      periodic.wrap(dx);
-      const double len = dx.norm();
-      if (len < d0 * (1.0 - tol) || len > d0 * (1.0 + tol)) continue;
-      lat.rods.push_back({std::min(i, j), std::max(i, j)});
-      lat.rest_length.push_back(len);
-    }
-  // Keep the rods sorted as the generator gives them (the gather order follows the rods).
-  std::vector<std::size_t> order(lat.rods.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lat.rods[x] < lat.rods[y]; });
-  std::vector<std::array<std::int32_t, 2>> sorted(order.size());
-  std::vector<double> rest(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    sorted[k] = lat.rods[order[k]];
-    rest[k] = lat.rest_length[order[k]];
-  }
-  lat.rods.swap(sorted);
-  lat.rest_length.swap(rest);
-}
-
-// The workpiece's lattice: from a lattice file, generated, or none (free particles only).
-Lattice workpiece_lattice(const CaseSettings& cs, Periodic& periodic) {
-  Lattice lat;
-  if (cs.membrane.enabled) {
-    const MembraneSettings& ms = cs.membrane;
-    MembraneSpec spec;
-    spec.radius = ms.radius;
-    spec.length = ms.length;
-    spec.width = ms.width;
-    spec.origin = ms.origin;
-    spec.pre_strain = membrane_relations_of(cs).pre_strain;
-    try {
-      return generate_membrane(spec);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: {}", cs.source, e.what()));
-    }
-  }
-  if (!cs.workpiece.enabled) return lat;
-  if (!cs.workpiece.lattice_file.empty()) return read_lattice(cs.workpiece.lattice_file);
-  FccSpec spec;
-  spec.radius = cs.workpiece.radius;
-  spec.cells = cs.workpiece.cells;
-  spec.size = cs.workpiece.size;
-  spec.bond_tolerance = cs.workpiece.bond_tolerance;
-  spec.rotation_y = cs.workpiece.lattice_rotation * std::numbers::pi / 180.0;
-  lat = generate_fcc(spec);
-  if (cs.workpiece.periodic_width) bond_across_periodic_width(cs, spec, lat, periodic);
-  return lat;
-}
-
-// The free particles ([[particle]] and [particles] file) appended to the lattice's
-// positions and radii (no rods); their velocities and spins returned beside.
-void append_free_particles(const CaseSettings& cs, Lattice& lat, std::vector<Vec3>& free_velocity,
-                           std::vector<Vec3>& free_spin) {
-  for (const auto& ps : cs.particles) {
-    lat.position.emplace_back(ps.position[0], ps.position[1], ps.position[2]);
-    lat.radius.push_back(ps.radius);
-    free_velocity.emplace_back(ps.velocity[0], ps.velocity[1], ps.velocity[2]);
-    free_spin.emplace_back(ps.angular_velocity[0], ps.angular_velocity[1], ps.angular_velocity[2]);
-  }
-  if (!cs.particles_file.file.empty())
-    for (const FreeParticleRow& row : read_particle_file(cs.particles_file.file)) {
-      lat.position.push_back(row.position);
-      lat.radius.push_back(cs.particles_file.radius);
-      free_velocity.push_back(row.velocity);
-      free_spin.emplace_back(Vec3::Zero());
-    }
-}
 
 // Masses and inertias (lattice particles from the derived mass basis, free ones as solid
 // spheres), positions, the free particles' velocities and spins.
@@ -199,234 +50,12 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
   }
 }
 
-void add_group(Model& model, const std::string& source, const std::string& name, std::vector<std::int32_t> members,
-               std::uint8_t dofs, Motion motion) {
-  auto& p = model.particles;
-  if (members.empty()) throw InputError(fmt::format("{}: group '{}' selects no particle", source, name));
-  for (auto i : members) {
-    if (p.group[i] >= 0)
-      throw InputError(fmt::format("{}: particle {} belongs to groups '{}' and '{}'; groups must not overlap", source,
-                                   i, model.groups[p.group[i]].name, name));
-    p.group[i] = static_cast<std::int32_t>(model.groups.size());
-    p.prescribed[i] = dofs;
-  }
-  model.groups.push_back(Group{name, dofs, std::move(motion), std::move(members)});
-}
-
-// The [[group]] tables: by a side of the box or by a region, on the ordered sites.
-void build_groups(const CaseSettings& cs, const std::vector<Vec3>& sites, double h, Model& model) {
-  const std::size_t n = sites.size();
-  for (const auto& gs : cs.groups) {
-    std::vector<std::int32_t> members;
-    if (!gs.side.empty()) {
-      members = select_side(sites, gs.side, gs.layers, h);
-    } else {
-      for (std::size_t i = 0; i < n; ++i) {
-        bool in = true;
-        for (int c = 0; c < 3; ++c) in = in && sites[i][c] >= gs.box_min[c] && sites[i][c] <= gs.box_max[c];
-        if (in) members.push_back(static_cast<std::int32_t>(i));
-      }
-    }
-    add_group(model, cs.source, gs.name, std::move(members), dof_mask(gs.dofs), motion_from(gs.motion));
-  }
-}
-
-// [uniaxial]: the grips as two groups moving along the strain path, the bar's gauge length
-// and cross-section, and the rods through its mid-plane (all on the ordered sites).
-void build_uniaxial(const CaseSettings& cs, const std::vector<Vec3>& sites, double h, Model& model) {
-  const auto& r = model.rods;
-  const auto& u = cs.uniaxial;
-  auto& info = model.uniaxial;
-  info.enabled = true;
-  info.axis = u.axis[0] - 'x';
-  const int ax = info.axis;
-  Vec3 lo = sites[0], hi = sites[0];
-  for (const auto& x : sites) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  info.gauge_length = (hi[ax] - lo[ax]) - 2.0 * (u.grip_layers - 1) * h;
-  if (!(info.gauge_length > 0.5 * h))
-    throw InputError(fmt::format("{}: key 'uniaxial.grip_layers' = {}: the grips leave no free bar between them",
-                                 cs.source, u.grip_layers));
-  info.cross_section = 1.0;
-  for (int c = 0; c < 3; ++c)
-    if (c != ax) info.cross_section *= (hi[c] - lo[c]) + h;
-  // Grip motion: each grip moves half the separation change, along the strain path.
-  Motion mmin, mmax;
-  mmin.kind = mmax.kind = Motion::Kind::Table;
-  double t = 0.0;
-  for (std::size_t k = 0; k < u.strain_path.size(); ++k) {
-    if (k > 0) t += std::abs(u.strain_path[k] - u.strain_path[k - 1]) / u.strain_rate;
-    const double half = 0.5 * u.strain_path[k] * info.gauge_length;
-    Vec3 e = Vec3::Zero();
-    e[ax] = half;
-    mmin.time.push_back(t);
-    mmax.time.push_back(t);
-    mmin.displacement.push_back(-e);
-    mmax.displacement.push_back(e);
-  }
-  const std::uint8_t dofs = u.grip_dofs == "xyz" ? 7 : static_cast<std::uint8_t>(1u << ax);
-  const std::string smin = std::string(1, u.axis[0]) + "-", smax = std::string(1, u.axis[0]) + "+";
-  info.grip_min = static_cast<int>(model.groups.size());
-  add_group(model, cs.source, "grip_min", select_side(sites, smin, u.grip_layers, h), dofs, mmin);
-  info.grip_max = static_cast<int>(model.groups.size());
-  add_group(model, cs.source, "grip_max", select_side(sites, smax, u.grip_layers, h), dofs, mmax);
-  if (!(model.settings.integrator.end_time > 0.0)) model.settings.integrator.end_time = t;
-  const double mid = 0.5 * (lo[ax] + hi[ax]) + 0.25 * h;  // between two layers
-  for (std::size_t b = 0; b < r.size(); ++b) {
-    const double xi = sites[r.ends[b][0]][ax], xj = sites[r.ends[b][1]][ax];
-    if ((xi < mid) != (xj < mid)) info.midplane_rods.emplace_back(static_cast<std::int32_t>(b), xi < mid ? 1 : -1);
-  }
-}
-
-static Vec3 to_vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
-
-// The mass properties of a [[mesh]] with dynamics = "rigid_body" from its closed mesh, filled
-// uniformly at 'density' or so that it has 'mass'.
-static RigidBody rigid_body_from_mesh(const CaseSettings& cs, const MeshSettings& ms, std::size_t index,
-                                      const TriangleMesh& mesh) {
-  const auto where = [&] { return fmt::format("{}: [[mesh]] '{}'", cs.source, ms.name); };
-  double density = ms.density;
-  if (!(density > 0.0)) {  // from 'mass'
-    const double volume = mass_properties(mesh, 1.0).volume;
-    if (!(volume > 0.0))
-      throw InputError(
-          fmt::format("{}: mass = {} kg: the mesh encloses no positive volume ({:.4g} m^3); it must be "
-                      "closed with its triangles counterclockwise seen from outside",
-                      where(), ms.mass, volume));
-    density = ms.mass / volume;
-  }
-  try {
-    return rigid_body_of(index, mesh, density);
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("{}: {}", where(), e.what()));
-  }
-}
-
-// A [[mesh]] with dynamics = "rigid_body": mass properties given or from its closed mesh, then
-// the keys' initial state, constraints and loads.
-static RigidBody rigid_body(const CaseSettings& cs, const Derived& d, const MeshSettings& ms, std::size_t index,
-                            const TriangleMesh& mesh) {
-  const auto where = [&] { return fmt::format("{}: [[mesh]] '{}'", cs.source, ms.name); };
-  RigidBody rb;
-  if (!ms.inertia.empty()) {  // given: the mesh only carries the contacts
-    const auto& t = ms.inertia;
-    Eigen::Matrix3d I;
-    I << t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2];
-    try {
-      rb = rigid_body_given(index, ms.mass, to_vec(ms.centre_of_mass), I);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: key 'inertia': {}", where(), e.what()));
-    }
-  } else {
-    rb = rigid_body_from_mesh(cs, ms, index, mesh);
-  }
-  // Inertia and mass consistent (issue 37): each principal moment's radius of gyration
-  // sqrt(I / m) a physical length, 1 nm to 1 km as any length of a case. A moment of 1e-300
-  // kg m^2 with a mass of 1 kg was accepted, and its rotation's step would be 1e-150 s.
-  for (int c = 0; c < 3; ++c) {
-    const double gyration = std::sqrt(rb.inertia[c] / rb.mass);  // m
-    if (!(gyration >= kLength.lo && gyration <= kLength.hi))
-      throw InputError(fmt::format(
-          "{}: key '{}': principal moments ({:.6g}, {:.6g}, {:.6g}) kg m^2 with mass {:.6g} kg give a radius of "
-          "gyration sqrt(I/m) of {:.4g} m, outside {:g} m to {:g} m: the inertia and the mass do not belong to one "
-          "body",
-          where(), ms.inertia.empty() ? (ms.density > 0.0 ? "density" : "mass") : "inertia", rb.inertia[0],
-          rb.inertia[1], rb.inertia[2], rb.mass, gyration, kLength.lo, kLength.hi));
-  }
-  rb.state.velocity = to_vec(ms.initial_velocity);
-  rb.state.omega = to_vec(ms.angular_velocity);
-  rb.rotation = ms.rotation == "hinge"        ? BodyRotation::Hinge
-                : ms.rotation == "prescribed" ? BodyRotation::Prescribed
-                                              : BodyRotation::Free;
-  rb.axis = to_vec(ms.hinge_axis).normalized();
-  rb.pivoted = ms.hinge_at_point;
-  rb.pivot = to_vec(ms.hinge_point);
-  for (char c : ms.fixed) rb.fixed |= static_cast<std::uint8_t>(1u << (c - 'x'));
-  rb.load.force = to_vec(ms.force);
-  rb.load.torque = to_vec(ms.torque);
-  rb.load.force_damping = ms.damping;
-  rb.load.spring = to_vec(ms.spring_stiffness);
-  rb.load.anchor = rb.state.position;  // (the initial centre of mass)
-  rb.load.holder_velocity = to_vec(ms.holder_velocity);
-  rb.load.torque_damping = ms.torque_damping;
-  // The mount is integrated with the particles' step, which knows nothing of it: its period
-  // and its damper's time m/c must span enough steps to be stable and resolved (30 steps a
-  // period puts Verlet's period error below 0.2 %), or the case is refused, not run wrong.
-  const double h = d.implicit ? d.dt_max : d.dt;  // s: the largest step taken
-  for (int c = 0; c < 3; ++c) {
-    const double omega = std::sqrt(rb.load.spring[c] / rb.mass);  // rad/s
-    if (omega * h > 2.0 * M_PI / 30.0)
-      throw InputError(fmt::format(
-          "{}: key 'spring_stiffness' = {} N/m along {}: the mount's period 2 pi sqrt(m/k) = {:.4g} s (mass {:.4g} kg) "
-          "spans fewer than 30 steps of {:.4g} s: lower the stiffness or raise the mass",
-          where(), rb.load.spring[c], char('x' + c), 2.0 * M_PI / omega, rb.mass, h));
-  }
-  if (rb.load.force_damping * h / rb.mass > 0.2)
-    throw InputError(
-        fmt::format("{}: key 'damping' = {} N s/m: the damper's time m/c = {:.4g} s spans fewer than 5 steps of "
-                    "{:.4g} s: lower it or raise the mass",
-                    where(), rb.load.force_damping, rb.mass / rb.load.force_damping, h));
-  return rb;
-}
-
-// The [[mesh]] tables: from a file, a generated tool, a rectangle or a closed shape; with
-// their motions, or moved as rigid bodies.
-void build_meshes(const CaseSettings& cs, Model& model) {
-  for (const auto& ms : cs.meshes) {
-    MeshBody mb;
-    mb.name = ms.name;
-    if (!ms.file.empty()) {
-      mb.mesh = read_mesh(ms.file, ms.scale);
-      mb.mesh.name = ms.name;
-      if (ms.tool_from_file) {  // its measured sharp tip to tool_tip (as a generated tool's to its origin)
-        const Vec3 shift = to_vec(ms.tool_tip) - to_vec(ms.file_tip);
-        for (auto& v : mb.mesh.vertices) v += shift;
-      }
-    } else if (ms.tool) {
-      ToolSpec ts;
-      ts.rake_angle_deg = ms.rake_angle;
-      ts.clearance_angle_deg = ms.clearance_angle;
-      ts.edge_radius = ms.edge_radius;
-      ts.width = ms.width;
-      ts.face_length = ms.face_length;
-      try {
-        mb.mesh = make_tool(ts);
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("{}: [[mesh]] '{}': {}", cs.source, ms.name, e.what()));
-      }
-      mb.mesh.name = ms.name;
-      const Vec3 o(ms.origin[0], ms.origin[1], ms.origin[2]);
-      for (auto& v : mb.mesh.vertices) v += o;
-    } else if (ms.box_size[0] > 0.0) {
-      mb.mesh = box_mesh(to_vec(ms.origin), to_vec(ms.box_size));
-      mb.mesh.name = ms.name;
-    } else if (ms.cylinder_radius > 0.0) {
-      mb.mesh = cylinder_mesh(to_vec(ms.origin), to_vec(ms.cylinder_axis), ms.cylinder_radius, ms.cylinder_length,
-                              ms.cylinder_segments);
-      mb.mesh.name = ms.name;
-    } else {
-      mb.mesh = rectangle_mesh(ms);
-      mb.mesh.validate(cs.source + " [[mesh]] " + ms.name);
-    }
-    if (ms.dynamics == "rigid_body")
-      model.bodies.push_back(rigid_body(cs, model.derived, ms, model.meshes.size(), mb.mesh));
-    mb.youngs_modulus = ms.youngs_modulus;
-    mb.poisson_ratio = ms.poisson_ratio;
-    mb.parting.lead = ms.parting_lead;
-    mb.parting.behind = std::isfinite(ms.parting_lead) ? ms.parting_lead : 0.0;
-    model.meshes.push_back(std::move(mb));
-    model.mesh_motion.push_back(motion_from(ms.motion));
-  }
-}
-
 }  // namespace
 
 Model build_model(const CaseSettings& cs) {
   Model model;
   model.settings = cs;
-  Lattice lat = workpiece_lattice(cs, model.periodic);
+  Lattice lat = cs.membrane.enabled ? membrane_lattice(cs) : workpiece_lattice(cs, model.periodic);
   model.lattice_particles = lat.position.size();
   std::vector<Vec3> free_velocity, free_spin;
   append_free_particles(cs, lat, free_velocity, free_spin);
@@ -460,59 +89,13 @@ Model build_model(const CaseSettings& cs) {
   build_groups(cs, model.sites, h, model);
   if (cs.uniaxial.enabled) build_uniaxial(cs, model.sites, h, model);
   build_meshes(cs, model);
-  for (const auto& f : cs.inflows) {
-    Inflow in;
-    in.box_min = to_vec(f.box_min);
-    in.box_max = to_vec(f.box_max);
-    in.radius_min = f.radius_min;
-    in.radius_max = f.radius_max;
-    in.density = cs.material.density;  // (as [[particle]]s: solid spheres of the material)
-    in.rate = f.mass_rate > 0.0 ? f.mass_rate / inflow_mean_mass(in) : f.rate;
-    in.velocity = to_vec(f.velocity);
-    in.seed = static_cast<std::uint64_t>(f.seed);
-    in.overlap = f.overlap;
-    in.attempts = f.attempts;
-    model.inflows.push_back(in);
-  }
-  for (const auto& o : cs.outflows) {
-    Outflow out{to_vec(o.box_min), to_vec(o.box_max)};
-    out.plane_point = to_vec(o.plane_point);
-    out.plane_normal = to_vec(o.plane_normal).normalized();  // (zero stays zero: a box)
-    model.outflows.push_back(out);
-  }
+  build_flows(cs, model);
   build_contacts(cs, model);
   build_heat(cs, model);
   model.gravity = Vec3(cs.gravity[0], cs.gravity[1], cs.gravity[2]);
   model.step = step_settings(model.settings, model.derived);
   check_output_schedule(model.settings);
   return model;
-}
-
-StepSettings step_settings(const CaseSettings& cs, const Derived& d) {
-  const IntegratorSettings& g = cs.integrator;
-  StepSettings s;
-  s.scheme = d.implicit ? Scheme::Newmark : Scheme::Verlet;
-  s.dt = d.dt;
-  s.beta = g.beta;
-  s.gamma = g.gamma;
-  s.dt_min = d.dt_min;
-  s.dt_max = d.dt_max;
-  s.tolerance = g.tolerance;
-  s.max_iterations = g.max_iterations;
-  s.iterations_grow = g.iterations_grow;
-  s.iterations_shrink = g.iterations_shrink;
-  s.grow_factor = g.grow_factor;
-  s.shrink_factor = g.shrink_factor;
-  s.reject_factor = g.reject_factor;
-  s.relaxation = g.relaxation;
-  s.solver = g.solver == "newton" ? Solver::Newton : Solver::FixedPoint;
-  s.krylov_tolerance = g.krylov_tolerance;
-  s.krylov_max_iterations = g.krylov_max_iterations;
-  s.max_step_displacement = g.max_step_displacement;
-  build_output(cs, s);
-  s.length_scale = d.nn_distance;
-  s.stiffness_scale = d.rod_stiffness;
-  return s;
 }
 
 }  // namespace swarf

@@ -46,15 +46,7 @@ struct Model : World {
   std::vector<Vec3> sites;
 };
 
-/// The step's settings of a case: [integrator] and [output] orientations, and the derived
-/// stable step.
-StepSettings step_settings(const CaseSettings& cs, const Derived& d);
-
 /// Builds the model; throws InputError (naming the file and key) on anything inconsistent.
 Model build_model(const CaseSettings& cs);
-
-/// Selects the particles of 'layers' lattice layers at a face ("x-", "z+", ...).
-std::vector<std::int32_t> select_side(const std::vector<Vec3>& position, const std::string& side, int layers,
-                                      double layer_spacing);
 
 }  // namespace swarf
