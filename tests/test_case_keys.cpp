@@ -366,5 +366,21 @@ TEST(CaseKeys, TheSummaryEchoesTheGivenKeysFromTheSettings) {
   }
 }
 
+// [heat] is echoed like the other tables: the keys given in "case", every key in
+// "case_effective" when the table is there, nothing of it when it is not.
+TEST(CaseKeys, TheSummaryEchoesHeat) {
+  const CaseSettings cold = parse_case(test::kTinyCut, "tiny.toml", {});
+  EXPECT_FALSE(case_json(cold).contains("heat"));
+  EXPECT_FALSE(case_effective_json(cold).contains("heat"));
+  const CaseSettings hot = parse_case(
+      std::string(test::kTinyCut) + "\n[heat]\nheat_capacity = 486.0\nconductivity = 50.0\n", "tiny.toml",
+      {"heat.taylor_quinney=0.8"});
+  const nlohmann::json c = case_json(hot), e = case_effective_json(hot);
+  EXPECT_EQ(c["heat"], nlohmann::json({{"heat_capacity", 486.0}, {"conductivity", 50.0}, {"taylor_quinney", 0.8}}));
+  ASSERT_TRUE(e.contains("heat"));
+  EXPECT_EQ(e["heat"]["initial_temperature"], 293.15) << "the default, filled in";
+  for (const auto& [key, value] : c["heat"].items()) EXPECT_EQ(e["heat"][key], value) << key;
+}
+
 }  // namespace
 }  // namespace swarf

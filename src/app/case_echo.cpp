@@ -90,6 +90,7 @@ nlohmann::json echo(const CaseSettings& cs, const Selection& sel) {
   add_array(j, "group", cs.groups, group_keys(), sel, &GroupSettings::motion);
   add_table(j, "uniaxial", uniaxial_keys(), cs.uniaxial, sel);
   add_table(j, "contact", contact_keys(), cs.contact, sel);
+  add_table(j, "heat", heat_keys(), cs.heat, sel);
   add_table(j, "environment", environment_keys(), cs, sel);
   add_array(j, "mesh", cs.meshes, mesh_keys(), sel, &MeshSettings::motion);
   add_array(j, "particle", cs.particles, particle_keys(), sel);
@@ -118,6 +119,7 @@ nlohmann::json case_effective_json(const CaseSettings& cs) {
     if (table == "membrane") return cs.membrane.enabled;
     if (table == "uniaxial") return cs.uniaxial.enabled;
     if (table == "contact") return cs.contact.enabled;
+    if (table == "heat") return cs.heat.present;
     if (table == "particles") return !cs.particles_file.file.empty();
     return true;  // integrator, environment, output, and each entry of an array of tables
   };

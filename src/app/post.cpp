@@ -273,7 +273,7 @@ void post_run(const std::string& dir) {
   if (!read_cut_setup(f, setup))
     throw InputError(
         fmt::format("post: '{}/results.h5' has no /cutting setup: the run had no tool mesh "
-                    "(a [[mesh]] with rake_angle) and a workpiece",
+                    "(a [[mesh]] tool: the built-in one with rake_angle, or a tool file with tool_tip) and a workpiece",
                     dir));
   CutData data;
   const auto cols = read_columns(dir + "/series.csv", {"time", "cutting_force_per_width", "thrust_force_per_width"});
