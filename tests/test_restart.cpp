@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 
 #include "io/h5file.h"
 #include "test_helpers.h"
@@ -187,6 +188,37 @@ TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
   auto bad = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "missing.h5") + " --steps 1");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("missing.h5"), std::string::npos) << bad.output;
+}
+
+// The bench's last column, the parallel efficiency, is (t_first x threads_first) / (t x
+// threads) of the printed medians: 1.00 in the scene's first row. The check recomputes it from
+// the printed times (3 decimals) and allows their rounding: a relative 0.5e-3 / t each, and the
+// column's own 0.005.
+TEST(Restart, BenchPrintsTheParallelEfficiencyOfItsMedians) {
+  test::TempDir dir("bench_efficiency");
+  test::write_file(dir / "c.toml", std::string(kTinyCut) + "vtk = false\n");
+  auto b = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "c.toml") +
+                             " --steps 200 --threads 1,2 --repeats 1");
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  ASSERT_NE(b.output.find("| parallel efficiency |"), std::string::npos) << b.output;
+  std::vector<double> seconds, threads, efficiency;
+  std::istringstream lines(b.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("| C |", 0) != 0) continue;
+    std::vector<std::string> cells;
+    for (std::size_t at = 1, bar; (bar = line.find('|', at)) != std::string::npos; at = bar + 1)
+      cells.push_back(line.substr(at, bar - at));
+    ASSERT_EQ(cells.size(), 15u) << line;
+    threads.push_back(std::stod(cells[8]));
+    seconds.push_back(std::stod(cells[9]));  // (the median, before " (min-max)")
+    efficiency.push_back(std::stod(cells[14]));
+  }
+  ASSERT_EQ(efficiency.size(), 2u) << b.output;
+  EXPECT_EQ(efficiency[0], 1.0);
+  ASSERT_GT(seconds[1], 0.0) << b.output;
+  const double expected = seconds[0] * threads[0] / (seconds[1] * threads[1]);
+  const double rounding = expected * (0.5e-3 / seconds[0] + 0.5e-3 / seconds[1]) + 0.005;
+  EXPECT_NEAR(efficiency[1], expected, rounding) << b.output;
 }
 
 // A restart into another directory (--out) brings the frames written before the checkpoint

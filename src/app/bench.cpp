@@ -48,14 +48,18 @@ CaseSettings scene_case(const std::string& path, const std::vector<std::string>&
 void run_bench(const BenchOptions& opt) {
   fmt::print(
       "| scene | scheme | particles | rods | steps | force evaluations | Newton iterations | CG iterations | threads | "
-      "median s (min-max) | ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J |\n");
-  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "median s (min-max) | ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J | "
+      "parallel efficiency |\n");
+  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::fflush(stdout);
   std::vector<std::string> stage_rows;
   for (const auto& path : opt.cases) {
     const CaseSettings cs = scene_case(path, opt.overrides);
     std::string scene = std::filesystem::path(path).stem().string();
     std::transform(scene.begin(), scene.end(), scene.begin(), ::toupper);
+    // Parallel efficiency of each row against the scene's first (its thread count, usually 1):
+    // (t_first x threads_first) / (t x threads), 1 for perfect scaling.
+    double first_cost = 0.0;  // s x threads
     for (int th : opt.threads) {
       const int used = set_threads(th);
       std::vector<double> secs;
@@ -106,9 +110,13 @@ void run_bench(const BenchOptions& opt) {
       std::sort(secs.begin(), secs.end());
       const double med = secs[secs.size() / 2];
       const std::string iters = newton ? fmt::format("{} | {}", solves, cg) : std::string("- | -");
-      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} |\n",
-                 scene, implicit ? "newmark" : "verlet", np, nr, n, evals, iters, used, med, secs.front(), secs.back(),
-                 med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke);
+      if (first_cost == 0.0) first_cost = med * used;
+      fmt::print(
+          "| {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} ({:.3f}-{:.3f}) | {:.1f} | {:.1f} | {} | {:.6g} | {:.2f} "
+          "|\n",
+          scene, implicit ? "newmark" : "verlet", np, nr, n, evals, iters, used, med, secs.front(), secs.back(),
+          med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke,
+          med > 0.0 ? first_cost / (med * used) : 1.0);
       if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n), builds));
       std::fflush(stdout);
     }
