@@ -10,6 +10,12 @@
 
 namespace swarf {
 
+double membrane_site_count(double length, double width, double radius) {
+  const double d = 2.0 * radius, row = 0.5 * std::sqrt(3.0) * d;
+  const double tol = 1e-9 * d;  // (as the generator's: the sites on the far edges count)
+  return (std::floor((width + tol) / row) + 1.0) * (std::floor((length + tol) / d) + 1.0);
+}
+
 Lattice generate_membrane(const MembraneSpec& spec) {
   if (!(spec.radius > 0.0) || !std::isfinite(spec.radius))
     throw InputError(fmt::format("key 'membrane.radius' must be a positive length in m, got {}", spec.radius));
@@ -22,12 +28,13 @@ Lattice generate_membrane(const MembraneSpec& spec) {
                                  spec.pre_strain));
   const double d = 2.0 * spec.radius, row = 0.5 * std::sqrt(3.0) * d;
   const double tol = 1e-9 * d;  // keeps sites on the far edges
-  const long rows = static_cast<long>(std::floor((spec.width + tol) / row)) + 1;
-  const long cols = static_cast<long>(std::floor((spec.length + tol) / d)) + 1;
-  if (double(rows) * double(cols) > 2.0e9)
+  const double sites = membrane_site_count(spec.length, spec.width, spec.radius);
+  if (sites > 2.0e9)
     throw InputError(fmt::format(
         "keys 'membrane.length', 'membrane.width' and 'membrane.radius' make {:.3g} particles, more than swarf indexes",
-        double(rows) * cols));
+        sites));
+  const long rows = static_cast<long>(std::floor((spec.width + tol) / row)) + 1;
+  const long cols = static_cast<long>(std::floor((spec.length + tol) / d)) + 1;
   Lattice lat;
   const Vec3 o(spec.origin[0], spec.origin[1], spec.origin[2]);
   for (long j = 0; j < rows; ++j) {

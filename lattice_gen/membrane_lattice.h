@@ -74,6 +74,12 @@ struct MembraneRelations {
 /// Poisson ratio other than 1/3 (beyond 1e-6) or a tension the springs cannot hold.
 MembraneRelations membrane_relations(const MembraneMaterial& material);
 
+/// Rows x columns of the sheet membrane_lattice generates for a length x width rectangle at
+/// radius R (site spacing 2R, rows sqrt(3) R apart): at least its site count (odd rows may lose
+/// their last site), as a double so that a huge sheet is counted before anything is built. The
+/// run's memory estimate and the fuzzers' size limit read it; the generator is built on it.
+double membrane_site_count(double length, double width, double radius);
+
 /// Indices of the sites with fewer than 6 rods: the sheet's edge.
 std::vector<std::int32_t> membrane_edge(const Lattice& lattice);
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "case_errors.h"
+#include "lattice_gen/membrane_lattice.h"
 #include "scenes/membrane_pulse.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
@@ -81,6 +82,26 @@ SheetStress stretched(double exx, double eyy, double exy = 0.0) {
 // stress; the rest lengths and positions lose about 1e-10 relative in the subtraction. The
 // tolerance 1e-4 relative leaves room for both and is far below any wrong factor of the
 // conversion (a second-neighbour bond or a square lattice would change C11 by tens of %).
+// membrane_site_count (the memory estimate's and the fuzzers' count) is rows x columns of the
+// generator's grid: exact where the odd rows keep their last site (length beyond a whole number of
+// spacings by half of one), at most one site per odd row above the generated count otherwise.
+TEST(Membrane, SiteCountIsTheGeneratorsGrid) {
+  for (const double length : {4e-3, 4.6e-3, 10e-3}) {
+    MembraneSpec spec;
+    spec.radius = 0.5e-3;
+    spec.length = length;
+    spec.width = 3e-3;
+    const double count = membrane_site_count(spec.length, spec.width, spec.radius);
+    const double generated = double(generate_membrane(spec).position.size());
+    const double rows = std::floor(spec.width / (std::sqrt(3.0) * spec.radius)) + 1.0;
+    EXPECT_GE(count, generated) << length;
+    EXPECT_LE(count - generated, std::floor(rows / 2.0)) << length;
+    if (length == 4.6e-3) {
+      EXPECT_EQ(count, generated) << "every row keeps its last site";
+    }
+  }
+}
+
 TEST(Membrane, PatchTestStressIsTheIsotropicClosedFormWithE2d) {
   const double E2 = kE * kT, nu = 1.0 / 3.0, e = 1e-6;
   const double c11 = E2 / (1 - nu * nu), c12 = nu * c11, c66 = E2 / (2 * (1 + nu));

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "lattice_gen/membrane_lattice.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
 
@@ -41,11 +42,10 @@ void check_memory(const CaseSettings& cs, bool force) {
   if (force) return;
   const double machine = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
   if (cs.membrane.enabled) {
-    // The triangular sheet: rows sqrt 3 R apart, sites 2R apart in a row (membrane_lattice.cpp),
-    // at the bonded block's bytes per particle (an upper bound: six rods a site, not twelve).
+    // The triangular sheet's sites (lattice_gen/membrane_lattice.h) at the bonded block's bytes
+    // per particle (an upper bound: six rods a site, not twelve).
     const MembraneSettings& ms = cs.membrane;
-    const double sites = (std::floor(ms.width / (std::sqrt(3.0) * ms.radius)) + 1.0) *
-                         (std::floor(ms.length / (2.0 * ms.radius)) + 1.0);
+    const double sites = membrane_site_count(ms.length, ms.width, ms.radius);
     const double bytes = 60e6 + 1000.0 * sites;
     if (machine > 0 && bytes > machine)
       throw InputError(

@@ -28,6 +28,7 @@
 #include "io/mesh_file.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
+#include "lattice_gen/membrane_lattice.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "study/study.h"
@@ -485,7 +486,7 @@ bool small_model(const CaseSettings& cs) {
   if (cs.particles.size() > 200) return false;
   if (cs.membrane.enabled) {
     const MembraneSettings& ms = cs.membrane;
-    return (ms.width / (std::sqrt(3.0) * ms.radius) + 1.0) * (ms.length / (2.0 * ms.radius) + 1.0) <= 400.0;
+    return membrane_site_count(ms.length, ms.width, ms.radius) <= 400.0;
   }
   return workpiece_cells(cs) <= 200.0;
 }
