@@ -152,41 +152,48 @@ struct Model {
     return s;
   }
 
-  /// phi where tau_int = k_chip, for given C and delta: the first sign change going up from
-  /// kPhiMin, refined by bisection. NaN if none.
-  double solve_phi(double c, double delta) const {
-    auto g = [&](double phi, bool& ok) {
-      const State s = evaluate(phi, c, delta);
-      ok = s.valid;
-      return s.tau_int - s.k_chip;
-    };
+  /// The first sign change of g(x, ok) on a grid of `grid` steps over [lo, hi] (points where
+  /// ok comes back false skipped), refined by bisection. NaN if none.
+  template <class G>
+  static double first_root(G g, double lo, double hi, int grid) {
     bool ok_prev = false;
-    double phi_prev = 0, g_prev = 0;
-    for (int i = 0; i <= kPhiGrid; ++i) {
-      const double phi = kPhiMin + (kPhiMax - kPhiMin) * i / kPhiGrid;
+    double x_prev = 0, g_prev = 0;
+    for (int i = 0; i <= grid; ++i) {
+      const double x = lo + (hi - lo) * i / grid;
       bool ok = false;
-      const double gi = g(phi, ok);
+      const double gi = g(x, ok);
       if (ok && ok_prev && (g_prev < 0) != (gi < 0)) {
-        double lo = phi_prev, hi = phi, glo = g_prev;
+        double a = x_prev, b = x, ga = g_prev;
         for (int k = 0; k < kBisections; ++k) {
-          const double mid = 0.5 * (lo + hi);
+          const double mid = 0.5 * (a + b);
           bool okm = false;
           const double gm = g(mid, okm);
           if (!okm) break;
-          if ((gm < 0) == (glo < 0)) {
-            lo = mid;
-            glo = gm;
+          if ((gm < 0) == (ga < 0)) {
+            a = mid;
+            ga = gm;
           } else {
-            hi = mid;
+            b = mid;
           }
         }
-        return 0.5 * (lo + hi);
+        return 0.5 * (a + b);
       }
       ok_prev = ok;
-      phi_prev = phi;
+      x_prev = x;
       g_prev = gi;
     }
     return std::numeric_limits<double>::quiet_NaN();
+  }
+
+  /// phi where tau_int = k_chip, for given C and delta: the first root going up from kPhiMin.
+  double solve_phi(double c, double delta) const {
+    return first_root(
+        [&](double phi, bool& ok) {
+          const State s = evaluate(phi, c, delta);
+          ok = s.valid;
+          return s.tau_int - s.k_chip;
+        },
+        kPhiMin, kPhiMax, kPhiGrid);
   }
 
   struct Solution {
@@ -196,44 +203,20 @@ struct Model {
 
   /// C where sigma_n = sigma_n_b (with phi solved for each C), for given delta.
   Solution solve_c(double delta) const {
-    auto g = [&](double c, bool& ok, double& phi) {
-      phi = solve_phi(c, delta);
-      ok = std::isfinite(phi);
-      if (!ok) return 0.0;
-      const State s = evaluate(phi, c, delta);
-      ok = s.valid;
-      return s.sigma_n - s.sigma_n_b;
-    };
-    bool ok_prev = false;
-    double c_prev = 0, g_prev = 0;
-    for (int i = 0; i <= kCGrid; ++i) {
-      const double c = kCMin + (kCMax - kCMin) * i / kCGrid;
-      bool ok = false;
-      double phi = 0;
-      const double gi = g(c, ok, phi);
-      if (ok && ok_prev && (g_prev < 0) != (gi < 0)) {
-        double lo = c_prev, hi = c, glo = g_prev, phi_best = phi;
-        for (int k = 0; k < 40; ++k) {
-          const double mid = 0.5 * (lo + hi);
-          bool okm = false;
-          double phim = 0;
-          const double gm = g(mid, okm, phim);
-          if (!okm) break;
-          phi_best = phim;
-          if ((gm < 0) == (glo < 0)) {
-            lo = mid;
-            glo = gm;
-          } else {
-            hi = mid;
-          }
-        }
-        return {true, phi_best, 0.5 * (lo + hi)};
-      }
-      ok_prev = ok;
-      c_prev = c;
-      g_prev = gi;
-    }
-    return {};
+    const double c = first_root(
+        [&](double c, bool& ok) {
+          const double phi = solve_phi(c, delta);
+          ok = std::isfinite(phi);
+          if (!ok) return 0.0;
+          const State s = evaluate(phi, c, delta);
+          ok = s.valid;
+          return s.sigma_n - s.sigma_n_b;
+        },
+        kCMin, kCMax, kCGrid);
+    if (!std::isfinite(c)) return {};
+    const double phi = solve_phi(c, delta);
+    if (!std::isfinite(phi)) return {};
+    return {true, phi, c};
   }
 };
 
