@@ -72,7 +72,7 @@ struct OxleyMaterial {
 /// T_melt 1733 K; k = 52.61 - 0.0281 T W/(m K), c = 420 + 0.504 T J/(kg K) (T in deg C);
 /// rho 7850 kg/m^3; chi = 1, eta = 0.9, psi = 0.7 (Oxley's). The "Taylor-Quinney 0.9" of the
 /// reference table (shared/reference/cutting-data.md) is read as Oxley's eta, the one 0.9 in
-/// his model: with chi = 0.9 on top, F_c / w rises another 10-15 % away from that table.
+/// his model: with chi = 0.9 on top, F_c / w rises another 5-10 % (to 12-27 % above that table).
 OxleyMaterial oxley_aisi1045_jaspers();
 
 /// One orthogonal cut.
