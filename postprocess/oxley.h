@@ -33,7 +33,11 @@
 //    delta where F_c is least (Oxley's minimum-work choice).
 // Without thermal softening the rake-face layer never gets soft enough to carry only tau_int:
 // then there is no phi, and the result says so (solved = false, with a reason).
-// All searches are bounded grids and bisections: the function always returns.
+// All searches are bounded grids and bisections, so the function always returns (about 0.5 s):
+// phi over [1, 60] deg (0.5 deg grid, the first root going up), C over [1, 20] (grid of 1, the
+// first root), delta over [0.005, 0.5] (25 log-spaced points, then golden section next to the
+// least F_c); temperatures below T_melt and T_0 + 3000 K, k(T) and c(T) floored at 10 % of their
+// values at T_0. A delta at the end of its range means the least F_c may lie beyond it.
 #pragma once
 
 #include <string>
