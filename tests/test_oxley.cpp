@@ -2,6 +2,7 @@
 // table in shared/reference/cutting-data.md (another implementation of Oxley's theory with
 // Jaspers' Johnson-Cook set for AISI 1045), the trends it must show, the missing solution without
 // thermal softening, and bad input.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "postprocess/oxley.h"
 #include "swarf/core/errors.h"
+#include "test_helpers.h"
 
 namespace swarf {
 namespace {
@@ -158,6 +160,29 @@ TEST(Oxley, BadInputThrowsNamingTheField) {
   OxleyMaterial m = oxley_aisi1045_jaspers();
   m.density = 0;
   EXPECT_THROW((void)oxley(good, m), InputError);
+}
+
+// 'swarf oxley' prints the library's solution for the cut its options give (the same call, so
+// the same digits at the printed precision), and refuses a bad option naming it (exit 2).
+TEST(Oxley, CommandPrintsTheLibrarysSolution) {
+  const OxleyResult r = oxley(
+      {.speed = 100.0 / 60.0, .uncut_thickness = 0.2e-3, .width = 1e-3, .rake = 10.0 * std::numbers::pi / 180.0},
+      oxley_aisi1045_jaspers());
+  ASSERT_TRUE(r.solved) << r.reason;
+  const auto out = test::run_command(std::string(SWARF_BINARY) +
+                                     " oxley --speed 1.6666666666666667 --uncut-thickness 0.2e-3 --rake-angle 10");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_NE(out.output.find(fmt::format("| Fc per width | {:.4g} | N/m |", r.cutting_force_per_width)), std::string::npos)
+      << out.output;
+  EXPECT_NE(out.output.find(fmt::format("| shear angle | {:.4g} | deg |", r.shear_angle * 180.0 / std::numbers::pi)),
+            std::string::npos)
+      << out.output;
+  EXPECT_NE(out.output.find(fmt::format("| rake face temperature | {:.4g} | K |", r.rake_temperature)), std::string::npos)
+      << out.output;
+  const auto bad = test::run_command(std::string(SWARF_BINARY) +
+                                     " oxley --speed 1 --uncut-thickness 1e-4 --rake-angle 95");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("rake"), std::string::npos) << bad.output;
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "io/vtk_output.h"
 #include "lattice_gen/fcc_lattice.h"
 #include "lattice_gen/lattice_file.h"
+#include "postprocess/oxley.h"
 #include "setup/case_config.h"
 #include "setup/case_keys_doc.h"
 #include "setup/rod_laws/rod_laws.h"
@@ -206,6 +207,48 @@ struct ToolCommand final : Command {
   }
 };
 
+// swarf oxley
+struct OxleyCommand final : Command {
+  OxleyCut cut{.speed = 0.0, .uncut_thickness = 0.0, .width = 1e-3, .rake = 0.0, .initial_temperature = 293.15};
+  double rake_deg = 0.0;
+  explicit OxleyCommand(CLI::App& app) {
+    sub = app.add_subcommand("oxley",
+                             "Oxley's predictive machining theory for one orthogonal cut of AISI 1045 (Jaspers' "
+                             "Johnson-Cook set): forces, shear angle, chip, temperatures; a cross-check, see "
+                             "postprocess/oxley.h");
+    sub->add_option("--speed", cut.speed, "Cutting speed, m/s")->required();
+    sub->add_option("--uncut-thickness", cut.uncut_thickness, "Uncut chip thickness h, m")->required();
+    sub->add_option("--rake-angle", rake_deg, "Rake angle, deg (default 0)");
+    sub->add_option("--width", cut.width, "Width of cut, m (default 1e-3)");
+    sub->add_option("--temperature", cut.initial_temperature, "Initial temperature of the work, K (default 293.15)");
+  }
+  int run() override {
+    cut.rake = rake_deg * M_PI / 180.0;
+    const OxleyResult r = oxley(cut, oxley_aisi1045_jaspers());
+    if (!r.solved) {
+      fmt::print(stderr, "swarf oxley: no solution: {}\n", r.reason);
+      return 1;
+    }
+    fmt::print(
+        "Oxley, AISI 1045 (Jaspers): V = {:.4g} m/s ({:.4g} m/min), h = {:.4g} m, rake {:.4g} deg, w = {:.4g} m\n",
+        cut.speed, cut.speed * 60.0, cut.uncut_thickness, rake_deg, cut.width);
+    fmt::print("| quantity | value | unit |\n|---|---|---|\n");
+    fmt::print("| cutting force Fc | {:.4g} | N |\n", r.cutting_force);
+    fmt::print("| thrust force Ft | {:.4g} | N |\n", r.thrust_force);
+    fmt::print("| Fc per width | {:.4g} | N/m |\n", r.cutting_force_per_width);
+    fmt::print("| specific cutting force kc | {:.4g} | N/mm^2 |\n",
+               r.cutting_force / (cut.width * cut.uncut_thickness) * 1e-6);
+    fmt::print("| Ft / Fc | {:.4g} | 1 |\n", r.thrust_force / r.cutting_force);
+    fmt::print("| shear angle | {:.4g} | deg |\n", r.shear_angle * 180.0 / M_PI);
+    fmt::print("| chip thickness h_c | {:.4g} | m |\n", r.chip_thickness);
+    fmt::print("| chip ratio h / h_c | {:.4g} | 1 |\n", r.chip_ratio);
+    fmt::print("| tool-chip contact length | {:.4g} | m |\n", r.contact_length);
+    fmt::print("| primary shear zone temperature | {:.4g} | K |\n", r.primary_temperature);
+    fmt::print("| rake face temperature | {:.4g} | K |\n", r.rake_temperature);
+    return 0;
+  }
+};
+
 // swarf bench
 struct BenchCommand final : Command {
   BenchOptions bo;
@@ -331,6 +374,7 @@ std::vector<std::unique_ptr<Command>> make_commands(CLI::App& app) {
   c.push_back(std::make_unique<PostCommand>(app));
   c.push_back(std::make_unique<ToolCommand>(app));
   c.push_back(std::make_unique<BenchCommand>(app));
+  c.push_back(std::make_unique<OxleyCommand>(app));
   c.push_back(std::make_unique<SweepCommand>(app));
   c.push_back(std::make_unique<ReportCommand>(app));
   CLI::App* case_cmd = app.add_subcommand("case", "Describe the case file format; print the default case");

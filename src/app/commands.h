@@ -15,7 +15,7 @@ struct Command {
   CLI::App* sub = nullptr;  ///< its subcommand: set when the command line selected it
 };
 
-/// Every subcommand, registered on 'app': lattice, rod, run, material, post, tool, bench, sweep, report, case keys.
+/// Every subcommand, registered on 'app': lattice, rod, run, material, post, tool, bench, oxley, sweep, report, case keys.
 std::vector<std::unique_ptr<Command>> make_commands(CLI::App& app);
 
 }  // namespace swarf
