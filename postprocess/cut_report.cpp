@@ -291,6 +291,42 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
   return t;
 }
 
+namespace {
+
+// The work material's values under /cutting/material/ (with its name as the attribute
+// cutting_material; none when the material is unknown).
+struct MaterialField {
+  const char* name;
+  const char* unit;
+  const char* what;
+  double CutMaterial::*top = nullptr;
+  double OxleyMaterial::*field = nullptr;
+  double get(const CutMaterial& m) const { return top ? m.*top : m.oxley.*field; }
+  void set(CutMaterial& m, double v) const { (top ? m.*top : m.oxley.*field) = v; }
+};
+
+const std::vector<MaterialField>& material_fields() {
+  static const std::vector<MaterialField> fields{
+      {"material/johnson_cook_a", "Pa", "Johnson-Cook A", nullptr, &OxleyMaterial::jc_a},
+      {"material/johnson_cook_b", "Pa", "Johnson-Cook B", nullptr, &OxleyMaterial::jc_b},
+      {"material/johnson_cook_n", "1", "Johnson-Cook n", nullptr, &OxleyMaterial::jc_n},
+      {"material/johnson_cook_c", "1", "Johnson-Cook C", nullptr, &OxleyMaterial::jc_c},
+      {"material/johnson_cook_m", "1", "Johnson-Cook m", nullptr, &OxleyMaterial::jc_m},
+      {"material/reference_rate", "1/s", "Johnson-Cook reference strain rate", nullptr,
+       &OxleyMaterial::reference_strain_rate},
+      {"material/reference_temperature", "K", "Johnson-Cook T_ref", nullptr, &OxleyMaterial::t_ref},
+      {"material/melt_temperature", "K", "Johnson-Cook T_melt", nullptr, &OxleyMaterial::t_melt},
+      {"material/density", "kg/m^3", "density", nullptr, &OxleyMaterial::density},
+      {"material/heat_capacity", "J/(kg K)", "specific heat capacity", nullptr, &OxleyMaterial::heat_capacity},
+      {"material/conductivity", "W/(m K)", "thermal conductivity", nullptr, &OxleyMaterial::conductivity},
+      {"material/initial_temperature", "K", "the workpiece's temperature at the start",
+       &CutMaterial::initial_temperature, nullptr},
+  };
+  return fields;
+}
+
+}  // namespace
+
 // Layout 3: one named dataset per value under /cutting, each with its unit.
 void write_cut_setup(H5File& f, const CutSetup& s) {
   auto put = [&f](const char* name, const double* v, std::size_t n, const char* unit, const char* what) {
@@ -309,6 +345,14 @@ void write_cut_setup(H5File& f, const CutSetup& s) {
   f.describe("/cutting/workpiece_particles", "1", "the workpiece is particles 0 to this - 1");
   put("face_length", &s.face_length, 1, "m", "the tool's rake face length from the tip");
   f.write_attribute("cutting_tool_mesh", s.tool_mesh);
+  put("cutting_speed", &s.cutting_speed, 1, "m/s", "the tool's constant speed along x (0: its path has none)");
+  f.write_attribute("cutting_material", s.material.known ? s.material.name : std::string());
+  if (!s.material.known) f.write_attribute("cutting_material_note", s.material.note);
+  if (s.material.known)
+    for (const auto& m : material_fields()) {
+      const double v = m.get(s.material);
+      put(m.name, &v, 1, m.unit, m.what);
+    }
   if (s.compliant()) {
     const double m[4] = {s.mount.stiffness_x, s.mount.stiffness_z, s.mount.mass, s.mount.damping};
     put("tool_mount", m, 4, "N/m/m, N/m/m, kg/m, N s/m/m",
@@ -340,6 +384,19 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
     s.lattice_particles = static_cast<std::size_t>(n[0]);
     s.face_length = one("face_length", 1)[0];
     s.tool_mesh = f.has_attribute("cutting_tool_mesh") ? f.read_string_attribute("cutting_tool_mesh") : "";
+    // Runs before 2026-12-06 stored neither the speed nor the material: Oxley's reference is then unknown.
+    if (f.has("/cutting/cutting_speed")) s.cutting_speed = one("cutting_speed", 1)[0];
+    const std::string material = f.has_attribute("cutting_material") ? f.read_string_attribute("cutting_material") : "";
+    s.material = CutMaterial{};
+    if (!material.empty()) {
+      s.material.known = true;
+      s.material.name = material;
+      for (const auto& m : material_fields()) m.set(s.material, one(m.name, 1)[0]);
+    } else {
+      s.material.note = f.has_attribute("cutting_material_note")
+                            ? f.read_string_attribute("cutting_material_note")
+                            : "the run's results.h5 does not record the work material (a run before 2026-12-06)";
+    }
     if (f.has("/cutting/tool_mount")) {
       const auto m = one("tool_mount", 4);
       s.mount = ToolMount{m[0], m[1], m[2], m[3]};

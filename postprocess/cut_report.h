@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "postprocess/chip.h"
+#include "postprocess/cut_oxley.h"
 #include "postprocess/tool_vibration.h"
 #include "swarf/core/vec3.h"
 
@@ -43,6 +44,8 @@ struct CutSetup {
   std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
   double face_length = HUGE_VAL;      ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
   ToolMount mount;                    ///< a compliant tool's mount per width; mass 0: the tool follows its path
+  double cutting_speed = 0;  ///< the tool's constant speed along x, m/s (0: none; runs before 2026-12-06: unknown)
+  CutMaterial material;      ///< the work material for Oxley's reference (cut_oxley.h)
   bool compliant() const { return mount.mass > 0; }
 };
 

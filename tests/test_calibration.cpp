@@ -184,6 +184,20 @@ TEST(MaterialPreset, BadInputNamed) {
   EXPECT_NE(no_curve.find("failure_strain"), std::string::npos) << no_curve;
 }
 
+// material.reference names what hand-written rods stand for; beside a preset (or rods derived
+// from [material]) it is refused, naming the key and the value.
+TEST(MaterialPreset, AReferenceIsOnlyForHandWrittenRods) {
+  std::string t = kCase;
+  t.replace(t.find("preset = \"C45\""), 14, "preset = \"C45\"\nreference = \"Ti6Al4V\"");
+  const std::string both = error_of(t);
+  for (const char* part : {"material.reference", "Ti6Al4V", "give one of material.preset and material.reference"})
+    EXPECT_NE(both.find(part), std::string::npos) << both;
+  t = kCase;
+  t.replace(t.find("preset = \"C45\""), 14, "youngs_modulus = 2e11\nyield_stress = 4e8\nreference = \"C45\"");
+  const std::string derived = error_of(t);
+  EXPECT_NE(derived.find("its own reference"), std::string::npos) << derived;
+}
+
 // rod.failure_elongation is a failure strain of the lattice's rod length, L0 = 2R: the same
 // stretch at every radius. Exact to rounding (one division); the law then breaks a rod stretched
 // just beyond it and not one just short of it.

@@ -331,6 +331,29 @@ TEST(CutTable, ARunThatEndsBeforeItsSteadyWindowReportsNoForce) {
   check(p.output, "post");
 }
 
+// Oxley's theory beside the cut: the C45 preset's material, the tool's speed, the measured
+// depth of cut, the rake angle and the width go in; summary.json holds the solution and the
+// terminal its table; 'swarf post' recomputes the same figures from results.h5.
+TEST(CutTable, OxleysTheoryStandsBesideTheCut) {
+  test::TempDir dir("cut_oxley");
+  const std::string out = dir / "out";
+  const auto r = run_coarse_cut(out, "--set integrator.end_time=3e-6 --set output.vtk=false");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto sum = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+  const auto& ox = sum["oxley"];
+  ASSERT_TRUE(ox["solved"].get<bool>()) << ox.dump(2);
+  EXPECT_EQ(ox["material"], "C45");
+  EXPECT_EQ(ox["depth_of_cut_m"].get<double>(), sum["chip"]["depth_of_cut_m"].get<double>());
+  EXPECT_EQ(ox["width_m"].get<double>(), sum["cutting"]["width_m"].get<double>());
+  EXPECT_EQ(ox["rake_angle_deg"].get<double>(), sum["case"]["cut"]["rake_angle"].get<double>()) << sum["case"].dump();
+  EXPECT_EQ(ox["speed_m_per_s"].get<double>(), sum["case"]["cut"]["cutting_speed"].get<double>());
+  test::expect_mentions(r.output, {"Oxley's theory at this cut (C45,", "swarf/Oxley"});
+  const auto p = test::run_command(fmt::format("{} post {}", SWARF_BINARY, out));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const auto post = nlohmann::json::parse(test::read_file(out + "/summary.json"));
+  EXPECT_EQ(post["oxley"], ox);
+}
+
 // A cut stopped before the tool touches the block has no force, so no force direction: the
 // friction angle and Merchant's angle are not measured (null), not the rake angle that
 // atan2(0, 0) = 0 would make of them.

@@ -12,6 +12,8 @@
 #include <string>
 #include <tuple>
 
+#include "case_errors.h"
+#include "postprocess/cut_oxley.h"
 #include "postprocess/oxley.h"
 #include "swarf/core/errors.h"
 #include "test_helpers.h"
@@ -183,6 +185,61 @@ TEST(Oxley, CommandPrintsTheLibrarysSolution) {
                                      " oxley --speed 1 --uncut-thickness 1e-4 --rake-angle 95");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("rake"), std::string::npos) << bad.output;
+}
+
+// Oxley beside a cut (cut_oxley.h): the summary's figures are the library's solution for the
+// same material and conditions, bit for bit (the same call), with the units the keys name; the
+// printed table divides swarf's steady figure by Oxley's; a material or a cut Oxley cannot take
+// gives solved = false and a reason, never figures.
+TEST(OxleyBeside, GivesTheLibrarysSolutionAndTheRatio) {
+  CutMaterial m;
+  m.known = true;
+  m.name = "AISI 1045 (Jaspers)";
+  m.oxley = oxley_aisi1045_jaspers();
+  const CutConditions c{.speed = 10.0, .depth_of_cut = 0.2e-3, .rake_angle_deg = 10.0, .width = 8e-5};
+  const nlohmann::json j = oxley_beside(m, c);
+  const OxleyResult r = oxley(
+      {.speed = 10.0, .uncut_thickness = 0.2e-3, .width = 8e-5, .rake = 10.0 * std::numbers::pi / 180.0}, m.oxley);
+  ASSERT_TRUE(r.solved) << r.reason;
+  ASSERT_TRUE(j["solved"].get<bool>()) << j.dump(2);
+  EXPECT_EQ(j["cutting_force_per_width_N_per_m"].get<double>(), r.cutting_force_per_width);
+  EXPECT_EQ(j["thrust_force_per_width_N_per_m"].get<double>(), r.thrust_force / 8e-5);
+  EXPECT_EQ(j["chip_thickness_m"].get<double>(), r.chip_thickness);
+  EXPECT_EQ(j["shear_angle_deg"].get<double>(), r.shear_angle * 180.0 / std::numbers::pi);
+  EXPECT_EQ(j["rake_face_temperature_K"].get<double>(), r.rake_temperature);
+  EXPECT_EQ(j["speed_m_per_s"].get<double>(), 10.0);
+  // swarf's Fc/w 1.25 times Oxley's prints a ratio of 1.250; a figure swarf lacks prints "none".
+  const nlohmann::json cutting{{"cutting_force_per_width_mean_N_per_m", 1.25 * r.cutting_force_per_width}};
+  const std::string t = oxley_table(j, cutting, nlohmann::json::object());
+  test::expect_mentions(t, {"AISI 1045 (Jaspers), 10 m/s, h 0.2 mm, rake 10 deg",
+                            fmt::format("{:>10.4g}  {:>10.4g}       1.250   kN/m", 1.25e-3 * r.cutting_force_per_width,
+                                        1e-3 * r.cutting_force_per_width),
+                            "chip thickness h_c                          none"});
+}
+
+TEST(OxleyBeside, SaysWhyThereAreNoFigures) {
+  const CutConditions c{.speed = 10.0, .depth_of_cut = 0.2e-3, .rake_angle_deg = 10.0, .width = 8e-5};
+  CutMaterial unknown;
+  unknown.note = "the work material has no Johnson-Cook flow curve";
+  auto j = oxley_beside(unknown, c);
+  EXPECT_FALSE(j["solved"].get<bool>());
+  EXPECT_EQ(j["reason"], unknown.note);
+  EXPECT_FALSE(j.contains("cutting_force_per_width_N_per_m"));
+  test::expect_mentions(oxley_table(j, {}, {}), {"no figures (the work material has no Johnson-Cook flow curve)"});
+  CutMaterial m;
+  m.known = true;
+  m.oxley = oxley_aisi1045_jaspers();
+  j = oxley_beside(m, CutConditions{.speed = 0.0, .depth_of_cut = 0.2e-3, .rake_angle_deg = 10.0, .width = 8e-5});
+  EXPECT_FALSE(j["solved"].get<bool>());
+  test::expect_mentions(j["reason"].get<std::string>(), {"no constant cutting speed"});
+  m.oxley.t_melt = std::numeric_limits<double>::infinity();  // no thermal softening: Oxley has no solution
+  j = oxley_beside(m, c);
+  EXPECT_FALSE(j["solved"].get<bool>());
+  EXPECT_FALSE(j["reason"].get<std::string>().empty());
+  m.oxley.density = 0;  // a constant the model refuses: a reason, not an exception
+  j = oxley_beside(m, c);
+  EXPECT_FALSE(j["solved"].get<bool>());
+  test::expect_mentions(j["reason"].get<std::string>(), {"density"});
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "io/results_format.h"
 #include "io/vtk_output.h"
 #include "postprocess/chip_surface.h"
+#include "postprocess/cut_oxley.h"
 #include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
 
@@ -248,6 +249,15 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
   }
   say("{}{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction), tool_line);
   if (const std::string line = steady_extras(setup, data, sum["chip"]); !line.empty()) say("{}\n", line);
+  // Oxley's theory at the same cut, beside swarf's steady figures (about half a second).
+  const double depth = sum["chip"].contains("depth_of_cut_m") && sum["chip"]["depth_of_cut_m"].is_number()
+                           ? sum["chip"]["depth_of_cut_m"].get<double>()
+                           : 0.0;
+  sum["oxley"] = oxley_beside(setup.material, CutConditions{.speed = setup.cutting_speed,
+                                                            .depth_of_cut = depth,
+                                                            .rake_angle_deg = setup.rake_angle_deg,
+                                                            .width = setup.width});
+  say("{}", oxley_table(sum["oxley"], sum["cutting"], sum["chip"]));
   std::fflush(stdout);
 }
 
@@ -303,7 +313,7 @@ void post_run(const std::string& dir) {
   }
   data.broken_rod_fraction = read_broken_rod_fraction(f, sum);
   const bool pictures = sum["case"].contains("output") ? sum["case"]["output"].value("plots", true) : true;
-  for (const char* stale : {"pictures", "picture_error", "plots", "plot_error", "tool"}) sum.erase(stale);
+  for (const char* stale : {"pictures", "picture_error", "plots", "plot_error", "tool", "oxley"}) sum.erase(stale);
   finish_cut(dir, setup, data, sum, nullptr, pictures);
   if (pictures) {
     write_text_atomic(summary_path, sum.dump(2) + "\n");  // the plot script reads the new analysis

@@ -7,10 +7,74 @@
 #include "app/post.h"
 #include "io/vtk_output.h"
 #include "postprocess/chip.h"
+#include "setup/material_presets.h"
 #include "setup/model.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
+
+namespace {
+
+// The work material for Oxley's reference (cut_oxley.h): the case's Johnson-Cook curve and
+// factors, density and, from [heat] or the preset, heat capacity and conductivity.
+CutMaterial cut_material(const CaseSettings& settings) {
+  const MaterialSettings& mt = settings.material;
+  CutMaterial m;
+  // Hand-written rods name the material they stand for in material.reference.
+  const std::string& name = mt.preset.empty() ? mt.reference : mt.preset;
+  const MaterialPreset* preset = name.empty() ? nullptr : find_material_preset(name);
+  const bool reference = !mt.reference.empty() && preset;
+  if (!(mt.johnson_cook_a > 0) && !reference) {
+    m.note =
+        "the work material has no Johnson-Cook flow curve (material.preset, material.johnson_cook_* or, for "
+        "hand-written rods, material.reference)";
+    return m;
+  }
+  double c = settings.heat.present ? settings.heat.heat_capacity : 0.0;
+  double k = settings.heat.present ? settings.heat.conductivity : 0.0;
+  if (preset && !(c > 0)) c = preset->heat_capacity;
+  if (preset && !(k > 0)) k = preset->conductivity;
+  if (!(c > 0 && k > 0)) {
+    m.note = "the work material's heat capacity and conductivity are not given ([heat] or material.preset)";
+    return m;
+  }
+  m.known = true;
+  OxleyMaterial& o = m.oxley;
+  if (reference) {
+    m.name = std::string(preset->name) + " (material.reference)";
+    o.jc_a = preset->jc_a;
+    o.jc_b = preset->jc_b;
+    o.jc_n = preset->jc_n;
+    o.jc_c = preset->jc_c;
+    o.jc_m = preset->jc_m;
+    o.reference_strain_rate = preset->reference_rate;
+    o.t_ref = preset->reference_temperature;
+    o.t_melt = preset->melt_temperature;
+  } else {
+    m.name = preset && mt.johnson_cook_keys_given.empty() ? std::string(preset->name) : "Johnson-Cook (case)";
+    o.jc_a = mt.johnson_cook_a;
+    o.jc_b = mt.johnson_cook_b;
+    o.jc_n = mt.johnson_cook_n;
+    o.jc_c = mt.johnson_cook_c;
+    o.jc_m = mt.johnson_cook_m;
+    o.reference_strain_rate = mt.reference_rate;
+    o.t_ref = mt.reference_temperature;
+    o.t_melt = mt.melt_temperature;
+  }
+  o.density = mt.density;
+  o.heat_capacity = c;
+  o.conductivity = k;
+  m.initial_temperature = settings.heat.present ? settings.heat.initial_temperature : o.t_ref;
+  return m;
+}
+
+// The tool's constant speed along x (m/s): "velocity" and the final velocity of "ramp"; 0 otherwise.
+double cutting_speed(const MotionSettings& motion) {
+  if (motion.kind != "velocity" && motion.kind != "ramp") return 0.0;
+  return std::abs(motion.velocity[0]);
+}
+
+}  // namespace
 
 std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
   const auto& settings = model.settings;
@@ -38,6 +102,8 @@ std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
   cs.uncut_surface_z = top;
   cs.radius = model.derived.radius;
   cs.lattice_particles = model.lattice_particles;
+  cs.cutting_speed = cutting_speed(ms.motion);
+  cs.material = cut_material(settings);
   // The World's mesh of that name (the case's [[mesh]] tables and the World's meshes meet by name).
   int mesh = -1;
   for (std::size_t k = 0; k < model.meshes.size() && mesh < 0; ++k)

@@ -58,6 +58,16 @@ const std::vector<Key<MaterialSettings>>& material_keys() {
        .choices = {"C45", "Al2024-T351", "Ti6Al4V"},
        .doc = "A named material of the library ([materials.md](materials.md)): its density, Young's modulus, "
               "Johnson-Cook flow curve and failure strain, each replaced by the key of this table when given."},
+      {.name = "reference",
+       .field = &S::reference,
+       .default_note = "none",
+       .choices = {"C45", "Al2024-T351", "Ti6Al4V"},
+       .rule = "not with `preset` or the other macroscopic keys (such a case is its own reference)",
+       .doc = "The named material a case with hand-written rods (`[rod]`) stands for. It builds nothing: "
+              "Oxley's theory beside the cut's result (summary.json `oxley`, "
+              "[outputs.md](outputs.md#summaryjson-oxley)) "
+              "takes its Johnson-Cook curve and factors, and its heat capacity and conductivity where `[heat]` does "
+              "not give them; the density stays this table's."},
       {.name = "flow_plastic_strain",
        .field = &S::flow_plastic_strain,
        .unit = "1",
@@ -171,6 +181,11 @@ void read_material(const CaseInput& in, CaseSettings& cs) {
           "johnson_cook_c", "johnson_cook_m", "reference_rate", "melt_temperature", "reference_temperature"})
       if (r.has(key))
         r.fail(key, r.get(key), "macroscopic properties need material.youngs_modulus (Pa) or material.preset too");
+  if (r.has("reference") && mt.macroscopic)
+    r.fail("reference", r.get("reference"),
+           preset ? "the preset is the case's reference material: give one of material.preset and material.reference"
+                  : "a case whose rods come from [material]'s properties is its own reference: drop "
+                    "material.reference");
   const bool table = r.has("flow_plastic_strain") || r.has("flow_stress");
   const bool jc = r.has("johnson_cook_a") || r.has("johnson_cook_b") || r.has("johnson_cook_n");
   if (table && jc)

@@ -30,7 +30,8 @@ struct MaterialSettings {
   double tensile_strength = kInf;  ///< uniaxial stress along [100] at which rods break, Pa; inf = unbreakable
   double poisson_ratio = -1.0;     ///< only checked: the lattice has 1/3 along [100] (-1 = not given)
   // A metal's flow curve and failure (calibration.h turns them into the rod law).
-  std::string preset;                       ///< a named material (material_presets.h); "" = none
+  std::string preset;     ///< a named material (material_presets.h); "" = none
+  std::string reference;  ///< the named material hand-written rods stand for (Oxley's reference only); "" = none
   std::vector<double> flow_plastic_strain;  ///< equivalent plastic strain of the flow curve's points, 1
   std::vector<double> flow_stress;          ///< true flow stress at those points, Pa
   double johnson_cook_a = 0.0;              ///< Johnson-Cook A, Pa (0 = not given)
