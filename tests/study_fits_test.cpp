@@ -1,19 +1,26 @@
 // study_fits_test.cpp: the report's fits with their uncertainty (src/study/fits.h): least squares
 // with standard errors against the closed-form formulas, Kienzle's law on noise-free data and
 // the coverage of its intervals on noisy data, Richardson's extrapolation on sequences with a
-// known limit.
+// known limit, and the report's sections (report.md) on synthetic study directories.
 #include <gtest/gtest.h>
 
 #include <boost/math/distributions/binomial.hpp>
 #include <cmath>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <vector>
 
 #include "study/fits.h"
+#include "study/report.h"
+#include "study/study.h"
+#include "study/study_record.h"
+#include "test_helpers.h"
 
 namespace swarf {
 namespace {
+
+namespace fs = std::filesystem;
 
 // Kienzle on exact data: F/b = 1500 h^0.78 N/mm (C45, docs/cutting-data.md) at five depths.
 // Tolerance 1e-10 relative: the data are the law itself, so only rounding in pow, log and the
@@ -216,6 +223,122 @@ TEST(StudyFits, RichardsonOrderOutOfRangeTwoRadiiAndOne) {
   const Richardson bad = richardson({-1.0, 0.0, 0.5, 1.0}, {1.0, 1.0, 3.0, 4.0});
   EXPECT_EQ(bad.skipped, 2u);
   EXPECT_EQ(bad.method, RichardsonMethod::two_radii);
+}
+
+// A summary.json that case_status accepts as finished.
+void write_case_summary(const std::string& out, const Study& s, const StudyCase& c, nlohmann::json j) {
+  fs::create_directories(case_dir(out, c));
+  j["status"] = "completed";
+  j["overrides"] = case_overrides(s, c);
+  test::write_file((fs::path(case_dir(out, c)) / "summary.json").string(), j.dump(1));
+}
+
+// A depth study with two speeds and two seeds per point: Kienzle per speed (the tool's origin
+// moves with the depth and does not split the cases; the seeds are pooled as points), then all
+// cases pooled. Exact laws, so the printed kc1.1 and mc are the chosen ones to the 5 digits
+// printed; the thrust force has its own kt1.1, mt.
+TEST(Report, KienzleSectionPerGroupOfCases) {
+  test::TempDir dir("fits_kienzle");
+  const std::string out = dir / "out";
+  const Study s = parse_study(R"(base = "first_cut.toml"
+plots = false
+repetitions = 2
+seed_key = "workpiece.disorder_seed"
+[grid]
+mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.3e-3], [0, 0, 2.1e-3]]
+cut.speed = [5.0, 10.0]
+)",
+                              "depth.toml", dir.str());
+  write_study_json(s, out);
+  ASSERT_EQ(s.cases.size(), 12u);
+  for (const StudyCase& c : s.cases) {
+    const double z = std::stod(c.values.at("mesh.0.origin").substr(c.values.at("mesh.0.origin").rfind(',') + 1));
+    const double h_m = 2.5e-3 - z, h_mm = h_m * 1e3;
+    const bool slow = c.values.at("cut.speed") == "5.0";
+    const double fc = (slow ? 1500.0 : 1400.0) * std::pow(h_mm, slow ? 0.78 : 0.75);  // N/mm
+    const double ft = 600.0 * std::pow(h_mm, 0.6);
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", fc * 1e3},
+                    {"thrust_force_per_width_mean_N_per_m", ft * 1e3}};
+    j["chip"] = {{"depth_of_cut_m", h_m}};
+    write_case_summary(out, s, c, j);
+  }
+  const std::string md = test::read_file(write_report(out));
+  ASSERT_NE(md.find("## Kienzle's law"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cut.speed = 5.0 | 6 | 1500 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| cut.speed = 10.0 | 6 | 1400 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.22 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.25 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| all cases pooled | 12 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| cut.speed = 5.0 | 6 | 600 | "), std::string::npos) << md;  // kt1.1
+  EXPECT_NE(md.find("| 0.4 | "), std::string::npos) << md;                        // mt
+  EXPECT_EQ(md.find("undefined (2 points)"), std::string::npos) << md;
+}
+
+// Two depths: the law through both, its errors undefined and said so.
+TEST(Report, KienzleSectionWithTwoDepthsSaysErrorsUndefined) {
+  test::TempDir dir("fits_kienzle2");
+  const std::string out = dir / "out";
+  const Study s = parse_study(R"(base = "first_cut.toml"
+plots = false
+[grid]
+mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3]]
+)",
+                              "depth.toml", dir.str());
+  write_study_json(s, out);
+  for (int k = 0; k < 2; ++k) {
+    const double h_mm = k == 0 ? 0.1 : 0.3;
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 1e3 * 1700.0 * std::pow(h_mm, 0.8)}};
+    j["chip"] = {{"depth_of_cut_m", h_mm * 1e-3}};
+    write_case_summary(out, s, s.cases[k], j);
+  }
+  const std::string md = test::read_file(write_report(out));
+  EXPECT_NE(md.find("| all cases | 2 | 1700 | undefined (2 points) | - | 0.2 | undefined (2 points) |"),
+            std::string::npos)
+      << md;
+}
+
+// A refinement study over workpiece.radius (ratio 2, the cells moving with the radius):
+// Fc/w = 2e5 (1 + (R / 4e-5)^2) N/m extrapolates to 2e5 N/m with p = 2; the chip thickness
+// oscillates and falls back to the line, with the reason; no temperature column, no row.
+TEST(Report, RichardsonSectionOverRadius) {
+  test::TempDir dir("fits_richardson");
+  const std::string out = dir / "out";
+  const Study s = parse_study(R"(base = "first_cut.toml"
+plots = false
+[[point]]
+workpiece.radius = 4e-5
+workpiece.cells = [40, 2, 8]
+[[point]]
+workpiece.radius = 2e-5
+workpiece.cells = [80, 2, 16]
+[[point]]
+workpiece.radius = 1e-5
+workpiece.cells = [160, 2, 32]
+)",
+                              "refine.toml", dir.str());
+  write_study_json(s, out);
+  const double thickness[3] = {3.0e-4, 3.2e-4, 3.1e-4};
+  for (int k = 0; k < 3; ++k) {
+    const double R = 4e-5 / std::pow(2.0, k);
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 2e5 * (1.0 + std::pow(R / 4e-5, 2))},
+                    {"thrust_force_per_width_mean_N_per_m", 1e5}};
+    j["chip"] = {{"thickness_m", thickness[k]}};
+    write_case_summary(out, s, s.cases[k], j);
+  }
+  const std::string md = test::read_file(write_report(out));
+  ASSERT_NE(md.find("## Extrapolation to a vanishing particle radius"), std::string::npos) << md;
+  // Fc: finest 2e5 * 1.0625 = 212500; f0 2e5; p 2; GCI 1.25 * 37500 / 3 = 15625; change 37500 / 212500.
+  EXPECT_NE(md.find("| Fc/w (`cutting.cutting_force_per_width_mean_N_per_m`) | 3 (1, 1, 1) | 1e-05 | 2.125e+05 N/m | "
+                    "2e+05 N/m | 2 (observed) | GCI 1.56e+04 N/m | 17.65 % (> 5 %) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 1e+05 N/m | 1 (assumed) |"), std::string::npos) << md;  // Ft constant: no order
+  EXPECT_NE(md.find("- chip thickness h_c: oscillatory"), std::string::npos) << md;
+  EXPECT_EQ(md.find("chip_temperature"), std::string::npos) << md;
+  EXPECT_EQ(md.find("workpiece.cells ="), std::string::npos) << "the cells move with R: one group\n" << md;
 }
 
 }  // namespace

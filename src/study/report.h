@@ -8,7 +8,7 @@
 
 namespace swarf {
 
-/// y = slope x + intercept by least squares (fit_line of hysteresis.h) with its coefficient of
+/// y = slope x + intercept by least squares (fit_ols of fits.h) with its coefficient of
 /// determination r2 = 1 - SS_res / SS_tot (1 when y is constant and fitted exactly).
 /// ok = false with fewer than two distinct x.
 struct LinearFit {
