@@ -275,21 +275,22 @@ cut.speed = [5.0, 10.0]
   EXPECT_EQ(md.find("undefined (2 points)"), std::string::npos) << md;
 }
 
-// Two depths: the law through both, its errors undefined and said so.
+// Two usable depths: the law through both, its errors undefined and said so. A third case
+// whose force is negative (a thrust that pulls, a broken run) has no logarithm: left out, counted.
 TEST(Report, KienzleSectionWithTwoDepthsSaysErrorsUndefined) {
   test::TempDir dir("fits_kienzle2");
   const std::string out = dir / "out";
   const Study s = parse_study(R"(base = "first_cut.toml"
 plots = false
 [grid]
-mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3]]
+mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3], [0, 0, 2.0e-3]]
 )",
                               "depth.toml", dir.str());
   write_study_json(s, out);
-  for (int k = 0; k < 2; ++k) {
-    const double h_mm = k == 0 ? 0.1 : 0.3;
+  for (int k = 0; k < 3; ++k) {
+    const double h_mm = 0.1 + 0.2 * k;
     nlohmann::json j;
-    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 1e3 * 1700.0 * std::pow(h_mm, 0.8)}};
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", k == 2 ? -5e3 : 1e3 * 1700.0 * std::pow(h_mm, 0.8)}};
     j["chip"] = {{"depth_of_cut_m", h_mm * 1e-3}};
     write_case_summary(out, s, s.cases[k], j);
   }
@@ -297,6 +298,24 @@ mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3]]
   EXPECT_NE(md.find("| all cases | 2 | 1700 | undefined (2 points) | - | 0.2 | undefined (2 points) |"),
             std::string::npos)
       << md;
+  EXPECT_NE(md.find("1 case(s) left out: a depth or force that is not positive"), std::string::npos) << md;
+}
+
+// A study whose cases have not run (or all failed): the report is written, without the fits.
+TEST(Report, FitsLeftOutWithoutCompletedCases) {
+  test::TempDir dir("fits_empty");
+  const std::string out = dir / "out";
+  const Study s = parse_study(R"(base = "first_cut.toml"
+plots = false
+[grid]
+workpiece.radius = [1e-5, 2e-5, 4e-5]
+)",
+                              "refine.toml", dir.str());
+  write_study_json(s, out);
+  const std::string md = test::read_file(write_report(out));
+  EXPECT_NE(md.find("3 cases: 0 completed"), std::string::npos) << md;
+  EXPECT_EQ(md.find("## Extrapolation"), std::string::npos) << md;
+  EXPECT_EQ(md.find("## Kienzle"), std::string::npos) << md;
 }
 
 // A refinement study over workpiece.radius (ratio 2, the cells moving with the radius):
