@@ -233,6 +233,14 @@ void write_case_summary(const std::string& out, const Study& s, const StudyCase&
   test::write_file((fs::path(case_dir(out, c)) / "summary.json").string(), j.dump(1));
 }
 
+// A study (base "first_cut.toml", no plots, then the given keys) recorded in DIR/out as swarf
+// sweep records it, before any case has run.
+Study recorded_study(const test::TempDir& dir, const std::string& keys) {
+  const Study s = parse_study("base = \"first_cut.toml\"\nplots = false\n" + keys, "study.toml", dir.str());
+  write_study_json(s, dir / "out");
+  return s;
+}
+
 // A depth study with two speeds and two seeds per point: Kienzle per speed (the tool's origin
 // moves with the depth and does not split the cases; the seeds are pooled as points), then all
 // cases pooled. Exact laws, so the printed kc1.1 and mc are the chosen ones to the 5 digits
@@ -240,16 +248,12 @@ void write_case_summary(const std::string& out, const Study& s, const StudyCase&
 TEST(Report, KienzleSectionPerGroupOfCases) {
   test::TempDir dir("fits_kienzle");
   const std::string out = dir / "out";
-  const Study s = parse_study(R"(base = "first_cut.toml"
-plots = false
-repetitions = 2
+  const Study s = recorded_study(dir, R"(repetitions = 2
 seed_key = "workpiece.disorder_seed"
 [grid]
 mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.3e-3], [0, 0, 2.1e-3]]
 cut.speed = [5.0, 10.0]
-)",
-                              "depth.toml", dir.str());
-  write_study_json(s, out);
+)");
   ASSERT_EQ(s.cases.size(), 12u);
   for (const StudyCase& c : s.cases) {
     const double z = std::stod(c.values.at("mesh.0.origin").substr(c.values.at("mesh.0.origin").rfind(',') + 1));
@@ -280,13 +284,9 @@ cut.speed = [5.0, 10.0]
 TEST(Report, KienzleSectionWithTwoDepthsSaysErrorsUndefined) {
   test::TempDir dir("fits_kienzle2");
   const std::string out = dir / "out";
-  const Study s = parse_study(R"(base = "first_cut.toml"
-plots = false
-[grid]
+  const Study s = recorded_study(dir, R"([grid]
 mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3], [0, 0, 2.0e-3]]
-)",
-                              "depth.toml", dir.str());
-  write_study_json(s, out);
+)");
   for (int k = 0; k < 3; ++k) {
     const double h_mm = 0.1 + 0.2 * k;
     nlohmann::json j;
@@ -305,13 +305,9 @@ mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3], [0, 0, 2.0e-3]]
 TEST(Report, FitsLeftOutWithoutCompletedCases) {
   test::TempDir dir("fits_empty");
   const std::string out = dir / "out";
-  const Study s = parse_study(R"(base = "first_cut.toml"
-plots = false
-[grid]
+  const Study s = recorded_study(dir, R"([grid]
 workpiece.radius = [1e-5, 2e-5, 4e-5]
-)",
-                              "refine.toml", dir.str());
-  write_study_json(s, out);
+)");
   const std::string md = test::read_file(write_report(out));
   EXPECT_NE(md.find("3 cases: 0 completed"), std::string::npos) << md;
   EXPECT_EQ(md.find("## Extrapolation"), std::string::npos) << md;
@@ -324,9 +320,7 @@ workpiece.radius = [1e-5, 2e-5, 4e-5]
 TEST(Report, RichardsonSectionOverRadius) {
   test::TempDir dir("fits_richardson");
   const std::string out = dir / "out";
-  const Study s = parse_study(R"(base = "first_cut.toml"
-plots = false
-[[point]]
+  const Study s = recorded_study(dir, R"([[point]]
 workpiece.radius = 4e-5
 workpiece.cells = [40, 2, 8]
 [[point]]
@@ -335,9 +329,7 @@ workpiece.cells = [80, 2, 16]
 [[point]]
 workpiece.radius = 1e-5
 workpiece.cells = [160, 2, 32]
-)",
-                              "refine.toml", dir.str());
-  write_study_json(s, out);
+)");
   const double thickness[3] = {3.0e-4, 3.2e-4, 3.1e-4};
   for (int k = 0; k < 3; ++k) {
     const double R = 4e-5 / std::pow(2.0, k);
