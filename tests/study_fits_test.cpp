@@ -2,6 +2,7 @@
 // with standard errors against the closed-form formulas, Kienzle's law on noise-free data and
 // the coverage of its intervals on noisy data, Richardson's extrapolation on sequences with a
 // known limit, and the report's sections (report.md) on synthetic study directories.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <boost/math/distributions/binomial.hpp>
@@ -95,6 +96,60 @@ TEST(StudyFits, KienzleStandardErrorsMatchClosedForm) {
   EXPECT_NEAR(k.k11_low, std::exp(a - t * se_a), 1e-9 * std::exp(a));
   EXPECT_NEAR(k.k11_high, std::exp(a + t * se_a), 1e-9 * std::exp(a));
   EXPECT_GT(se_b, 0.01);  // the offsets are not a line: the errors are real, not rounding
+}
+
+// Weighted least squares against the weighted normal equations, computed here from raw sums:
+// det = Sw Swxx - Swx^2, cov = s^2 [[Swxx, -Swx], [-Swx, Sw]] / det, s^2 = Sum w e^2 / (n - 2).
+// Weights scaled by a common factor change nothing (they are relative); Kienzle's weighted fit
+// is this line in log-log with w = (F / ci)^2, and a point without a positive interval is left
+// out. Tolerance 1e-9 relative: two roundings of the same algebra, as above.
+TEST(StudyFits, WeightedFitMatchesClosedFormAndIgnoresWeightScale) {
+  const std::vector<double> x{0.0, 1.0, 2.0, 3.0, 4.0}, y{1.1, 2.9, 5.2, 6.8, 9.3}, w{1.0, 4.0, 0.5, 2.0, 1.0};
+  double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (int i = 0; i < 5; ++i) {
+    sw += w[i];
+    sx += w[i] * x[i];
+    sy += w[i] * y[i];
+    sxx += w[i] * x[i] * x[i];
+    sxy += w[i] * x[i] * y[i];
+  }
+  const double det = sw * sxx - sx * sx, b = (sw * sxy - sx * sy) / det, a = (sxx * sy - sx * sxy) / det;
+  double rss = 0;
+  for (int i = 0; i < 5; ++i) rss += w[i] * std::pow(y[i] - a - b * x[i], 2);
+  const double s2 = rss / 3;
+  const OlsLine f = fit_wls(x, y, w);
+  ASSERT_TRUE(f.ok && f.has_se);
+  EXPECT_NEAR(f.slope, b, 1e-9 * std::abs(b));
+  EXPECT_NEAR(f.intercept, a, 1e-9 * std::abs(a));
+  EXPECT_NEAR(f.se_slope, std::sqrt(s2 * sw / det), 1e-9 * std::sqrt(s2 * sw / det));
+  EXPECT_NEAR(f.se_intercept, std::sqrt(s2 * sxx / det), 1e-9 * std::sqrt(s2 * sxx / det));
+  std::vector<double> w7;
+  for (double v : w) w7.push_back(7.0 * v);
+  const OlsLine g = fit_wls(x, y, w7);
+  EXPECT_NEAR(g.se_slope, f.se_slope, 1e-12 * f.se_slope);
+  EXPECT_NEAR(g.se_intercept, f.se_intercept, 1e-12 * f.se_intercept);
+  EXPECT_NEAR(g.r2, f.r2, 1e-12);
+  const OlsLine o = fit_wls(x, y, std::vector<double>(5, 1.0)), p = fit_ols(x, y);
+  EXPECT_EQ(o.slope, p.slope);
+  EXPECT_EQ(o.se_intercept, p.se_intercept);
+
+  const std::vector<double> h{0.1, 0.2, 0.3, 0.4, 0.5}, F{200.0, 330.0, 470.0, 560.0, 700.0};
+  const std::vector<double> ci{20.0, 10.0, 50.0, 0.0, 30.0};  // the fourth has no interval
+  const KienzleFit k = fit_kienzle(h, F, ci);
+  EXPECT_TRUE(k.weighted);
+  EXPECT_EQ(k.n, 4u);
+  EXPECT_EQ(k.skipped, 1u);
+  std::vector<double> lh, lf, wk;
+  for (int i : {0, 1, 2, 4}) {
+    lh.push_back(std::log(h[i]));
+    lf.push_back(std::log(F[i]));
+    wk.push_back(std::pow(F[i] / ci[i], 2));
+  }
+  const OlsLine l = fit_wls(lh, lf, wk);
+  EXPECT_NEAR(k.m, 1.0 - l.slope, 1e-12);
+  EXPECT_NEAR(k.se_m, l.se_slope, 1e-12 * l.se_slope);
+  EXPECT_NEAR(k.k11, std::exp(l.intercept), 1e-12 * k.k11);
+  EXPECT_GT(std::abs(k.m - fit_kienzle(h, F).m), 1e-3);  // the weights matter for these data
 }
 
 // A standard normal deviate by Box-Muller from two 53-bit uniforms of mt19937_64 (the same on
@@ -299,6 +354,43 @@ mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3], [0, 0, 2.0e-3]]
             std::string::npos)
       << md;
   EXPECT_NE(md.find("1 case(s) left out: a depth or force that is not positive"), std::string::npos) << md;
+}
+
+// Each steady mean with its 95 % interval: a weighted row beside the plain one, weighted by
+// (F / CI)^2. The expected numbers come from fit_kienzle on the same data in N/mm (its weighting
+// is checked against the closed form in StudyFits.WeightedFitMatchesClosedFormAndIgnoresWeightScale):
+// this checks that the report pairs each force with its own interval column and prints both
+// rows, to the 5 digits printed. (The weights are relative, so their unit cannot matter.)
+TEST(Report, KienzleSectionWeightedByIntervals) {
+  test::TempDir dir("fits_kienzle_ci");
+  const std::string out = dir / "out";
+  const Study s = recorded_study(dir, R"([grid]
+mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.3e-3], [0, 0, 2.2e-3], [0, 0, 2.1e-3]]
+)");
+  const double e[4] = {0.05, -0.04, 0.02, -0.03}, ci_kN[4] = {30.0, 5.0, 40.0, 10.0};
+  std::vector<double> h, F, ci;
+  for (int k = 0; k < 4; ++k) {
+    h.push_back(0.1 * (k + 1));
+    F.push_back(1600.0 * std::pow(h.back(), 0.8) * std::exp(e[k]));
+    ci.push_back(ci_kN[k]);
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", F.back() * 1e3},
+                    {"cutting_force_per_width_ci95_N_per_m", ci.back() * 1e3}};
+    j["chip"] = {{"depth_of_cut_m", h.back() * 1e-3}};
+    write_case_summary(out, s, s.cases[k], j);
+  }
+  const KienzleFit plain = fit_kienzle(h, F), weighted = fit_kienzle(h, F, ci);
+  ASSERT_GT(std::abs(plain.m - weighted.m), 1e-3);
+  const std::string md = test::read_file(write_report(out));
+  EXPECT_NE(md.find(fmt::format("| all cases | 4 | {:.5g} | {:.3g} |", plain.k11, plain.se_k11)), std::string::npos)
+      << md;
+  EXPECT_NE(md.find(fmt::format("| all cases, weighted | 4 | {:.5g} | {:.3g} |", weighted.k11, weighted.se_k11)),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find(fmt::format("| {:.5g} | {:.3g} | [{:.5g}, {:.5g}] |", weighted.m, weighted.se_m, weighted.m_low,
+                                weighted.m_high)),
+            std::string::npos)
+      << md;
 }
 
 // A study whose cases have not run (or all failed): the report is written, without the fits.

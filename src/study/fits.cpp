@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -12,22 +13,26 @@
 namespace swarf {
 
 OlsLine fit_ols(const std::vector<double>& x, const std::vector<double>& y) {
+  return fit_wls(x, y, std::vector<double>(std::min(x.size(), y.size()), 1.0));
+}
+
+OlsLine fit_wls(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w) {
   OlsLine f;
-  f.n = std::min(x.size(), y.size());
+  f.n = std::min({x.size(), y.size(), w.size()});
   if (f.n < 2 || std::set<double>(x.begin(), x.begin() + f.n).size() < 2) return f;
   // Centred sums: the log-log fit has x far from 0 relative to its spread (ln of 0.1..0.3 mm),
   // where the raw sums Sum x^2 - n mean^2 lose digits.
-  const double n = double(f.n);
-  double mx = 0, my = 0;
+  double sw = 0, mx = 0, my = 0;
+  for (std::size_t k = 0; k < f.n; ++k) sw += w[k];
   for (std::size_t k = 0; k < f.n; ++k) {
-    mx += x[k] / n;
-    my += y[k] / n;
+    mx += w[k] * x[k] / sw;
+    my += w[k] * y[k] / sw;
   }
   double sxx = 0, sxy = 0, syy = 0;
   for (std::size_t k = 0; k < f.n; ++k) {
-    sxx += (x[k] - mx) * (x[k] - mx);
-    sxy += (x[k] - mx) * (y[k] - my);
-    syy += (y[k] - my) * (y[k] - my);
+    sxx += w[k] * (x[k] - mx) * (x[k] - mx);
+    sxy += w[k] * (x[k] - mx) * (y[k] - my);
+    syy += w[k] * (y[k] - my) * (y[k] - my);
   }
   f.ok = true;
   f.slope = sxy / sxx;
@@ -35,32 +40,38 @@ OlsLine fit_ols(const std::vector<double>& x, const std::vector<double>& y) {
   double ss_res = 0;
   for (std::size_t k = 0; k < f.n; ++k) {
     const double e = y[k] - (f.intercept + f.slope * x[k]);
-    ss_res += e * e;
+    ss_res += w[k] * e * e;
   }
   f.r2 = syy > 0 ? 1.0 - ss_res / syy : (ss_res == 0 ? 1.0 : 0.0);
   if (f.n >= 3) {
-    const double s2 = ss_res / (n - 2.0);
+    // s^2 (X^T W X)^-1 with s^2 = Sum w e^2 / (n - 2): the weights need only be relative.
+    const double s2 = ss_res / (double(f.n) - 2.0);
     f.has_se = true;
     f.se_slope = std::sqrt(s2 / sxx);
-    f.se_intercept = std::sqrt(s2 * (1.0 / n + mx * mx / sxx));
+    f.se_intercept = std::sqrt(s2 * (1.0 / sw + mx * mx / sxx));
     f.t95 = student_t_975(f.n - 2);
   }
   return f;
 }
 
-KienzleFit fit_kienzle(const std::vector<double>& h_mm, const std::vector<double>& f_N_per_mm) {
+KienzleFit fit_kienzle(const std::vector<double>& h_mm, const std::vector<double>& f_N_per_mm,
+                       const std::vector<double>& ci95_N_per_mm) {
   KienzleFit k;
-  std::vector<double> lx, ly;
+  k.weighted = !ci95_N_per_mm.empty();
+  std::vector<double> lx, ly, w;
   for (std::size_t i = 0; i < std::min(h_mm.size(), f_N_per_mm.size()); ++i) {
     const double h = h_mm[i], f = f_N_per_mm[i];
-    if (!(std::isfinite(h) && std::isfinite(f) && h > 0 && f > 0)) {
+    const double ci = !k.weighted ? 1.0 : i < ci95_N_per_mm.size() ? ci95_N_per_mm[i] : NAN;
+    if (!(std::isfinite(h) && std::isfinite(f) && h > 0 && f > 0 && std::isfinite(ci) && ci > 0)) {
       ++k.skipped;
       continue;
     }
     lx.push_back(std::log(h));
     ly.push_back(std::log(f));
+    // The spread of ln F is about that of F over F (first order), so 1/sigma_ln^2 ~ (F / ci)^2.
+    w.push_back(k.weighted ? (f / ci) * (f / ci) : 1.0);
   }
-  const OlsLine line = fit_ols(lx, ly);
+  const OlsLine line = fit_wls(lx, ly, w);
   k.n = lx.size();
   if (!line.ok) return k;
   k.ok = true;

@@ -25,12 +25,17 @@ struct OlsLine {
   double t95 = 0.0;  ///< 0.975 quantile of Student's t with n - 2 degrees of freedom (has_se)
 };
 OlsLine fit_ols(const std::vector<double>& x, const std::vector<double>& y);
+/// The same with weights w > 0 (1 / variance of y, up to a common factor: the scale of the
+/// scatter is estimated from the weighted residuals, s^2 = Sum w e^2 / (n - 2), and the
+/// covariance is s^2 (X^T W X)^-1; r2 is the weighted one).
+OlsLine fit_wls(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w);
 
 /// Kienzle's law Fc/b = kc1.1 h^(1 - mc), fitted as ln(F/b) = ln kc1.1 + (1 - mc) ln h.
 struct KienzleFit {
   bool ok = false;                       ///< at least two distinct positive depths with a positive force
+  bool weighted = false;                 ///< weighted by the forces' confidence intervals
   std::size_t n = 0;                     ///< points fitted
-  std::size_t skipped = 0;               ///< points left out: a depth or force that is not a positive number
+  std::size_t skipped = 0;               ///< points left out: a depth, force (or interval) not a positive number
   double k11 = 0.0;                      ///< kc1.1: the force per width at h = 1 mm, N/mm^2 (N/mm per mm of h)
   double m = 0.0;                        ///< mc: 1 - the slope in log-log, 1
   double r2 = 0.0;                       ///< of the log-log line, 1
@@ -42,7 +47,11 @@ struct KienzleFit {
   double t95 = 0.0;                      ///< Student's t quantile used, n - 2 degrees of freedom
 };
 /// h_mm: uncut chip thickness (depth of cut), mm; f_N_per_mm: force per width, N/mm (= kN/m).
-KienzleFit fit_kienzle(const std::vector<double>& h_mm, const std::vector<double>& f_N_per_mm);
+/// With ci95_N_per_mm (the 95 % half-width of each force's steady mean, N/mm) the fit is
+/// weighted by (F / ci)^2, the inverse variance of ln F to first order up to a common factor;
+/// a point without a positive interval is then left out (skipped).
+KienzleFit fit_kienzle(const std::vector<double>& h_mm, const std::vector<double>& f_N_per_mm,
+                       const std::vector<double>& ci95_N_per_mm = {});
 
 /// The mean of y at each distinct x (x ascending), with the count: repetitions of a point
 /// pooled into one value before an extrapolation. Pairs with a non-finite x or y are left out.

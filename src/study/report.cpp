@@ -245,7 +245,9 @@ std::string kienzle_section(const Study& study, const StudyTable& t) {
       "ln(F/b) = ln k1.1 + (1 - m) ln h. k1.1 [N/mm^2] is the force per width at h = 1 mm, m [1] the exponent. SE: "
       "standard errors from the fit's covariance (of k1.1 by the delta method, k1.1 SE(ln k1.1)); 95 % CI from "
       "Student's t with n - 2 degrees of freedom (for k1.1 the interval of ln k1.1, mapped through exp). With two "
-      "points the line passes through both and the errors are undefined.";
+      "points the line passes through both and the errors are undefined. Rows marked weighted: the same fit with "
+      "weights (F / CI)^2 from each steady mean's 95 % interval (the `_ci95_` column), its scatter scale from the "
+      "weighted residuals; given where every case of the group has an interval.";
   out += groups.size() > 1 ? " One fit per group of the other varied keys (repetitions pooled as points), then all "
                              "cases pooled.\n\n"
                            : " Repetitions of a point are pooled as points.\n\n";
@@ -256,24 +258,36 @@ std::string kienzle_section(const Study& study, const StudyTable& t) {
                        name == "kc1.1" ? "mc" : "mt");
     out += "|---|---|---|---|---|---|---|---|---|\n";
     std::size_t skipped = 0;
-    auto fit_rows = [&](const std::vector<std::size_t>& rows) {
-      std::vector<double> hx, fy;
+    const std::string ci_col = ci95_key_of(col);
+    // weighted: by each mean's 95 % interval (fits.h); a case without one is left out there.
+    auto fit_rows = [&](const std::vector<std::size_t>& rows, bool weighted) {
+      std::vector<double> hx, fy, ci;
       for (std::size_t r : rows) {
         const auto f = t.number(r, col);
         if (!f) continue;
         hx.push_back(*h[r] * 1e3);  // m -> mm
         fy.push_back(*f / 1e3);     // N/m -> N/mm
+        if (weighted) ci.push_back(t.number(r, ci_col).value_or(NAN) / 1e3);
       }
-      return fit_kienzle(hx, fy);
+      return fit_kienzle(hx, fy, ci);
+    };
+    // The weighted row, only where every case of the plain fit has its interval.
+    auto weighted_row = [&](const std::string& label, const std::vector<std::size_t>& rows, const KienzleFit& plain) {
+      if (ci_col.empty() || t.column(ci_col) < 0) return std::string();
+      const KienzleFit w = fit_rows(rows, true);
+      return w.ok && w.n == plain.n ? kienzle_row(label + ", weighted", w) : std::string();
     };
     std::vector<std::size_t> all;
     for (const auto& g : groups) {
-      const KienzleFit k = fit_rows(g.rows);
+      const KienzleFit k = fit_rows(g.rows, false);
       skipped += k.skipped;
-      out += kienzle_row(g.label, k);
+      out += kienzle_row(g.label, k) + weighted_row(g.label, g.rows, k);
       all.insert(all.end(), g.rows.begin(), g.rows.end());
     }
-    if (groups.size() > 1) out += kienzle_row("all cases pooled", fit_rows(all));
+    if (groups.size() > 1) {
+      const KienzleFit k = fit_rows(all, false);
+      out += kienzle_row("all cases pooled", k) + weighted_row("all cases pooled", all, k);
+    }
     if (skipped)
       out += fmt::format("\n{} case(s) left out: a depth or force that is not positive has no logarithm.\n", skipped);
     out += "\n";
