@@ -406,7 +406,8 @@ workpiece.radius = [1e-5, 2e-5, 4e-5]
   EXPECT_EQ(md.find("## Kienzle"), std::string::npos) << md;
 }
 
-// A refinement study over workpiece.radius (ratio 2, the cells moving with the radius):
+// A refinement study over workpiece.radius (ratio 2, the cells moving with the radius, a clamp
+// key set by the coarsest point only, as in validation/studies/refinement.toml: neither splits):
 // Fc/w = 2e5 (1 + (R / 4e-5)^2) N/m extrapolates to 2e5 N/m with p = 2; the chip thickness
 // oscillates and falls back to the line, with the reason; no temperature column, no row.
 TEST(Report, RichardsonSectionOverRadius) {
@@ -415,6 +416,7 @@ TEST(Report, RichardsonSectionOverRadius) {
   const Study s = recorded_study(dir, R"([[point]]
 workpiece.radius = 4e-5
 workpiece.cells = [40, 2, 8]
+group.1.box_min = [3.4e-3, -1.0, 0.06e-3]
 [[point]]
 workpiece.radius = 2e-5
 workpiece.cells = [80, 2, 16]
@@ -442,6 +444,7 @@ workpiece.cells = [160, 2, 32]
   EXPECT_NE(md.find("- chip thickness h_c: oscillatory"), std::string::npos) << md;
   EXPECT_EQ(md.find("chip_temperature"), std::string::npos) << md;
   EXPECT_EQ(md.find("workpiece.cells ="), std::string::npos) << "the cells move with R: one group\n" << md;
+  EXPECT_EQ(md.find("group.1.box_min ="), std::string::npos) << "one point's key: one group\n" << md;
 }
 
 }  // namespace

@@ -171,23 +171,27 @@ struct CaseGroup {
 bool same_x(double a, double b) { return std::abs(a - b) <= 0.01 * std::max(std::abs(a), std::abs(b)); }
 
 // Groups the completed rows with an x by the varied keys other than x's own key and the seed
-// key (repetitions are pooled). A key whose every value goes with one x (the tool's origin of a
-// depth study, the cells of a refinement) moves with x and does not split the cases.
+// key (repetitions are pooled). Only a key that takes two values at one x splits the cases; one
+// that goes with x (the tool's origin of a depth study, the cells of a refinement, a key that
+// only one point sets) does not.
 std::vector<CaseGroup> groups_apart_from(const Study& study, const StudyTable& t,
                                          const std::vector<std::optional<double>>& x, const std::string& x_key) {
   std::vector<std::size_t> rows;
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     if (x[r] && t.status[r].state == CaseState::completed) rows.push_back(r);
+  // The rows by x, and where each run of equal x (same_x of neighbours) starts.
+  std::vector<std::size_t> by_x = rows;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return *x[a] < *x[b]; });
   std::vector<int> keys;
   for (const auto& p : study.parameters) {
     if (p == study.seed_key || p == x_key || t.column(p) < 0) continue;
     const int c = t.column(p);
-    std::map<std::string, std::vector<double>> xs_of;
-    for (std::size_t r : rows) xs_of[t.rows[r][c]].push_back(*x[r]);
-    bool moves_with_x = true;
-    for (const auto& [v, xs] : xs_of)
-      for (double xv : xs) moves_with_x = moves_with_x && same_x(xv, xs.front());
-    if (!moves_with_x) keys.push_back(c);
+    bool splits = false;
+    for (std::size_t k = 1, first = 0; k < by_x.size() && !splits; ++k) {
+      if (!same_x(*x[by_x[k]], *x[by_x[k - 1]])) first = k;
+      splits = t.rows[by_x[first]][c] != t.rows[by_x[k]][c];
+    }
+    if (splits) keys.push_back(c);
   }
   std::map<std::vector<std::string>, CaseGroup> by;
   for (std::size_t r : rows) {
