@@ -1,5 +1,6 @@
 // report.h: 'swarf report DIR': the Markdown report of a study (table, plots, the shear
-// angle against Merchant's theory, forces against depth of cut), and the least-squares fit.
+// angle against Merchant's theory, forces against depth of cut, Kienzle's law and the
+// extrapolation to a vanishing particle radius of fits.h), and the least-squares line.
 #pragma once
 
 #include <cstddef>
