@@ -335,25 +335,27 @@ cut.speed = [5.0, 10.0]
 }
 
 // Two usable depths: the law through both, its errors undefined and said so. A third case
-// whose force is negative (a thrust that pulls, a broken run) has no logarithm: left out, counted.
+// whose force is negative (a thrust that pulls, a broken run) has no logarithm: left out, counted;
+// a fourth without a finite depth is in no group.
 TEST(Report, KienzleSectionWithTwoDepthsSaysErrorsUndefined) {
   test::TempDir dir("fits_kienzle2");
   const std::string out = dir / "out";
   const Study s = recorded_study(dir, R"([grid]
-mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3], [0, 0, 2.0e-3]]
+mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.2e-3], [0, 0, 2.0e-3], [0, 0, 1.9e-3]]
 )");
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 4; ++k) {
     const double h_mm = 0.1 + 0.2 * k;
     nlohmann::json j;
     j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", k == 2 ? -5e3 : 1e3 * 1700.0 * std::pow(h_mm, 0.8)}};
-    j["chip"] = {{"depth_of_cut_m", h_mm * 1e-3}};
+    // The fourth: a depth the summary could not measure ("nan", as summary.json writes it): in no fit.
+    j["chip"] = {{"depth_of_cut_m", k == 3 ? nlohmann::json("nan") : nlohmann::json(h_mm * 1e-3)}};
     write_case_summary(out, s, s.cases[k], j);
   }
   const std::string md = test::read_file(write_report(out));
   EXPECT_NE(md.find("| all cases | 2 | 1700 | undefined (2 points) | - | 0.2 | undefined (2 points) |"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("1 case(s) left out: a depth or force that is not positive"), std::string::npos) << md;
+  EXPECT_NE(md.find("1 case(s) left out: a force that is missing or not positive"), std::string::npos) << md;
 }
 
 // Each steady mean with its 95 % interval: a weighted row beside the plain one, weighted by

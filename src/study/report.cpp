@@ -212,9 +212,11 @@ std::vector<CaseGroup> groups_apart_from(const Study& study, const StudyTable& t
   return out;
 }
 
+// A column's finite numbers (a summary's "nan" or "inf" is no x to fit against).
 std::vector<std::optional<double>> column_values(const StudyTable& t, const std::string& name) {
   std::vector<std::optional<double>> v(t.rows.size());
-  for (std::size_t r = 0; r < t.rows.size(); ++r) v[r] = t.number(r, name);
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (const auto x = t.number(r, name); x && std::isfinite(*x)) v[r] = x;
   return v;
 }
 
@@ -267,10 +269,8 @@ std::string kienzle_section(const Study& study, const StudyTable& t) {
     auto fit_rows = [&](const std::vector<std::size_t>& rows, bool weighted) {
       std::vector<double> hx, fy, ci;
       for (std::size_t r : rows) {
-        const auto f = t.number(r, col);
-        if (!f) continue;
-        hx.push_back(*h[r] * 1e3);  // m -> mm
-        fy.push_back(*f / 1e3);     // N/m -> N/mm
+        hx.push_back(*h[r] * 1e3);                           // m -> mm
+        fy.push_back(t.number(r, col).value_or(NAN) / 1e3);  // N/m -> N/mm; none: left out, counted
         if (weighted) ci.push_back(t.number(r, ci_col).value_or(NAN) / 1e3);
       }
       return fit_kienzle(hx, fy, ci);
@@ -293,7 +293,10 @@ std::string kienzle_section(const Study& study, const StudyTable& t) {
       out += kienzle_row("all cases pooled", k) + weighted_row("all cases pooled", all, k);
     }
     if (skipped)
-      out += fmt::format("\n{} case(s) left out: a depth or force that is not positive has no logarithm.\n", skipped);
+      out += fmt::format(
+          "\n{} case(s) left out: a force that is missing or not positive, or a depth that is not "
+          "positive, has no logarithm.\n",
+          skipped);
     out += "\n";
   }
   return out;
@@ -355,8 +358,7 @@ std::string richardson_section(const Study& study, const StudyTable& t) {
                          e.change <= 0.05 ? "<= 5 %" : "> 5 %");
       if (!e.note.empty())
         notes += fmt::format("- {}: {}; p = 1 assumed (least-squares line over {} radii).\n", what, e.note, e.radii);
-      if (e.skipped)
-        notes += fmt::format("- {}: {} case(s) left out (a radius that is not positive).\n", what, e.skipped);
+      if (e.skipped) notes += fmt::format("- {}: {} case(s) left out (a value that is not finite).\n", what, e.skipped);
     }
     out += notes.empty() ? "\n" : "\n" + notes + "\n";
   }
