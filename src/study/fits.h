@@ -81,7 +81,7 @@ struct Richardson {
   double f0 = 0.0;                        ///< the extrapolated f at R = 0
   double p = 0.0;                         ///< the observed order, or the assumed 1
   double r = 0.0;                         ///< refinement ratio of the two finest, R_second / R_finest
-  bool has_error = false;                 ///< false for a line through exactly two radii
+  bool has_error = false;                 ///< an error bar was computed (false only without an extrapolation)
   double error = 0.0;   ///< GCI of the finest radius (observed_order, two_radii) or the SE of f0 (line)
   double change = 0.0;  ///< |f_finest - f_second| / |f_finest|, 1 (inf when f_finest = 0 and they differ)
 };
