@@ -4,12 +4,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "io/atomic_file.h"
-#include "postprocess/hysteresis.h"
+#include "study/fits.h"
 #include "study/study_record.h"
 #include "study/study_table.h"
 
@@ -18,22 +20,14 @@ namespace swarf {
 namespace fs = std::filesystem;
 
 LinearFit fit_line_r2(const std::vector<double>& x, const std::vector<double>& y) {
+  const OlsLine line = fit_ols(x, y);
   LinearFit f;
-  f.n = std::min(x.size(), y.size());
-  if (f.n < 2 || std::set<double>(x.begin(), x.begin() + f.n).size() < 2) return f;
-  const LineFit line = fit_line(std::vector<double>(x.begin(), x.begin() + f.n),
-                                std::vector<double>(y.begin(), y.begin() + f.n));
+  f.n = line.n;
+  if (!line.ok) return f;
   f.ok = true;
   f.slope = line.slope;
   f.intercept = line.intercept;
-  double my = 0, ss_res = 0, ss_tot = 0;
-  for (std::size_t k = 0; k < f.n; ++k) my += y[k] / double(f.n);
-  for (std::size_t k = 0; k < f.n; ++k) {
-    const double e = y[k] - (f.slope * x[k] + f.intercept);
-    ss_res += e * e;
-    ss_tot += (y[k] - my) * (y[k] - my);
-  }
-  f.r2 = ss_tot > 0 ? 1.0 - ss_res / ss_tot : (ss_res == 0 ? 1.0 : 0.0);
+  f.r2 = line.r2;
   return f;
 }
 
@@ -166,6 +160,211 @@ std::string depth_section(const StudyTable& t) {
   return out + "\n";
 }
 
+// Cases that share every varied key that varies apart from x: the fits are made per group.
+struct CaseGroup {
+  std::string label;              ///< "key = value, ..." or "all cases"
+  std::vector<std::size_t> rows;  ///< completed rows with an x
+};
+
+// Two x of one point: equal to 1 %, so that a measured x (the depth of cut, which a jittered
+// surface moves by a fraction of a radius) still counts as one value.
+bool same_x(double a, double b) { return std::abs(a - b) <= 0.01 * std::max(std::abs(a), std::abs(b)); }
+
+// Groups the completed rows with an x by the varied keys other than x's own key and the seed
+// key (repetitions are pooled). Only a key that takes two values at one x splits the cases; one
+// that goes with x (the tool's origin of a depth study, the cells of a refinement, a key that
+// only one point sets) does not.
+std::vector<CaseGroup> groups_apart_from(const Study& study, const StudyTable& t,
+                                         const std::vector<std::optional<double>>& x, const std::string& x_key) {
+  std::vector<std::size_t> rows;
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (x[r] && t.status[r].state == CaseState::completed) rows.push_back(r);
+  // The rows by x, and where each run of equal x (same_x of neighbours) starts.
+  std::vector<std::size_t> by_x = rows;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return *x[a] < *x[b]; });
+  std::vector<int> keys;
+  for (const auto& p : study.parameters) {
+    if (p == study.seed_key || p == x_key || t.column(p) < 0) continue;
+    const int c = t.column(p);
+    bool splits = false;
+    for (std::size_t k = 1, first = 0; k < by_x.size() && !splits; ++k) {
+      if (!same_x(*x[by_x[k]], *x[by_x[k - 1]])) first = k;
+      splits = t.rows[by_x[first]][c] != t.rows[by_x[k]][c];
+    }
+    if (splits) keys.push_back(c);
+  }
+  std::map<std::vector<std::string>, CaseGroup> by;
+  for (std::size_t r : rows) {
+    std::vector<std::string> values;
+    std::string label;
+    for (int c : keys) {
+      values.push_back(t.rows[r][c]);
+      label += (label.empty() ? "" : ", ") + t.columns[c] + " = " + t.rows[r][c];
+    }
+    CaseGroup& g = by[values];
+    g.label = label.empty() ? "all cases" : label;
+    g.rows.push_back(r);
+  }
+  std::vector<CaseGroup> out;
+  for (auto& [v, g] : by) out.push_back(std::move(g));
+  // Groups in the order of their first case.
+  std::sort(out.begin(), out.end(), [](const CaseGroup& a, const CaseGroup& b) { return a.rows[0] < b.rows[0]; });
+  return out;
+}
+
+// A column's finite numbers (a summary's "nan" or "inf" is no x to fit against).
+std::vector<std::optional<double>> column_values(const StudyTable& t, const std::string& name) {
+  std::vector<std::optional<double>> v(t.rows.size());
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (const auto x = t.number(r, name); x && std::isfinite(*x)) v[r] = x;
+  return v;
+}
+
+std::string kienzle_row(const std::string& group, const KienzleFit& k) {
+  if (!k.ok)
+    return fmt::format("| {} | {} | fewer than two depths with a positive force: no fit | | | | | | |\n", group, k.n);
+  if (!k.has_se)
+    return fmt::format("| {} | {} | {:.5g} | undefined (2 points) | - | {:.5g} | undefined (2 points) | - | {:.6f} |\n",
+                       group, k.n, k.k11, k.m, k.r2);
+  return fmt::format("| {} | {} | {:.5g} | {:.3g} | [{:.5g}, {:.5g}] | {:.5g} | {:.3g} | [{:.5g}, {:.5g}] | {:.6f} |\n",
+                     group, k.n, k.k11, k.se_k11, k.k11_low, k.k11_high, k.m, k.se_m, k.m_low, k.m_high, k.r2);
+}
+
+// Kienzle's law Fc/b = kc1.1 h^(1 - mc) per group of cases, with standard errors.
+std::string kienzle_section(const Study& study, const StudyTable& t) {
+  const std::string depth_col = "chip.depth_of_cut_m";
+  const auto h = column_values(t, depth_col);
+  std::vector<double> distinct;
+  for (const auto& v : h)
+    if (v && std::none_of(distinct.begin(), distinct.end(), [&](double d) { return same_x(d, *v); }))
+      distinct.push_back(*v);
+  if (distinct.size() < 2) return "";
+  const std::vector<std::array<std::string, 3>> forces{
+      {"cutting force Fc/b: kc1.1, mc", "cutting.cutting_force_per_width_mean_N_per_m", "kc1.1"},
+      {"thrust force Ft/b: kt1.1, mt", "cutting.thrust_force_per_width_mean_N_per_m", "kt1.1"}};
+  if (std::none_of(forces.begin(), forces.end(), [&](const auto& f) { return t.column(f[1]) >= 0; })) return "";
+  const std::vector<CaseGroup> groups = groups_apart_from(study, t, h, depth_col);
+  std::string out = "## Kienzle's law\n\n";
+  out +=
+      "Kienzle's law F/b = k1.1 h^(1 - m), fitted by least squares in log-log to the steady mean force per width "
+      "(N/mm = kN/m, from the N/m of study.csv) against the depth of cut h (mm, `chip.depth_of_cut_m`): "
+      "ln(F/b) = ln k1.1 + (1 - m) ln h. k1.1 [N/mm^2] is the force per width at h = 1 mm, m [1] the exponent. SE: "
+      "standard errors from the fit's covariance (of k1.1 by the delta method, k1.1 SE(ln k1.1)); 95 % CI from "
+      "Student's t with n - 2 degrees of freedom (for k1.1 the interval of ln k1.1, mapped through exp). With two "
+      "points the line passes through both and the errors are undefined. Rows marked weighted: the same fit with "
+      "weights (F / CI)^2 from each steady mean's 95 % interval (the `_ci95_` column), its scatter scale from the "
+      "weighted residuals; given where every case of the group has an interval.";
+  out += groups.size() > 1 ? " One fit per group of the other varied keys (repetitions pooled as points), then all "
+                             "cases pooled.\n\n"
+                           : " Repetitions of a point are pooled as points.\n\n";
+  for (const auto& [what, col, name] : forces) {
+    if (t.column(col) < 0) continue;
+    out += fmt::format("{} (`{}`)\n\n", what, col);
+    out += fmt::format("| cases | points | {0} [N/mm^2] | SE | 95 % CI | {1} | SE | 95 % CI | R^2 (log-log) |\n", name,
+                       name == "kc1.1" ? "mc" : "mt");
+    out += "|---|---|---|---|---|---|---|---|---|\n";
+    std::size_t skipped = 0;
+    const std::string ci_col = ci95_key_of(col);
+    // weighted: by each mean's 95 % interval (fits.h); a case without one is left out there.
+    auto fit_rows = [&](const std::vector<std::size_t>& rows, bool weighted) {
+      std::vector<double> hx, fy, ci;
+      for (std::size_t r : rows) {
+        hx.push_back(*h[r] * 1e3);                           // m -> mm
+        fy.push_back(t.number(r, col).value_or(NAN) / 1e3);  // N/m -> N/mm; none: left out, counted
+        if (weighted) ci.push_back(t.number(r, ci_col).value_or(NAN) / 1e3);
+      }
+      return fit_kienzle(hx, fy, ci);
+    };
+    // The weighted row, only where every case of the plain fit has its interval.
+    auto weighted_row = [&](const std::string& label, const std::vector<std::size_t>& rows, const KienzleFit& plain) {
+      if (ci_col.empty() || t.column(ci_col) < 0) return std::string();
+      const KienzleFit w = fit_rows(rows, true);
+      return w.ok && w.n == plain.n ? kienzle_row(label + ", weighted", w) : std::string();
+    };
+    std::vector<std::size_t> all;
+    for (const auto& g : groups) {
+      const KienzleFit k = fit_rows(g.rows, false);
+      skipped += k.skipped;
+      out += kienzle_row(g.label, k) + weighted_row(g.label, g.rows, k);
+      all.insert(all.end(), g.rows.begin(), g.rows.end());
+    }
+    if (groups.size() > 1) {
+      const KienzleFit k = fit_rows(all, false);
+      out += kienzle_row("all cases pooled", k) + weighted_row("all cases pooled", all, k);
+    }
+    if (skipped)
+      out += fmt::format(
+          "\n{} case(s) left out: a force that is missing or not positive, or a depth that is not "
+          "positive, has no logarithm.\n",
+          skipped);
+    out += "\n";
+  }
+  return out;
+}
+
+// Richardson's extrapolation of the cut's numbers to a vanishing particle radius.
+std::string richardson_section(const Study& study, const StudyTable& t) {
+  const std::string radius_key = "workpiece.radius";
+  if (std::find(study.parameters.begin(), study.parameters.end(), radius_key) == study.parameters.end()) return "";
+  const auto R = column_values(t, radius_key);
+  const std::vector<CaseGroup> groups = groups_apart_from(study, t, R, radius_key);
+  std::set<double> radii;
+  for (const auto& g : groups)
+    for (std::size_t r : g.rows) radii.insert(*R[r]);
+  if (radii.size() < 2) return "";
+  const std::vector<std::array<std::string, 3>> quantities{
+      {"Fc/w", "cutting.cutting_force_per_width_mean_N_per_m", "N/m"},
+      {"Ft/w", "cutting.thrust_force_per_width_mean_N_per_m", "N/m"},
+      {"chip thickness h_c", "chip.thickness_m", "m"},
+      {"chip temperature", "chip.chip_temperature_K", "K"}};
+  std::string out = "## Extrapolation to a vanishing particle radius\n\n";
+  out +=
+      "Richardson's extrapolation of f(R) = f0 + c R^p to R -> 0 over the particle radius R (`workpiece.radius`, m); "
+      "repetitions of a radius are averaged first. With three or more radii the order p is observed on the three "
+      "finest (Celik et al. 2008, J. Fluids Eng. 130:078001) and the error bar is Roache's grid convergence index "
+      "GCI = 1.25 |f1 - f2| / (r^p - 1) of the finest radius (r = R2/R1); when the differences change sign, or p "
+      "is undefined or outside [0.5, 4], p = 1 is assumed, f0 is the intercept of the least-squares line f = f0 + "
+      "c R over all radii and the error bar its standard error. With two radii p = 1 is assumed and GCI = "
+      "3 |f1 - f2| / (r - 1). Change: |f1 - f2| / |f1| between the two finest radii (converged: at most 5 %).\n\n";
+  for (const auto& g : groups) {
+    if (groups.size() > 1) out += fmt::format("{}\n\n", g.label);
+    out +=
+        "| quantity | radii (cases per radius, finest first) | R finest [m] | f at R finest | f0 (R -> 0) | p | "
+        "error bar | change |\n|---|---|---|---|---|---|---|---|\n";
+    std::string notes;
+    for (const auto& [what, col, unit] : quantities) {
+      if (t.column(col) < 0) continue;
+      std::vector<double> rx, fy;
+      for (std::size_t r : g.rows)
+        if (const auto f = t.number(r, col)) {
+          rx.push_back(*R[r]);
+          fy.push_back(*f);
+        }
+      const Richardson e = richardson(rx, fy);
+      const std::string name = fmt::format("{} (`{}`)", what, col);
+      if (e.method == RichardsonMethod::none) {
+        out += fmt::format("| {} | {} | fewer than two radii: no extrapolation | | | | | |\n", name, e.radii);
+        continue;
+      }
+      std::string counts;
+      for (const auto& m : means_at_x(rx, fy)) counts += (counts.empty() ? "" : ", ") + std::to_string(m.n);
+      const std::string p = e.method == RichardsonMethod::observed_order ? fmt::format("{:.3g} (observed)", e.p)
+                                                                         : std::string("1 (assumed)");
+      const std::string err = !e.has_error                         ? "undefined"
+                              : e.method == RichardsonMethod::line ? fmt::format("SE {:.3g} {}", e.error, unit)
+                                                                   : fmt::format("GCI {:.3g} {}", e.error, unit);
+      out += fmt::format("| {} | {} ({}) | {:.4g} | {:.5g} {} | {:.5g} {} | {} | {} | {:.2f} % ({}) |\n", name, e.radii,
+                         counts, e.R_finest, e.f_finest, unit, e.f0, unit, p, err, 100.0 * e.change,
+                         e.change <= 0.05 ? "<= 5 %" : "> 5 %");
+      if (!e.note.empty())
+        notes += fmt::format("- {}: {}; p = 1 assumed (least-squares line over {} radii).\n", what, e.note, e.radii);
+      if (e.skipped) notes += fmt::format("- {}: {} case(s) left out (a value that is not finite).\n", what, e.skipped);
+    }
+    out += notes.empty() ? "\n" : "\n" + notes + "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string write_report(const std::string& dir) {
@@ -222,6 +421,8 @@ std::string write_report(const std::string& dir) {
     md += merchant_section(t);
     md += depth_section(t);
   }
+  md += kienzle_section(study, t);
+  md += richardson_section(study, t);
   const std::string path = (fs::path(dir) / "report.md").string();
   write_text_atomic(path, md);
   return path;

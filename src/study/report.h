@@ -1,5 +1,6 @@
 // report.h: 'swarf report DIR': the Markdown report of a study (table, plots, the shear
-// angle against Merchant's theory, forces against depth of cut), and the least-squares fit.
+// angle against Merchant's theory, forces against depth of cut, Kienzle's law and the
+// extrapolation to a vanishing particle radius of fits.h), and the least-squares line.
 #pragma once
 
 #include <cstddef>
@@ -8,7 +9,7 @@
 
 namespace swarf {
 
-/// y = slope x + intercept by least squares (fit_line of hysteresis.h) with its coefficient of
+/// y = slope x + intercept by least squares (fit_ols of fits.h) with its coefficient of
 /// determination r2 = 1 - SS_res / SS_tot (1 when y is constant and fitted exactly).
 /// ok = false with fewer than two distinct x.
 struct LinearFit {
