@@ -451,3 +451,59 @@ workpiece.cells = [160, 2, 32]
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// The ensemble over seeds: three seeds of one point with Fc/w 300, 310, 320 kN/m give the mean
+// 310, s = 10 and the interval t(2) s / sqrt 3 = 4.303 x 10 / 1.732 = 24.84 kN/m; each run's own
+// half-width of 2.262 kN/m over 10 batches (t(9) = 2.262: a standard error of 1 kN/m) gives
+// q = s / 1 = 10, the runs' own intervals far too narrow. Closed forms to the printed digits.
+TEST(Report, EnsembleOverSeedsBesideTheRunsOwnIntervals) {
+  test::TempDir dir("fits_ensemble");
+  const std::string out = dir / "out";
+  const Study s = recorded_study(
+      dir, "repetitions = 3\nseed_key = \"workpiece.disorder_seed\"\n[grid]\ncut.speed = [10.0]\n");
+  ASSERT_EQ(s.cases.size(), 3u);
+  for (const StudyCase& c : s.cases) {
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 300e3 + 10e3 * c.repetition},
+                    {"cutting_force_per_width_ci95_N_per_m", 2.262157e3},
+                    {"steady_batches", 10}};
+    j["chip"] = {{"depth_of_cut_m", 2e-4}};
+    write_case_summary(out, s, c, j);
+  }
+  const std::string md = test::read_file(write_report(out));
+  ASSERT_NE(md.find("## Ensemble over seeds"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cut.speed = 10.0 | Fc/w | 3 | 310 kN/m | +- 24.8 kN/m | 10 kN/m | +- 2.26 kN/m | 10.00 |"),
+            std::string::npos)
+      << md;
+  // One seed: no ensemble section (nothing to pool).
+  test::TempDir one("fits_ensemble_one");
+  const Study s1 = recorded_study(one, "[grid]\ncut.speed = [10.0]\n");
+  write_case_summary(one / "out", s1, s1.cases[0], {{"cutting", {{"cutting_force_per_width_mean_N_per_m", 3e5}}}});
+  EXPECT_EQ(test::read_file(write_report(one / "out")).find("## Ensemble over seeds"), std::string::npos);
+}
+
+// Oxley beside the cases: swarf's steady figure over Oxley's from each summary, the ratio to
+// three digits; a case without Oxley's solution says where the reason is.
+TEST(Report, OxleyBesideTheCases) {
+  test::TempDir dir("fits_oxley");
+  const std::string out = dir / "out";
+  const Study s = recorded_study(dir, "[grid]\ncut.speed = [5.0, 10.0]\n");
+  for (const StudyCase& c : s.cases) {
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 310e3}};
+    j["chip"] = {{"depth_of_cut_m", 2e-4}, {"thickness_m", 3.2e-4}};
+    j["oxley"] = {{"speed_m_per_s", 10.0}, {"solved", c.id == "0000"}};
+    if (c.id == "0000") j["oxley"].update({{"cutting_force_per_width_N_per_m", 248e3}, {"chip_thickness_m", 4e-4}});
+    write_case_summary(out, s, c, j);
+  }
+  const std::string md = test::read_file(write_report(out));
+  ASSERT_NE(md.find("## Oxley's theory beside the cases"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 310 / 248 = 1.250 | - | 0.32 / 0.4 = 0.800 | - |"), std::string::npos) << md;
+  EXPECT_NE(md.find("no solution (the case's summary.json `oxley.reason` says why)"), std::string::npos) << md;
+}
+
+}  // namespace
+}  // namespace swarf

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "io/atomic_file.h"
+#include "postprocess/steady_stats.h"
 #include "study/fits.h"
 #include "study/study_record.h"
 #include "study/study_table.h"
@@ -365,6 +366,139 @@ std::string richardson_section(const Study& study, const StudyTable& t) {
   return out;
 }
 
+// The cut's steady figures that the ensemble and Oxley sections read: label, study column, unit
+// to print, the factor from the column's unit to it.
+struct Figure {
+  const char* what;
+  const char* column;
+  const char* unit;
+  double scale;
+};
+const std::vector<Figure>& cut_figures() {
+  static const std::vector<Figure> f{{"Fc/w", "cutting.cutting_force_per_width_mean_N_per_m", "kN/m", 1e-3},
+                                     {"Ft/w", "cutting.thrust_force_per_width_mean_N_per_m", "kN/m", 1e-3},
+                                     {"chip thickness h_c", "chip.thickness_m", "mm", 1e3},
+                                     {"contact length", "chip.contact_length_m", "mm", 1e3},
+                                     {"chip temperature", "chip.chip_temperature_K", "K", 1.0},
+                                     {"rake-face temperature", "chip.rake_face_temperature_K", "K", 1.0}};
+  return f;
+}
+
+// The ensemble over the seeds of each point: the mean over its repetitions with the 95 %
+// interval t(n-1) s / sqrt(n) of the repetitions' scatter s, beside the runs' own intervals
+// (batch means within one run). The spread between seeds is the honest error of a chaotic cut;
+// a run's own interval that is narrower than s / sqrt(n) would make it (s over the runs' own
+// standard error well above 1) is too narrow (docs/studies.md).
+std::string ensemble_section(const Study& study, const StudyTable& t) {
+  if (study.seed_key.empty() || study.repetitions < 2) return "";
+  // The points: completed rows that share every varied key but the seed.
+  std::map<std::vector<std::string>, std::vector<std::size_t>> points;
+  std::vector<std::vector<std::string>> order;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.status[r].state != CaseState::completed) continue;
+    std::vector<std::string> key;
+    for (const auto& p : study.parameters)
+      if (p != study.seed_key && t.column(p) >= 0) key.push_back(p + " = " + t.rows[r][t.column(p)]);
+    if (!points.count(key)) order.push_back(key);
+    points[key].push_back(r);
+  }
+  std::string out = "## Ensemble over seeds\n\n";
+  out += fmt::format(
+      "Each point's repetitions over `{}` as an ensemble: the mean over its n seeds with the 95 % interval "
+      "t(n-1) s / sqrt(n), s the standard deviation between the seeds' steady means; beside it the mean of the "
+      "runs' "
+      "own 95 % half-widths (batch means within one run) and q = s / (the runs' own standard error, their "
+      "half-width "
+      "over t of their batches' degrees of freedom). q near 1: the runs' own intervals are honest; q well above 1 "
+      "(beyond about 2 with 3 seeds): they are too narrow, and the ensemble's interval is the one to quote.\n\n",
+      study.seed_key);
+  out += "| point | quantity | n | ensemble mean | 95 % interval | s between seeds | runs' own 95 % (mean) | q |\n";
+  out += "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& key : order) {
+    std::string label;
+    for (const auto& k : key) label += (label.empty() ? "" : ", ") + k;
+    if (label.empty()) label = "all cases";
+    const auto& rows = points[key];
+    for (const Figure& f : cut_figures()) {
+      if (t.column(f.column) < 0) continue;
+      std::vector<double> v, own_se, own_ci;
+      for (std::size_t r : rows) {
+        const auto x = t.number(r, f.column);
+        if (!x || !std::isfinite(*x)) continue;
+        v.push_back(*x);
+        const auto ci = t.number(r, ci95_key_of(f.column));
+        const auto batches = t.number(r, "cutting.steady_batches");
+        if (ci && std::isfinite(*ci)) {
+          own_ci.push_back(*ci);
+          if (batches && *batches >= 2) own_se.push_back(*ci / student_t_975(std::size_t(*batches) - 1));
+        }
+      }
+      if (v.size() < 2) {
+        out += fmt::format("| {} | {} | {} | fewer than two seeds with a value: no ensemble | | | | |\n", label, f.what,
+                           v.size());
+        continue;
+      }
+      const double n = double(v.size());
+      double mean = 0, ss = 0;
+      for (double x : v) mean += x / n;
+      for (double x : v) ss += (x - mean) * (x - mean);
+      const double sd = std::sqrt(ss / (n - 1));
+      const double half = student_t_975(v.size() - 1) * sd / std::sqrt(n);
+      double own = 0, se = 0;
+      for (double c : own_ci) own += c / double(own_ci.size());
+      for (double e : own_se) se += e / double(own_se.size());
+      out += fmt::format("| {} | {} | {} | {:.4g} {} | +- {:.3g} {} | {:.3g} {} | {} | {} |\n", label, f.what, v.size(),
+                         f.scale * mean, f.unit, f.scale * half, f.unit, f.scale * sd, f.unit,
+                         own_ci.empty() ? std::string("-") : fmt::format("+- {:.3g} {}", f.scale * own, f.unit),
+                         own_se.empty() || !(se > 0) ? std::string("-") : fmt::format("{:.2f}", sd / se));
+    }
+  }
+  return out + "\n";
+}
+
+// Oxley's theory beside each case (summary.json "oxley", postprocess/cut_oxley.h): swarf's
+// steady figure over Oxley's for the same material, speed, depth, rake and width.
+std::string oxley_section(const StudyTable& t) {
+  const std::vector<std::array<const char*, 4>> pairs{
+      {"Fc/w", "cutting.cutting_force_per_width_mean_N_per_m", "oxley.cutting_force_per_width_N_per_m", "kN/m"},
+      {"Ft/w", "cutting.thrust_force_per_width_mean_N_per_m", "oxley.thrust_force_per_width_N_per_m", "kN/m"},
+      {"h_c", "chip.thickness_m", "oxley.chip_thickness_m", "mm"},
+      {"contact length", "chip.contact_length_m", "oxley.contact_length_m", "mm"}};
+  if (t.column("oxley.speed_m_per_s") < 0) return "";
+  std::string out = "## Oxley's theory beside the cases\n\n";
+  out +=
+      "Oxley's predictive machining theory solved for each case's material, cutting speed, depth of cut, rake angle "
+      "and width (summary.json `oxley`; docs/outputs.md): a physics cross-check for a sharp tool and a continuous "
+      "chip, not a measurement. Each cell: swarf / Oxley = ratio.\n\n| case |";
+  for (const auto& p : pairs) out += fmt::format(" {} [{}] |", p[0], p[3]);
+  out += "\n|---|";
+  for (std::size_t k = 0; k < pairs.size(); ++k) out += "---|";
+  out += "\n";
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.status[r].state != CaseState::completed) continue;
+    out += fmt::format("| {} |", case_label(t, r));
+    if (!t.number(r, "oxley.cutting_force_per_width_N_per_m")) {
+      out += " no solution (the case's summary.json `oxley.reason` says why) |";
+      for (std::size_t k = 1; k < pairs.size(); ++k) out += " |";
+      out += "\n";
+      continue;
+    }
+    for (const auto& p : pairs) {
+      const auto a = t.number(r, p[1]), b = t.number(r, p[2]);
+      const double scale = std::string(p[3]) == "mm" ? 1e3 : 1e-3;
+      if (!b) {
+        out += " - |";
+      } else if (!a || !std::isfinite(*a)) {
+        out += fmt::format(" none / {:.4g} |", scale * *b);
+      } else {
+        out += fmt::format(" {:.4g} / {:.4g} = {:.3f} |", scale * *a, scale * *b, *a / *b);
+      }
+    }
+    out += "\n";
+  }
+  return out + "\n";
+}
+
 }  // namespace
 
 std::string write_report(const std::string& dir) {
@@ -423,6 +557,8 @@ std::string write_report(const std::string& dir) {
   }
   md += kienzle_section(study, t);
   md += richardson_section(study, t);
+  md += ensemble_section(study, t);
+  md += oxley_section(t);
   const std::string path = (fs::path(dir) / "report.md").string();
   write_text_atomic(path, md);
   return path;

@@ -28,7 +28,7 @@ using nlohmann::json;
 namespace {
 
 // The summary sections whose numbers become columns, in column order.
-const std::vector<std::string> kSections{"results", "cutting", "chip", "heat", "uniaxial", "run"};
+const std::vector<std::string> kSections{"results", "cutting", "chip", "oxley", "heat", "uniaxial", "run"};
 // Keys of "run" that measure the machine, not the physics: timing.csv only.
 const std::set<std::string> kTiming{"run.threads", "run.wall_time_s", "run.step_wall_time_s",
                                     "run.ns_per_particle_step"};
