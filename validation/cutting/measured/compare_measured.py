@@ -136,7 +136,11 @@ def load_study(directory, speed_key, speed_m_per_s):
         return [], "study.csv has no rows"
     cols = list(table[0].keys())
     note = f"speed {speed_m_per_s:g} m/s for every case (--speed-m-per-s)" if speed_m_per_s is not None else ""
-    if speed_key is None and speed_m_per_s is None:
+    if speed_key is None and speed_m_per_s is None and "oxley.speed_m_per_s" in cols:
+        # Runs from 2026-12-06 on record the tool's cutting speed with Oxley's reference.
+        speed_key = "oxley.speed_m_per_s"
+        note = "speed from each case's summary (oxley.speed_m_per_s, m/s)"
+    elif speed_key is None and speed_m_per_s is None:
         guess = [c for c in cols if c.endswith("velocity") or c.endswith("speed")]
         speed_key = guess[0] if guess else None
         note = (f"speed from the varied key {speed_key} (m/s, first component)" if speed_key else
