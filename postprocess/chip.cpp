@@ -179,6 +179,7 @@ ChipCurl measure_chip_curl(const ChipInput& in, const ChipMetrics& m) {
   const double lo0 = quantile(u0, 0.02), hi0 = quantile(u0, 0.98);
   const double width = hi0 - lo0 + 2.0 * in.radius;  // the local thickness: the window is +- one thickness
   std::vector<Vec2> pts{first + 0.5 * (lo0 + hi0) * Vec2(up[1], -up[0])};
+  std::vector<double> counts;  // particles in each slab after the first
   Vec2 dir = up;
   double turned = 0.0;
   for (std::size_t k = 0; k < chip.size() && turned < 2 * M_PI; ++k) {
@@ -190,6 +191,17 @@ ChipCurl measure_chip_curl(const ChipInput& in, const ChipMetrics& m) {
     turned += std::abs(std::atan2(dir[0] * d[1] - dir[1] * d[0], dir.dot(d)));
     dir = d;
     pts.push_back(next);
+    counts.push_back(double(u.size()));
+  }
+  // The slabs at the chip's end reach past it: partly filled, and unevenly across (its end face is not
+  // across the slab), so their midpoints are off the centreline (a point 20 um off at the end of a 90 deg
+  // curl of 0.5 mm gave 4 % on R_u). Trailing slabs with less than 3/4 of the median slab's particles go.
+  if (counts.size() >= 2) {
+    const double full = quantile(counts, 0.5);
+    while (!counts.empty() && counts.back() < 0.75 * full) {
+      counts.pop_back();
+      pts.pop_back();
+    }
   }
   c.points = pts.size();
   for (const Vec2& p : pts) c.centreline.emplace_back(p[0], 0.0, p[1]);

@@ -29,12 +29,13 @@
 // all the particles fail for a straight chip, whose circle of least algebraic error is centred on
 // the chip itself) and follows a chip that turns through any angle; it stops where a slab holds
 // fewer than 3 particles or a third of the first slab's (the chip's end; a gap before a stray
-// fragment), or after one full turn. The points are fitted with a circle: Kasa's algebraic least
-// squares, then Gauss-Newton on the geometric distance (kept when it lowers the rms residual). Not
-// measured (a note says why) with fewer than 5 points, when the points cover less than 30 deg of
-// their circle (a nearly straight chip, whose radius is not defined: a fit gives a large, noisy
-// number), or when the circle's centre lies on the tool's side of the first point (the centreline
-// bends back towards the face: a rounded chip head thinning to its end, not an up-curl).
+// fragment), or after one full turn; the trailing slabs with less than 3/4 of the median slab's
+// particles are dropped (at the chip's end a slab is partly filled, and unevenly across). The points are fitted with a
+// circle: Kasa's algebraic least squares, then Gauss-Newton on the geometric distance (kept when it lowers the rms
+// residual). Not measured (a note says why) with fewer than 5 points, when the points cover less than 30 deg of their
+// circle (a nearly straight chip, whose radius is not defined: a fit gives a large, noisy number), or when the circle's
+// centre lies on the tool's side of the first point (the centreline bends back towards the face: a rounded chip head
+// thinning to its end, not an up-curl).
 #pragma once
 
 #include <cmath>
