@@ -27,6 +27,7 @@ Vec2 in_plane(const Vec3& x) { return {x[0], x[2]}; }  // (x, z)
 constexpr double kCurlStepRadii = 4.0;     // centreline step: two particle diameters, in R
 constexpr std::size_t kCurlMinPoints = 5;  // fewer centreline points: not measured
 constexpr double kCurlMinArcDeg = 30.0;    // a smaller arc: a nearly straight chip, not measured
+constexpr double kCurlMaxTurnDeg = 30.0;   // a larger turn in one step: the march has left the chip
 
 struct Circle {
   Vec2 centre = Vec2::Zero();
@@ -188,7 +189,12 @@ ChipCurl measure_chip_curl(const ChipInput& in, const ChipMetrics& m) {
     if (u.size() < min_count) break;
     const Vec2 next = guess + 0.5 * (quantile(u, 0.02) + quantile(u, 0.98)) * Vec2(dir[1], -dir[0]);
     const Vec2 d = (next - pts.back()).normalized();
-    turned += std::abs(std::atan2(dir[0] * d[1] - dir[1] * d[0], dir.dot(d)));
+    // A turn of more than 30 deg in one step (a radius under about 2 steps, 8 R, which slabs of 4 R
+    // cannot resolve) is the march leaving the chip: at its end, slabs of a few end particles and
+    // strays pull the point aside, and the next slabs can run back along the chip.
+    const double turn = std::abs(std::atan2(dir[0] * d[1] - dir[1] * d[0], dir.dot(d)));
+    if (turn > kCurlMaxTurnDeg * kDeg) break;
+    turned += turn;
     dir = d;
     pts.push_back(next);
     counts.push_back(double(u.size()));

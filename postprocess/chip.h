@@ -14,28 +14,30 @@
 //   compression ratio r = h / h_c,  shear angle phi: tan(phi) = r cos(gamma) / (1 - r sin(gamma)),
 //   friction angle beta = gamma + atan(Ft / Fc),  Merchant: phi_M = 45 deg + gamma/2 - beta/2.
 //
-// Chip curl radius R_u (measure_chip_curl): the radius of curvature of the chip's centreline where
-// it has left the rake face, in the cut's plane x-z (plane strain: y, the width, is dropped).
-// The free part starts at s0 = max(contact length, 3 h) along the face: past the last particle
-// that touches the face and past the thickness section. Its centreline is traced by marching: from
-// the mid-thickness point of the chip's last slab on the face before s0 (one step long), step by two
-// particle diameters (4 R) along the current direction, take the chip particles in a slab across the
-// chip there (one step wide, twice the local thickness long), and put the next point
-// midway between the 2nd and 98th percentiles of their positions across the slab: midway between the
-// chip's two free surfaces, as h_c measures between them, so the inner and outer surfaces weigh
-// equally (the mean position would be the area centroid, t^2/(12 R_u) outside the centreline: 3 %
-// for t = 0.3 mm, R_u = 0.5 mm) and a stray particle in a slab moves the point by a fraction of a
-// spacing. Marching needs no first guess of the circle (bins of angle around a first circle fitted to
-// all the particles fail for a straight chip, whose circle of least algebraic error is centred on
-// the chip itself) and follows a chip that turns through any angle; it stops where a slab holds
-// fewer than 3 particles or a third of the first slab's (the chip's end; a gap before a stray
-// fragment), or after one full turn; the trailing slabs with less than 3/4 of the median slab's
-// particles are dropped (at the chip's end a slab is partly filled, and unevenly across). The points are fitted with a
-// circle: Kasa's algebraic least squares, then Gauss-Newton on the geometric distance (kept when it lowers the rms
-// residual). Not measured (a note says why) with fewer than 5 points, when the points cover less than 30 deg of their
-// circle (a nearly straight chip, whose radius is not defined: a fit gives a large, noisy number), or when the circle's
-// centre lies on the tool's side of the first point (the centreline bends back towards the face: a rounded chip head
-// thinning to its end, not an up-curl).
+// Chip curl radius R_u (measure_chip_curl): the radius of curvature of the chip's centreline where it has left the
+// rake face, in the cut's plane x-z (plane strain: y, the width, is dropped). The free part starts at s0 =
+// max(contact length, 3 h) along the face: past the last particle that touches the face and past the thickness
+// section. Its centreline is traced by marching: from the mid-thickness point of the chip's last slab on the face
+// before s0 (one step long), step by two particle diameters (4 R) along the current direction, take the chip
+// particles in a slab across the chip there (one step wide, plus and minus one local thickness long), and put the
+// next point midway between the 2nd and 98th percentiles of their positions across the slab: midway between the
+// chip's two free surfaces, as h_c measures between them, so the inner and outer surfaces weigh equally (the mean
+// position would be the area centroid, t^2/(12 R_u) outside the centreline: 3 % for t = 0.3 mm, R_u = 0.5 mm).
+// Stray particles count only within the slab's window; there a single one beyond a surface layer of several
+// particles (the tests' slabs of about 84) does not move the point, but in a slab of about 25 (the default cut's)
+// it moves it by up to half its distance from the surface, and the fit over all the points averages that out.
+// Marching needs no first guess of the circle (bins of angle around a first circle fitted to all the particles fail
+// for a straight chip, whose circle of least algebraic error is centred on the chip itself) and follows a chip that
+// turns through any angle. It stops where a slab holds fewer than 3 particles or a third of the first slab's (the
+// chip's end; a gap before a stray fragment), where one step turns by more than 30 deg (the march leaving the chip
+// at its end, pulled aside by a few end particles and strays; a radius under about 8 R is not resolved), or after
+// one full turn; the trailing slabs with less than 3/4 of the median slab's particles are dropped (at the chip's
+// end a slab is partly filled, and unevenly across). The points are fitted with a circle: Kasa's algebraic least
+// squares, then Gauss-Newton on the geometric distance (kept when it lowers the rms residual). Not measured (a note
+// says why) with fewer than 5 points, when the points cover less than 30 deg of their circle (a nearly straight
+// chip, whose radius is not defined: a fit gives a large, noisy number), or when the circle's centre lies on the
+// tool's side of the first point (the centreline bends back towards the face: a rounded chip head thinning to its
+// end, not an up-curl).
 #pragma once
 
 #include <cmath>

@@ -147,6 +147,27 @@ TEST(Chip, AJitteredCurledChipsRadiusIsRecovered) {
   EXPECT_GT(c.arc_deg, 100.0);
 }
 
+// The same chip with 20 stray particles 20 to 100 um off its surfaces (inside the slabs' window of
+// one thickness about the centre line), at random angles along the curl: a slab of about 84
+// particles puts its 98th percentile among the 4 of its surface layer, so one stray in a slab does
+// not move its point; the radius within the 2 % of the clean chip (see above).
+TEST(Chip, StrayParticlesDoNotMoveTheCurlRadius) {
+  const double R = 1e-5, h = 2e-4, hc = 3e-4, gamma = 10.0, ru = 5e-4;
+  ChipInput in = curled_chip(R, h, hc, gamma, 3 * h, ru, 120 * kDeg);
+  const Vec3 up = face_up(gamma), normal = face_normal(gamma);
+  const Vec3 centre = in.tool_tip + 3 * h * up + (ru + hc / 2) * normal;
+  std::mt19937_64 rng(34);
+  const auto unit = [&rng] { return double(rng() >> 11) * 0x1.0p-53; };  // [0, 1)
+  for (int k = 0; k < 20; ++k) {
+    const double phi = 120 * kDeg * unit(), off = 2e-5 + 8e-5 * unit();
+    const double rad = k % 2 ? ru + hc / 2 + off : ru - hc / 2 - off;  // outside, inside
+    in.position.push_back(centre + rad * (std::sin(phi) * up - std::cos(phi) * normal));
+  }
+  const ChipCurl c = measure_chip_curl(in, measure_chip(in));
+  ASSERT_TRUE(c.measured) << c.note;
+  EXPECT_NEAR(c.radius, ru, 0.02 * ru);
+}
+
 // A straight chip that runs on past the end of a 1 mm face: its centre line is a line, which
 // no circle describes: not measured, and the note says it is a nearly straight chip.
 TEST(Chip, AStraightChipHasNoCurlRadius) {
