@@ -23,21 +23,22 @@
 // next point midway between the 2nd and 98th percentiles of their positions across the slab: midway between the
 // chip's two free surfaces, as h_c measures between them, so the inner and outer surfaces weigh equally (the mean
 // position would be the area centroid, t^2/(12 R_u) outside the centreline: 3 % for t = 0.3 mm, R_u = 0.5 mm).
-// Stray particles count only within the slab's window; there a single one beyond a surface layer of several
-// particles (the tests' slabs of about 84) does not move the point, but in a slab of about 25 (the default cut's)
-// it moves it by up to half its distance from the surface, and the fit over all the points averages that out.
-// Marching needs no first guess of the circle (bins of angle around a first circle fitted to all the particles fail
-// for a straight chip, whose circle of least algebraic error is centred on the chip itself) and follows a chip that
-// turns through any angle. It stops where a slab holds fewer than 3 particles or a third of the first slab's (the
-// chip's end; a gap before a stray fragment), where one step turns by more than 30 deg (the march leaving the chip
-// at its end, pulled aside by a few end particles and strays; a radius under about 8 R is not resolved), or after
-// one full turn; the trailing slabs with less than 3/4 of the median slab's particles are dropped (at the chip's
-// end a slab is partly filled, and unevenly across). The points are fitted with a circle: Kasa's algebraic least
-// squares, then Gauss-Newton on the geometric distance (kept when it lowers the rms residual). Not measured (a note
-// says why) with fewer than 5 points, when the points cover less than 30 deg of their circle (a nearly straight
-// chip, whose radius is not defined: a fit gives a large, noisy number), or when the circle's centre lies on the
-// tool's side of the first point (the centreline bends back towards the face: a rounded chip head thinning to its
-// end, not an up-curl).
+// Stray particles count only within the slab's window, and there a single one beyond a surface does not move the
+// point when the slab holds at least 51 particles (the 98th percentile then lies below the largest of them; the
+// tests' slabs hold about 84, the default cut's about 100: 1655 chip particles along 0.87 mm of chip, with the
+// layers across the width); in a smaller slab it moves the point by a fraction of its distance from the surface,
+// and the fit over all the points averages that out. Marching needs no first guess of the circle (bins of angle
+// around a first circle fitted to all the particles would fail for a straight chip, whose circle of least algebraic
+// error is centred on the chip itself) and follows a chip that turns through any angle. It stops where a slab holds
+// fewer than 3 particles or a third of the first slab's (the chip's end; a gap before a stray fragment), where one step
+// turns by more than 30 deg (the march leaving the chip at its end, pulled aside by a few end particles and strays;
+// a radius under about 8 R is not resolved), or after one full turn; the trailing slabs with less than 3/4 of the
+// median slab's particles are dropped (at the chip's end a slab is partly filled, and unevenly across). The points
+// are fitted with a circle: Kasa's algebraic least squares, then Gauss-Newton on the geometric distance (kept when
+// it lowers the rms residual). Not measured (a note says why) with fewer than 5 points, when the points cover less
+// than 30 deg of their circle (a nearly straight chip, whose radius is not defined: a fit gives a large, noisy
+// number), or when the circle's centre lies on the tool's side of the first point (the centreline bends back
+// towards the face: a rounded chip head thinning to its end, not an up-curl).
 #pragma once
 
 #include <cmath>
