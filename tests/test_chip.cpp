@@ -128,7 +128,8 @@ TEST(Chip, ACurledChipsRadiusIsRecovered) {
 // uniformly, from a seeded mt19937_64 (the standard fixes its sequence; the doubles are made from
 // its bits, as std::uniform_real_distribution is not portable). The jitter moves each surface's
 // extreme percentiles outwards by about the same on both sides, so the midpoints stay unbiased;
-// what is left is each point's scatter (a few um), averaged over 26 points by the fit: within 3 % (0.5 % off as measured).
+// what is left is each point's scatter (a few um), averaged over 26 points by the fit: within 3 %
+// (0.5 % off as measured).
 TEST(Chip, AJitteredCurledChipsRadiusIsRecovered) {
   const double R = 1e-5, h = 2e-4, hc = 3e-4, gamma = 10.0, ru = 5e-4;
   ChipInput in = curled_chip(R, h, hc, gamma, 3 * h, ru, 120 * kDeg);
