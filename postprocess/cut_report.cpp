@@ -146,6 +146,13 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
               {"damaged_particle_fraction",
                d.broken_fraction.empty() ? 0.0 : double(damaged) / double(d.broken_fraction.size())}};
   if (cm.thickness > 0) out.chip["thickness_final_m"] = cm.thickness;
+  // The chip's up-curl radius in the end state (chip.h); null with a note when it is not measured.
+  const ChipCurl curl = measure_chip_curl(ci, cm);
+  out.chip["curl_points"] = curl.points;
+  out.chip["curl_radius_m"] = curl.measured ? nlohmann::json(curl.radius) : nlohmann::json(nullptr);
+  out.chip["curl_fit_rms_m"] = curl.measured ? nlohmann::json(curl.fit_rms) : nlohmann::json(nullptr);
+  out.chip["curl_arc_deg"] = curl.measured ? nlohmann::json(curl.arc_deg) : nlohmann::json(nullptr);
+  if (!curl.measured) out.chip["curl_note"] = "chip curl radius not measured: " + curl.note;
   double hc = 0.0, hc_ci = NAN;
   if (steady_hc.size() >= kMinThicknessRows) {
     hc = quantile(steady_hc, 0.5);
@@ -255,6 +262,14 @@ std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip,
   } else {
     t += fmt::format("  chip thickness                  not measured ({} chip particles)\n",
                      chip.value("chip_particles", 0));
+  }
+  if (chip.contains("curl_points")) {
+    if (chip.contains("curl_radius_m") && chip["curl_radius_m"].is_number())
+      t += fmt::format("  chip curl radius R_u (end)      {:>10.4g} mm (over {:.0f} deg, {} points, rms {:.2g} mm)\n",
+                       nan_safe(num(chip, "curl_radius_m") * 1e3), nan_safe(num(chip, "curl_arc_deg")),
+                       chip.value("curl_points", 0), nan_safe(num(chip, "curl_fit_rms_m") * 1e3));
+    else
+      t += fmt::format("  chip curl radius R_u (end)      not measured\n  note: {}\n", chip.value("curl_note", ""));
   }
   t += fmt::format("  friction angle beta (Fc, Ft)    {}{}\n", figure(chip, "friction_angle_deg", "{:>10.1f}", " deg"),
                    ci(chip, "friction_angle_ci95_deg", 1.0, " deg", "", rows));
