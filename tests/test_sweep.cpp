@@ -520,5 +520,21 @@ TEST(StudyDocs, TheExampleIsTheValidationStudy) {
   EXPECT_NE(doc.find("```toml\n" + file + "```"), std::string::npos) << "docs/studies.md's example is not the file";
 }
 
+// Every study file in validation/studies is a study swarf accepts: 'swarf sweep --list' reads
+// it, expands its cases and checks each case's overrides against its base, running nothing
+// (depth_of_cut.toml once gave [units] to a key it did not vary, and nothing ran it).
+TEST(StudyDocs, EveryValidationStudyIsAccepted) {
+  test::TempDir dir("validation_studies");
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(SWARF_SOURCE_DIR) + "/validation/studies")) {
+    if (e.path().extension() != ".toml") continue;
+    ++files;
+    const auto r = test::run_command(
+        fmt::format("{} sweep {} --out {} --list", SWARF_BINARY, e.path().string(), dir / e.path().stem().string()));
+    EXPECT_EQ(r.exit_code, 0) << e.path() << ": " << r.output;
+  }
+  EXPECT_GE(files, 5);
+}
+
 }  // namespace
 }  // namespace swarf
