@@ -455,6 +455,27 @@ workpiece.cells = [160, 2, 32]
 namespace swarf {
 namespace {
 
+// A refinement in cutting terms (cut.layers = 5, 10, 20, as validation/studies/refinement_cut.toml):
+// R stands as 1/layers, so f = 2e5 (1 + (5/layers)^2) extrapolates to 2e5 with p = 2 exactly as
+// over the radius, the finest "R" printed as 1/20 in the unit 1/layers.
+TEST(Report, RichardsonSectionOverLayers) {
+  test::TempDir dir("fits_richardson_layers");
+  const std::string out = dir / "out";
+  const Study s = recorded_study(dir, "[grid]\ncut.layers = [5, 10, 20]\n");
+  for (const StudyCase& c : s.cases) {
+    const double layers = std::stod(c.values.at("cut.layers"));
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 2e5 * (1.0 + std::pow(5.0 / layers, 2))}};
+    write_case_summary(out, s, c, j);
+  }
+  const std::string md = test::read_file(write_report(out));
+  ASSERT_NE(md.find("This study refines by `cut.layers`"), std::string::npos) << md;
+  EXPECT_NE(md.find("| R finest [1/layers] |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 3 (1, 1, 1) | 0.05 | 2.125e+05 N/m | 2e+05 N/m | 2 (observed) | GCI 1.56e+04 N/m |"),
+            std::string::npos)
+      << md;
+}
+
 // The ensemble over seeds: three seeds of one point with Fc/w 300, 310, 320 kN/m give the mean
 // 310, s = 10 and the interval t(2) s / sqrt 3 = 4.303 x 10 / 1.732 = 24.84 kN/m; each run's own
 // half-width of 2.262 kN/m over 10 batches (t(9) = 2.262: a standard error of 1 kN/m) gives

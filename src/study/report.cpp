@@ -305,9 +305,18 @@ std::string kienzle_section(const Study& study, const StudyTable& t) {
 
 // Richardson's extrapolation of the cut's numbers to a vanishing particle radius.
 std::string richardson_section(const Study& study, const StudyTable& t) {
-  const std::string radius_key = "workpiece.radius";
-  if (std::find(study.parameters.begin(), study.parameters.end(), radius_key) == study.parameters.end()) return "";
-  const auto R = column_values(t, radius_key);
+  const auto varied = [&](const char* key) {
+    return std::find(study.parameters.begin(), study.parameters.end(), key) != study.parameters.end();
+  };
+  // A study in cutting terms refines by cut.layers: at a fixed depth of cut h the radius is
+  // R = h / (layers sqrt 2), proportional to 1/layers, and Richardson needs only its ratios.
+  const bool by_layers = !varied("workpiece.radius") && varied("cut.layers");
+  if (!varied("workpiece.radius") && !by_layers) return "";
+  const std::string radius_key = by_layers ? "cut.layers" : "workpiece.radius";
+  auto R = column_values(t, radius_key);
+  if (by_layers)
+    for (auto& v : R) v = v && *v > 0 ? std::optional<double>(1.0 / *v) : std::nullopt;
+  const std::string r_unit = by_layers ? "1/layers" : "m";
   const std::vector<CaseGroup> groups = groups_apart_from(study, t, R, radius_key);
   std::set<double> radii;
   for (const auto& g : groups)
@@ -327,11 +336,15 @@ std::string richardson_section(const Study& study, const StudyTable& t) {
       "is undefined or outside [0.5, 4], p = 1 is assumed, f0 is the intercept of the least-squares line f = f0 + "
       "c R over all radii and the error bar its standard error. With two radii p = 1 is assumed and GCI = "
       "3 |f1 - f2| / (r - 1). Change: |f1 - f2| / |f1| between the two finest radii (converged: at most 5 %).\n\n";
+  if (by_layers)
+    out +=
+        "This study refines by `cut.layers`: R stands as 1/layers (at the fixed depth of cut h the radius is h / "
+        "(layers sqrt 2), proportional to it; the extrapolation needs only the ratios).\n\n";
   for (const auto& g : groups) {
     if (groups.size() > 1) out += fmt::format("{}\n\n", g.label);
-    out +=
-        "| quantity | radii (cases per radius, finest first) | R finest [m] | f at R finest | f0 (R -> 0) | p | "
-        "error bar | change |\n|---|---|---|---|---|---|---|---|\n";
+    out += "| quantity | radii (cases per radius, finest first) | R finest [" + r_unit +
+           "] | f at R finest | f0 (R -> 0) | p | "
+           "error bar | change |\n|---|---|---|---|---|---|---|---|\n";
     std::string notes;
     for (const auto& [what, col, unit] : quantities) {
       if (t.column(col) < 0) continue;
