@@ -2,7 +2,9 @@
 #include "app/observers/cut_probe.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 #include "app/post.h"
 #include "io/vtk_output.h"
@@ -39,28 +41,25 @@ CutMaterial cut_material(const CaseSettings& settings) {
     return m;
   }
   m.known = true;
+  m.name = reference                                      ? std::string(preset->name) + " (material.reference)"
+           : preset && mt.johnson_cook_keys_given.empty() ? std::string(preset->name)
+                                                          : "Johnson-Cook (case)";
+  // Johnson-Cook's A, B, n, C, m, reference rate, T_ref, T_melt: the named material's for
+  // hand-written rods, else the case's (which a preset has already filled).
+  const std::array<double, 8> jc = reference
+                                       ? std::array{preset->jc_a,
+                                                    preset->jc_b,
+                                                    preset->jc_n,
+                                                    preset->jc_c,
+                                                    preset->jc_m,
+                                                    preset->reference_rate,
+                                                    preset->reference_temperature,
+                                                    preset->melt_temperature}
+                                       : std::array{mt.johnson_cook_a,        mt.johnson_cook_b,  mt.johnson_cook_n,
+                                                    mt.johnson_cook_c,        mt.johnson_cook_m,  mt.reference_rate,
+                                                    mt.reference_temperature, mt.melt_temperature};
   OxleyMaterial& o = m.oxley;
-  if (reference) {
-    m.name = std::string(preset->name) + " (material.reference)";
-    o.jc_a = preset->jc_a;
-    o.jc_b = preset->jc_b;
-    o.jc_n = preset->jc_n;
-    o.jc_c = preset->jc_c;
-    o.jc_m = preset->jc_m;
-    o.reference_strain_rate = preset->reference_rate;
-    o.t_ref = preset->reference_temperature;
-    o.t_melt = preset->melt_temperature;
-  } else {
-    m.name = preset && mt.johnson_cook_keys_given.empty() ? std::string(preset->name) : "Johnson-Cook (case)";
-    o.jc_a = mt.johnson_cook_a;
-    o.jc_b = mt.johnson_cook_b;
-    o.jc_n = mt.johnson_cook_n;
-    o.jc_c = mt.johnson_cook_c;
-    o.jc_m = mt.johnson_cook_m;
-    o.reference_strain_rate = mt.reference_rate;
-    o.t_ref = mt.reference_temperature;
-    o.t_melt = mt.melt_temperature;
-  }
+  std::tie(o.jc_a, o.jc_b, o.jc_n, o.jc_c, o.jc_m, o.reference_strain_rate, o.t_ref, o.t_melt) = std::tuple_cat(jc);
   o.density = mt.density;
   o.heat_capacity = c;
   o.conductivity = k;
