@@ -284,6 +284,8 @@ mesh.0.origin = "m"
   ASSERT_FALSE(series.empty());
   EXPECT_EQ(series[0].x_name, "mesh.0.origin[2]");
   EXPECT_EQ(series[0].x.size(), 4u);
+  EXPECT_EQ(series[0].group_labels, std::vector<std::string>{""}) << "one varied key: one unnamed group";
+  EXPECT_EQ(series[0].group, std::vector<int>(4, 0));
 
   const std::string md = test::read_file(write_report(out));
   EXPECT_NE(md.find("# Study report: synthetic depth study"), std::string::npos);
@@ -294,6 +296,65 @@ mesh.0.origin = "m"
   EXPECT_NE(md.find("a = 0.5 (Merchant: 0.5), b = 45 deg (Merchant: 45 deg), R^2 = 1.0000, 4 cases"), std::string::npos)
       << md;
   EXPECT_NE(md.find("mean phi - phi_M = 0 deg"), std::string::npos) << md;
+}
+
+// A grid of depths times speeds (the speed set by points with its own end time): against the
+// measured depth one line per speed, against the speed one line per depth (the tool origin and
+// the end time go with their axes), each labelled by the other axis's group mean; Oxley's figure
+// rides along as the reference of the metrics he gives, none for the others.
+TEST(StudyTable, PlotsGroupTheOtherAxisAndCarryOxley) {
+  test::TempDir dir("sweep_groups");
+  const std::string out = dir / "out";
+  const Study s = parse_study(R"(base = "first_cut.toml"
+plots = false
+plot_against = ["chip.depth_of_cut_m", "mesh.0.velocity[0]"]
+[[point]]
+mesh.0.velocity = [5.0, 0.0, 0.0]
+integrator.end_time = 2e-4
+[[point]]
+mesh.0.velocity = [10.0, 0.0, 0.0]
+integrator.end_time = 1e-4
+[grid]
+mesh.0.origin = [[0, 0, 2.4e-3], [0, 0, 2.3e-3], [0, 0, 2.2e-3]]
+[units]
+mesh.0.velocity = "m/s"
+mesh.0.origin = "m"
+)",
+                              "speed_feed.toml", dir.str());
+  write_study_json(s, out);
+  ASSERT_EQ(s.cases.size(), 6u);
+  for (int k = 0; k < 6; ++k) {
+    const double h = 1e-4 * (1 + k % 3) * (1 + 1e-4 * k), v = k < 3 ? 5.0 : 10.0;  // measured depths scatter a little
+    nlohmann::json j;
+    j["cutting"] = {{"cutting_force_per_width_mean_N_per_m", 1e9 * h / v}};
+    j["chip"] = {{"depth_of_cut_m", h}};
+    j["oxley"] = {{"speed_m_per_s", v}, {"cutting_force_per_width_N_per_m", 9e8 * h / v}};
+    write_summary(out, s, s.cases[k], j);
+  }
+  const StudyTable t = collect_table(s, out);
+  int seen = 0;
+  for (const auto& p : plot_series(s, t)) {
+    if (p.y_name != "cutting.cutting_force_per_width_mean_N_per_m") continue;
+    ++seen;
+    ASSERT_EQ(p.group.size(), 6u);
+    ASSERT_EQ(p.reference.size(), 6u);
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_DOUBLE_EQ(p.reference[i], 0.9 * p.y[i]);
+    if (p.x_name == "chip.depth_of_cut_m") {
+      EXPECT_EQ(p.group_labels,
+                (std::vector<std::string>{"mesh.0.velocity[0] = 5 m/s", "mesh.0.velocity[0] = 10 m/s"}));
+      EXPECT_EQ(p.group, (std::vector<int>{0, 0, 0, 1, 1, 1}));
+    } else {
+      EXPECT_EQ(p.x_name, "mesh.0.velocity[0]");
+      EXPECT_EQ(p.group_labels,
+                (std::vector<std::string>{"chip.depth_of_cut_m = 0.0001 m", "chip.depth_of_cut_m = 0.0002 m",
+                                          "chip.depth_of_cut_m = 0.0003 m"}));
+      EXPECT_EQ(p.group, (std::vector<int>{0, 1, 2, 0, 1, 2}));
+    }
+  }
+  EXPECT_EQ(seen, 2);
+  // A metric without Oxley's counterpart has none.
+  EXPECT_EQ(oxley_key_of("chip.chip_temperature_K"), "");
+  EXPECT_EQ(oxley_key_of("chip.thickness_m"), "oxley.chip_thickness_m");
 }
 
 // The interval column of a metric, by summary.json's naming.

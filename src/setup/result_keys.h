@@ -21,6 +21,9 @@ struct ResultKey {
   std::string_view name;
   std::string_view unit;       ///< SI unit; "1" for counts and ratios
   std::string_view ci95 = {};  ///< the key of its 95 % confidence half-width, when the summary gives one
+  /// The key of Oxley's figure of the same quantity (summary.json "oxley", postprocess/cut_oxley.h),
+  /// when his theory gives one: the report's and the plots' reference.
+  std::string_view oxley = {};
 };
 
 /// Every declared result key, by section in the order of the study table.

@@ -386,16 +386,14 @@ struct Figure {
   const char* column;
   const char* unit;
   double scale;
-  const char* oxley = nullptr;  ///< Oxley's column of the same figure (summary.json "oxley"), if he has one
 };
 const std::vector<Figure>& cut_figures() {
-  static const std::vector<Figure> f{
-      {"Fc/w", "cutting.cutting_force_per_width_mean_N_per_m", "kN/m", 1e-3, "oxley.cutting_force_per_width_N_per_m"},
-      {"Ft/w", "cutting.thrust_force_per_width_mean_N_per_m", "kN/m", 1e-3, "oxley.thrust_force_per_width_N_per_m"},
-      {"chip thickness h_c", "chip.thickness_m", "mm", 1e3, "oxley.chip_thickness_m"},
-      {"contact length", "chip.contact_length_m", "mm", 1e3, "oxley.contact_length_m"},
-      {"chip temperature", "chip.chip_temperature_K", "K", 1.0},
-      {"rake-face temperature", "chip.rake_face_temperature_K", "K", 1.0}};
+  static const std::vector<Figure> f{{"Fc/w", "cutting.cutting_force_per_width_mean_N_per_m", "kN/m", 1e-3},
+                                     {"Ft/w", "cutting.thrust_force_per_width_mean_N_per_m", "kN/m", 1e-3},
+                                     {"chip thickness h_c", "chip.thickness_m", "mm", 1e3},
+                                     {"contact length", "chip.contact_length_m", "mm", 1e3},
+                                     {"chip temperature", "chip.chip_temperature_K", "K", 1.0},
+                                     {"rake-face temperature", "chip.rake_face_temperature_K", "K", 1.0}};
   return f;
 }
 
@@ -472,18 +470,19 @@ std::string ensemble_section(const Study& study, const StudyTable& t) {
 }
 
 // Oxley's theory beside each case (summary.json "oxley", postprocess/cut_oxley.h): swarf's
-// steady figure over Oxley's for the same material, speed, depth, rake and width.
+// steady figure over Oxley's for the same material, speed, depth, rake and width (the pairs:
+// the result key table's "oxley" field).
 std::string oxley_section(const StudyTable& t) {
-  std::vector<Figure> pairs;
+  std::vector<std::pair<Figure, std::string>> pairs;
   for (const Figure& f : cut_figures())
-    if (f.oxley) pairs.push_back(f);
+    if (auto o = oxley_key_of(f.column); !o.empty()) pairs.emplace_back(f, o);
   if (t.column("oxley.speed_m_per_s") < 0) return "";
   std::string out = "## Oxley's theory beside the cases\n\n";
   out +=
       "Oxley's predictive machining theory solved for each case's material, cutting speed, depth of cut, rake angle "
       "and width (summary.json `oxley`; docs/outputs.md): a physics cross-check for a sharp tool and a continuous "
       "chip, not a measurement. Each cell: swarf / Oxley = ratio.\n\n| case |";
-  for (const Figure& p : pairs) out += fmt::format(" {} [{}] |", p.what, p.unit);
+  for (const auto& [p, o] : pairs) out += fmt::format(" {} [{}] |", p.what, p.unit);
   out += "\n|---|";
   for (std::size_t k = 0; k < pairs.size(); ++k) out += "---|";
   out += "\n";
@@ -496,8 +495,8 @@ std::string oxley_section(const StudyTable& t) {
       out += "\n";
       continue;
     }
-    for (const Figure& p : pairs) {
-      const auto a = t.number(r, p.column), b = t.number(r, p.oxley);
+    for (const auto& [p, o] : pairs) {
+      const auto a = t.number(r, p.column), b = t.number(r, o);
       const double scale = p.scale;
       if (!b) {
         out += " - |";

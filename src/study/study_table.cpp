@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -133,6 +134,11 @@ std::string ci95_key_of(const std::string& flat_key) {
   return k ? std::string(k->ci95) : "";
 }
 
+std::string oxley_key_of(const std::string& flat_key) {
+  const ResultKey* k = find_result_key(flat_key);
+  return k ? std::string(k->oxley) : "";
+}
+
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing) {
   StudyTable t;
   const auto add = [&t](std::string name, std::string unit, std::string what) {
@@ -231,6 +237,9 @@ std::vector<std::string> default_plot_metrics(const StudyTable& t) {
                                                "chip.shear_angle_deg",
                                                "chip.friction_angle_deg",
                                                "chip.merchant_shear_angle_deg",
+                                               "chip.contact_length_m",
+                                               "chip.chip_temperature_K",
+                                               "chip.rake_face_temperature_K",
                                                "results.broken_fraction",
                                                "results.plastic_work_J",
                                                "results.external_work_J",
@@ -307,25 +316,96 @@ std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& t) {
       if (auto a = axis_named(name)) axes.push_back(*a);
   }
   const std::vector<std::string> metrics = study.plot_metrics.empty() ? default_plot_metrics(t) : study.plot_metrics;
+
+  // The groups of one axis: the cases that agree in every varied key that does not go with
+  // the axis (not the seed: its cases are the scatter at one x). A key goes with the axis when
+  // the cases of each of its values spread over at most a tenth of the axis's range (the tool
+  // origin goes with the measured depth of cut, the step length with the speed), so a grid of
+  // depths times speeds plots one line per speed against the depth and one per depth against
+  // the speed. The label names another axis that is nearly constant within each group (its
+  // mean), else the keys' values.
+  const auto completed = [&](std::size_t r) { return t.status[r].state == CaseState::completed; };
+  const auto spread_within = [&](const std::vector<std::string>& cls, const std::vector<std::optional<double>>& x) {
+    double lo = INFINITY, hi = -INFINITY, worst = 0.0;
+    std::map<std::string, std::pair<double, double>> range;
+    for (std::size_t r = 0; r < n; ++r) {
+      if (!completed(r) || !x[r]) continue;
+      lo = std::min(lo, *x[r]);
+      hi = std::max(hi, *x[r]);
+      auto [it, fresh] = range.try_emplace(cls[r], *x[r], *x[r]);
+      it->second = {std::min(it->second.first, *x[r]), std::max(it->second.second, *x[r])};
+    }
+    for (const auto& [c, mm] : range) worst = std::max(worst, mm.second - mm.first);
+    return hi > lo ? worst / (hi - lo) : 0.0;
+  };
+  struct Groups {
+    std::vector<int> of_row;
+    std::vector<std::string> labels;
+  };
+  const auto groups_of = [&](const Axis& a) {
+    std::vector<std::string> cls(n), keys;
+    for (const auto& p : study.parameters) {
+      if (p == study.seed_key) continue;
+      std::vector<std::string> by(n);
+      for (std::size_t r = 0; r < n; ++r) {
+        auto it = study.cases[r].values.find(p);
+        by[r] = it == study.cases[r].values.end() ? "" : it->second;
+      }
+      if (p == a.name || a.name.rfind(p + "[", 0) == 0 || spread_within(by, a.x) <= 0.1) continue;
+      keys.push_back(p);
+      for (std::size_t r = 0; r < n; ++r) cls[r] += p + " = " + cell_text(by[r]) + ", ";
+    }
+    Groups g{std::vector<int>(n, 0), {""}};
+    if (keys.empty()) return g;
+    std::map<std::string, int> index;
+    g.labels.clear();
+    for (std::size_t r = 0; r < n; ++r) {
+      if (!completed(r)) continue;
+      auto [it, fresh] = index.try_emplace(cls[r], int(g.labels.size()));
+      if (fresh) g.labels.push_back(cls[r].substr(0, cls[r].size() - 2));
+      g.of_row[r] = it->second;
+    }
+    for (const auto& b : axes) {
+      if (b.name == a.name || !varies(b.x) || spread_within(cls, b.x) > 0.1) continue;
+      std::vector<double> sum(g.labels.size()), count(g.labels.size());
+      for (std::size_t r = 0; r < n; ++r)
+        if (completed(r) && b.x[r]) sum[g.of_row[r]] += *b.x[r], count[g.of_row[r]] += 1;
+      for (std::size_t k = 0; k < g.labels.size(); ++k)
+        if (count[k] > 0)
+          g.labels[k] = fmt::format("{} = {:.3g}{}", b.name, sum[k] / count[k], b.unit.empty() ? "" : " " + b.unit);
+      break;
+    }
+    return g;
+  };
+
   std::vector<PlotSeries> out;
   for (const auto& a : axes) {
     if (!varies(a.x)) continue;
+    const Groups groups = groups_of(a);
     for (const auto& m : metrics) {
       if (t.column(m) < int(t.first_metric) || m == a.name) continue;
-      PlotSeries p{file_part(m) + "_vs_" + file_part(a.name) + ".png", a.name, a.unit, m, unit_of_key(m), {}, {}, {}};
-      const std::string ci = ci95_key_of(m);
-      bool any_ci = false;
+      PlotSeries p;
+      p.file = file_part(m) + "_vs_" + file_part(a.name) + ".png";
+      p.x_name = a.name, p.x_unit = a.unit, p.y_name = m, p.y_unit = unit_of_key(m);
+      p.group_labels = groups.labels;
+      const std::string ci = ci95_key_of(m), oxley = oxley_key_of(m);
+      bool any_ci = false, any_reference = false;
       for (std::size_t r = 0; r < n; ++r) {
         auto y = t.number(r, m);
         if (a.x[r] && y) {
           p.x.push_back(*a.x[r]);
           p.y.push_back(*y);
+          p.group.push_back(groups.of_row[r]);
           const auto e = ci.empty() ? std::nullopt : t.number(r, ci);
           p.y_err.push_back(e ? *e : NAN);
           any_ci = any_ci || e.has_value();
+          const auto o = oxley.empty() ? std::nullopt : t.number(r, oxley);
+          p.reference.push_back(o ? *o : NAN);
+          any_reference = any_reference || o.has_value();
         }
       }
       if (!any_ci) p.y_err.clear();
+      if (!any_reference) p.reference.clear();
       if (!p.x.empty()) out.push_back(std::move(p));
     }
   }
@@ -346,12 +426,20 @@ std::string draw_plots(const Study& study, const StudyTable& table, const std::s
                           {"x_label", label(p.x_name, p.x_unit)},
                           {"y_label", label(p.y_name, p.y_unit)},
                           {"x", p.x},
-                          {"y", p.y}});
+                          {"y", p.y},
+                          {"group", p.group},
+                          {"group_labels", p.group_labels}});
     if (!p.y_err.empty()) {  // the 95 % half-widths, null where a case has none
       json e = json::array();
       for (double v : p.y_err) e.push_back(std::isfinite(v) ? json(v) : json(nullptr));
       j["plots"].back()["y_err"] = e;
       j["plots"].back()["y_err_label"] = "95 % CI of the steady mean (batch means)";
+    }
+    if (!p.reference.empty()) {  // Oxley's figure at each case's conditions, null where he has none
+      json e = json::array();
+      for (double v : p.reference) e.push_back(std::isfinite(v) ? json(v) : json(nullptr));
+      j["plots"].back()["reference"] = e;
+      j["plots"].back()["reference_label"] = "Oxley's theory at each case's material, speed, depth and rake";
     }
   }
   write_text_atomic((dir / "plots.json").string(), j.dump(1) + "\n");

@@ -38,6 +38,10 @@ std::string unit_of_key(const std::string& flat_key);
 /// for a vector component.
 std::string ci95_key_of(const std::string& flat_key);
 
+/// The column of Oxley's figure of the same quantity (chip.thickness_m -> oxley.chip_thickness_m),
+/// as the result table declares it; "" for a metric his theory does not give.
+std::string oxley_key_of(const std::string& flat_key);
+
 /// The study table (timing = false: DIR/study.csv; true: DIR/timing.csv, the wall times and
 /// thread counts, which differ from run to run).
 StudyTable collect_table(const Study& study, const std::string& out_dir, bool timing = false);
@@ -56,6 +60,11 @@ struct PlotSeries {
   std::string x_name, x_unit, y_name, y_unit;
   std::vector<double> x, y;
   std::vector<double> y_err;  ///< 95 % half-widths of y (NaN: none), empty when the metric has no interval column
+  std::vector<int> group;     ///< per point: its index in group_labels
+  /// The lines of the plot: the cases that agree in the varied keys that do not go with x
+  /// (one empty label when there are none).
+  std::vector<std::string> group_labels;
+  std::vector<double> reference;  ///< per point: Oxley's figure (NaN: none), empty when the metric has none
 };
 std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& table);
 /// Writes DIR/plots/plots.json and runs postprocess/study_plots.py on it. Returns "" or why
