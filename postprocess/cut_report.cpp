@@ -13,6 +13,12 @@
 #include "swarf/core/nan_safe.h"
 
 namespace swarf {
+
+// What to quote instead of one run's interval when its batches are too short (docs/studies.md,
+// "Ensemble over seeds"): the spread over seeds of a position jitter.
+constexpr const char* kEnsembleHint =
+    "for an honest interval run an ensemble over seeds (a study with seed_key = \"workpiece.disorder_seed\", "
+    "as validation/studies/disorder_seeds.toml) and quote swarf report's ensemble interval";
 namespace {
 
 constexpr std::size_t kMinThicknessRows = 5;
@@ -114,8 +120,9 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
                         : fcs.batches_short() ? "cutting_force_per_width"
                                               : "thrust_force_per_width";
     out.cutting["ci95_note"] = fmt::format(
-        "batches of {} rows are shorter than {} autocorrelation times of {}: the 95 % intervals may be too narrow",
-        fcs.batch_size, kSteadyBatchesPerTau, which);
+        "batches of {} rows are shorter than {} autocorrelation times of {}: the 95 % intervals may be too narrow; "
+        "{}",
+        fcs.batch_size, kSteadyBatchesPerTau, which, kEnsembleHint);
   }
 
   const ChipInput ci = chip_input(s, d.position, s.tool_tip);
@@ -169,8 +176,8 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
       if (std::isfinite(tau) && double(steady_hc.size() / kSteadyBatches) < kSteadyBatchesPerTau * tau)
         out.chip["ci95_note"] = fmt::format(
             "batches of {} rows are shorter than {} autocorrelation times ({:.3g} rows) of the chip thickness: its "
-            "95 % interval (and those of the ratio and shear angle) may be too narrow",
-            steady_hc.size() / kSteadyBatches, kSteadyBatchesPerTau, tau);
+            "95 % interval (and those of the ratio and shear angle) may be too narrow; {}",
+            steady_hc.size() / kSteadyBatches, kSteadyBatchesPerTau, tau, kEnsembleHint);
     }
     out.chip["thickness_ci95_m"] = finite_or_null(hc_ci);
   } else if (d.chip_thickness.empty() && cm.thickness > 0) {
