@@ -20,7 +20,9 @@ export OMP_NUM_THREADS=1
 MPI="mpirun --allow-run-as-root --oversubscribe -np 2"
 for r in $(seq "$rounds"); do
   for t in 2 1; do
-    s=$(OMP_NUM_THREADS=$t "$swarf" bench w2.toml --threads "$t" --repeats 1 | tail -1 | awk -F'|' '{print $9}' | awk '{print $1}')
+    # the "median s" column found by its header (the table gained columns before)
+    s=$(OMP_NUM_THREADS=$t "$swarf" bench w2.toml --threads "$t" --repeats 1 |
+        awk -F'|' '/^\| scene/ {for (i = 1; i <= NF; i++) if ($i ~ /median s/) c = i} END {split($c, a, " "); print a[1]}')
     echo "swarf $t $s" >> "$times"
   done
   (cd "$scratch/lammps"
