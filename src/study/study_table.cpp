@@ -107,6 +107,81 @@ std::string label(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : fmt::format("{} [{}]", name, unit);
 }
 
+// A plot's x axis: name, unit, one value per row (none where the case has no number).
+struct Axis {
+  std::string name, unit;
+  std::vector<std::optional<double>> x;
+};
+
+bool completed(const StudyTable& t, std::size_t r) { return t.status[r].state == CaseState::completed; }
+
+// The largest spread of x within one class of cls (the completed rows with an x), as a
+// fraction of x's whole range; 0 when x does not vary.
+double spread_within(const StudyTable& t, const std::vector<std::string>& cls,
+                     const std::vector<std::optional<double>>& x) {
+  double lo = INFINITY, hi = -INFINITY, worst = 0.0;
+  std::map<std::string, std::pair<double, double>> range;
+  for (std::size_t r = 0; r < cls.size(); ++r) {
+    if (!completed(t, r) || !x[r]) continue;
+    lo = std::min(lo, *x[r]);
+    hi = std::max(hi, *x[r]);
+    auto [it, fresh] = range.try_emplace(cls[r], *x[r], *x[r]);
+    it->second = {std::min(it->second.first, *x[r]), std::max(it->second.second, *x[r])};
+  }
+  for (const auto& [c, mm] : range) worst = std::max(worst, mm.second - mm.first);
+  return hi > lo ? worst / (hi - lo) : 0.0;
+}
+
+struct PlotGroups {
+  std::vector<int> of_row;          ///< per row: its group
+  std::vector<std::string> labels;  ///< per group
+};
+
+// The groups of one axis a: the cases that agree in every varied key that does not go with the
+// axis (not the seed: its cases are the scatter at one x). A key goes with the axis when the
+// cases of each of its values spread over at most a tenth of the axis's range (the tool origin
+// goes with the measured depth of cut, the end time with the speed), so a grid of depths times
+// speeds plots one line per speed against the depth and one per depth against the speed. The
+// label names another axis that is nearly constant within each group (its mean), else the keys'
+// values.
+PlotGroups plot_groups(const Study& study, const StudyTable& t, const std::vector<Axis>& axes, const Axis& a) {
+  const std::size_t n = t.rows.size();
+  std::vector<std::string> cls(n);
+  bool any = false;
+  for (const auto& p : study.parameters) {
+    if (p == study.seed_key) continue;
+    std::vector<std::string> by(n);
+    for (std::size_t r = 0; r < n; ++r) {
+      auto it = study.cases[r].values.find(p);
+      by[r] = it == study.cases[r].values.end() ? "" : it->second;
+    }
+    if (p == a.name || a.name.rfind(p + "[", 0) == 0 || spread_within(t, by, a.x) <= 0.1) continue;
+    any = true;
+    for (std::size_t r = 0; r < n; ++r) cls[r] += p + " = " + cell_text(by[r]) + ", ";
+  }
+  PlotGroups g{std::vector<int>(n, 0), {""}};
+  if (!any) return g;
+  std::map<std::string, int> index;
+  g.labels.clear();
+  for (std::size_t r = 0; r < n; ++r) {
+    if (!completed(t, r)) continue;
+    auto [it, fresh] = index.try_emplace(cls[r], int(g.labels.size()));
+    if (fresh) g.labels.push_back(cls[r].substr(0, cls[r].size() - 2));
+    g.of_row[r] = it->second;
+  }
+  for (const auto& b : axes) {
+    if (b.name == a.name || !varies(b.x) || spread_within(t, cls, b.x) > 0.1) continue;
+    std::vector<double> sum(g.labels.size()), count(g.labels.size());
+    for (std::size_t r = 0; r < n; ++r)
+      if (completed(t, r) && b.x[r]) sum[g.of_row[r]] += *b.x[r], count[g.of_row[r]] += 1;
+    for (std::size_t k = 0; k < g.labels.size(); ++k)
+      if (count[k] > 0)
+        g.labels[k] = fmt::format("{} = {:.3g}{}", b.name, sum[k] / count[k], b.unit.empty() ? "" : " " + b.unit);
+    break;
+  }
+  return g;
+}
+
 }  // namespace
 
 int StudyTable::column(const std::string& name) const {
@@ -254,11 +329,6 @@ std::vector<std::string> default_plot_metrics(const StudyTable& t) {
 
 std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& t) {
   const std::size_t n = t.rows.size();
-  // The x axes: name, unit, one value per row (none where the case has no number).
-  struct Axis {
-    std::string name, unit;
-    std::vector<std::optional<double>> x;
-  };
   std::vector<Axis> axes;
   auto param_axis = [&](const std::string& key, int component) -> std::optional<Axis> {
     Axis a{key, study.units.count(key) ? study.units.at(key) : "", std::vector<std::optional<double>>(n)};
@@ -317,71 +387,10 @@ std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& t) {
   }
   const std::vector<std::string> metrics = study.plot_metrics.empty() ? default_plot_metrics(t) : study.plot_metrics;
 
-  // The groups of one axis: the cases that agree in every varied key that does not go with
-  // the axis (not the seed: its cases are the scatter at one x). A key goes with the axis when
-  // the cases of each of its values spread over at most a tenth of the axis's range (the tool
-  // origin goes with the measured depth of cut, the step length with the speed), so a grid of
-  // depths times speeds plots one line per speed against the depth and one per depth against
-  // the speed. The label names another axis that is nearly constant within each group (its
-  // mean), else the keys' values.
-  const auto completed = [&](std::size_t r) { return t.status[r].state == CaseState::completed; };
-  const auto spread_within = [&](const std::vector<std::string>& cls, const std::vector<std::optional<double>>& x) {
-    double lo = INFINITY, hi = -INFINITY, worst = 0.0;
-    std::map<std::string, std::pair<double, double>> range;
-    for (std::size_t r = 0; r < n; ++r) {
-      if (!completed(r) || !x[r]) continue;
-      lo = std::min(lo, *x[r]);
-      hi = std::max(hi, *x[r]);
-      auto [it, fresh] = range.try_emplace(cls[r], *x[r], *x[r]);
-      it->second = {std::min(it->second.first, *x[r]), std::max(it->second.second, *x[r])};
-    }
-    for (const auto& [c, mm] : range) worst = std::max(worst, mm.second - mm.first);
-    return hi > lo ? worst / (hi - lo) : 0.0;
-  };
-  struct Groups {
-    std::vector<int> of_row;
-    std::vector<std::string> labels;
-  };
-  const auto groups_of = [&](const Axis& a) {
-    std::vector<std::string> cls(n), keys;
-    for (const auto& p : study.parameters) {
-      if (p == study.seed_key) continue;
-      std::vector<std::string> by(n);
-      for (std::size_t r = 0; r < n; ++r) {
-        auto it = study.cases[r].values.find(p);
-        by[r] = it == study.cases[r].values.end() ? "" : it->second;
-      }
-      if (p == a.name || a.name.rfind(p + "[", 0) == 0 || spread_within(by, a.x) <= 0.1) continue;
-      keys.push_back(p);
-      for (std::size_t r = 0; r < n; ++r) cls[r] += p + " = " + cell_text(by[r]) + ", ";
-    }
-    Groups g{std::vector<int>(n, 0), {""}};
-    if (keys.empty()) return g;
-    std::map<std::string, int> index;
-    g.labels.clear();
-    for (std::size_t r = 0; r < n; ++r) {
-      if (!completed(r)) continue;
-      auto [it, fresh] = index.try_emplace(cls[r], int(g.labels.size()));
-      if (fresh) g.labels.push_back(cls[r].substr(0, cls[r].size() - 2));
-      g.of_row[r] = it->second;
-    }
-    for (const auto& b : axes) {
-      if (b.name == a.name || !varies(b.x) || spread_within(cls, b.x) > 0.1) continue;
-      std::vector<double> sum(g.labels.size()), count(g.labels.size());
-      for (std::size_t r = 0; r < n; ++r)
-        if (completed(r) && b.x[r]) sum[g.of_row[r]] += *b.x[r], count[g.of_row[r]] += 1;
-      for (std::size_t k = 0; k < g.labels.size(); ++k)
-        if (count[k] > 0)
-          g.labels[k] = fmt::format("{} = {:.3g}{}", b.name, sum[k] / count[k], b.unit.empty() ? "" : " " + b.unit);
-      break;
-    }
-    return g;
-  };
-
   std::vector<PlotSeries> out;
   for (const auto& a : axes) {
     if (!varies(a.x)) continue;
-    const Groups groups = groups_of(a);
+    const PlotGroups groups = plot_groups(study, t, axes, a);
     for (const auto& m : metrics) {
       if (t.column(m) < int(t.first_metric) || m == a.name) continue;
       PlotSeries p;
