@@ -360,7 +360,7 @@ std::vector<PlotSeries> plot_series(const Study& study, const StudyTable& t) {
     if (size > 1) a.name = fmt::format("{}[{}]", key, component);
     const std::size_t k = component < 0 ? 0 : std::size_t(component);
     for (std::size_t r = 0; r < n; ++r)
-      if (k < vals[r].size() && t.status[r].state == CaseState::completed) a.x[r] = vals[r][k];
+      if (k < vals[r].size() && completed(t, r)) a.x[r] = vals[r][k];
     return a;
   };
   auto axis_named = [&](const std::string& name) -> std::optional<Axis> {
@@ -438,16 +438,18 @@ std::string draw_plots(const Study& study, const StudyTable& table, const std::s
                           {"y", p.y},
                           {"group", p.group},
                           {"group_labels", p.group_labels}});
-    if (!p.y_err.empty()) {  // the 95 % half-widths, null where a case has none
+    // Per-case numbers with gaps: NaN (a case without one) written as null.
+    const auto with_nulls = [](const std::vector<double>& v) {
       json e = json::array();
-      for (double v : p.y_err) e.push_back(std::isfinite(v) ? json(v) : json(nullptr));
-      j["plots"].back()["y_err"] = e;
+      for (double x : v) e.push_back(std::isfinite(x) ? json(x) : json(nullptr));
+      return e;
+    };
+    if (!p.y_err.empty()) {  // the 95 % half-widths
+      j["plots"].back()["y_err"] = with_nulls(p.y_err);
       j["plots"].back()["y_err_label"] = "95 % CI of the steady mean (batch means)";
     }
-    if (!p.reference.empty()) {  // Oxley's figure at each case's conditions, null where he has none
-      json e = json::array();
-      for (double v : p.reference) e.push_back(std::isfinite(v) ? json(v) : json(nullptr));
-      j["plots"].back()["reference"] = e;
+    if (!p.reference.empty()) {  // Oxley's figure at each case's conditions
+      j["plots"].back()["reference"] = with_nulls(p.reference);
       j["plots"].back()["reference_label"] = "Oxley's theory at each case's material, speed, depth and rake";
     }
   }
