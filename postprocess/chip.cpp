@@ -89,6 +89,12 @@ Circle fit_circle(const std::vector<Vec2>& p) {
 }
 }  // namespace
 
+Vec3 to_tool_frame(const Vec3& v, double inclination_deg) {
+  if (inclination_deg == 0.0) return v;
+  const double l = inclination_deg * kDeg, c = std::cos(l), s = std::sin(l);
+  return Vec3(c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2]);
+}
+
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   const double pos = q * double(v.size() - 1);
@@ -253,6 +259,30 @@ ChipCurl measure_chip_curl(const ChipInput& in, const ChipMetrics& m) {
   c.radius = fit.radius;
   c.fit_rms = fit.rms;
   return c;
+}
+
+ChipFlow measure_chip_flow(const ChipInput& in, const ChipMetrics& m, const std::vector<Vec3>& velocity,
+                           double cut_width) {
+  ChipFlow f;
+  const auto [up, normal] = rake_frame(in.rake_angle_deg);
+  const double section_end = std::min(3.0 * in.depth_of_cut, in.face_length);
+  std::vector<double> across;
+  Vec3 sum = Vec3::Zero();
+  std::size_t middle = 0;
+  for (std::size_t i : m.members) {
+    const Vec3 rel = in.position[i] - in.tool_tip;
+    const double along = rel.dot(up);
+    if (along < in.depth_of_cut || along >= section_end) continue;  // past the edge, on the face
+    across.push_back(rel[1]);
+    if (std::abs(rel[1]) > 0.25 * cut_width) continue;  // the side flow's quarters
+    sum += velocity[i];
+    ++middle;
+  }
+  f.particles = middle;
+  if (across.size() < 10 || middle < 10) return f;
+  f.width = quantile(across, 0.98) - quantile(across, 0.02) + 2.0 * in.radius;
+  f.flow_angle_deg = std::atan2(sum[1], sum.dot(up)) / kDeg;  // (y is the edge, up the face's normal to it)
+  return f;
 }
 
 ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<double>& temperature) {

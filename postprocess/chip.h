@@ -49,8 +49,13 @@
 
 namespace swarf {
 
+/// A vector (or a point relative to the tool's tip) in the tool's own frame of an oblique cut:
+/// turned about z by -lambda (tool_geometry.h), so that the edge runs along y there. The chip's
+/// analysis below works in that frame: chip_input (cut_report.h) turns the positions into it.
+Vec3 to_tool_frame(const Vec3& v, double inclination_deg);
+
 struct ChipInput {
-  std::vector<Vec3> position;     ///< current particle centres, m
+  std::vector<Vec3> position;     ///< current particle centres, m (in the tool's frame, to_tool_frame)
   double radius = 0;              ///< particle radius, m
   double uncut_surface_z = 0;     ///< initial top of the workpiece (highest centre), m
   Vec3 tool_tip = Vec3::Zero();   ///< sharp tip of the tool now, m (the tool cuts in +x, z up)
@@ -99,6 +104,25 @@ struct ChipHeat {
 };
 /// temperature is per particle of ChipInput::position, K.
 ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<double>& temperature);
+
+/// The chip's flow over the rake face of a cut with free sides (an oblique cut; issue 38 item 4),
+/// measured from 1 to 3 h along the face (past the edge region, as h_c's section, but reached
+/// by the chip a depth of cut earlier), in the tool's frame:
+/// - the chip flow angle eta_c: the direction of the section's mean velocity relative to the tool,
+///   in the rake face, off the edge's normal, positive towards +y of the tool's frame (where an
+///   inclination lambda > 0 sends the work material; Stabler's rule eta_c = lambda), over the
+///   particles in the middle half of the edge's length in the cut (away from the side flow);
+/// - the chip's width along the edge: the spread of those particles along y between the
+///   2nd and 98th percentiles plus one diameter (as h_c across it), m.
+struct ChipFlow {
+  double flow_angle_deg = 0;  ///< eta_c, deg (0 when fewer than 10 particles are measured)
+  double width = 0;           ///< the chip's width along the edge, m (0 likewise)
+  std::size_t particles = 0;  ///< particles in the section (the flow angle's: those of the middle half)
+};
+/// velocity: per particle of ChipInput::position, in the tool's frame, relative to the tool (m/s);
+/// cut_width: the workpiece's width along the edge (m; its middle is the tool tip's y).
+ChipFlow measure_chip_flow(const ChipInput& in, const ChipMetrics& m, const std::vector<Vec3>& velocity,
+                           double cut_width);
 
 /// The q-quantile (q in [0, 1]) of v, linear between order statistics; v must not be empty.
 double quantile(std::vector<double> v, double q);

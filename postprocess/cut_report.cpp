@@ -27,10 +27,47 @@ constexpr double kDeg = M_PI / 180.0;
 // summary.json has no NaN: an unavailable number (an interval of too short a series) is null.
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+// A cut with free sides (an oblique cut): the passive force's steady mean, and the chip's flow
+// angle and width as the steady medians of the rows that measured them (as h_c), beside
+// Stabler's flow rule eta_c = lambda and the width the chip would have without side flow.
+void free_side_figures(const CutSetup& s, const CutData& d, CutResult& out) {
+  if (d.passive_force.empty()) return;
+  std::vector<double> fp, eta, width;
+  for (std::size_t k = 0; k < d.time.size(); ++k) {
+    if (d.time[k] < s.steady_from) continue;
+    if (k < d.passive_force.size()) fp.push_back(d.passive_force[k]);
+    if (k < d.chip_width.size() && k < d.chip_flow_angle.size() && d.chip_width[k] > 0) {
+      eta.push_back(d.chip_flow_angle[k]);
+      width.push_back(d.chip_width[k]);
+    }
+  }
+  const SteadyStats fps = steady_stats(fp);
+  out.cutting["passive_force_per_width_mean_N_per_m"] = fp.empty() ? nlohmann::json(nullptr) : nlohmann::json(fps.mean);
+  out.cutting["passive_force_per_width_ci95_N_per_m"] = finite_or_null(fps.ci95);
+  const double cut_width = s.width / std::cos(s.inclination_deg * kDeg);  // along the edge
+  out.chip["inclination_deg"] = s.inclination_deg;
+  out.chip["flow_angle_stabler_deg"] = s.inclination_deg;
+  out.chip["flow_rows"] = eta.size();
+  if (eta.size() < kMinThicknessRows) {
+    out.chip["flow_note"] = fmt::format(
+        "chip flow angle and width not measured: {} steady rows measured them (at least {} needed)", eta.size(),
+        kMinThicknessRows);
+    return;
+  }
+  out.chip["flow_angle_deg"] = quantile(eta, 0.5);
+  out.chip["flow_angle_ci95_deg"] = finite_or_null(eta.size() >= kSteadyMinSamples ? batch_ci95(batch_medians(eta))
+                                                                                   : NAN);
+  out.chip["width_m"] = quantile(width, 0.5);
+  out.chip["width_ci95_m"] = finite_or_null(width.size() >= kSteadyMinSamples ? batch_ci95(batch_medians(width)) : NAN);
+  out.chip["width_to_cut_width"] = quantile(width, 0.5) / cut_width;
+}
+
 }  // namespace
 
 ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Vec3& tool_tip) {
   ChipInput ci;
+  if (setup.inclination_deg != 0.0)
+    for (Vec3& x : position) x = tool_tip + to_tool_frame(x - tool_tip, setup.inclination_deg);
   ci.position = std::move(position);
   ci.radius = setup.radius;
   ci.uncut_surface_z = setup.uncut_surface_z;
@@ -201,6 +238,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
         "a row needs 10 chip particles beyond the edge region)",
         steady_hc.size(), kMinThicknessRows);
   }
+  free_side_figures(s, d, out);
   return out;
 }
 
@@ -359,7 +397,10 @@ void write_cut_setup(H5File& f, const CutSetup& s) {
   put("width", &s.width, 1, "m", "workpiece width: the lattice's extent along y plus half a cell edge");
   put("steady_from", &s.steady_from, 1, "s", "the force statistics use the series rows from this time on");
   put("tool_tip", tip, 3, "m", "the tool's sharp tip (x, y, z) at the end of the run");
-  put("rake_angle", &s.rake_angle_deg, 1, "deg", "the tool's rake angle (ISO 3002 gamma)");
+  put("rake_angle", &s.rake_angle_deg, 1, "deg", "the tool's rake angle (ISO 3002 gamma; normal rake if inclined)");
+  put("inclination_angle", &s.inclination_deg, 1, "deg", "the edge's inclination lambda_s (ISO 3002): 0 orthogonal");
+  const double sides = s.free_sides ? 1.0 : 0.0;
+  put("free_sides", &sides, 1, "1", "1: a block of finite width with free sides; 0: plane strain (periodic)");
   put("uncut_surface_z", &s.uncut_surface_z, 1, "m", "highest initial centre of the ordered workpiece lattice");
   put("radius", &s.radius, 1, "m", "particle radius R");
   const std::int64_t count = static_cast<std::int64_t>(s.lattice_particles);
@@ -408,6 +449,8 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
     s.tool_mesh = f.has_attribute("cutting_tool_mesh") ? f.read_string_attribute("cutting_tool_mesh") : "";
     // Runs before 2026-12-06 stored neither the speed nor the material: Oxley's reference is then unknown.
     if (f.has("/cutting/cutting_speed")) s.cutting_speed = one("cutting_speed", 1)[0];
+    if (f.has("/cutting/inclination_angle")) s.inclination_deg = one("inclination_angle", 1)[0];
+    if (f.has("/cutting/free_sides")) s.free_sides = one("free_sides", 1)[0] != 0.0;
     const std::string material = f.has_attribute("cutting_material") ? f.read_string_attribute("cutting_material") : "";
     s.material = CutMaterial{};
     if (!material.empty()) {

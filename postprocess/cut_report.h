@@ -38,7 +38,9 @@ struct CutSetup {
   double width = 0;                   ///< workpiece width (ordered lattice extent along y + a/2), m
   double steady_from = 0;             ///< force statistics over times >= this, s
   Vec3 tool_tip = Vec3::Zero();       ///< sharp tip of the tool at the end, m
-  double rake_angle_deg = 0;          ///< deg
+  double rake_angle_deg = 0;          ///< deg (the normal rake of an inclined tool)
+  double inclination_deg = 0;         ///< lambda_s of an oblique cut, deg (runs before 2026-12-06: 0)
+  bool free_sides = false;            ///< a block of finite width (not plane strain's periodic slab)
   double uncut_surface_z = 0;         ///< highest workpiece centre of the ordered lattice (before a jitter), m
   double radius = 0;                  ///< particle radius, m
   std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
@@ -61,6 +63,9 @@ struct CutData {
   /// Optional series rows by column name (empty: the column is not in the run's series):
   /// contact_length (m); with [heat] chip_temperature and rake_face_temperature (K).
   std::vector<double> contact_length, chip_temperature, rake_face_temperature;
+  /// A cut with free sides (CutSetup::free_sides): passive_force (N/m), chip_flow_angle (deg) and
+  /// chip_width (m) by row; empty otherwise (and for runs before 2026-12-06).
+  std::vector<double> passive_force, chip_flow_angle, chip_width;
 };
 
 struct CutResult {
@@ -81,7 +86,8 @@ CutResult analyze_cut(const CutSetup& setup, const CutData& data);
 double broken_rod_fraction(std::span<const std::uint8_t> intact, std::span<const std::uint8_t> formed);
 
 /// The chip analysis' input for the workpiece centres 'position' (m) with the tool's sharp tip at
-/// 'tool_tip' (m): the setup's geometry, the depth of cut from the tip.
+/// 'tool_tip' (m): the setup's geometry, the depth of cut from the tip; an inclined tool's
+/// positions turned about the tip into its frame (to_tool_frame, chip.h).
 ChipInput chip_input(const CutSetup& setup, std::vector<Vec3> position, const Vec3& tool_tip);
 
 /// The short result table (Fc, Ft, chip thickness, ratio, shear angle, broken-rod fraction).

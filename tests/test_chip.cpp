@@ -241,6 +241,74 @@ TEST(Chip, TooFewParticlesGivesNoThickness) {
   EXPECT_EQ(m.thickness, 0.0);
 }
 
+// An oblique cut's chip, built in the inclined tool's own frame and turned into the world by
+// lambda about the vertical through the tip (as the tool is, tool_geometry.h): a slab of thickness
+// hc and width wc along the edge on the rake face, its particles moving at speed u up the face at
+// eta off the edge's normal (plus the tool's speed along x). chip_input turns it back: h_c, the
+// flow angle and the chip's width are recovered, h_c and the width to the percentile span's loss
+// (21 layers across: 4 % of hc - 2R; 41 along the width: 4 % of wc - 2R), the angle to rounding.
+TEST(Chip, AnObliqueChipsFlowAngleAndWidthAreRecovered) {
+  const double R = 1e-5, h = 2e-4, hc = 4e-4, wc = 8e-4, gamma = 6.0, u = 2.0, v_tool = 3.0;
+  for (const auto [lambda, eta] : {std::pair{0.0, 0.0}, std::pair{20.0, 17.0}, std::pair{-35.0, -31.0}}) {
+    CutSetup s;
+    s.rake_angle_deg = gamma;
+    s.inclination_deg = lambda;
+    s.uncut_surface_z = 0.0;
+    s.radius = R;
+    s.free_sides = true;
+    const Vec3 tip(1e-3, 5e-4, -h);
+    const Vec3 up = face_up(gamma), normal = face_normal(gamma);
+    const Vec3 flow = u * (std::cos(eta * kDeg) * up + std::sin(eta * kDeg) * Vec3::UnitY());  // tool's frame
+    const auto to_world = [&](const Vec3& a) { return to_tool_frame(a, -lambda); };
+    std::vector<Vec3> x, vel;
+    for (double y = -0.5 * wc + R; y <= 0.5 * wc - R + 1e-12; y += (wc - 2 * R) / 40)
+      for (double a = 0; a < 4 * h; a += R)  // (the section: h to 3 h)
+        for (double t = R; t <= hc - R + 1e-12; t += (hc - 2 * R) / 20) {
+          x.push_back(tip + to_world(a * up + t * normal + y * Vec3::UnitY()));
+          vel.push_back(to_world(flow) + Vec3(v_tool, 0, 0));
+        }
+    const ChipInput in = chip_input(s, x, tip);
+    const ChipMetrics m = measure_chip(in);
+    EXPECT_NEAR(m.thickness, hc, 0.05 * hc) << lambda;
+    std::vector<Vec3> rel(vel.size());
+    for (std::size_t i = 0; i < vel.size(); ++i) rel[i] = to_tool_frame(vel[i] - Vec3(v_tool, 0, 0), lambda);
+    const ChipFlow f = measure_chip_flow(in, m, rel, wc);
+    EXPECT_NEAR(f.flow_angle_deg, eta, 1e-9) << lambda;
+    EXPECT_NEAR(f.width, wc, 0.05 * wc) << lambda;
+    EXPECT_GT(f.particles, 1000u);
+  }
+}
+
+// The report's free-side figures: the passive force's steady mean, the flow angle's and the chip
+// width's steady medians over the rows that measured them (chip_width > 0), beside Stabler's
+// eta_c = lambda; hand-worked: steady rows 1..9, angles 12 14 13 0(unmeasured) 15 11 16 10 17
+// -> sorted 10..17 without 0: median (13 + 14)/2 = 13.5.
+TEST(CutReport, FreeSideFiguresAreTheSteadyRows) {
+  CutSetup s;
+  s.steady_from = 1.0;
+  s.uncut_surface_z = 0.0;
+  s.tool_tip = Vec3(0, 0, -2e-4);
+  s.radius = 1e-5;
+  s.width = 1e-3;
+  s.inclination_deg = 15.0;
+  s.free_sides = true;
+  CutData d;
+  d.time = {0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  d.fc.assign(d.time.size(), 1.0);
+  d.ft.assign(d.time.size(), 0.0);
+  d.passive_force = {100, 2, 4, 6, 8, 10, 12, 14, 16, 18};
+  d.chip_flow_angle = {90, 12, 14, 13, 0, 15, 11, 16, 10, 17};
+  d.chip_width = {1, 1, 1, 1, 0, 1, 1, 1, 1, 1};
+  const CutResult r = analyze_cut(s, d);
+  EXPECT_NEAR(r.cutting["passive_force_per_width_mean_N_per_m"].get<double>(), 10.0, 1e-12);
+  EXPECT_NEAR(r.chip["flow_angle_deg"].get<double>(), 13.5, 1e-12);
+  EXPECT_EQ(r.chip["flow_angle_stabler_deg"].get<double>(), 15.0);
+  EXPECT_NEAR(r.chip["width_to_cut_width"].get<double>(), std::cos(15.0 * kDeg) / 1e-3, 1e-9);
+  EXPECT_EQ(r.chip["flow_rows"].get<int>(), 8);
+  d.passive_force.clear();  // plane strain: none of it
+  EXPECT_FALSE(analyze_cut(s, d).chip.contains("flow_angle_deg"));
+}
+
 // The report's h_c is the median of the steady rows that measured the chip (0 = not
 // measured), with the 10th and 90th percentiles; r and phi follow from it. Values hand-worked:
 // steady rows hold 5 1 4 2 3 0 9 7 6 (x 1e-4 m), the row before steady_from 50e-4 (ignored):
@@ -423,6 +491,8 @@ TEST(CutReport, TheSetupIsReadByTheFilesLayoutVersion) {
   s.uncut_surface_z = 3e-3;
   s.radius = 1e-4;
   s.lattice_particles = 123;
+  s.inclination_deg = 25;
+  s.free_sides = true;
   {
     H5File f(dir / "new.h5", H5File::Mode::Create);
     f.write_attribute("format", kResultsFormat);
@@ -439,6 +509,8 @@ TEST(CutReport, TheSetupIsReadByTheFilesLayoutVersion) {
   EXPECT_EQ(r.radius, s.radius);
   EXPECT_EQ(r.lattice_particles, 123u);
   EXPECT_EQ(r.tool_mesh, "tool");
+  EXPECT_EQ(r.inclination_deg, 25);
+  EXPECT_TRUE(r.free_sides);
   const std::vector<double> nine{1.5e-3, 0, 1e-3, 0, 2e-3, 10, 3e-3, 1e-4, 100};
   {
     H5File f(dir / "old.h5", H5File::Mode::Create);  // layout 1: no attribute

@@ -225,6 +225,35 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
   // (found by the fuzzer: a width of 5e42 m made lround overflow under the FP traps)
   refused("[cut]\n" + ok + "width = 0.5e43\n", {"cut.width", "must lie in [0, 1000]", "0 to 1 km"});
   refused("[cut]\n" + ok + "width = 900.0\n", {"cut.width", "cells", "more than"});
+  refused("[cut]\n" + ok + "inclination_angle = 20.0\n", {"cut.inclination_angle", "finite width"});
+  refused("[cut]\n" + ok + "width = 0.6e-3\ninclination_angle = 50.0\n", {"cut.inclination_angle", "[-45, 45]"});
+  refused("[[mesh]]\nname = \"w\"\norigin = [0.0, 0.0, 0.0]\nedge1 = [1.0, 0.0, 0.0]\nedge2 = [0.0, 1.0, 0.0]\n"
+          "inclination_angle = 10.0\n",
+          {"mesh.inclination_angle", "tool key"});
+}
+
+// An oblique cut: the tool is the generated one turned by lambda, its edge 1/cos(lambda) longer so
+// that it still overhangs the width, and its tip (the edge's middle) starts and ends the lead
+// (b_c / 2) tan(lambda) further back (b_c the width between the side centres), the run that much
+// longer, so that the leading corner enters the block where an orthogonal edge would and the
+// middle cuts the length of cut; the steady window moves with the lead.
+TEST(CutTable, AnInclinedEdgeStartsItsLeadBackAndIsLongerByOneOverCosine) {
+  const std::string base = "[cut]\nuncut_chip_thickness = 0.2e-3\ncutting_speed = 10.0\nrake_angle = 10.0\n"
+                           "material = \"C45\"\nlayers = 5\nwidth = 0.6e-3\n";
+  const CaseSettings straight = parse_case(base, "straight", {});
+  const CaseSettings oblique = parse_case(base + "inclination_angle = 25.0\n", "oblique", {});
+  const MeshSettings &t0 = tool_of(straight), &t1 = tool_of(oblique);
+  const double l = 25.0 * M_PI / 180.0, s = std::sqrt(2.0) * oblique.workpiece.radius;
+  const double y_last = (2 * oblique.workpiece.cells[1] - 1) * s, lead = 0.5 * y_last * std::tan(l);
+  EXPECT_EQ(t1.inclination_angle, 25.0);
+  EXPECT_EQ(t0.inclination_angle, 0.0);
+  EXPECT_NEAR(t1.width, t0.width / std::cos(l), 1e-15);
+  EXPECT_NEAR(t1.origin[0], t0.origin[0] - lead, 1e-15);
+  EXPECT_EQ(t1.origin[1], t0.origin[1]);
+  EXPECT_EQ(t1.origin[2], t0.origin[2]);
+  const double v = 10.0;
+  EXPECT_NEAR(oblique.integrator.end_time, straight.integrator.end_time + lead / v, 1e-15);
+  EXPECT_NEAR(oblique.output.steady_from, straight.output.steady_from + lead / v, 1e-15);
 }
 
 // tool_stiffness makes the tool a rigid body on its holder's spring: per metre of width as

@@ -66,6 +66,45 @@ TEST(Tool, FacesAtTheRakeAndClearanceAngles) {
     }
 }
 
+// An inclined tool (oblique cutting) is the orthogonal one turned about z by lambda: its rake
+// face's outward normal is Rz(lambda) (cos a, 0, sin a), its side caps face +-Rz(lambda) y, the
+// sharp edge (the vertices at the origin's height) runs along Rz(lambda) y, and its volume is the
+// same (a rotation); to rounding (1e-12).
+TEST(Tool, InclinationTurnsTheToolAboutTheVertical) {
+  for (double lambda : {-30.0, 15.0, 40.0}) {
+    ToolSpec s = spec(8, 6, 0.0);
+    const TriangleMesh straight = make_tool(s);
+    s.inclination_angle_deg = lambda;
+    const TriangleMesh m = make_tool(s);
+    const double l = lambda * kDeg, a = 8 * kDeg;
+    const Vec3 edge(-std::sin(l), std::cos(l), 0.0);
+    const Vec3 rake_want(std::cos(a) * std::cos(l), std::cos(a) * std::sin(l), std::sin(a));
+    double best = -1;
+    int caps = 0;
+    Vec3 rake_n = Vec3::Zero();
+    for (const auto& t : m.triangles) {
+      const Vec3 n = (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).normalized();
+      if (std::abs(std::abs(n.dot(edge)) - 1.0) < 1e-12) {
+        ++caps;
+        continue;
+      }
+      if (n.dot(rake_want) > best) best = n.dot(rake_want), rake_n = n;
+    }
+    EXPECT_EQ(caps, 2 * (static_cast<int>(tool_profile(spec(8, 6, 0.0)).size()) - 2)) << lambda;
+    EXPECT_NEAR((rake_n - rake_want).norm(), 0.0, 1e-12) << lambda;
+    for (const Vec3& v : m.vertices)
+      if (std::abs(v[2]) < 1e-15) EXPECT_NEAR(std::abs(v.normalized().dot(edge)), 1.0, 1e-12) << lambda;
+    double v0 = 0, v1 = 0;
+    for (const auto& t : straight.triangles)
+      v0 += straight.vertices[t[0]].dot(straight.vertices[t[1]].cross(straight.vertices[t[2]])) / 6.0;
+    for (const auto& t : m.triangles) v1 += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]])) / 6.0;
+    EXPECT_NEAR(v1, v0, 1e-12 * v0) << lambda;
+  }
+  ToolSpec s = spec(8, 6, 0.0);
+  s.inclination_angle_deg = 60.0;
+  EXPECT_THROW(make_tool(s), InputError);
+}
+
 TEST(Tool, EdgeArcHasTheRadiusAndIsTangent) {
   const double r = 8e-5, rake = 12, clearance = 6;
   const auto prof = tool_profile(spec(rake, clearance, r));

@@ -88,6 +88,13 @@ TriangleMesh make_tool(const ToolSpec& s) {
     m.triangles.push_back({a, n + a, n + b});
     m.triangles.push_back({a, n + b, b});
   }
+  if (!(std::abs(s.inclination_angle_deg) < kMaxInclinationDeg))
+    throw InputError(fmt::format("tool: inclination angle {} deg must lie in (-{}, {})", s.inclination_angle_deg,
+                                 kMaxInclinationDeg, kMaxInclinationDeg));
+  if (s.inclination_angle_deg != 0.0) {
+    const double l = s.inclination_angle_deg * M_PI / 180.0, c = std::cos(l), sn = std::sin(l);
+    for (Vec3& v : m.vertices) v = Vec3(c * v[0] - sn * v[1], sn * v[0] + c * v[1], v[2]);
+  }
   m.validate("generated tool");
   return m;
 }

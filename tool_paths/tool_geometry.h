@@ -8,11 +8,23 @@
 // replaces the tip by a circular arc tangent to both faces, split finely enough to resolve
 // it (at most 'max_arc_step_deg' per segment). The profile is extruded over the width. A tool
 // from a file is read in this frame and measured by tool_measure.h.
+//
+// Oblique cutting: an inclination angle lambda (ISO 3002 lambda_s) turns the whole tool about the
+// vertical (z) through the origin, so that the edge runs along (-sin lambda, cos lambda, 0) while
+// the tool still moves along +x. The profile stays the section normal to the edge: the rake and
+// clearance angles above are the normal angles (gamma_n, alpha_n) of the oblique tool. Positive
+// lambda puts the edge's +y end behind the origin; the work material then slides along the edge
+// towards +y relative to the tool (Stabler's rule: the chip flows at eta_c = lambda off the edge's
+// normal in the rake face).
 #pragma once
 
 #include "swarf/state/mesh.h"
 
 namespace swarf {
+
+/// The largest inclination |lambda| a generated tool takes, deg (Stabler's rule is measured to
+/// about 40 deg; beyond 60 the edge is more along the cut than across it).
+constexpr double kMaxInclinationDeg = 60.0;
 
 struct ToolSpec {
   double rake_angle_deg = 0.0;       ///< gamma (ISO 3002 gamma_o), deg
@@ -21,6 +33,7 @@ struct ToolSpec {
   double width = 0.0;                ///< extent along y, m (centred on y = 0)
   double face_length = 0.0;          ///< length of the rake and flank faces from the (sharp) tip, m
   double max_arc_step_deg = 5.0;     ///< finest angular step of the edge arc, deg
+  double inclination_angle_deg = 0;  ///< lambda_s, deg: the tool turned about z (oblique cutting)
 };
 
 /// Builds the closed, outward-oriented mesh; throws InputError on impossible angles or sizes.

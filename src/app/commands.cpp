@@ -194,6 +194,8 @@ struct ToolCommand final : Command {
     sub->add_option("--edge-radius", ts.edge_radius, "Cutting-edge radius, m (default 0: sharp)");
     sub->add_option("--width", ts.width, "Width along the edge, m")->required();
     sub->add_option("--face-length", ts.face_length, "Length of the rake and flank faces, m")->required();
+    sub->add_option("--inclination-angle", ts.inclination_angle_deg,
+                    "Inclination lambda_s (ISO 3002), deg: the tool turned about z for an oblique cut (default 0)");
     sub->add_option("--out", out, "Output STL file")->required();
     sub->add_option("--vtp", vtp, "Also write this VTP file");
   }

@@ -20,6 +20,7 @@
 #include "postprocess/cut_oxley.h"
 #include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/nan_safe.h"
 
 namespace swarf {
 namespace {
@@ -179,6 +180,31 @@ std::string steady_extras(const CutSetup& setup, const CutData& data, nlohmann::
   return line;
 }
 
+// A cut with free sides: the passive force, the chip's flow angle beside Stabler's rule and its
+// width (analyze_cut's free-side figures); "" for plane strain.
+std::string free_side_line(const nlohmann::json& cutting, const nlohmann::json& chip) {
+  if (!chip.contains("inclination_deg")) return "";
+  const auto num = [](const nlohmann::json& j, const char* k) {
+    return j.contains(k) && j[k].is_number() ? j[k].get<double>() : NAN;
+  };
+  const auto ci = [&](const nlohmann::json& j, const char* k, double scale) {
+    const double v = num(j, k);
+    return std::isfinite(v) ? fmt::format(" +- {:.2g}", scale * v) : std::string(" (95 % CI unavailable)");
+  };
+  const double lambda = num(chip, "inclination_deg");
+  std::string line = fmt::format("  free sides, inclination lambda {:.4g} deg: passive force Fp/w {:.4g}{} kN/m",
+                                 lambda, nan_safe(num(cutting, "passive_force_per_width_mean_N_per_m") * 1e-3),
+                                 ci(cutting, "passive_force_per_width_ci95_N_per_m", 1e-3));
+  if (!chip.contains("flow_angle_deg")) return line + "; " + chip.value("flow_note", std::string());
+  line += fmt::format(
+      "; chip flow angle eta_c {:.3g}{} deg (Stabler's rule: {:.4g}); chip width {:.3g}{} mm, {:.3g} of "
+      "the cut's",
+      nan_safe(num(chip, "flow_angle_deg")), ci(chip, "flow_angle_ci95_deg", 1.0), lambda,
+      nan_safe(num(chip, "width_m") * 1e3), ci(chip, "width_ci95_m", 1e3), nan_safe(num(chip, "width_to_cut_width")));
+  if (lambda != 0.0) line += "\n  (Oxley's figures below are the orthogonal cut's at the same normal rake)";
+  return line;
+}
+
 }  // namespace
 
 void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& data, nlohmann::json& sum, VtkSeries* vtk,
@@ -249,6 +275,7 @@ void finish_cut(const std::string& dir, const CutSetup& setup, const CutData& da
   }
   say("{}{}", cut_table(sum["cutting"], sum["chip"], data.broken_rod_fraction), tool_line);
   if (const std::string line = steady_extras(setup, data, sum["chip"]); !line.empty()) say("{}\n", line);
+  if (const std::string line = free_side_line(sum["cutting"], sum["chip"]); !line.empty()) say("{}\n", line);
   // Oxley's theory at the same cut, beside swarf's steady figures (about half a second).
   const double depth = sum["chip"].contains("depth_of_cut_m") && sum["chip"]["depth_of_cut_m"].is_number()
                            ? sum["chip"]["depth_of_cut_m"].get<double>()
@@ -296,7 +323,9 @@ void post_run(const std::string& dir) {
     data.chip_thickness = read_columns(dir + "/series.csv", {"chip_thickness"})[0];
   for (auto [name, column] :
        {std::pair{"contact_length", &data.contact_length}, std::pair{"chip_temperature", &data.chip_temperature},
-        std::pair{"rake_face_temperature", &data.rake_face_temperature}})
+        std::pair{"rake_face_temperature", &data.rake_face_temperature},
+        std::pair{"passive_force_per_width", &data.passive_force}, std::pair{"chip_flow_angle", &data.chip_flow_angle},
+        std::pair{"chip_width", &data.chip_width}})
     if (has_column(dir + "/series.csv", name)) *column = read_columns(dir + "/series.csv", {name})[0];
   if (setup.compliant()) {
     const auto d = read_columns(dir + "/series.csv", {"tool_deflection_x", "tool_deflection_z"});

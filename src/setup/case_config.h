@@ -45,6 +45,7 @@ struct CutSettings {
   double rake_angle = 0.0;            ///< gamma_o (ISO 3002), deg
   double clearance_angle = 7.0;       ///< alpha_o (ISO 3002), deg
   double edge_radius = 0.0;           ///< r_n of the honed edge, m; 0 = sharp
+  double inclination_angle = 0.0;     ///< lambda_s (ISO 3002), deg: an oblique cut; needs a width
   std::string tool_file;              ///< the tool's mesh (.stl or .obj), measured and placed; empty = generated
   double tool_scale = 1.0;            ///< factor on tool_file's coordinates (1e-3 for mm), 1
   double friction = 0.5;              ///< Coulomb coefficient between tool, chip and workpiece, 1

@@ -195,13 +195,23 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
       r.fail(key, r.get(key), "is used only with tool_stiffness > 0 (N/m/m): a compliant tool");
   const MaterialPreset& preset = *find_material_preset(c.material);  // (the key's choices are the presets)
   const bool plane_strain = !(c.width > 0.0);
+  const double incline = c.inclination_angle;  // deg
+  if (incline != 0.0 && plane_strain)
+    r.fail("inclination_angle", r.get("inclination_angle"),
+           "needs a finite width (cut.width, m): an inclined edge across plane strain's periodic slab would have "
+           "to cross its period");
+  if (incline != 0.0 && from_file)
+    r.fail("inclination_angle", r.get("inclination_angle"),
+           "is not taken with cut.tool_file: the file's tool is measured in the orthogonal frame; incline the "
+           "generated tool, or turn the file's tool yourself and give it as a [[mesh]] with tool_tip");
 
   Printout out;
   out.lines.push_back(
       fmt::format("# derived from [cut]: h = {:.4g} mm, v_c = {:.4g} m/s, {:.4g} mm of cut, rake {:.6g} deg, clearance "
-                  "{:.6g} deg, edge radius {:.4g} um, {}, {}",
+                  "{:.6g} deg, edge radius {:.4g} um, {}, {}{}",
                   h * 1e3, v, length * 1e3, rake, clearance, edge_radius * 1e6, c.material,
-                  plane_strain ? "plane strain" : fmt::format("width {:.4g} mm", c.width * 1e3)));
+                  plane_strain ? "plane strain" : fmt::format("width {:.4g} mm", c.width * 1e3),
+                  incline != 0.0 ? fmt::format(", inclination {:.6g} deg (oblique)", incline) : ""));
   if (measured)
     out.lines.push_back(
         fmt::format("# the tool from {} (x {}), measured: {}", c.tool_file, c.tool_scale, describe(*measured)));
@@ -237,6 +247,10 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   const std::array<int, 3> n = ws.cells;
   const double x_last = (2 * n[0] - 1) * s, y_last = (2 * n[1] - 1) * s, z_top = (2 * n[2] - 1) * s;  // centres, m
   const double z_tip = z_top - h;
+  // An inclined edge leads with one end: the tip (the edge's middle) starts and ends that lead
+  // further back, so that the leading corner enters the block where an orthogonal edge would
+  // and the middle of the width cuts the length of cut.
+  const double lead = 0.5 * y_last * std::tan(std::abs(incline) * M_PI / 180.0);  // m
 
   out.section("[material]");
   Filler m(table_in(root, "material"), "material", out, derived);
@@ -268,11 +282,11 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
                        "tool's tip: raise it",
                        kBaseLayers, kEndClampBelowTip));
   const double tool_end = -kStartAhead * h + length;  // m, the tip's x at the end of the cut
-  if (derive_end && !(tool_end < end_x - h))
+  if (derive_end && !(tool_end + lead < end_x - h))
     r.fail("workpiece_length", r.get("workpiece_length"),
-           fmt::format("is too short: the tool's tip would end at x = {} m, within h of the end clamp (from x = {} m)",
-                       tool_end, end_x));
-  if (!derive_end && !(tool_end < x_last))
+           fmt::format("is too short: the tool's {} would end at x = {} m, within h of the end clamp (from x = {} m)",
+                       lead > 0 ? "leading corner" : "tip", tool_end + lead, end_x));
+  if (!derive_end && !(tool_end + lead < x_last))
     r.fail("workpiece_length", r.get("workpiece_length"),
            fmt::format("is too short: the tool's tip would end at x = {} m, beyond the block's last particles at "
                        "x = {} m",
@@ -315,9 +329,15 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
   }
   Filler tf(*tool, "mesh", out, derived);
   const double span = plane_strain ? 2 * n[1] * s : y_last;  // the period, or the block's width between centres
-  const std::array<double, 3> tip{-kStartAhead * h, 0.5 * y_last, z_tip};
-  const std::string tip_note = fmt::format("m: sharp tip {} h before the block, h below its top centres ({} m)",
-                                           kStartAhead, z_top);
+  const std::array<double, 3> tip{-kStartAhead * h - lead, 0.5 * y_last, z_tip};
+  const std::string
+      tip_note = lead > 0
+                     ? fmt::format(
+                           "m: sharp tip (the edge's middle) {} h and the inclined edge's lead {:.4g} m before the "
+                           "block, h below its top centres ({} m)",
+                           kStartAhead, lead, z_top)
+                     : fmt::format("m: sharp tip {} h before the block, h below its top centres ({} m)", kStartAhead,
+                                   z_top);
   if (measured) {
     if (!(measured->edge_length >= span))
       r.fail("tool_file", r.get("tool_file"),
@@ -331,8 +351,11 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
     tf.put("rake_angle", c.rake_angle, "deg");
     tf.put("clearance_angle", c.clearance_angle, "deg");
     tf.put("edge_radius", c.edge_radius, "m");
-    tf.put("width", span + 2 * kToolOverhang * h,
-           fmt::format("m: overhangs the workpiece by {} h on each side", kToolOverhang));
+    const double cos_l = std::cos(incline * M_PI / 180.0);
+    tf.put("width", (span + 2 * kToolOverhang * h) / cos_l,
+           fmt::format("m: overhangs the workpiece by {} h on each side{}", kToolOverhang,
+                       incline != 0.0 ? " (across y; the edge is 1/cos(lambda) longer)" : ""));
+    if (incline != 0.0) tf.put("inclination_angle", incline, "deg: lambda_s, an oblique cut");
     tf.put("face_length", kFaceLength * h, fmt::format("m: {} h", kFaceLength));
     tf.put("origin", tip, tip_note);
   }
@@ -359,16 +382,20 @@ void expand_cut(toml::table& root, const CaseInput& in, CaseSettings& cs, std::s
     tf.put("velocity", std::array<double, 3>{v, 0.0, 0.0}, "m/s: the cutting speed along +x");
   }
 
-  const double end_time = length / v;
+  const double end_time = (length + lead) / v;
   out.section("[integrator]");
   Filler ig(table_in(root, "integrator"), "integrator", out, derived);
-  ig.put("end_time", end_time, "s: the length of cut over the cutting speed");
+  ig.put("end_time", end_time,
+         lead > 0 ? "s: the length of cut and the inclined edge's lead over the cutting speed"
+                  : "s: the length of cut over the cutting speed");
   ig.put("scheme", std::string("verlet"), "explicit: docs/default-case.md says why");
   ig.put("dt_safety", 0.9, "1, of the stable step for 12 rods crowding one axis (bond formation)");
 
   out.section("[output]");
   Filler o(table_in(root, "output"), "output", out, derived);
-  o.put("steady_from", steady_from / v, fmt::format("s: forces averaged from {} m of travel on", steady_from));
+  o.put("steady_from", (steady_from + lead) / v,
+        fmt::format("s: forces averaged from {} m of travel on{}", steady_from,
+                    lead > 0 ? " (of the edge's middle in the block)" : ""));
   o.put("frame_interval", end_time / kFrames, fmt::format("s: {} ParaView frames", kFrames + 1));
   o.put("series_interval", end_time / kSeriesRows, fmt::format("s: {} rows", kSeriesRows + 1));
   cs.cut_derived = out.text();

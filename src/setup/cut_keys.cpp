@@ -63,6 +63,19 @@ const std::vector<Key<CutSettings>>& cut_keys() {
        .rule = "below the depth of cut; not with `tool_file`",
        .doc = "r_n, radius of the honed cutting edge; 0 is a sharp edge. With `tool_file` the file's edge is "
               "used and its radius estimated from the mesh (printed)."},
+      {.name = "inclination_angle",
+       .field = &S::inclination_angle,
+       .unit = "deg",
+       .range = in(-45.0, 45.0, "[]"),
+       .rule = "needs `width` (free sides); not with `tool_file`",
+       .doc = "lambda_s, the cutting edge's inclination (ISO 3002): an oblique cut. The generated tool is turned "
+              "about the vertical through its tip, so its edge runs at lambda to the y axis while it still moves "
+              "along +x; `rake_angle` and `clearance_angle` are then the normal angles (in the section normal to "
+              "the edge). The tool starts further back, so that its leading corner enters the block as an "
+              "orthogonal tool's edge would, and travels `length_of_cut` beyond that lead (the middle of the "
+              "width cuts `length_of_cut`). The run reports the chip flow angle eta_c beside Stabler's rule "
+              "eta_c = lambda, the passive force along y and the chip's width "
+              "([outputs.md](outputs.md#an-oblique-cut))."},
       {.name = "tool_file",
        .field = &S::tool_file,
        .default_note = "a generated tool",

@@ -97,6 +97,8 @@ std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
   cs.steady_from = settings.output.steady_from >= 0 ? settings.output.steady_from : 0.5 * settings.integrator.end_time;
   cs.tool_tip = Vec3(ms.origin[0], ms.origin[1], ms.origin[2]);
   cs.rake_angle_deg = ms.rake_angle;
+  cs.inclination_deg = ms.inclination_angle;
+  cs.free_sides = !settings.workpiece.periodic_width;
   cs.face_length = ms.face_length;
   cs.uncut_surface_z = top;
   cs.radius = model.derived.radius;
@@ -134,6 +136,13 @@ void CutProbe::columns(std::vector<Column>& out) const {
               {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
               {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip reaches the section"},
               {"contact_length", "m", "tool-chip contact length along the rake face (particles touching it)"}});
+  if (setup_.free_sides)
+    out.insert(out.end(),
+               {{"passive_force_per_width", "N/m", "passive force Fp = force_<tool>_y over the workpiece width"},
+                {"chip_flow_angle", "deg",
+                 "eta_c: the chip's flow off the edge's normal in the rake face (Stabler: the inclination); 0 "
+                 "before the chip reaches the section"},
+                {"chip_width", "m", "the chip's width along the edge in the h_c section; 0 likewise"}});
   if (model_.heat.enabled)
     out.insert(out.end(), {{"chip_temperature", "K", "mean temperature of the chip particles; 0 without a chip"},
                            {"rake_face_temperature", "K",
@@ -151,6 +160,15 @@ void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
   const ChipMetrics chip = measure_chip(in);
   values.insert(values.end(), {model_.meshes[tool_mesh_].offset[0], -f[0] / setup_.width, f[2] / setup_.width,
                                chip.thickness, rake_contact_length(in)});
+  if (setup_.free_sides) {
+    // Velocities relative to the tool, in its frame (as the positions are).
+    const Vec3 tool_v = model_.meshes[tool_mesh_].velocity;
+    std::vector<Vec3> u(setup_.lattice_particles);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      u[i] = to_tool_frame(model_.particles.velocity[i] - tool_v, setup_.inclination_deg);
+    const ChipFlow flow = measure_chip_flow(in, chip, u, setup_.width / std::cos(setup_.inclination_deg * M_PI / 180));
+    values.insert(values.end(), {f[1] / setup_.width, flow.flow_angle_deg, flow.width});
+  }
   if (model_.heat.enabled) {
     const ChipHeat heat = chip_heat(in, chip, sim.world().particles.temperature);
     values.insert(values.end(), {heat.chip_mean, heat.rake_face_max});
@@ -180,6 +198,11 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
     data.tool_deflection_z = end.series["tool_deflection_z"];
   }
   data.contact_length = end.series["contact_length"];
+  if (setup_.free_sides) {
+    data.passive_force = end.series["passive_force_per_width"];
+    data.chip_flow_angle = end.series["chip_flow_angle"];
+    data.chip_width = end.series["chip_width"];
+  }
   if (model_.heat.enabled) {
     data.chip_temperature = end.series["chip_temperature"];
     data.rake_face_temperature = end.series["rake_face_temperature"];

@@ -90,7 +90,7 @@ void check_mesh(const TableReader& r, const std::string& directory, MeshSettings
     r.fail("divisions", r.get("divisions"), "must be two positive integers [n1, n2]");
   m.tool = r.has("rake_angle");
   m.hinge_at_point = r.has("hinge_point");
-  for (const char* key : {"clearance_angle", "edge_radius", "width", "face_length"})
+  for (const char* key : {"clearance_angle", "edge_radius", "width", "face_length", "inclination_angle"})
     if (!m.tool && r.has(key)) r.fail(key, r.get(key), "is a tool key: give rake_angle (deg) to make a tool");
   if (m.tool && (!r.has("width") || !r.has("face_length")))
     r.fail("rake_angle", r.get("rake_angle"), "a tool needs width (m) and face_length (m) too");
@@ -338,6 +338,15 @@ const std::vector<Key<MeshSettings>>& mesh_keys() {
        .range = kLengthOrZero,
        .rule = "> 0 when the tool is built; required with `rake_angle`",
        .doc = "Length of the rake and flank faces from the sharp tip."},
+      {.name = "inclination_angle",
+       .field = &S::inclination_angle,
+       .unit = "deg",
+       .range = in(-kMaxInclinationDeg, kMaxInclinationDeg, "()"),
+       .rule = "only with `rake_angle`",
+       .doc = "lambda_s (ISO 3002): turns the generated tool about the vertical through `origin`, so that its "
+              "edge runs along (-sin lambda, cos lambda, 0) while it still moves along x: an oblique cut. "
+              "`rake_angle` and `clearance_angle` are then the normal angles (in the section normal to the "
+              "edge), and `width` the edge's length."},
       {.name = "tool_tip",
        .field = &S::tool_tip,
        .unit = "m",
@@ -593,6 +602,7 @@ void build_meshes(const CaseSettings& cs, Model& model) {
       ts.edge_radius = ms.edge_radius;
       ts.width = ms.width;
       ts.face_length = ms.face_length;
+      ts.inclination_angle_deg = ms.inclination_angle;
       try {
         mb.mesh = make_tool(ts);
       } catch (const InputError& e) {

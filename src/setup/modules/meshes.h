@@ -35,6 +35,7 @@ struct MeshSettings {
   double edge_radius = 0.0;      ///< m
   double width = 0.0;            ///< m
   double face_length = 0.0;      ///< m
+  double inclination_angle = 0;  ///< lambda_s, deg: the tool turned about z (oblique cutting)
   // A cutting tool from 'file' (tool_tip given): measured (tool_measure.h) when the case is
   // read, the fields above set from the measurement, 'origin' = tool_tip, and the mesh moved
   // so that its measured tip 'file_tip' lands there.
