@@ -2,7 +2,7 @@
 """render_chip.py: PNG pictures of the workpiece, the chip and the tool at the end of a swarf run.
 
 Usage: render_chip.py RUN_DIR [OUTPUT.png] [--size WxH] [--max-fraction F] [--frame N]
-                      [--fields F1,F2,...] [--tool NAME] [--depth H]
+                      [--fields F1,F2,...] [--tool NAME] [--depth H] [--view side|top]
 
 Reads the last particles frame RUN_DIR/frames/particles_NNNNN.vtu (point data radius and the
 fields), the meshes of the same frame RUN_DIR/frames/mesh_<name>_NNNNN.vtp and, if present and
@@ -26,7 +26,9 @@ cut: the particles within a few depths of cut of the tool's tip (its lowest vert
 3 depths behind the tip to 5 ahead and from 2 below to 5 above, so the chip, the tool and the
 machined surface fill the picture and fragments flung far away stay out. --depth H is the depth
 of cut in m (default: the highest particle ahead of the tool minus the tip). Without a tool it
-frames the connected extent of the particles. The title gives the run's name and the simulated
+frames the connected extent of the particles. --view top looks down from above (along -z, x to
+the right, y up) at the same stretch of x widened by half the block's width either side, the
+whole width in view: the chip's flow across an inclined edge and its spread. The title gives the run's name and the simulated
 time of the frame (from RUN_DIR/particles.pvd). Size 1280x800 by default. Prints 'wrote PATH'
 for each picture.
 
@@ -95,6 +97,9 @@ def parse_args():
                     help="one picture per field, comma-separated (default %s; those the frame holds)" % DEFAULT_FIELDS)
     ap.add_argument("--tool", default="", help="name of the tool's mesh (default: the mesh reaching lowest)")
     ap.add_argument("--depth", type=float, default=0.0, help="depth of cut, m (default: from the particles)")
+    ap.add_argument("--view", choices=("side", "top"), default="side",
+                    help="side: along +y at the cutting plane x-z (default); top: from above, along -z, at x-y "
+                         "(an oblique or finite-width cut: the chip's flow across the edge and its spread)")
     a = ap.parse_args()
     a.fields_named = a.fields is not None
     a.fields = [f for f in (a.fields if a.fields_named else DEFAULT_FIELDS).split(",") if f]
@@ -311,16 +316,28 @@ def main():
             hi[ax] += rmax
         in_view = (pos[:, 0] >= lo[0]) & (pos[:, 0] <= hi[0]) & (pos[:, 2] >= lo[2]) & (pos[:, 2] <= hi[2])
         framing = "framed on the particles"
-    dx, dz = hi[0] - lo[0], hi[2] - lo[2]
+    # The image's vertical axis: z seen from the side, y seen from above.
+    up_ax = 2 if a.view == "side" else 1
+    if a.view == "top":  # the whole width, and an inclined edge's lead either side of its middle
+        half = 0.5 * (hi[1] - lo[1])
+        lo[0], hi[0] = lo[0] - half, hi[0] + half
+        in_view = (pos[:, 0] >= lo[0]) & (pos[:, 0] <= hi[0])
+    dx, dv = hi[0] - lo[0], hi[up_ax] - lo[up_ax]
     aspect = a.width / float(a.height)
     # The content fills the band 0.16-0.92 of the height (title above, colour bar below).
-    scale = 1.04 * max(dz / 1.52, dx / (1.92 * aspect))
-    centre = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) - 0.08 * scale]
+    scale = 1.04 * max(dv / 1.52, dx / (1.92 * aspect))
+    centre = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])]
+    centre[up_ax] -= 0.08 * scale
+    reach = 10.0 * max(dx, hi[1] - lo[1], hi[2] - lo[2])
     cam = ren.GetActiveCamera()
     cam.ParallelProjectionOn()
     cam.SetFocalPoint(*centre)
-    cam.SetPosition(centre[0], centre[1] - 10.0 * max(dx, dz, hi[1] - lo[1]), centre[2])
-    cam.SetViewUp(0.0, 0.0, 1.0)
+    if a.view == "side":
+        cam.SetPosition(centre[0], centre[1] - reach, centre[2])
+        cam.SetViewUp(0.0, 0.0, 1.0)
+    else:
+        cam.SetPosition(centre[0], centre[1], centre[2] + reach)
+        cam.SetViewUp(0.0, 1.0, 0.0)
     cam.SetParallelScale(scale)
     ren.ResetCameraClippingRange()
 
@@ -355,8 +372,9 @@ def main():
     text.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
     text.SetPosition(0.5, 0.97)
     ren.AddActor2D(text)
-    text.SetInput(title + "\nview along +y (x, the cutting direction, to the right; z up), %.3g mm wide, %s"
-                  % (2e3 * scale * aspect, framing))
+    looking = ("view along +y (x, the cutting direction, to the right; z up)" if a.view == "side"
+               else "view from above, along -z (x, the cutting direction, to the right; y up)")
+    text.SetInput(title + "\n%s, %.3g mm wide, %s" % (looking, 2e3 * scale * aspect, framing))
 
     win = vtk.vtkRenderWindow()
     win.SetOffScreenRendering(1)

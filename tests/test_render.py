@@ -140,6 +140,28 @@ def main():
             check(high > 200 and low > 200, "the map's high and low ends (%s) show large, the view on the cut "
                   "(%d, %d pixels)" % (field, high, low))
 
+        # From above (--view top): the plastic strain's picture, its map's two ends in view.
+        top = os.path.join(tmp, "top.png")
+        r = subprocess.run(cmd[:-3] + [top, "--size", "320x240", "--view", "top", "--fields", "plastic_strain"],
+                           capture_output=True, text=True, timeout=120)
+        print(r.stdout, r.stderr)
+        png = os.path.join(tmp, "top_plastic_strain.png")
+        check(r.returncode == 0 and ("wrote " + png) in r.stdout,
+              "--view top renders %s (exit %d)" % (png, r.returncode))
+        if os.path.exists(png):
+            rd = vtk.vtkPNGReader()
+            rd.SetFileName(png)
+            rd.Update()
+            a = vtk_to_numpy(rd.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+            ends = [maps["plastic_strain"][k] for k in (0, -1)]
+            counts = []
+            for end in ends:
+                e = np.array(end) * 255.0
+                norm = np.linalg.norm(a, axis=1)
+                cos = (a @ e) / np.maximum(norm * np.linalg.norm(e), 1e-9)
+                counts.append(int(((cos > 0.985) & (norm > np.linalg.norm(e) / 3.0)).sum()))
+            check(min(counts) > 200, "the top view shows both ends of the map large (%s pixels)" % counts)
+
         empty = os.path.join(tmp, "empty")
         os.makedirs(empty)
         r = subprocess.run([sys.executable, script, empty], capture_output=True, text=True, timeout=60)

@@ -80,7 +80,8 @@ std::vector<std::vector<double>> read_columns(const std::string& path, const std
 
 constexpr const char* kToolSpectrum = "tool_spectrum.csv";
 constexpr const char* kChipSurface = "chip_surface.vtp";
-constexpr const char* kChipPicture = "chip.png";  // (render_chip.py adds _<field> to the stem for the others)
+constexpr const char* kChipPicture = "chip.png";         // (render_chip.py adds _<field> to the stem for the others)
+constexpr const char* kChipTopPicture = "chip_top.png";  // a cut with free sides: seen from above
 
 // The run's broken-rod fraction from results.h5 (broken_rod_fraction: over the lattice's own
 // rods). Layouts before 4 have no /bonds/formed: without bond formation every rod is the
@@ -120,7 +121,8 @@ std::vector<RunFile> cut_files() {
           {kChipPicture},
           {"chip_plastic_strain.png"},
           {"chip_von_mises_stress.png"},
-          {"chip_temperature.png"}};
+          {"chip_temperature.png"},
+          {"chip_top_plastic_strain.png"}};
 }
 
 std::vector<std::string> render_pictures(const std::string& dir, const CutSetup& setup, std::string& message) {
@@ -144,6 +146,14 @@ std::vector<std::string> render_pictures(const std::string& dir, const CutSetup&
   if (!run.ok || files.empty()) {
     message = "render failed: " + run.output.substr(0, 400);
     return {};
+  }
+  if (setup.free_sides) {  // the view from above: the chip's flow across the edge and its spread
+    args[1] = dir + "/" + kChipTopPicture;
+    args.insert(args.end(), {"--view", "top", "--fields", "plastic_strain"});
+    const ScriptRun top = run_postprocess_script("render_chip.py", args, prefix);
+    for (const auto& f : written_files(top.output))
+      if (fs::exists(f)) files.push_back(fs::path(f).filename().string());
+    if (!top.ok) message = "top view not rendered: " + top.output.substr(0, 400);
   }
   return files;
 }
