@@ -285,6 +285,19 @@ ChipFlow measure_chip_flow(const ChipInput& in, const ChipMetrics& m, const std:
   return f;
 }
 
+double side_burr(const std::vector<Vec3>& world_position, const ChipInput& in, double inclination_deg, double y_lo,
+                 double y_hi) {
+  const double h = in.depth_of_cut;
+  double burr = 0.0;
+  for (const Vec3& x : world_position) {
+    if (x[2] > in.uncut_surface_z + in.radius || x[2] < in.tool_tip[2] - 2.0 * h) continue;  // chip, or deep
+    if (!(to_tool_frame(x - in.tool_tip, inclination_deg)[0] < -h)) continue;                // not yet behind the edge
+    const double out = std::max(x[1] - y_hi, y_lo - x[1]);
+    if (out < 5.0 * h) burr = std::max(burr, out);
+  }
+  return burr;
+}
+
 ChipHeat chip_heat(const ChipInput& in, const ChipMetrics& m, const std::vector<double>& temperature) {
   ChipHeat h;
   double sum = 0.0;

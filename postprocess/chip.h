@@ -124,6 +124,17 @@ struct ChipFlow {
 ChipFlow measure_chip_flow(const ChipInput& in, const ChipMetrics& m, const std::vector<Vec3>& velocity,
                            double cut_width);
 
+/// The side burr of a cut with free sides: how far the machined part's material stands out of the
+/// block's side faces. Over the workpiece particles that are not chip (centre at most R above
+/// the uncut surface), behind the edge (more than h behind it along the edge's normal, in the
+/// tool's frame) and not below the tip's depth by more than 2 h: the largest distance of a centre
+/// beyond the side faces' initial centres, y < y_lo or y > y_hi (m), world frame; 0 when none stands
+/// out. A particle more than 5 h out is a stray fragment, not a burr, and is not counted.
+/// world_position: the centres in the world frame (not turned); in: the chip input (for the tip,
+/// h, R and the tool frame); inclination_deg: lambda.
+double side_burr(const std::vector<Vec3>& world_position, const ChipInput& in, double inclination_deg, double y_lo,
+                 double y_hi);
+
 /// The q-quantile (q in [0, 1]) of v, linear between order statistics; v must not be empty.
 double quantile(std::vector<double> v, double q);
 

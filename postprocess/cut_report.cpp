@@ -239,6 +239,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
         steady_hc.size(), kMinThicknessRows);
   }
   free_side_figures(s, d, out);
+  if (s.free_sides) out.chip["side_burr_m"] = side_burr(d.position, ci, s.inclination_deg, s.side_y_lo, s.side_y_hi);
   return out;
 }
 
@@ -401,6 +402,8 @@ void write_cut_setup(H5File& f, const CutSetup& s) {
   put("inclination_angle", &s.inclination_deg, 1, "deg", "the edge's inclination lambda_s (ISO 3002): 0 orthogonal");
   const double sides = s.free_sides ? 1.0 : 0.0;
   put("free_sides", &sides, 1, "1", "1: a block of finite width with free sides; 0: plane strain (periodic)");
+  const double side_y[2] = {s.side_y_lo, s.side_y_hi};
+  put("side_faces_y", side_y, 2, "m", "the side faces' initial centres (lowest and highest y of the ordered lattice)");
   put("uncut_surface_z", &s.uncut_surface_z, 1, "m", "highest initial centre of the ordered workpiece lattice");
   put("radius", &s.radius, 1, "m", "particle radius R");
   const std::int64_t count = static_cast<std::int64_t>(s.lattice_particles);
@@ -451,6 +454,10 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
     if (f.has("/cutting/cutting_speed")) s.cutting_speed = one("cutting_speed", 1)[0];
     if (f.has("/cutting/inclination_angle")) s.inclination_deg = one("inclination_angle", 1)[0];
     if (f.has("/cutting/free_sides")) s.free_sides = one("free_sides", 1)[0] != 0.0;
+    if (f.has("/cutting/side_faces_y")) {
+      const auto y = one("side_faces_y", 2);
+      s.side_y_lo = y[0], s.side_y_hi = y[1];
+    }
     const std::string material = f.has_attribute("cutting_material") ? f.read_string_attribute("cutting_material") : "";
     s.material = CutMaterial{};
     if (!material.empty()) {

@@ -34,20 +34,21 @@ class H5File;
 
 /// The cut's geometry as the analysis needs it (stored in results.h5 under /cutting).
 struct CutSetup {
-  std::string tool_mesh;              ///< name of the tool's [[mesh]]
-  double width = 0;                   ///< workpiece width (ordered lattice extent along y + a/2), m
-  double steady_from = 0;             ///< force statistics over times >= this, s
-  Vec3 tool_tip = Vec3::Zero();       ///< sharp tip of the tool at the end, m
-  double rake_angle_deg = 0;          ///< deg (the normal rake of an inclined tool)
-  double inclination_deg = 0;         ///< lambda_s of an oblique cut, deg (runs before 2026-12-06: 0)
-  bool free_sides = false;            ///< a block of finite width (not plane strain's periodic slab)
-  double uncut_surface_z = 0;         ///< highest workpiece centre of the ordered lattice (before a jitter), m
-  double radius = 0;                  ///< particle radius, m
-  std::size_t lattice_particles = 0;  ///< the workpiece is particles [0, lattice_particles)
-  double face_length = HUGE_VAL;      ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
-  ToolMount mount;                    ///< a compliant tool's mount per width; mass 0: the tool follows its path
-  double cutting_speed = 0;  ///< the tool's constant speed along x, m/s (0: none; runs before 2026-12-06: unknown)
-  CutMaterial material;      ///< the work material for Oxley's reference (cut_oxley.h)
+  std::string tool_mesh;                ///< name of the tool's [[mesh]]
+  double width = 0;                     ///< workpiece width (ordered lattice extent along y + a/2), m
+  double steady_from = 0;               ///< force statistics over times >= this, s
+  Vec3 tool_tip = Vec3::Zero();         ///< sharp tip of the tool at the end, m
+  double rake_angle_deg = 0;            ///< deg (the normal rake of an inclined tool)
+  double inclination_deg = 0;           ///< lambda_s of an oblique cut, deg (runs before 2026-12-06: 0)
+  bool free_sides = false;              ///< a block of finite width (not plane strain's periodic slab)
+  double side_y_lo = 0, side_y_hi = 0;  ///< the side faces' initial centres (ordered lattice), m
+  double uncut_surface_z = 0;           ///< highest workpiece centre of the ordered lattice (before a jitter), m
+  double radius = 0;                    ///< particle radius, m
+  std::size_t lattice_particles = 0;    ///< the workpiece is particles [0, lattice_particles)
+  double face_length = HUGE_VAL;  ///< the tool's rake face length from the tip, m (runs before 2026-12-01: unknown)
+  ToolMount mount;                ///< a compliant tool's mount per width; mass 0: the tool follows its path
+  double cutting_speed = 0;       ///< the tool's constant speed along x, m/s (0: none; runs before 2026-12-06: unknown)
+  CutMaterial material;           ///< the work material for Oxley's reference (cut_oxley.h)
   bool compliant() const { return mount.mass > 0; }
 };
 

@@ -279,6 +279,31 @@ TEST(Chip, AnObliqueChipsFlowAngleAndWidthAreRecovered) {
   }
 }
 
+// The side burr: over the machined part (not chip, behind the edge, not deep), the largest
+// distance beyond the side faces' centres; a stray 5 h out and particles ahead of the edge or in
+// the chip do not count. Hand-placed particles, h = 0.2 mm, faces at y = 0 and 1 mm, lambda 20 deg.
+TEST(Chip, TheSideBurrIsTheMachinedPartsLargestStepOutOfTheSides) {
+  const double h = 2e-4, R = 1e-5, lambda = 20.0;
+  ChipInput in = cut_of(R, h, 10.0);
+  in.tool_tip = Vec3(1e-3, 5e-4, -h);
+  const auto behind = [&](double back, double y, double z) {  // 'back' behind the edge along its normal
+    const Vec3 rel = to_tool_frame(Vec3(-back, y - 5e-4, 0.0), -lambda);
+    return Vec3(in.tool_tip[0] + rel[0], y, z);
+  };
+  std::vector<Vec3> x{behind(2 * h, 1e-3 + 3e-5, -h - R),   // 30 um out at the +y side: the burr
+                      behind(2 * h, -1e-5, -1.5 * h),       // 10 um out at the -y side
+                      behind(2 * h, 1e-3 + 2e-3, -h),       // 2 mm out: a stray
+                      behind(-2 * h, 1e-3 + 6e-5, -h),      // ahead of the edge
+                      behind(2 * h, 1e-3 + 8e-5, 2 * R),    // chip
+                      behind(2 * h, 1e-3 + 9e-5, -4 * h)};  // deep below the tip: not the machined surface
+  EXPECT_NEAR(side_burr(x, in, lambda, 0.0, 1e-3), 3e-5, 1e-15);
+  x.resize(2);
+  x[0][1] = 5e-4;  // inside the faces: only the -y side's 10 um
+  EXPECT_NEAR(side_burr(x, in, lambda, 0.0, 1e-3), 1e-5, 1e-15);
+  x.resize(1);
+  EXPECT_EQ(side_burr(x, in, lambda, 0.0, 1e-3), 0.0);
+}
+
 // The report's free-side figures: the passive force's steady mean, the flow angle's and the chip
 // width's steady medians over the rows that measured them (chip_width > 0), beside Stabler's
 // eta_c = lambda; hand-worked: steady rows 1..9, angles 12 14 13 0(unmeasured) 15 11 16 10 17

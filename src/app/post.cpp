@@ -190,8 +190,8 @@ std::string steady_extras(const CutSetup& setup, const CutData& data, nlohmann::
   return line;
 }
 
-// A cut with free sides: the passive force, the chip's flow angle beside Stabler's rule and its
-// width (analyze_cut's free-side figures); "" for plane strain.
+// A cut with free sides: the passive force, the side burr, the chip's flow angle beside Stabler's
+// rule and its width (analyze_cut's free-side figures); "" for plane strain.
 std::string free_side_line(const nlohmann::json& cutting, const nlohmann::json& chip) {
   if (!chip.contains("inclination_deg")) return "";
   const auto num = [](const nlohmann::json& j, const char* k) {
@@ -205,12 +205,15 @@ std::string free_side_line(const nlohmann::json& cutting, const nlohmann::json& 
   std::string line = fmt::format("  free sides, inclination lambda {:.4g} deg: passive force Fp/w {:.4g}{} kN/m",
                                  lambda, nan_safe(num(cutting, "passive_force_per_width_mean_N_per_m") * 1e-3),
                                  ci(cutting, "passive_force_per_width_ci95_N_per_m", 1e-3));
-  if (!chip.contains("flow_angle_deg")) return line + "; " + chip.value("flow_note", std::string());
-  line += fmt::format(
-      "; chip flow angle eta_c {:.3g}{} deg (Stabler's rule: {:.4g}); chip width {:.3g}{} mm, {:.3g} of "
-      "the cut's",
-      nan_safe(num(chip, "flow_angle_deg")), ci(chip, "flow_angle_ci95_deg", 1.0), lambda,
-      nan_safe(num(chip, "width_m") * 1e3), ci(chip, "width_ci95_m", 1e3), nan_safe(num(chip, "width_to_cut_width")));
+  line += fmt::format("; side burr {:.3g} mm", nan_safe(num(chip, "side_burr_m") * 1e3));
+  if (chip.contains("flow_angle_deg"))
+    line += fmt::format(
+        "; chip flow angle eta_c {:.3g}{} deg (Stabler's rule: {:.4g}); chip width {:.3g}{} mm, {:.3g} of "
+        "the cut's",
+        nan_safe(num(chip, "flow_angle_deg")), ci(chip, "flow_angle_ci95_deg", 1.0), lambda,
+        nan_safe(num(chip, "width_m") * 1e3), ci(chip, "width_ci95_m", 1e3), nan_safe(num(chip, "width_to_cut_width")));
+  else
+    line += "; " + chip.value("flow_note", std::string());
   if (lambda != 0.0) line += "\n  (Oxley's figures below are the orthogonal cut's at the same normal rake)";
   return line;
 }

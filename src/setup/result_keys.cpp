@@ -122,6 +122,7 @@ const std::vector<ResultKey>& result_keys() {
       {"chip.width_m", "m", "chip.width_ci95_m"},
       {"chip.width_ci95_m", "m"},
       {"chip.width_to_cut_width", "1"},
+      {"chip.side_burr_m", "m"},
       // oxley: Oxley's theory at the cut's conditions (postprocess/cut_oxley.h)
       {"oxley.speed_m_per_s", "m/s"},
       {"oxley.depth_of_cut_m", "m"},

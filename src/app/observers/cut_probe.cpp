@@ -99,6 +99,7 @@ std::unique_ptr<CutProbe> CutProbe::of(const Model& model) {
   cs.rake_angle_deg = ms.rake_angle;
   cs.inclination_deg = ms.inclination_angle;
   cs.free_sides = !settings.workpiece.periodic_width;
+  cs.side_y_lo = lo, cs.side_y_hi = hi;
   cs.face_length = ms.face_length;
   cs.uncut_surface_z = top;
   cs.radius = model.derived.radius;
