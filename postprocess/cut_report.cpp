@@ -239,7 +239,8 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
         steady_hc.size(), kMinThicknessRows);
   }
   free_side_figures(s, d, out);
-  if (s.free_sides) out.chip["side_burr_m"] = side_burr(d.position, ci, s.inclination_deg, s.side_y_lo, s.side_y_hi);
+  if (s.free_sides && std::isfinite(s.side_y_lo))
+    out.chip["side_burr_m"] = side_burr(d.position, ci, s.inclination_deg, s.side_y_lo, s.side_y_hi);
   return out;
 }
 
@@ -457,6 +458,8 @@ bool read_cut_setup(const H5File& f, CutSetup& s) {
     if (f.has("/cutting/side_faces_y")) {
       const auto y = one("side_faces_y", 2);
       s.side_y_lo = y[0], s.side_y_hi = y[1];
+    } else {
+      s.side_y_lo = s.side_y_hi = NAN;  // not recorded: no side burr
     }
     const std::string material = f.has_attribute("cutting_material") ? f.read_string_attribute("cutting_material") : "";
     s.material = CutMaterial{};

@@ -205,7 +205,8 @@ std::string free_side_line(const nlohmann::json& cutting, const nlohmann::json& 
   std::string line = fmt::format("  free sides, inclination lambda {:.4g} deg: passive force Fp/w {:.4g}{} kN/m",
                                  lambda, nan_safe(num(cutting, "passive_force_per_width_mean_N_per_m") * 1e-3),
                                  ci(cutting, "passive_force_per_width_ci95_N_per_m", 1e-3));
-  line += fmt::format("; side burr {:.3g} mm", nan_safe(num(chip, "side_burr_m") * 1e3));
+  if (chip.contains("side_burr_m"))
+    line += fmt::format("; side burr {:.3g} mm", nan_safe(num(chip, "side_burr_m") * 1e3));
   if (chip.contains("flow_angle_deg"))
     line += fmt::format(
         "; chip flow angle eta_c {:.3g}{} deg (Stabler's rule: {:.4g}); chip width {:.3g}{} mm, {:.3g} of "
