@@ -227,9 +227,10 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
   refused("[cut]\n" + ok + "width = 900.0\n", {"cut.width", "cells", "more than"});
   refused("[cut]\n" + ok + "inclination_angle = 20.0\n", {"cut.inclination_angle", "finite width"});
   refused("[cut]\n" + ok + "width = 0.6e-3\ninclination_angle = 50.0\n", {"cut.inclination_angle", "[-45, 45]"});
-  refused("[[mesh]]\nname = \"w\"\norigin = [0.0, 0.0, 0.0]\nedge1 = [1.0, 0.0, 0.0]\nedge2 = [0.0, 1.0, 0.0]\n"
-          "inclination_angle = 10.0\n",
-          {"mesh.inclination_angle", "tool key"});
+  refused(
+      "[[mesh]]\nname = \"w\"\norigin = [0.0, 0.0, 0.0]\nedge1 = [1.0, 0.0, 0.0]\nedge2 = [0.0, 1.0, 0.0]\n"
+      "inclination_angle = 10.0\n",
+      {"mesh.inclination_angle", "tool key"});
 }
 
 // An oblique cut: the tool is the generated one turned by lambda, its edge 1/cos(lambda) longer so
@@ -238,8 +239,9 @@ TEST(CutTable, BadCutKeysAreRefusedByName) {
 // longer, so that the leading corner enters the block where an orthogonal edge would and the
 // middle cuts the length of cut; the steady window moves with the lead.
 TEST(CutTable, AnInclinedEdgeStartsItsLeadBackAndIsLongerByOneOverCosine) {
-  const std::string base = "[cut]\nuncut_chip_thickness = 0.2e-3\ncutting_speed = 10.0\nrake_angle = 10.0\n"
-                           "material = \"C45\"\nlayers = 5\nwidth = 0.6e-3\n";
+  const std::string base =
+      "[cut]\nuncut_chip_thickness = 0.2e-3\ncutting_speed = 10.0\nrake_angle = 10.0\n"
+      "material = \"C45\"\nlayers = 5\nwidth = 0.6e-3\n";
   const CaseSettings straight = parse_case(base, "straight", {});
   const CaseSettings oblique = parse_case(base + "inclination_angle = 25.0\n", "oblique", {});
   const MeshSettings &t0 = tool_of(straight), &t1 = tool_of(oblique);
