@@ -143,7 +143,7 @@ void CutProbe::columns(std::vector<Column>& out) const {
                 {"chip_flow_angle", "deg",
                  "eta_c: the chip's flow off the edge's normal in the rake face (Stabler: the inclination); 0 "
                  "before the chip reaches the section"},
-                {"chip_width", "m", "the chip's width along the edge in the h_c section; 0 likewise"}});
+                {"chip_width", "m", "the chip's width along the edge, h to 3 h up the face; 0 likewise"}});
   if (model_.heat.enabled)
     out.insert(out.end(), {{"chip_temperature", "K", "mean temperature of the chip particles; 0 without a chip"},
                            {"rake_face_temperature", "K",
