@@ -338,6 +338,31 @@ TEST(JohnsonCookRodLaw, TheTangentAtATemperatureIsTheDerivativeOfEvaluate) {
   }
 }
 
+// Newton's lagged rate factor (integrate/newton.cpp): at a held scale S the slopes are those of
+// evaluate_scaled at that S (central differences in the strain, 1e-6 of E as above), the rate
+// term is the viscosity alone, and at S = 1 they are the base law's bit for bit.
+TEST(JohnsonCookRodLaw, TheTangentAtAHeldScaleIsTheDerivativeOfEvaluateScaled) {
+  for (RodLaw base : {linear_law(), curve_law()}) {
+    base.viscosity = 20.0;
+    const JohnsonCookRodLaw law = jc_law(base);
+    for (double S : {1.0, 1.07, 0.6})
+      for (double eps : {0.0068, -0.02, 0.0004}) {
+        const RodResponse r = evaluate_scaled(law, eps, 50.0, 0.0, S);
+        const RodTangent t = tangent_at_scale(law, 0.0, r.shift, S);
+        const double he = 1e-9;
+        const double d_eps = (evaluate_scaled(law, eps + he, 50.0, 0.0, S).stress -
+                              evaluate_scaled(law, eps - he, 50.0, 0.0, S).stress) /
+                             (2 * he);
+        EXPECT_NEAR(t.stiffness, d_eps, 1e-6 * kE) << S << " " << eps;
+        EXPECT_EQ(t.damping, base.viscosity);
+        if (S == 1.0) {
+          const RodTangent b = tangent(base, eps, 50.0, 0.0, r.shift);
+          EXPECT_EQ(t.stiffness, b.stiffness);
+        }
+      }
+  }
+}
+
 // The keys: rod.law = "johnson_cook" with the rod route's factors, "johnson_cook_rate" as its
 // alias, and the [material] route taking the preset's C, m, rate and temperatures with the rate
 // conversion of its calibration (2/sqrt3 in shear, 3 in tension); keys of the law without it

@@ -6,9 +6,11 @@
 # it allows). Prints one Markdown row per run: speed, scheme, steps, force evaluations, wall time
 # (summary.json run.wall_time_s), Fc/w and Ft/w with their 95 % intervals.
 # Usage: validation/integrators/speed_breakeven.sh OUT_DIR [SPEED ...]   (m/s; default 10 3 1 0.3)
-# SWARF_EXTRA="--set KEY=VALUE ..." adds overrides to every run: the Newton solver does not converge
-# on the cut with Johnson-Cook's rate term (validation/integrators/README.md, 2026-12-06), so the
-# measured series sets SWARF_EXTRA="--set material.johnson_cook_c=0".
+# SWARF_EXTRA="--set KEY=VALUE ..." adds overrides to every run. The first series (README,
+# "Newton against Verlet over the cutting speed") set SWARF_EXTRA="--set material.johnson_cook_c=0":
+# Newton did not converge with Johnson-Cook's rate term then. Since Newton reads the rate factor at
+# the step start's rate (integrate/newton.cpp) it runs with it; see the README section "Newton with
+# Johnson-Cook's rate term" for what that lag costs.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:?usage: speed_breakeven.sh OUT_DIR [SPEED ...]}

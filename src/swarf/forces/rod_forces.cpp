@@ -32,9 +32,9 @@ concept ScalesFlow = requires(const Law& l) {
 template <class Law, bool Rate, bool Wrap, bool Temp>
 void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, const std::array<std::int32_t, 2>* ends,
                const double* rest_length, const double* inv_rest_length, const double* shift,
-               const std::uint8_t* intact, const Vec3* x, const Vec3* v, const double* temperature, double* trial_shift,
-               std::uint8_t* trial_broken, double* stress, double* coef, double& viscous_power, int& changed,
-               Periodic periodic) {
+               const std::uint8_t* intact, const Vec3* x, const Vec3* v, const double* temperature, const Vec3* lag_x,
+               const Vec3* lag_v, double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef,
+               double& viscous_power, int& changed, Periodic periodic) {
   double visc = 0.0;
   int any = 0;
   // In chunks, three passes: the rods' vectors (scalar gathers), their lengths and inverse
@@ -43,11 +43,14 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
   //
   // A law that scales its flow stresses (ScalesFlow) has a fourth pass before the law's: the
   // velocity differences and end temperatures are gathered with the vectors, and the rates and
-  // scales computed in a vector loop.
+  // scales computed in a vector loop. With lag_x and lag_v (Newton's step start), the rate factor
+  // is read at the rod's rate there instead (computed in the gather pass, one rod at a time: only
+  // the Newton solve pays for it); the viscous stress keeps the trial's rate.
   constexpr bool kScaled = ScalesFlow<Law>;
+  const bool lagged = kScaled && Rate && lag_x != nullptr;
   constexpr std::size_t kChunk = 256;
   alignas(64) double dxs[3][kChunk], len_c[kChunk], inv_c[kChunk];
-  [[maybe_unused]] alignas(64) double dvs[3][kChunk], temp_c[kChunk], rate_c[kChunk], scale_c[kChunk];
+  [[maybe_unused]] alignas(64) double dvs[3][kChunk], temp_c[kChunk], rate_c[kChunk], scale_c[kChunk], lag_c[kChunk];
   for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
     const std::size_t nc = std::min(kChunk, end - c0);
     for (std::size_t c = 0; c < nc; ++c) {
@@ -64,6 +67,12 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
         dvs[0][c] = dv[0];
         dvs[1][c] = dv[1];
         dvs[2][c] = dv[2];
+        if (lagged) {
+          Vec3 dxn = lag_x[j] - lag_x[i];
+          if constexpr (Wrap) periodic.wrap(dxn);
+          const double ln = dxn.norm();
+          lag_c[c] = intact[k] && ln > 0.0 ? dxn.dot(lag_v[j] - lag_v[i]) / ln * inv_rest_length[k] : 0.0;
+        }
       }
       if constexpr (kScaled && Temp) temp_c[c] = rod_temperature(law, temperature[i], temperature[j]);
     }
@@ -81,6 +90,10 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
                  inv_rest_length[c0 + c];
         rate_c[c] = rate;
         scale_c[c] = rate_factor(law, rate);
+      }
+      if (lagged) {
+#pragma omp simd
+        for (std::size_t c = 0; c < nc; ++c) scale_c[c] = rate_factor(law, lag_c[c]);
       }
       // Theta: at m = 1 in a vector loop; otherwise (a call to pow) one rod at a time.
       if constexpr (Temp) {
@@ -150,6 +163,8 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
   const Vec3* x = view.x;
   const Vec3* v = view.v;
   const double* temp = view.temperature;
+  const Vec3* lag_x = view.rate_v != nullptr ? view.rate_x : nullptr;
+  const Vec3* lag_v = view.rate_v;
   double* trial_shift = view.trial_shift;
   std::uint8_t* trial_broken = view.trial_broken;
   double* stress = view.stress;
@@ -162,17 +177,21 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
     // Compile-time switches: the common rate-free or non-periodic cases pay for neither.
     if (rate && periodic.on())
-      rod_block<Law, true, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
-                                       trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, true, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
+                                       trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
+                                       periodic);
     else if (rate)
-      rod_block<Law, true, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
-                                        trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, true, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
+                                        trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
+                                        periodic);
     else if (periodic.on())
-      rod_block<Law, false, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
-                                        trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, false, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
+                                        trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
+                                        periodic);
     else
-      rod_block<Law, false, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, trial_shift,
-                                         trial_broken, stress, coef, block_visc[b], block_changed[b], periodic);
+      rod_block<Law, false, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
+                                         trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
+                                         periodic);
   }
 }
 

@@ -38,6 +38,12 @@ struct RodKernelView {
   double* coef = nullptr;                   ///< out, N/m
   double* block_viscous = nullptr;          ///< out per block of kBlock rods: viscous power, W
   int* block_changed = nullptr;             ///< out per block: 1 if a rod yielded or broke
+  /// Positions and velocities from which a law that scales its flow stresses by the rate
+  /// (Johnson-Cook) takes the rate of its factor, m and m/s; nullptr: x and v (the trial's own
+  /// rate). The Newton solve passes the step's start: a lagged rate factor, so that the trial's
+  /// residual is smooth in the iterate (integrate/newton.cpp). The viscous stress reads x and v.
+  const Vec3* rate_x = nullptr;
+  const Vec3* rate_v = nullptr;
 };
 
 /// Evaluates every intact rod of cross-section 'area' (m^2) with 'law', in parallel over

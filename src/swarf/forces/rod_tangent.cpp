@@ -7,6 +7,14 @@ namespace swarf {
 
 namespace {
 
+// A law whose flow stresses scale with a rate factor, with the slopes at a held factor
+// (johnson_cook_rod_law.h: tangent_at_scale).
+template <class Law>
+concept HoldsRateFactor = requires(const Law& l) {
+  rate_factor(l, 0.0);
+  tangent_at_scale(l, 0.0, 0.0, 1.0);
+};
+
 template <class Law>
 void rod_tangent_setup_with(const Law& law, double area, double kx, double kv, const RodTangentView& view,
                             Periodic periodic) {
@@ -34,15 +42,33 @@ void rod_tangent_setup_with(const Law& law, double area, double kx, double kv, c
     }
     // The branch of the trial (the law moved the shift only on the plastic branch) and its slopes.
     RodTangent t;
-    if constexpr (Law::kReadsTemperature) {
-      // (the temperature the kernel's evaluation read: constant over the step)
-      if (v.temperature != nullptr)
-        t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k],
-                    rod_temperature(law, v.temperature[ends[k][0]], v.temperature[ends[k][1]]));
-      else
+    bool held = false;  // (the rate factor held at the step start's rate)
+    if constexpr (HoldsRateFactor<Law>) {
+      if (v.rate_v != nullptr) {
+        // The scale the kernel used (rod_forces.cpp): R at the step start's rate, Theta at the
+        // rod's temperature where the kernel reads one.
+        Vec3 dxn = v.rate_x[ends[k][1]] - v.rate_x[ends[k][0]];
+        periodic.wrap(dxn);
+        const double ln = dxn.norm();
+        const double lag = ln > 0.0 ? dxn.dot(v.rate_v[ends[k][1]] - v.rate_v[ends[k][0]]) / ln * inv_l0 : 0.0;
+        double S = rate_factor(law, lag);
+        if (v.temperature != nullptr && reads_temperature(law))
+          S *= thermal_factor(law, rod_temperature(law, v.temperature[ends[k][0]], v.temperature[ends[k][1]]));
+        t = tangent_at_scale(law, v.shift[k], v.trial_shift[k], S);
+        held = true;
+      }
+    }
+    if (!held) {
+      if constexpr (Law::kReadsTemperature) {
+        // (the temperature the kernel's evaluation read: constant over the step)
+        if (v.temperature != nullptr)
+          t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k],
+                      rod_temperature(law, v.temperature[ends[k][0]], v.temperature[ends[k][1]]));
+        else
+          t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
+      } else {
         t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
-    } else {
-      t = tangent(law, strain, rate, v.shift[k], v.trial_shift[k]);
+      }
     }
     const double c = v.coef[k];
     v.axis[k] = n;

@@ -11,10 +11,12 @@
 // the hardening curve's E H / (E + H)) when the trial moved it
 // (plastic flow); a rod broken in the trial carries nothing. The law's tangent() gives E_t and
 // the rate slope that replaces eta in C_k (eta, or more for a rate-hardening law); a law whose
-// tangent reads the trial's strain and rate (kTangentReadsMotion) gets them from x and v. The viscous stress also depends
-// on the positions through n; that term is left out (it is not symmetric and is of the order
-// of the strain rate times h; Newton then converges linearly on damped 3-D motion instead of
-// quadratically, and exactly on the axial motion the tests check).
+// tangent reads the trial's strain and rate (kTangentReadsMotion) gets them from x and v; a
+// rate-scaled law (Johnson-Cook) whose factor the kernel read at the step start's rate (rate_x,
+// rate_v: Newton's lagged rate) gets E_t at that factor and no rate term (tangent_at_scale).
+// The viscous stress also depends on the positions through n; that term is left out (it is not symmetric and is of the
+// order of the strain rate times h; Newton then converges linearly on damped 3-D motion instead of quadratically, and
+// exactly on the axial motion the tests check).
 //
 // The per-rod block S_k = beta h^2 K_k + gamma h C_k = lateral I + axial n n^T is set up once
 // per Newton iteration (rod_tangent_setup) and applied in every Krylov iteration particle by
@@ -53,6 +55,10 @@ struct RodTangentView {
   Vec3* axis = nullptr;                        ///< out: unit axis n, 1
   double* axial = nullptr;                     ///< out: coefficient of n n^T in S_k, kg
   double* lateral = nullptr;                   ///< out: coefficient of I in S_k, kg
+  /// The rate factor's positions and velocities (RodKernelView::rate_x), m and m/s; given, a
+  /// rate-scaled law's factor is held at the rate they give and has no rate term.
+  const Vec3* rate_x = nullptr;
+  const Vec3* rate_v = nullptr;
 };
 
 /// Sets up S_k = kx K_k + kv C_k for every rod (kx = beta h^2 in s^2, kv = gamma h in s),

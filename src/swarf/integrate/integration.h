@@ -103,7 +103,9 @@ bool kick_drift(Integration& it, double h);  ///< explicit predictor; false if a
 bool place(Integration& it,
            double h);  ///< Newmark positions, velocities, rotations from the latest a; false if too far
 void rotate_one(Integration& it, std::size_t i, double h, double beta, double gamma);
-void rod_forces(Integration& it);
+/// The rods' trial evaluation; 'lagged_rate': a rate-scaled law's rate factor from the step's
+/// start (x_n, v_n), as the Newton solve evaluates (newton.cpp).
+void rod_forces(Integration& it, bool lagged_rate = false);
 void contact_forces(Integration& it, double h, bool final = false);
 double gather(Integration& it);               ///< the sweep's relative force change (free components; implicit only)
 void gather_kick(Integration& it, double h);  ///< explicit: gather, then the corrector v += h/2 a and the rotation

@@ -26,6 +26,20 @@
 // - Inexact Newton: CG stops at |r| <= krylov_tolerance |R|; the Newton loop then measures the
 //   real residual again. A solve stopped at krylov_max_iterations is used as it is (the
 //   residual check decides), and the step control does not grow the next step.
+// - A rate-hardening law's rate factor (Johnson-Cook's R = 1 + C ln(max(rate/rate_ref, 1))) is
+//   read at the rod's rate at the step's start (x_n, v_n), not the iterate's: a lagged rate, as
+//   implicit finite-element codes treat viscoplastic rate factors. With the iterate's rate, R is
+//   not smooth in the unknowns (flat below rate_ref, a kink there) and its slope C sigma/(R rate)
+//   times gamma/(beta h) is a dashpot up to 10^5 times stiffer than the rod near rate_ref; Newton
+//   then failed on the cut (steps rejected down to 5e-12 s; so did R linearised about the step
+//   start's rate, implicit in the iterate: validation/integrators/README.md). Lagged, the
+//   residual is the piecewise-linear law at a fixed scale and the tangent has no rate term
+//   (tangent_at_scale). The cost: R is explicit in the rate, an explicit dashpot that a slowly
+//   flowing rod (C sigma / rate large against the rod's stiffness over the step) cannot carry:
+//   its rate and R then ring in a bounded cycle instead of settling (a few % of the flow stress
+//   in tests/test_newton.cpp's chain); and R lags by one step. Measured on the cut in the README
+//   ("Newton with Johnson-Cook's rate term"). The viscous stress keeps the iterate's rate (it is
+//   linear). The fixed-point sweeps and Verlet read the trial's own rate, as before.
 // - Contacts (contacts/contact_tangent.cpp): evaluated in every Newton iteration after the
 //   rods, their forces in the residual, their approximate tangent (normal Hertz stiffness and
 //   damping, the sticking friction spring) in J beside the rods'. Friction histories are trial
@@ -186,6 +200,8 @@ void newton_tangent(Integration& it, double h) {
   v.x = p.position.data();
   v.v = p.velocity.data();
   v.temperature = p.temperature.empty() ? nullptr : p.temperature.data();  // (as RodSystem::forces)
+  v.rate_x = ms.x_n.data();  // (the lagged rate factor, as rod_forces(it, true))
+  v.rate_v = ms.v_n.data();
   v.axis = ms.newton.axis.data();
   v.axial = ms.newton.axial.data();
   v.lateral = ms.newton.lateral.data();
@@ -326,7 +342,7 @@ bool newton_try(Integration& it, double h) {
   while (true) {
     if (!place(it, h)) return false;  // also rejects a particle moving further than max_step_displacement
     it.clock.lap(Stage::Integrate);
-    rod_forces(it);
+    rod_forces(it, /*lagged_rate=*/true);
     it.clock.lap(Stage::Rods);
     contact_forces(it, h);  // (the trial evaluation from the committed histories, as the sweeps')
     const double res = newton_residual(it, h);

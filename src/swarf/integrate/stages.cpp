@@ -209,10 +209,13 @@ bool place(Integration& it, double h) {
   return bad == 0 && bodies_within;
 }
 
-void rod_forces(Integration& it) {
+void rod_forces(Integration& it, bool lagged_rate) {
   World& world = it.world;
   ++it.stats.force_evaluations;
-  it.sys.rods.forces(world);
+  if (lagged_rate)
+    it.sys.rods.forces(world, it.ms.x_n.data(), it.ms.v_n.data());
+  else
+    it.sys.rods.forces(world);
 }
 
 void commit(Integration& it, double h) {

@@ -184,6 +184,15 @@ inline RodTangent tangent(const JohnsonCookRodLaw& law, double strain, double st
   return tangent(law, strain, strain_rate, shift, trial_shift, law.reference_temperature);
 }
 
+/// The slopes of a trial evaluated at a fixed scale S (evaluate_scaled) computed from a rate that
+/// the trial does not change: Newton's lagged rate factor (integrate/newton.cpp), R read at the
+/// rod's rate at the step's start. Then d S / d rate = 0 and the only rate term is the viscosity;
+/// E_t is the plastic branch's slope at S (the base law's tangent, bit for bit, at S = 1).
+inline RodTangent tangent_at_scale(const JohnsonCookRodLaw& law, double shift, double trial_shift, double S) {
+  if (trial_shift == shift || S == 1.0) return tangent(law.base, 0.0, 0.0, shift, trial_shift);
+  return {plastic_tangent(law, trial_shift, S), law.base.viscosity};
+}
+
 // The state means what it means in the base law (the same eps_p = (E - k)/E eps0 at every rate
 // and temperature), so the plastic strain, the plastic work and the elastic energy are the base
 // law's.

@@ -40,7 +40,7 @@ void RodSystem::resize(const World& m_) {
   lattice_.clear();  // (made again from the rods when bond formation next needs it)
 }
 
-void RodSystem::forces(World& m_) {
+void RodSystem::forces(World& m_, const Vec3* rate_x, const Vec3* rate_v) {
   auto& r = m_.rods;
   const auto& p = m_.particles;
   if (r.size() == 0) return;  // (no parallel region for nothing: each costs microseconds)
@@ -54,6 +54,8 @@ void RodSystem::forces(World& m_) {
   view.x = p.position.data();
   view.v = p.velocity.data();
   view.temperature = p.temperature.empty() ? nullptr : p.temperature.data();
+  view.rate_x = rate_x;
+  view.rate_v = rate_v;
   view.trial_shift = r.trial_shift.data();
   view.trial_broken = r.trial_broken.data();
   view.stress = r.stress.data();

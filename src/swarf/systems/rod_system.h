@@ -51,8 +51,10 @@ class RodSystem {
   /// The per-block scratch and the counters again after the door changed the particles or rods.
   void resize(const World& w);
 
-  /// Evaluates every intact rod (the trial state; nothing committed changes).
-  void forces(World& w);
+  /// Evaluates every intact rod (the trial state; nothing committed changes). With rate_x and
+  /// rate_v, a rate-scaled law (Johnson-Cook) takes its rate factor's rate from them (the Newton
+  /// solve's lagged rate: RodKernelView::rate_x).
+  void forces(World& w, const Vec3* rate_x = nullptr, const Vec3* rate_v = nullptr);
   /// Commits the final evaluation: shifts, breaks, plastic work and fracture energy. Returns
   /// the pairs whose rods broke now (in rod order). With 'work', also the rods whose shift moved,
   /// their plastic work and plastic strain increment, in rod order (the heat's and the
