@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "swarf/core/parallel.h"
+#include "swarf/forces/lagged_rate.h"
 
 namespace swarf {
 
@@ -67,12 +68,7 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
         dvs[0][c] = dv[0];
         dvs[1][c] = dv[1];
         dvs[2][c] = dv[2];
-        if (lagged) {
-          Vec3 dxn = lag_x[j] - lag_x[i];
-          if constexpr (Wrap) periodic.wrap(dxn);
-          const double ln = dxn.norm();
-          lag_c[c] = intact[k] && ln > 0.0 ? dxn.dot(lag_v[j] - lag_v[i]) / ln * inv_rest_length[k] : 0.0;
-        }
+        if (lagged) lag_c[c] = intact[k] ? lagged_rate<Wrap>(lag_x, lag_v, i, j, inv_rest_length[k], periodic) : 0.0;
       }
       if constexpr (kScaled && Temp) temp_c[c] = rod_temperature(law, temperature[i], temperature[j]);
     }

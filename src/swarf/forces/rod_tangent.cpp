@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "swarf/forces/lagged_rate.h"
+
 namespace swarf {
 
 namespace {
@@ -47,11 +49,7 @@ void rod_tangent_setup_with(const Law& law, double area, double kx, double kv, c
       if (v.rate_v != nullptr) {
         // The scale the kernel used (rod_forces.cpp): R at the step start's rate, Theta at the
         // rod's temperature where the kernel reads one.
-        Vec3 dxn = v.rate_x[ends[k][1]] - v.rate_x[ends[k][0]];
-        periodic.wrap(dxn);
-        const double ln = dxn.norm();
-        const double lag = ln > 0.0 ? dxn.dot(v.rate_v[ends[k][1]] - v.rate_v[ends[k][0]]) / ln * inv_l0 : 0.0;
-        double S = rate_factor(law, lag);
+        double S = rate_factor(law, lagged_rate(v.rate_x, v.rate_v, ends[k][0], ends[k][1], inv_l0, periodic));
         if (v.temperature != nullptr && reads_temperature(law))
           S *= thermal_factor(law, rod_temperature(law, v.temperature[ends[k][0]], v.temperature[ends[k][1]]));
         t = tangent_at_scale(law, v.shift[k], v.trial_shift[k], S);
