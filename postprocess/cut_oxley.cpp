@@ -7,6 +7,8 @@
 #include <exception>
 #include <numbers>
 
+#include "postprocess/json_number.h"
+
 namespace swarf {
 
 nlohmann::json oxley_beside(const CutMaterial& material, const CutConditions& cut) {
@@ -59,14 +61,6 @@ nlohmann::json oxley_beside(const CutMaterial& material, const CutConditions& cu
   return j;
 }
 
-namespace {
-
-double number(const nlohmann::json& j, const char* key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
-}
-
-}  // namespace
-
 std::string oxley_table(const nlohmann::json& ox, const nlohmann::json& cutting, const nlohmann::json& chip) {
   if (ox.is_null() || !ox.contains("solved")) return "";
   if (!ox["solved"].get<bool>())
@@ -75,8 +69,8 @@ std::string oxley_table(const nlohmann::json& ox, const nlohmann::json& cutting,
       "\n  Oxley's theory at this cut ({}, {:.4g} m/s, h {:.4g} mm, rake {:.3g} deg, T0 {:.0f} K; "
       "postprocess/oxley.h)\n"
       "  figure                                    swarf       Oxley  swarf/Oxley\n",
-      ox.value("material", std::string()), number(ox, "speed_m_per_s"), 1e3 * number(ox, "depth_of_cut_m"),
-      number(ox, "rake_angle_deg"), number(ox, "initial_temperature_K"));
+      ox.value("material", std::string()), json_number(ox, "speed_m_per_s"), 1e3 * json_number(ox, "depth_of_cut_m"),
+      json_number(ox, "rake_angle_deg"), json_number(ox, "initial_temperature_K"));
   // One row: swarf's value and Oxley's, scaled to the printed unit; "none" where swarf has none.
   const auto row = [&](const char* what, double mine, double theirs, double scale, const char* unit, bool ratio) {
     const std::string a = std::isfinite(mine) ? fmt::format("{:>10.4g}", scale * mine) : fmt::format("{:>10}", "none");
@@ -86,22 +80,24 @@ std::string oxley_table(const nlohmann::json& ox, const nlohmann::json& cutting,
     while (line.back() == ' ') line.pop_back();
     t += line + "\n";
   };
-  row("cutting force per width Fc/w", number(cutting, "cutting_force_per_width_mean_N_per_m"),
-      number(ox, "cutting_force_per_width_N_per_m"), 1e-3, "kN/m", true);
-  row("thrust force per width Ft/w", number(cutting, "thrust_force_per_width_mean_N_per_m"),
-      number(ox, "thrust_force_per_width_N_per_m"), 1e-3, "kN/m", true);
-  row("force ratio Ft/Fc", number(cutting, "thrust_to_cutting_force_ratio"),
-      number(ox, "thrust_to_cutting_force_ratio"), 1.0, "", true);
-  row("chip thickness h_c", number(chip, "thickness_m"), number(ox, "chip_thickness_m"), 1e3, "mm", true);
-  row("compression ratio r = h/h_c", number(chip, "compression_ratio"), number(ox, "compression_ratio"), 1.0, "", true);
-  row("shear angle phi", number(chip, "shear_angle_deg"), number(ox, "shear_angle_deg"), 1.0, "deg", true);
-  row("tool-chip contact length", number(chip, "contact_length_m"), number(ox, "contact_length_m"), 1e3, "mm", true);
+  row("cutting force per width Fc/w", json_number(cutting, "cutting_force_per_width_mean_N_per_m"),
+      json_number(ox, "cutting_force_per_width_N_per_m"), 1e-3, "kN/m", true);
+  row("thrust force per width Ft/w", json_number(cutting, "thrust_force_per_width_mean_N_per_m"),
+      json_number(ox, "thrust_force_per_width_N_per_m"), 1e-3, "kN/m", true);
+  row("force ratio Ft/Fc", json_number(cutting, "thrust_to_cutting_force_ratio"),
+      json_number(ox, "thrust_to_cutting_force_ratio"), 1.0, "", true);
+  row("chip thickness h_c", json_number(chip, "thickness_m"), json_number(ox, "chip_thickness_m"), 1e3, "mm", true);
+  row("compression ratio r = h/h_c", json_number(chip, "compression_ratio"), json_number(ox, "compression_ratio"), 1.0,
+      "", true);
+  row("shear angle phi", json_number(chip, "shear_angle_deg"), json_number(ox, "shear_angle_deg"), 1.0, "deg", true);
+  row("tool-chip contact length", json_number(chip, "contact_length_m"), json_number(ox, "contact_length_m"), 1e3, "mm",
+      true);
   // Temperatures differ in what they average: swarf's rake-face figure is the hottest particle
   // in the layer on the face, Oxley's the mean over the interface; no ratio is printed.
   if (chip.contains("rake_face_temperature_K"))
-    row("rake face T (swarf max, Oxley mean)", number(chip, "rake_face_temperature_K"),
-        number(ox, "rake_face_temperature_K"), 1.0, "K", false);
-  row("primary shear zone T (Oxley's T_AB)", NAN, number(ox, "primary_zone_temperature_K"), 1.0, "K", false);
+    row("rake face T (swarf max, Oxley mean)", json_number(chip, "rake_face_temperature_K"),
+        json_number(ox, "rake_face_temperature_K"), 1.0, "K", false);
+  row("primary shear zone T (Oxley's T_AB)", NAN, json_number(ox, "primary_zone_temperature_K"), 1.0, "K", false);
   return t;
 }
 

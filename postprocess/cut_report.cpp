@@ -8,6 +8,7 @@
 
 #include "io/h5file.h"
 #include "io/results_format.h"
+#include "postprocess/json_number.h"
 #include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
@@ -44,7 +45,6 @@ void free_side_figures(const CutSetup& s, const CutData& d, CutResult& out) {
   const SteadyStats fps = steady_stats(fp);
   out.cutting["passive_force_per_width_mean_N_per_m"] = fp.empty() ? nlohmann::json(nullptr) : nlohmann::json(fps.mean);
   out.cutting["passive_force_per_width_ci95_N_per_m"] = finite_or_null(fps.ci95);
-  const double cut_width = s.width / std::cos(s.inclination_deg * kDeg);  // along the edge
   out.chip["inclination_deg"] = s.inclination_deg;
   out.chip["flow_angle_stabler_deg"] = s.inclination_deg;
   out.chip["flow_rows"] = eta.size();
@@ -59,7 +59,7 @@ void free_side_figures(const CutSetup& s, const CutData& d, CutResult& out) {
                                                                                    : NAN);
   out.chip["width_m"] = quantile(width, 0.5);
   out.chip["width_ci95_m"] = finite_or_null(width.size() >= kSteadyMinSamples ? batch_ci95(batch_medians(width)) : NAN);
-  out.chip["width_to_cut_width"] = quantile(width, 0.5) / cut_width;
+  out.chip["width_to_cut_width"] = quantile(width, 0.5) / s.edge_width();
 }
 
 }  // namespace
@@ -246,9 +246,7 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
 
 std::string cut_table(const nlohmann::json& cutting, const nlohmann::json& chip, double broken) {
   // (nan when the summary lacks it, printed through nan_safe: a NaN with a precision would trap)
-  auto num = [](const nlohmann::json& j, const char* k) {
-    return j.contains(k) && j[k].is_number() ? j[k].get<double>() : NAN;
-  };
+  const auto num = json_number;
   const std::size_t rows = cutting.value("steady_samples", std::size_t(0));
   // The 95 % interval after a value: its half-width, or why there is none (null in summary.json).
   auto ci = [&](const nlohmann::json& j, const char* key, double scale, const char* unit, const char* of,

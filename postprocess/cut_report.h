@@ -50,6 +50,8 @@ struct CutSetup {
   double cutting_speed = 0;       ///< the tool's constant speed along x, m/s (0: none; runs before 2026-12-06: unknown)
   CutMaterial material;           ///< the work material for Oxley's reference (cut_oxley.h)
   bool compliant() const { return mount.mass > 0; }
+  /// The cut's width along the edge, m: the workpiece's over cos(lambda).
+  double edge_width() const { return width / std::cos(inclination_deg * M_PI / 180.0); }
 };
 
 /// The run's data the analysis reads.

@@ -18,6 +18,7 @@
 #include "io/vtk_output.h"
 #include "postprocess/chip_surface.h"
 #include "postprocess/cut_oxley.h"
+#include "postprocess/json_number.h"
 #include "postprocess/steady_stats.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/nan_safe.h"
@@ -194,9 +195,7 @@ std::string steady_extras(const CutSetup& setup, const CutData& data, nlohmann::
 // rule and its width (analyze_cut's free-side figures); "" for plane strain.
 std::string free_side_line(const nlohmann::json& cutting, const nlohmann::json& chip) {
   if (!chip.contains("inclination_deg")) return "";
-  const auto num = [](const nlohmann::json& j, const char* k) {
-    return j.contains(k) && j[k].is_number() ? j[k].get<double>() : NAN;
-  };
+  const auto num = json_number;
   const auto ci = [&](const nlohmann::json& j, const char* k, double scale) {
     const double v = num(j, k);
     return std::isfinite(v) ? fmt::format(" +- {:.2g}", scale * v) : std::string(" (95 % CI unavailable)");

@@ -167,7 +167,7 @@ void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
     std::vector<Vec3> u(setup_.lattice_particles);
     for (std::size_t i = 0; i < u.size(); ++i)
       u[i] = to_tool_frame(model_.particles.velocity[i] - tool_v, setup_.inclination_deg);
-    const ChipFlow flow = measure_chip_flow(in, chip, u, setup_.width / std::cos(setup_.inclination_deg * M_PI / 180));
+    const ChipFlow flow = measure_chip_flow(in, chip, u, setup_.edge_width());
     values.insert(values.end(), {f[1] / setup_.width, flow.flow_angle_deg, flow.width});
   }
   if (model_.heat.enabled) {
