@@ -21,8 +21,8 @@ def read_series(path):
 
 
 def plot_cut(run, summary, s):
-    """Cutting and thrust force per width, the broken-rod fraction and the chip thickness
-    against tool travel."""
+    """Cutting and thrust force per width (and the passive force of a cut with free sides), the
+    broken-rod fraction and the chip thickness against tool travel."""
     travel = [v * 1e3 for v in s["tool_travel"]]
     cut = summary.get("cutting", {})
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6.5), dpi=120, sharex=True,
@@ -31,6 +31,11 @@ def plot_cut(run, summary, s):
             label="cutting force Fc/w (against the cutting direction)")
     ax.plot(travel, [v / 1e3 for v in s["thrust_force_per_width"]], lw=0.8, color="C3",
             label="thrust force Ft/w (away from the workpiece)")
+    means = [("cutting_force_per_width_mean_N_per_m", "C0"), ("thrust_force_per_width_mean_N_per_m", "C3")]
+    if "passive_force_per_width" in s:  # a cut with free sides (an oblique cut)
+        ax.plot(travel, [v / 1e3 for v in s["passive_force_per_width"]], lw=0.8, color="C2",
+                label="passive force Fp/w (on the tool along +y)")
+        means.append(("passive_force_per_width_mean_N_per_m", "C2"))
     steady = cut.get("steady_from_s")
     x0 = None
     if steady is not None:
@@ -38,7 +43,7 @@ def plot_cut(run, summary, s):
         x0 = next((x for x, t in zip(travel, s["time"]) if t >= steady), None)
         if x0 is not None:
             ax.axvspan(x0, travel[-1], color="0.9", zorder=0, label="steady part (statistics)")
-            for key, c in (("cutting_force_per_width_mean_N_per_m", "C0"), ("thrust_force_per_width_mean_N_per_m", "C3")):
+            for key, c in means:
                 if cut.get(key) is not None:  # (null: no steady rows)
                     ax.hlines(cut[key] / 1e3, x0, travel[-1], colors=c, linestyles="--", lw=1.5)
                     # the mean's 95 % confidence interval (batch means; null when the part is too short)
