@@ -23,6 +23,7 @@
 #include "setup/rod_laws/rod_laws.h"
 #include "study/report.h"
 #include "study/sweep.h"
+#include "study/sweep_mpi.h"
 #include "swarf/core/errors.h"
 #include "swarf/state/mesh.h"
 #include "tool_paths/tool_geometry.h"
@@ -165,6 +166,14 @@ struct RunCommand final : Command {
   }
   int run() override {
     if (sub->count("--threads")) check_thread_count(ro.threads, "--threads");
+    // One run over several ranks needs domain decomposition (issue 38), not built yet: without
+    // this, every rank would run the whole case into the same directory.
+    if (const int ranks = MpiSession::launched_size(); ranks > 1)
+      throw InputError(fmt::format(
+          "swarf run under mpirun with {} ranks: one run over several ranks (domain decomposition) is not "
+          "built yet; run it on one rank with threads (--threads N, or OMP_NUM_THREADS), or spread the cases "
+          "of a study over the ranks with 'mpirun -n {} swarf sweep STUDY'",
+          ranks, ranks));
     run_case(ro);
     return 0;
   }
