@@ -45,6 +45,17 @@ void free_side_figures(const CutSetup& s, const CutData& d, CutResult& out) {
   const SteadyStats fps = steady_stats(fp);
   out.cutting["passive_force_per_width_mean_N_per_m"] = fp.empty() ? nlohmann::json(nullptr) : nlohmann::json(fps.mean);
   out.cutting["passive_force_per_width_ci95_N_per_m"] = finite_or_null(fps.ci95);
+  // The force away from the sides, for the comparison with plane strain.
+  for (const auto& [rows, name] : {std::pair{&d.fc_middle, "cutting"}, std::pair{&d.ft_middle, "thrust"}}) {
+    if (rows->empty()) continue;
+    std::vector<double> v;
+    for (std::size_t k = 0; k < d.time.size() && k < rows->size(); ++k)
+      if (d.time[k] >= s.steady_from) v.push_back((*rows)[k]);
+    const SteadyStats st = steady_stats(v);
+    out.cutting[fmt::format("{}_force_per_width_middle_mean_N_per_m", name)] = v.empty() ? nlohmann::json(nullptr)
+                                                                                         : nlohmann::json(st.mean);
+    out.cutting[fmt::format("{}_force_per_width_middle_ci95_N_per_m", name)] = finite_or_null(st.ci95);
+  }
   out.chip["inclination_deg"] = s.inclination_deg;
   out.chip["flow_angle_stabler_deg"] = s.inclination_deg;
   out.chip["flow_rows"] = eta.size();

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "postprocess/chip.h"
@@ -52,6 +53,12 @@ struct CutSetup {
   bool compliant() const { return mount.mass > 0; }
   /// The cut's width along the edge, m: the workpiece's over cos(lambda).
   double edge_width() const { return width / std::cos(inclination_deg * M_PI / 180.0); }
+  /// A cut with free sides: the middle half of the width along y, [lo, hi) in m, where the
+  /// force away from the sides is taken (its width is width / 2).
+  std::pair<double, double> middle_band() const {
+    const double c = 0.5 * (side_y_lo + side_y_hi);
+    return {c - 0.25 * width, c + 0.25 * width};
+  }
 };
 
 /// The run's data the analysis reads.
@@ -69,6 +76,9 @@ struct CutData {
   /// A cut with free sides (CutSetup::free_sides): passive_force (N/m), chip_flow_angle (deg) and
   /// chip_width (m) by row; empty otherwise (and for runs before 2026-12-06).
   std::vector<double> passive_force, chip_flow_angle, chip_width;
+  /// A cut with free sides: Fc and Ft of the middle half of the width (CutSetup::middle_band) per
+  /// its width, N/m, by row; empty otherwise (and for runs before 2026-12-06).
+  std::vector<double> fc_middle, ft_middle;
 };
 
 struct CutResult {

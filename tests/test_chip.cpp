@@ -324,14 +324,20 @@ TEST(CutReport, FreeSideFiguresAreTheSteadyRows) {
   d.passive_force = {100, 2, 4, 6, 8, 10, 12, 14, 16, 18};
   d.chip_flow_angle = {90, 12, 14, 13, 0, 15, 11, 16, 10, 17};
   d.chip_width = {1, 1, 1, 1, 0, 1, 1, 1, 1, 1};
+  d.fc_middle = {500, 1, 2, 3, 4, 5, 6, 7, 8, 9};  // steady mean 5
+  d.ft_middle = {-50, 2, 2, 2, 2, 2, 2, 2, 2, 2};
   const CutResult r = analyze_cut(s, d);
   EXPECT_NEAR(r.cutting["passive_force_per_width_mean_N_per_m"].get<double>(), 10.0, 1e-12);
+  EXPECT_NEAR(r.cutting["cutting_force_per_width_middle_mean_N_per_m"].get<double>(), 5.0, 1e-12);
+  EXPECT_NEAR(r.cutting["thrust_force_per_width_middle_mean_N_per_m"].get<double>(), 2.0, 1e-12);
   EXPECT_NEAR(r.chip["flow_angle_deg"].get<double>(), 13.5, 1e-12);
   EXPECT_EQ(r.chip["flow_angle_stabler_deg"].get<double>(), 15.0);
   EXPECT_NEAR(r.chip["width_to_cut_width"].get<double>(), std::cos(15.0 * kDeg) / 1e-3, 1e-9);
   EXPECT_EQ(r.chip["flow_rows"].get<int>(), 8);
   d.passive_force.clear();  // plane strain: none of it
+  d.fc_middle.clear(), d.ft_middle.clear();
   EXPECT_FALSE(analyze_cut(s, d).chip.contains("flow_angle_deg"));
+  EXPECT_FALSE(analyze_cut(s, d).cutting.contains("cutting_force_per_width_middle_mean_N_per_m"));
 }
 
 // The report's h_c is the median of the steady rows that measured the chip (0 = not

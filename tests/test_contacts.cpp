@@ -369,6 +369,32 @@ TEST(Friction, RegularizedLawSlidesAboveTheFrictionAngle) {
   EXPECT_NEAR(mean_x(m) - x0, 0.5 * a * T * T, 0.1 * 0.5 * a * T * T);
 }
 
+// A tool's force by strip of its edge (the oblique cut's force away from the sides): the bands
+// split the floor's contacts, so two bands that meet carry the whole force (to rounding: the
+// two partial sums are added in another order than the whole, hence 1e-12 relative) and a band
+// holding every contact is the whole force in the same order, bit for bit. The block (4 x 4 x 1
+// cells) rests on the floor after 5 ms, each half of it on contacts of its own.
+TEST(MeshForce, BandsSplitTheMeshForceByWhereItsContactsAct) {
+  test::BlockOnFloor b;
+  b.cells = {4, 4, 1};
+  b.integrator = "scheme = \"verlet\"\nend_time = 1";
+  Model m = build_model(parse_case(test::block_on_floor_case(b), "block", {}));
+  Simulation sim(m, m.step);
+  while (sim.time() < 5e-3) sim.step();
+  const Vec3 whole = sim.mesh_force(0);
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const Vec3& x : m.particles.position) lo = std::min(lo, x[1]), hi = std::max(hi, x[1]);
+  const double mid = 0.5 * (lo + hi) + 1e-4;  // (between two lattice planes)
+  const Vec3 left = sim.contacts().mesh_force_in_band(0, 1, -HUGE_VAL, mid);
+  const Vec3 right = sim.contacts().mesh_force_in_band(0, 1, mid, HUGE_VAL);
+  ASSERT_GT(whole.norm(), 0.0);
+  EXPECT_GT(left.norm(), 0.2 * whole.norm());
+  EXPECT_GT(right.norm(), 0.2 * whole.norm());
+  EXPECT_LE((left + right - whole).norm(), 1e-12 * whole.norm());
+  EXPECT_EQ(sim.contacts().mesh_force_in_band(0, 1, -HUGE_VAL, HUGE_VAL), whole);
+  EXPECT_EQ(sim.contacts().mesh_force_in_band(0, 1, hi + 1.0, HUGE_VAL), Vec3::Zero());
+}
+
 // ---- neighbour search ---------------------------------------------------------------------
 
 // Frictionless, undamped contacts with a 0.1 mm skin, for the neighbour-search tests.

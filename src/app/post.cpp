@@ -204,6 +204,10 @@ std::string free_side_line(const nlohmann::json& cutting, const nlohmann::json& 
   std::string line = fmt::format("  free sides, inclination lambda {:.4g} deg: passive force Fp/w {:.4g}{} kN/m",
                                  lambda, nan_safe(num(cutting, "passive_force_per_width_mean_N_per_m") * 1e-3),
                                  ci(cutting, "passive_force_per_width_ci95_N_per_m", 1e-3));
+  if (cutting.contains("cutting_force_per_width_middle_mean_N_per_m"))
+    line += fmt::format("; away from the sides (middle half of the width) Fc/w {:.4g}{} kN/m",
+                        nan_safe(num(cutting, "cutting_force_per_width_middle_mean_N_per_m") * 1e-3),
+                        ci(cutting, "cutting_force_per_width_middle_ci95_N_per_m", 1e-3));
   if (chip.contains("side_burr_m"))
     line += fmt::format("; side burr {:.3g} mm", nan_safe(num(chip, "side_burr_m") * 1e3));
   if (chip.contains("flow_angle_deg"))
@@ -338,7 +342,8 @@ void post_run(const std::string& dir) {
        {std::pair{"contact_length", &data.contact_length}, std::pair{"chip_temperature", &data.chip_temperature},
         std::pair{"rake_face_temperature", &data.rake_face_temperature},
         std::pair{"passive_force_per_width", &data.passive_force}, std::pair{"chip_flow_angle", &data.chip_flow_angle},
-        std::pair{"chip_width", &data.chip_width}})
+        std::pair{"chip_width", &data.chip_width}, std::pair{"cutting_force_per_width_middle", &data.fc_middle},
+        std::pair{"thrust_force_per_width_middle", &data.ft_middle}})
     if (has_column(dir + "/series.csv", name)) *column = read_columns(dir + "/series.csv", {name})[0];
   if (setup.compliant()) {
     const auto d = read_columns(dir + "/series.csv", {"tool_deflection_x", "tool_deflection_z"});

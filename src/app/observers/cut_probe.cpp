@@ -143,7 +143,11 @@ void CutProbe::columns(std::vector<Column>& out) const {
                 {"chip_flow_angle", "deg",
                  "eta_c: the chip's flow off the edge's normal in the rake face (Stabler: the inclination); 0 "
                  "before the chip reaches the section"},
-                {"chip_width", "m", "the chip's width along the edge, h to 3 h up the face; 0 likewise"}});
+                {"chip_width", "m", "the chip's width along the edge, h to 3 h up the face; 0 likewise"},
+                {"cutting_force_per_width_middle", "N/m",
+                 "Fc of the tool's contacts acting in the middle half of the width, over half the width: the force "
+                 "away from the sides"},
+                {"thrust_force_per_width_middle", "N/m", "Ft likewise"}});
   if (model_.heat.enabled)
     out.insert(out.end(), {{"chip_temperature", "K", "mean temperature of the chip particles; 0 without a chip"},
                            {"rake_face_temperature", "K",
@@ -168,7 +172,10 @@ void CutProbe::row(const Simulation& sim, std::vector<double>& values) {
     for (std::size_t i = 0; i < u.size(); ++i)
       u[i] = to_tool_frame(model_.particles.velocity[i] - tool_v, setup_.inclination_deg);
     const ChipFlow flow = measure_chip_flow(in, chip, u, setup_.edge_width());
-    values.insert(values.end(), {f[1] / setup_.width, flow.flow_angle_deg, flow.width});
+    const auto [lo, hi] = setup_.middle_band();
+    const Vec3 fm = sim.contacts().mesh_force_in_band(tool_mesh_, 1, lo, hi);
+    const double half = 0.5 * setup_.width;
+    values.insert(values.end(), {f[1] / setup_.width, flow.flow_angle_deg, flow.width, -fm[0] / half, fm[2] / half});
   }
   if (model_.heat.enabled) {
     const ChipHeat heat = chip_heat(in, chip, sim.world().particles.temperature);
@@ -203,6 +210,8 @@ void CutProbe::finish(const RunEnd& end, nlohmann::json& summary) {
     data.passive_force = end.series["passive_force_per_width"];
     data.chip_flow_angle = end.series["chip_flow_angle"];
     data.chip_width = end.series["chip_width"];
+    data.fc_middle = end.series["cutting_force_per_width_middle"];
+    data.ft_middle = end.series["thrust_force_per_width_middle"];
   }
   if (model_.heat.enabled) {
     data.chip_temperature = end.series["chip_temperature"];

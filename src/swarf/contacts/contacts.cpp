@@ -226,6 +226,15 @@ void ContactSystem::mesh_wrenches(std::vector<Vec3>& force, std::vector<Vec3>& t
   }
 }
 
+Vec3 ContactSystem::mesh_force_in_band(std::size_t m, int axis, double lo, double hi) const {
+  Vec3 f = Vec3::Zero();
+  for (std::size_t k = 0; k < tris_.size(); ++k)
+    if (ttouch_[k] && static_cast<std::size_t>(tri_mesh_[tris_[k].tri]) == m && tpoint_[k][axis] >= lo &&
+        tpoint_[k][axis] < hi)
+      f -= tres_[k].force;
+  return f;
+}
+
 double ContactSystem::elastic_energy() const {
   double e = 0.0;
   for (std::size_t k = 0; k < pe_.size(); ++k)

@@ -216,6 +216,9 @@ class ContactSystem {
   /// Force (N) and torque about each mesh's centre() (N m) that the particles exert on each
   /// mesh, summed over its contacts in list order (a rigid body's wrench).
   void mesh_wrenches(std::vector<Vec3>& force, std::vector<Vec3>& torque) const;
+  /// The part of mesh m's force (N) from its contacts whose point of action lies in the band
+  /// lo <= x[axis] < hi (m), in list order: a tool's force by strip of its edge.
+  Vec3 mesh_force_in_band(std::size_t m, int axis, double lo, double hi) const;
   /// Elastic energy stored in the contacts, J (2/5 K delta^(5/2), weighted for triangles).
   double elastic_energy() const;
   /// Domains (issue 38): how far beyond its region a rank needs copies of particles for the
