@@ -283,8 +283,7 @@ void DomainRun::migrate(bool recut) {
   }
   // Each particle leaving this rank goes with its rods and their other ends (the new owner's ghosts).
   std::vector<std::vector<std::int64_t>> leaving(size);
-  std::vector<std::vector<std::uint8_t>> with_particle(size, std::vector<std::uint8_t>(p.size(), 0));
-  std::vector<std::vector<std::uint8_t>> with_rod(size, std::vector<std::uint8_t>(r.size(), 0));
+  std::vector<std::vector<std::int32_t>> with_particle(size), with_rod(size);  // local indices, per rank
   std::vector<std::int64_t> staying;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!owned_[i]) continue;
@@ -294,10 +293,10 @@ void DomainRun::migrate(bool recut) {
       continue;
     }
     leaving[o].push_back(p.id[i]);
-    with_particle[o][i] = 1;
+    with_particle[o].push_back(static_cast<std::int32_t>(i));
     for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
-      with_rod[o][r.entries[e].rod] = 1;
-      with_particle[o][r.entries[e].other] = 1;
+      with_rod[o].push_back(r.entries[e].rod);
+      with_particle[o].push_back(r.entries[e].other);
     }
   }
   std::vector<Bytes> out(size);
@@ -307,12 +306,14 @@ void DomainRun::migrate(bool recut) {
     put_count(b, leaving[o].size());
     const Bytes ids = Comm::to_bytes(leaving[o]);
     b.insert(b.end(), ids.begin(), ids.end());
-    put_count(b, std::count(with_particle[o].begin(), with_particle[o].end(), std::uint8_t{1}));
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (with_particle[o][i]) pack_particle(b, p, i);
-    put_count(b, std::count(with_rod[o].begin(), with_rod[o].end(), std::uint8_t{1}));
-    for (std::size_t k = 0; k < r.size(); ++k)
-      if (with_rod[o][k]) pack_rod(b, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
+    for (auto* list : {&with_particle[o], &with_rod[o]}) {
+      std::sort(list->begin(), list->end());
+      list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    put_count(b, with_particle[o].size());
+    for (const std::int32_t i : with_particle[o]) pack_particle(b, p, i);
+    put_count(b, with_rod[o].size());
+    for (const std::int32_t k : with_rod[o]) pack_rod(b, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
   }
   const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
   // What this rank has and what it received; the owned ids: those staying and those arriving.
