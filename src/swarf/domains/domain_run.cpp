@@ -69,6 +69,7 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
     : comm_(comm), ds_(std::move(ds)), settings_(settings) {
   check_supported(global, settings);
   const int rank = comm_.rank(), size = comm_.size();
+  if (!(ds_.skin >= 0.0)) throw InputError(fmt::format("domains: skin = {} m must be at least 0", ds_.skin));
   if (ds_.rebalance_every < 1)
     throw InputError(fmt::format("domains: rebalance_every = {} must be at least 1", ds_.rebalance_every));
   if (!ds_.fixed_cuts.empty() && static_cast<int>(ds_.fixed_cuts.size()) != size - 1)
@@ -261,9 +262,9 @@ void DomainRun::step() {
   const Particles& p = local_.particles;
   double left = 0.0;
   for (std::size_t i = 0; i < p.size() && left == 0.0; ++i)
-    if (owned_[i] && partition_.owner(p.position[i]) != rank) left = 1.0;
-  // Every rebalance_every steps new cuts; in between, a particle that left its slab moves to
-  // the rank whose slab it entered, the cuts kept.
+    if (owned_[i] && !partition_.near(p.position[i], rank, ds_.skin)) left = 1.0;
+  // Every rebalance_every steps new cuts; in between, when a particle strayed beyond its slab
+  // and skin, every particle goes to the owner of its slab, the cuts kept.
   const bool recut = steps_ % ds_.rebalance_every == 0;
   if (comm_.max_all(left) > 0.0 || recut) migrate(recut);
 }

@@ -16,9 +16,9 @@
 // forces are partial and wrong), and after every step the owners overwrite them: the halo
 // exchange sends every per-particle field of each ghost (records.h).
 //
-// Migration: every 'rebalance_every' steps, and as soon as an owned particle leaves its slab,
-// the cuts are chosen again (unless fixed) and each particle whose owner changed goes to its new
-// owner point to point, with its rods and the particles at their other ends (the new owner's
+// Migration: every 'rebalance_every' steps with new cuts (unless fixed), and with the cuts kept as
+// soon as an owned particle strays more than 'skin' beyond its slab, each particle whose slab's
+// owner is not its owner goes to it point to point, with its rods and the particles at their other ends (the new owner's
 // ghosts), in one all-to-all; each domain then assembles its new local World from what it had
 // and what it received and hands it to the Simulation's door (Simulation::replace_particles),
 // which keeps the step's own state (time, counters, plastic strain window).
@@ -47,6 +47,10 @@ namespace swarf {
 struct DomainSettings {
   int rebalance_every = 100;       ///< steps between re-partitions and migrations (>= 1)
   std::vector<double> fixed_cuts;  ///< the slabs' cut planes along x, m (ranks - 1 of them); empty: balanced
+  /// How far an owned particle may stray beyond its slab before all particles go to the owners
+  /// of their slabs, m (0: as soon as one leaves). Ownership never changes the bits, so a skin
+  /// only trades a larger domain for fewer migrations (LAMMPS's reneighbouring skin).
+  double skin = 0.0;
 };
 
 class DomainRun {

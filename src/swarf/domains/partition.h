@@ -36,6 +36,10 @@ class SlabPartition {
   int owner(const Vec3& x) const {
     return static_cast<int>(std::upper_bound(cuts_.begin(), cuts_.end(), x[0]) - cuts_.begin());
   }
+  /// True if x lies in rank's slab widened by 'skin' (m) on each side.
+  bool near(const Vec3& x, int rank, double skin) const {
+    return (rank == 0 || x[0] >= cuts_[rank - 1] - skin) && (rank == ranks() - 1 || x[0] < cuts_[rank] + skin);
+  }
   const std::vector<double>& cuts() const { return cuts_; }
 
  private:
