@@ -16,12 +16,14 @@
 // forces are partial and wrong), and after every step the owners overwrite them: the halo
 // exchange sends every per-particle field of each ghost (records.h).
 //
-// Migration: every 'rebalance_every' steps with new cuts (unless fixed), and with the cuts kept as
-// soon as an owned particle strays more than 'skin' beyond its slab, each particle whose slab's
-// owner is not its owner goes to it point to point, with its rods and the particles at their other ends (the new owner's
-// ghosts), in one all-to-all; each domain then assembles its new local World from what it had
-// and what it received and hands it to the Simulation's door (Simulation::replace_particles),
-// which keeps the step's own state (time, counters, plastic strain window).
+// Which domain owns a particle never changes the bits (ghosts follow the rods, not space); the
+// slabs only decide where the work is done. Migration: every 'rebalance_every' steps with new
+// cuts (unless fixed), and with the cuts kept once an owned particle strays more than 'skin'
+// beyond its slab, every particle goes to the owner of its slab, point to point in one
+// all-to-all, with its rods and the particles at their other ends (the new owner's ghosts). Each
+// domain assembles its new local World from what it had and what it received and hands it to
+// the Simulation's door (Simulation::replace_particles), which keeps the step's own state (time,
+// counters, the plastic strain window: a migrant's open window is folded in by its new owner).
 //
 // Not in this slice (refused by name, check_supported): contacts, meshes and tools, rigid bodies,
 // groups (prescribed motions: their reactions are sums over the ranks), particle flows, heat,
