@@ -101,7 +101,18 @@ struct DomainReport {
   std::size_t ghosts = 0;  // at the end
   std::size_t particle_mismatches = 0, rod_mismatches = 0, rods_checked = 0;
   std::string first_mismatch;
+  bool gathered_serial = false;  // DomainRun::gather_owned gave the serial run's particles, bit for bit
 };
+
+// Every per-particle array of a and b holds the same bytes.
+bool same_particles(Particles& a, Particles& b) {
+  std::vector<Bytes> fa;
+  a.for_each_field([&](const char*, auto& v) { fa.push_back(Comm::to_bytes(v)); });
+  std::size_t f = 0;
+  bool same = true;
+  b.for_each_field([&](const char*, auto& v) { same = same && Comm::to_bytes(v) == fa[f++]; });
+  return same;
+}
 
 // Compares every owned particle's record and every local rod's with the serial run's.
 DomainReport compare(const DomainRun& d) {
@@ -158,6 +169,8 @@ std::vector<DomainReport> run_domains(int n, const DomainSettings& ds, int threa
     DomainRun d(comm, scene().world, scene().step, ds);
     for (int k = 0; k < kSteps; ++k) d.step();
     reports[comm.rank()] = compare(d);
+    Particles all = d.gather_owned();
+    reports[comm.rank()].gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
   });
   return reports;
 }
@@ -170,6 +183,7 @@ std::int64_t expect_serial_bits(const std::vector<DomainReport>& reports, bool a
     const DomainReport& d = reports[r];
     EXPECT_EQ(d.particle_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
     EXPECT_EQ(d.rod_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
+    EXPECT_TRUE(d.gathered_serial) << "domain " << r << ": the gathered particles are not the serial run's";
     if (all_own) EXPECT_GT(d.owned_ids.size(), 0u) << "domain " << r << " owns nothing";
     ids.insert(ids.end(), d.owned_ids.begin(), d.owned_ids.end());
     arrivals += d.arrivals;
@@ -247,7 +261,10 @@ TEST(Domains, OneDomainIsTheSerialRun) {
   SerialComm comm;
   DomainRun d(comm, scene().world, scene().step);
   for (int k = 0; k < kSteps; ++k) d.step();
-  expect_serial_bits({compare(d)});
+  DomainReport rep = compare(d);
+  Particles all = d.gather_owned();
+  rep.gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
+  expect_serial_bits({rep});
 }
 
 // Every feature the domains cannot run yet is refused by name, never run wrong.
@@ -307,6 +324,8 @@ TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
   DomainRun d(comm, scene().world, scene().step, ds);
   for (int k = 0; k < kSteps; ++k) d.step();
   const DomainReport rep = compare(d);
+  Particles all = d.gather_owned();
+  EXPECT_TRUE(same_particles(all, const_cast<Particles&>(serial().world.particles)));
   EXPECT_EQ(rep.particle_mismatches, 0u) << rep.first_mismatch;
   EXPECT_EQ(rep.rod_mismatches, 0u) << rep.first_mismatch;
   const std::int64_t owned = comm.sum_all(static_cast<std::int64_t>(rep.owned_ids.size()));

@@ -246,6 +246,28 @@ void DomainRun::exchange_halo() {
   }
 }
 
+Particles DomainRun::gather_owned() {
+  Particles& p = local_.particles;
+  Bytes mine;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (owned_[i]) pack_particle(mine, p, i);
+  Particles all;
+  for (const Bytes& b : comm_.all_gather(std::move(mine)))
+    for (const std::byte* at = b.data(); at != b.data() + b.size();) at += unpack_new_particle(at, all);
+  std::vector<std::size_t> order(all.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+  Particles out;
+  Bytes buf;
+  for (const std::size_t i : order) {
+    buf.clear();
+    pack_particle(buf, all, i);
+    unpack_new_particle(buf.data(), out);
+  }
+  out.next_id = p.next_id;
+  return out;
+}
+
 std::vector<std::int64_t> DomainRun::weights() const {
   const Rods& r = local_.rods;
   std::vector<std::int64_t> w(local_.particles.size(), 1);

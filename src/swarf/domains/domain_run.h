@@ -67,6 +67,10 @@ class DomainRun {
   /// One step, the halo exchange, and a migration when due. Collective.
   void step();
 
+  /// Collective: every rank's owned particles, in id order, on every rank: the serial run's
+  /// particles, bit for bit. O(N) on every rank: for outputs and checks, not for every step.
+  Particles gather_owned();
+
   /// Throws InputError naming the first feature of 'w' or 's' that the domains do not support.
   static void check_supported(const World& w, const StepSettings& s);
 
