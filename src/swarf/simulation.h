@@ -55,9 +55,10 @@ class Simulation {
   void append_particles(const Particles& extra);
   /// Replaces every particle and rod at once (a domain's migration, issue 38): 'particles'
   /// becomes the World's particles, the ends and per-rod arrays of 'rods' its rods' (the law,
-  /// area and bond formation stay the World's); the rows and scratch follow, the step's state
-  /// (time, counters, windows) stays. Throws InputError with contacts, groups, bodies or flows,
-  /// whose per-particle lists cannot follow a wholesale change, or arrays of unequal length.
+  /// area and bond formation stay the World's); the rows, the groups' members (from the
+  /// particles' group indices) and scratch follow, the step's state (time, counters, windows)
+  /// stays. Throws InputError with contacts, bodies or flows, whose per-particle lists cannot
+  /// follow a wholesale change, or arrays of unequal length.
   void replace_particles(Particles particles, Rods rods);
   /// Places rigid body b at 'position' (centre of mass, m) and 'orientation' (principal frame
   /// -> world, normalised here) between steps, its mesh with it. A hinge's orientation follows its

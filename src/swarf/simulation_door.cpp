@@ -89,16 +89,20 @@ void Simulation::append_particles(const Particles& extra) {
 }
 
 void Simulation::replace_particles(Particles particles, Rods rods) {
-  if (sys_.contacts.enabled() || !m_.groups.empty() || !m_.bodies.empty() || !m_.inflows.empty() || !m_.outflows.empty())
-    throw InputError("replace_particles: not with contacts, groups, rigid bodies or particle flows");
+  if (sys_.contacts.enabled() || !m_.bodies.empty() || !m_.inflows.empty() || !m_.outflows.empty())
+    throw InputError("replace_particles: not with contacts, rigid bodies or particle flows");
   const std::size_t n = particles.position.size(), m = rods.ends.size();
   bool consistent = true;
   particles.for_each_field([&](const char*, auto& v) { consistent = consistent && v.size() == n; });
   rods.for_each_field([&](const char*, auto& v) { consistent = consistent && v.size() == m; });
   for (const auto& e : rods.ends)
     consistent = consistent && e[0] >= 0 && e[0] < e[1] && static_cast<std::size_t>(e[1]) < n;
+  for (const std::int32_t g : particles.group)
+    consistent = consistent && g >= -1 && g < static_cast<std::int32_t>(m_.groups.size());
   if (!consistent)
-    throw InputError("replace_particles: arrays of unequal length, or rod ends out of range or not ascending");
+    throw InputError(
+        "replace_particles: arrays of unequal length, rod ends out of range or not ascending, or a group index "
+        "out of range");
   m_.particles = std::move(particles);
   m_.rods.ends = std::move(rods.ends);
   // Both for_each_field walks visit the same fields in the same order: pair them by index.
@@ -108,6 +112,9 @@ void Simulation::replace_particles(Particles particles, Rods rods) {
   rods.for_each_field(
       [&](const char*, auto& v) { *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]) = std::move(v); });
   m_.rods.build_rows(n);
+  for (Group& g : m_.groups) g.members.clear();  // (the members from the particles' group indices, ascending)
+  for (std::size_t i = 0; i < n; ++i)
+    if (m_.particles.group[i] >= 0) m_.groups[m_.particles.group[i]].members.push_back(static_cast<std::int32_t>(i));
   resize_scratch();
 }
 

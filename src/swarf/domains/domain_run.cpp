@@ -50,8 +50,6 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what = "meshes (tools)";
   else if (!w.bodies.empty())
     what = "rigid bodies";
-  else if (!w.groups.empty())
-    what = "groups (prescribed motions)";
   else if (!w.inflows.empty() || !w.outflows.empty())
     what = "particle inflows and outflows";
   else if (w.heat.enabled)
@@ -60,6 +58,14 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what = "bond formation";
   else if (w.periodic.on())
     what = "a periodic width";
+  // A group's members are found again from the particles' group indices after a migration.
+  for (std::size_t g = 0; g < w.groups.size() && !what; ++g)
+    for (const std::int32_t i : w.groups[g].members)
+      if (w.particles.group[i] != static_cast<std::int32_t>(g)) what = "groups whose members' Particles::group differ";
+  std::size_t members = 0, grouped = 0;
+  for (const Group& g : w.groups) members += g.members.size();
+  for (const std::int32_t g : w.particles.group) grouped += g >= 0 ? 1 : 0;
+  if (!what && members != grouped) what = "groups whose members' Particles::group differ";
   if (what)
     throw InputError(
         fmt::format("domain decomposition (issue 38) does not support {} yet: run this case on one rank", what));
@@ -83,6 +89,7 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   local_.periodic = global.periodic;
   local_.contact = global.contact;
   local_.heat = global.heat;
+  local_.groups = global.groups;  // (the motions; the members follow the local particles in adopt)
   local_.particles.next_id = global.particles.next_id;
   Particles& gp = const_cast<Particles&>(global.particles);  // (records are read through for_each_field)
   Rods& gr = const_cast<Rods&>(global.rods);
@@ -200,6 +207,10 @@ void DomainRun::adopt(Local&& l) {
       *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]) = std::move(v);
     });
     local_.rods.build_rows(local_.particles.size());
+    for (Group& g : local_.groups) g.members.clear();  // (as Simulation::replace_particles finds them)
+    for (std::size_t i = 0; i < local_.particles.size(); ++i)
+      if (const std::int32_t g = local_.particles.group[i]; g >= 0)
+        local_.groups[g].members.push_back(static_cast<std::int32_t>(i));
     sim_ = std::make_unique<Simulation>(local_, settings_);
   } else {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods));

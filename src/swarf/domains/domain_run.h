@@ -25,8 +25,10 @@
 // the Simulation's door (Simulation::replace_particles), which keeps the step's own state (time,
 // counters, the plastic strain window: a migrant's open window is folded in by its new owner).
 //
+// Groups (grips, prescribed motions) act on each particle alone, owned or ghost; their reactions
+// and work are per domain (sums over the ranks still to come).
 // Not in this slice (refused by name, check_supported): contacts, meshes and tools, rigid bodies,
-// groups (prescribed motions: their reactions are sums over the ranks), particle flows, heat,
+// particle flows, heat,
 // bond formation, a periodic width, the implicit Newmark step and the Newton solver. Rotations are
 // off (they come with contacts). The ledger and the Simulation's sums (energies, broken rods)
 // are per domain and not yet reduced: only the particles' and rods' state is the serial one.
