@@ -13,6 +13,7 @@ folder and those below it (docs/architecture.md):
 
     core < laws < state < geometry < neighbors < {contacts, forces} < measure < systems
          < integrate < the engine's top files (simulation*, step_settings.h, step_listener.h, ...)
+         < domains (one run over several domains, issue 38: it drives a Simulation per domain)
 
 Folders on one floor (contacts, forces) may not include each other. Usage: check_layers.py
 REPOSITORY_ROOT; exit 1 with the offending lines.
@@ -40,7 +41,7 @@ ROOTS = {"swarf": "src/swarf", "io": "src/io", "setup": "src/setup", "study": "s
 # The engine's floors: a file may include its own folder's headers and those of lower floors.
 # "" is the engine's top (src/swarf/*.h, *.cpp): the step, the World, the state archive.
 ENGINE_FLOOR = {"core": 0, "laws": 1, "state": 2, "geometry": 3, "neighbors": 4, "contacts": 5, "forces": 5,
-                "measure": 6, "systems": 7, "integrate": 8, "": 9}
+                "measure": 6, "systems": 7, "integrate": 8, "": 9, "domains": 10}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SYSTEM = re.compile(r'^\s*#\s*include\s*<([^>]+)>')
 # Libraries the engine must not see (it uses Eigen, OpenMP, fmt and the standard library).
@@ -74,7 +75,7 @@ def engine_error(rel: pathlib.PurePosixPath, target: str):
         return None
     name = lambda f: f + "/" if f else "the engine's top"
     return (f"engine {name(own)} may not include {name(to)} (\"{target}\"): the floors are "
-            "core < laws < state < geometry < neighbors < {contacts, forces} < measure < systems < integrate < top")
+            "core < laws < state < geometry < neighbors < {contacts, forces} < measure < systems < integrate < top < domains")
 
 
 def main(root: pathlib.Path) -> int:

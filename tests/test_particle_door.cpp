@@ -206,6 +206,46 @@ TEST(ParticleDoor, ContactsAndTheirHistoriesFollowAShuffle) {
   EXPECT_LT(worst, 1e-9 * scale) << "largest force difference " << worst << " N of " << scale << " N";
 }
 
+// Simulation::replace_particles (the domains' migration, swarf/domains/domain_run.h) with a copy
+// of the World's own particles and rods: the step's own state (time, counters, the plastic strain
+// window) stays, and the run goes on bit for bit, state hash included.
+TEST(ParticleDoor, ReplacingTheParticlesWithTheirOwnCopyChangesNothing) {
+  const std::string bar = test::pulled_bar_case(
+      {.cells = {10, 3, 3}, .integrator = "scheme = \"verlet\"\nend_time = 1"});
+  Model a = build_model(parse_case(bar, "bar", {})), b = build_model(parse_case(bar, "bar", {}));
+  for (Model* m : {&a, &b}) {  // (a free bar, stretched: replace_particles refuses groups)
+    m->groups.clear();
+    for (std::size_t i = 0; i < m->particles.size(); ++i) {
+      m->particles.prescribed[i] = 0;
+      m->particles.group[i] = -1;
+      m->particles.velocity[i] = Vec3(4000.0 * m->particles.position[i][0], 0.0, 0.0);
+    }
+  }
+  Simulation sa(a, a.step), sb(b, b.step);
+  for (int s = 0; s < 317; ++s) sa.step(), sb.step();  // (317: mid-way through a plastic strain window)
+  sb.replace_particles(Particles(b.particles), Rods(b.rods));
+  for (int s = 0; s < 700; ++s) sa.step(), sb.step();
+  EXPECT_GT(sa.broken_rods(), 0u);
+  EXPECT_EQ(sa.state_hash(), sb.state_hash());
+  EXPECT_EQ(sa.time(), sb.time());
+  EXPECT_EQ(sa.steps(), sb.steps());
+}
+
+// The gripped bar (Newmark): the groups' members are found again from the particles' group
+// indices, and the run goes on bit for bit; a group index out of range is refused.
+TEST(ParticleDoor, ReplacingTheParticlesOfAGrippedBarKeepsItsGroups) {
+  Model a = build_model(parse_case(kBar, "bar", {})), b = build_model(parse_case(kBar, "bar", {}));
+  Simulation sa(a, a.step), sb(b, b.step);
+  for (int s = 0; s < 100; ++s) sa.step(), sb.step();
+  Particles bad = b.particles;
+  bad.group[0] = static_cast<std::int32_t>(b.groups.size());
+  EXPECT_THROW(sb.replace_particles(bad, Rods(b.rods)), InputError);
+  sb.replace_particles(Particles(b.particles), Rods(b.rods));
+  for (int s = 0; s < 300; ++s) sa.step(), sb.step();
+  EXPECT_EQ(sa.state_hash(), sb.state_hash());
+  EXPECT_EQ(a.groups[1].members, b.groups[1].members);
+}
+
 TEST(ParticleDoor, RejectsAnOrderThatIsNotAPermutation) {
   Model m = build_model(parse_case(kBar, "bar", {}));
   Simulation sim(m, m.step);

@@ -53,6 +53,13 @@ class Simulation {
   /// ignored: new ones are given). The new particles have no rods; the contact lists are
   /// rebuilt at the next evaluation so that they take part.
   void append_particles(const Particles& extra);
+  /// Replaces every particle and rod at once (a domain's migration, issue 38): 'particles'
+  /// becomes the World's particles, the ends and per-rod arrays of 'rods' its rods' (the law,
+  /// area and bond formation stay the World's); the rows, the groups' members (from the
+  /// particles' group indices) and scratch follow, the step's state (time, counters, windows)
+  /// stays. Throws InputError with contacts, bodies or flows, whose per-particle lists cannot
+  /// follow a wholesale change, or arrays of unequal length.
+  void replace_particles(Particles particles, Rods rods);
   /// Places rigid body b at 'position' (centre of mass, m) and 'orientation' (principal frame
   /// -> world, normalised here) between steps, its mesh with it. A hinge's orientation follows its
   /// angle, so it is refused for a hinged body unless unchanged. Throws InputError on a

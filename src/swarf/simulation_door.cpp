@@ -88,6 +88,36 @@ void Simulation::append_particles(const Particles& extra) {
   resize_scratch();
 }
 
+void Simulation::replace_particles(Particles particles, Rods rods) {
+  if (sys_.contacts.enabled() || !m_.bodies.empty() || !m_.inflows.empty() || !m_.outflows.empty())
+    throw InputError("replace_particles: not with contacts, rigid bodies or particle flows");
+  const std::size_t n = particles.position.size(), m = rods.ends.size();
+  bool consistent = true;
+  particles.for_each_field([&](const char*, auto& v) { consistent = consistent && v.size() == n; });
+  rods.for_each_field([&](const char*, auto& v) { consistent = consistent && v.size() == m; });
+  for (const auto& e : rods.ends)
+    consistent = consistent && e[0] >= 0 && e[0] < e[1] && static_cast<std::size_t>(e[1]) < n;
+  for (const std::int32_t g : particles.group)
+    consistent = consistent && g >= -1 && g < static_cast<std::int32_t>(m_.groups.size());
+  if (!consistent)
+    throw InputError(
+        "replace_particles: arrays of unequal length, rod ends out of range or not ascending, or a group index "
+        "out of range");
+  m_.particles = std::move(particles);
+  m_.rods.ends = std::move(rods.ends);
+  // Both for_each_field walks visit the same fields in the same order: pair them by index.
+  std::vector<void*> targets;
+  m_.rods.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
+  std::size_t f = 0;
+  rods.for_each_field(
+      [&](const char*, auto& v) { *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]) = std::move(v); });
+  m_.rods.build_rows(n);
+  for (Group& g : m_.groups) g.members.clear();  // (the members from the particles' group indices, ascending)
+  for (std::size_t i = 0; i < n; ++i)
+    if (m_.particles.group[i] >= 0) m_.groups[m_.particles.group[i]].members.push_back(static_cast<std::int32_t>(i));
+  resize_scratch();
+}
+
 void Simulation::set_body_pose(std::size_t b, const Vec3& position, const Quat& orientation) {
   if (b >= m_.bodies.size()) throw InputError(fmt::format("set_body_pose: body {} of {}", b, m_.bodies.size()));
   RigidBody& rb = m_.bodies[b];

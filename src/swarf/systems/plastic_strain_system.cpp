@@ -88,6 +88,13 @@ void PlasticStrainSystem::fit(World& w) {
   }
 }
 
+void PlasticStrainSystem::resize(const World& w) {
+  // (Without the door, a window is non-zero only when pending_ is set: this changes nothing then.)
+  const auto& p = w.particles;
+  for (std::size_t i = 0; i < p.window_normal.size() && !pending_; ++i)
+    pending_ = !p.window_normal[i].isZero(0.0) || !p.window_shear[i].isZero(0.0);
+}
+
 void PlasticStrainSystem::visit_state(StateArchive& ar, World&, EnergyLedger&) {
   // (also when off: a checkpoint loads whether or not the restart writes PEEQ)
   ar.scalar("plastic_strain/window_steps", steps_);

@@ -49,9 +49,13 @@ class PlasticStrainSystem {
   void fit(World& w);
 
   void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
+  /// After the door changed the particles: a particle that came with a non-zero window (a
+  /// domain's migrant, swarf/domains/domain_run.h) makes the next fit fold it in.
+  void resize(const World& w);
 
   // Domains (issue 38): the per-particle arrays migrate with the particles; a rod's increment is
-  // added to both ends, so a ghost end's window goes back to its owner (summed in rank order).
+  // added to both ends, and a domain holds every rod of the particles it owns, so an owned
+  // particle's window is its serial one (a ghost's is overwritten by its owner's).
   static constexpr Sharing sharing = Sharing::Replicated;
   double ghost_reach(const World&) const { return 0.0; }
 

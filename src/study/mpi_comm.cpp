@@ -1,0 +1,79 @@
+// mpi_comm.cpp: the domains' collectives over MPI (see mpi_comm.h): counts first, then the bytes.
+#include "study/mpi_comm.h"
+
+#include <stdexcept>
+#include <string>
+
+#ifdef SWARF_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace swarf {
+
+#ifdef SWARF_HAVE_MPI
+
+namespace {
+// Displacements of buffers of 'counts' laid end to end, and their total.
+int displacements(const std::vector<int>& counts, std::vector<int>& displ) {
+  displ.assign(counts.size(), 0);
+  long long total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    displ[r] = static_cast<int>(total);
+    total += counts[r];
+  }
+  if (total > 2147483647LL) throw std::runtime_error("MpiComm: more than 2 GB in one exchange");
+  return static_cast<int>(total);
+}
+}  // namespace
+
+MpiComm::MpiComm() {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) throw std::logic_error("MpiComm: MPI is not initialised (start an MpiSession first)");
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+std::vector<Bytes> MpiComm::all_to_all(std::vector<Bytes> send) {
+  if (static_cast<int>(send.size()) != size_)
+    throw std::logic_error("all_to_all: " + std::to_string(send.size()) + " buffers for " + std::to_string(size_) +
+                           " ranks");
+  std::vector<int> scount(size_), rcount(size_), sdispl, rdispl;
+  for (int r = 0; r < size_; ++r) scount[r] = static_cast<int>(send[r].size());
+  MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  Bytes sbuf(displacements(scount, sdispl)), rbuf(displacements(rcount, rdispl));
+  for (int r = 0; r < size_; ++r) std::copy(send[r].begin(), send[r].end(), sbuf.begin() + sdispl[r]);
+  MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_BYTE, rbuf.data(), rcount.data(), rdispl.data(),
+                MPI_BYTE, MPI_COMM_WORLD);
+  std::vector<Bytes> out(size_);
+  for (int r = 0; r < size_; ++r) out[r].assign(rbuf.begin() + rdispl[r], rbuf.begin() + rdispl[r] + rcount[r]);
+  return out;
+}
+
+std::vector<Bytes> MpiComm::all_gather(Bytes mine) {
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(size_), displ;
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  Bytes all(displacements(counts, displ));
+  MPI_Allgatherv(mine.data(), count, MPI_BYTE, all.data(), counts.data(), displ.data(), MPI_BYTE, MPI_COMM_WORLD);
+  std::vector<Bytes> out(size_);
+  for (int r = 0; r < size_; ++r) out[r].assign(all.begin() + displ[r], all.begin() + displ[r] + counts[r]);
+  return out;
+}
+
+void MpiComm::barrier() { MPI_Barrier(MPI_COMM_WORLD); }
+
+#else
+
+MpiComm::MpiComm() = default;
+std::vector<Bytes> MpiComm::all_to_all(std::vector<Bytes> send) { return send; }
+std::vector<Bytes> MpiComm::all_gather(Bytes mine) {
+  std::vector<Bytes> out;
+  out.push_back(std::move(mine));
+  return out;
+}
+void MpiComm::barrier() {}
+
+#endif
+
+}  // namespace swarf

@@ -1,0 +1,89 @@
+// comm.h: what the domains of one run say to each other (issue 38), free of MPI.
+//
+// A Comm is one rank's end of a group of ranks that call its collectives together, in the same
+// order. Two primitives carry bytes: all_to_all (a buffer for every rank, one from every rank)
+// and all_gather (every rank's buffer to every rank); the reductions are built on them so that
+// their results do not depend on how the numbers are split over the ranks: integers are summed
+// exactly, minima and maxima are exact, and sums of doubles are gathered and added in rank order.
+// SerialComm is the one-rank group; LoopbackComm (loopback_comm.h) runs N ranks as threads of
+// one process (the tests); MpiComm (study/mpi_comm.h) is MPI's. Not virtual in hot loops: a
+// collective is called a few times per step.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+namespace swarf {
+
+using Bytes = std::vector<std::byte>;
+
+class Comm {
+ public:
+  virtual ~Comm() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  /// send[r] goes to rank r (send.size() == size()); returns what every rank r sent to this one.
+  virtual std::vector<Bytes> all_to_all(std::vector<Bytes> send) = 0;
+  /// Every rank's 'mine', indexed by rank, on every rank.
+  virtual std::vector<Bytes> all_gather(Bytes mine) = 0;
+  virtual void barrier() = 0;
+
+  /// Element-wise sums of the ranks' integer vectors (all the same length): exact.
+  std::vector<std::int64_t> sum_all(const std::vector<std::int64_t>& v) {
+    std::vector<std::int64_t> out(v.size(), 0);
+    for (const Bytes& b : all_gather(to_bytes(v)))
+      for (std::size_t k = 0; k < out.size(); ++k) out[k] += from_bytes<std::int64_t>(b)[k];
+    return out;
+  }
+  std::int64_t sum_all(std::int64_t v) { return sum_all(std::vector<std::int64_t>{v})[0]; }
+  /// The largest (smallest) v over the ranks.
+  double max_all(double v) {
+    double m = v;
+    for (const Bytes& b : all_gather(to_bytes(std::vector<double>{v}))) m = std::max(m, from_bytes<double>(b)[0]);
+    return m;
+  }
+  double min_all(double v) { return -max_all(-v); }
+  /// Sums of the ranks' partial vectors added in rank order: the same bits on every rank, and
+  /// the same for any rank count wherever the partials themselves are.
+  std::vector<double> sum_in_rank_order(const std::vector<double>& v) {
+    std::vector<double> out(v.size(), 0.0);
+    for (const Bytes& b : all_gather(to_bytes(v))) {
+      const std::vector<double> part = from_bytes<double>(b);
+      for (std::size_t k = 0; k < out.size(); ++k) out[k] += part[k];
+    }
+    return out;
+  }
+
+  template <class T>
+  static Bytes to_bytes(const std::vector<T>& v) {
+    Bytes b(v.size() * sizeof(T));
+    if (!v.empty()) std::memcpy(b.data(), v.data(), b.size());
+    return b;
+  }
+  template <class T>
+  static std::vector<T> from_bytes(const Bytes& b) {
+    std::vector<T> v(b.size() / sizeof(T));
+    if (!v.empty()) std::memcpy(v.data(), b.data(), v.size() * sizeof(T));
+    return v;
+  }
+};
+
+/// The group of one rank: every collective returns what it was given.
+class SerialComm final : public Comm {
+ public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  std::vector<Bytes> all_to_all(std::vector<Bytes> send) override { return send; }
+  std::vector<Bytes> all_gather(Bytes mine) override {
+    std::vector<Bytes> out;
+    out.push_back(std::move(mine));
+    return out;
+  }
+  void barrier() override {}
+};
+
+}  // namespace swarf

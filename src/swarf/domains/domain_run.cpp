@@ -1,0 +1,388 @@
+// domain_run.cpp: the domains' setup, halo exchange and migration (see domain_run.h).
+#include "swarf/domains/domain_run.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <stdexcept>
+
+#include "swarf/core/errors.h"
+
+namespace swarf {
+
+struct DomainRun::Local {
+  Particles particles;
+  Rods rods;
+  std::vector<std::uint8_t> owned;
+  std::vector<std::int64_t> key;
+};
+
+namespace {
+
+// Buffers: a count, then that many records.
+void put_count(Bytes& out, std::uint64_t n) {
+  const std::size_t at = out.size();
+  out.resize(at + sizeof n);
+  std::memcpy(out.data() + at, &n, sizeof n);
+}
+std::uint64_t get_count(const std::byte*& in) {
+  std::uint64_t n;
+  std::memcpy(&n, in, sizeof n);
+  in += sizeof n;
+  return n;
+}
+
+bool contains(const std::vector<std::int64_t>& sorted, std::int64_t v) {
+  return std::binary_search(sorted.begin(), sorted.end(), v);
+}
+
+}  // namespace
+
+void DomainRun::check_supported(const World& w, const StepSettings& s) {
+  const char* what = nullptr;
+  if (s.implicit())
+    what = s.solver == Solver::Newton ? "the Newton solver" : "the implicit Newmark step (integrator.scheme)";
+  else if (w.contacts)
+    what = "contacts";
+  else if (!w.meshes.empty())
+    what = "meshes (tools)";
+  else if (!w.bodies.empty())
+    what = "rigid bodies";
+  else if (!w.inflows.empty() || !w.outflows.empty())
+    what = "particle inflows and outflows";
+  else if (w.heat.enabled)
+    what = "heat";
+  else if (w.rods.formation.enabled())
+    what = "bond formation";
+  else if (w.periodic.on())
+    what = "a periodic width";
+  // A group's members are found again from the particles' group indices after a migration.
+  for (std::size_t g = 0; g < w.groups.size() && !what; ++g)
+    for (const std::int32_t i : w.groups[g].members)
+      if (w.particles.group[i] != static_cast<std::int32_t>(g)) what = "groups whose members' Particles::group differ";
+  std::size_t members = 0, grouped = 0;
+  for (const Group& g : w.groups) members += g.members.size();
+  for (const std::int32_t g : w.particles.group) grouped += g >= 0 ? 1 : 0;
+  if (!what && members != grouped) what = "groups whose members' Particles::group differ";
+  if (what)
+    throw InputError(
+        fmt::format("domain decomposition (issue 38) does not support {} yet: run this case on one rank", what));
+}
+
+DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settings, DomainSettings ds)
+    : comm_(comm), ds_(std::move(ds)), settings_(settings) {
+  check_supported(global, settings);
+  const int rank = comm_.rank(), size = comm_.size();
+  if (!(ds_.skin >= 0.0)) throw InputError(fmt::format("domains: skin = {} m must be at least 0", ds_.skin));
+  if (ds_.rebalance_every < 1)
+    throw InputError(fmt::format("domains: rebalance_every = {} must be at least 1", ds_.rebalance_every));
+  if (!ds_.fixed_cuts.empty() && static_cast<int>(ds_.fixed_cuts.size()) != size - 1)
+    throw InputError(
+        fmt::format("domains: {} cut planes for {} ranks (one fewer than the ranks)", ds_.fixed_cuts.size(), size));
+  // The World's configuration (law, area, gravity, ...) with no particles and no rods yet.
+  local_.rods.law = global.rods.law;
+  local_.rods.area = global.rods.area;
+  local_.rods.formation = global.rods.formation;
+  local_.gravity = global.gravity;
+  local_.periodic = global.periodic;
+  local_.contact = global.contact;
+  local_.heat = global.heat;
+  local_.groups = global.groups;  // (the motions; the members follow the local particles in adopt)
+  local_.particles.next_id = global.particles.next_id;
+  Particles& gp = const_cast<Particles&>(global.particles);  // (records are read through for_each_field)
+  Rods& gr = const_cast<Rods&>(global.rods);
+  const std::size_t n = gp.size();
+  // Per global particle: 1 + its intact rods (the partition's weight).
+  std::vector<std::int64_t> w(n, 1);
+  for (std::size_t k = 0; k < gr.size(); ++k)
+    if (gr.intact[k]) ++w[gr.ends[k][0]], ++w[gr.ends[k][1]];
+  if (!ds_.fixed_cuts.empty()) {
+    partition_ = SlabPartition(ds_.fixed_cuts);
+  } else {
+    // Each rank contributes a share of the global particles (any split gives the same cuts).
+    const std::size_t a = n * rank / size, b = n * (rank + 1) / size;
+    std::vector<double> x;
+    for (std::size_t i = a; i < b; ++i) x.push_back(gp.position[i][0]);
+    partition_ = SlabPartition::balanced(comm_, x, std::vector<std::int64_t>(w.begin() + a, w.begin() + b));
+  }
+  // This rank's particles, their rods and the rods' other ends, from the global World.
+  std::vector<std::int64_t> owned_ids;
+  std::vector<std::uint8_t> needed(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (partition_.owner(gp.position[i]) == rank) {
+      owned_ids.push_back(gp.id[i]);
+      needed[i] = 1;
+    }
+  std::sort(owned_ids.begin(), owned_ids.end());
+  RodPool rods;
+  Bytes buf;
+  for (std::size_t k = 0; k < gr.size(); ++k) {
+    const auto [i, j] = gr.ends[k];
+    if (partition_.owner(gp.position[i]) != rank && partition_.owner(gp.position[j]) != rank) continue;
+    buf.clear();
+    pack_rod(buf, gr, k, static_cast<std::int64_t>(k), {gp.id[i], gp.id[j]});
+    unpack_rod(buf.data(), rods);
+    needed[i] = needed[j] = 1;
+  }
+  Particles pool;
+  for (std::size_t i = 0; i < n; ++i)
+    if (needed[i]) {
+      buf.clear();
+      pack_particle(buf, gp, i);
+      unpack_new_particle(buf.data(), pool);
+    }
+  adopt(assemble(pool, rods, owned_ids));
+  exchange_halo();  // (the Simulation's first evaluation gave the ghosts partial forces)
+}
+
+std::size_t DomainRun::owned_count() const {
+  return static_cast<std::size_t>(std::count(owned_.begin(), owned_.end(), std::uint8_t{1}));
+}
+
+DomainRun::Local DomainRun::assemble(Particles& pool, RodPool& rods, const std::vector<std::int64_t>& owned_ids) const {
+  Local l;
+  // The rods with an owned end, once each, in the global order.
+  std::vector<std::size_t> ro(rods.key.size());
+  std::iota(ro.begin(), ro.end(), std::size_t{0});
+  std::stable_sort(ro.begin(), ro.end(), [&](std::size_t a, std::size_t b) { return rods.key[a] < rods.key[b]; });
+  std::vector<std::size_t> keep;
+  std::vector<std::int64_t> ids = owned_ids;
+  for (std::size_t q = 0; q < ro.size(); ++q) {
+    const std::size_t k = ro[q];
+    if (q > 0 && rods.key[ro[q - 1]] == rods.key[k]) continue;  // (copies of one rod are identical)
+    const auto [a, b] = rods.end_id[k];
+    if (!contains(owned_ids, a) && !contains(owned_ids, b)) continue;
+    keep.push_back(k);
+    ids.push_back(a);
+    ids.push_back(b);
+  }
+  // The particles: the owned ones and the rods' other ends, once each, in id order.
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<std::size_t> po(pool.size());
+  std::iota(po.begin(), po.end(), std::size_t{0});
+  std::stable_sort(po.begin(), po.end(), [&](std::size_t a, std::size_t b) { return pool.id[a] < pool.id[b]; });
+  Bytes buf;
+  std::size_t q = 0;
+  for (const std::int64_t id : ids) {
+    while (q < po.size() && pool.id[po[q]] < id) ++q;
+    if (q == po.size() || pool.id[po[q]] != id)
+      throw std::logic_error(fmt::format("domain {}: particle {} is needed but was not sent", comm_.rank(), id));
+    buf.clear();
+    pack_particle(buf, pool, po[q]);
+    unpack_new_particle(buf.data(), l.particles);
+    l.owned.push_back(contains(owned_ids, id) ? 1 : 0);
+  }
+  l.particles.next_id = local_.particles.next_id;
+  // The rods, their ends as local indices (ascending, as in the serial run: the particles are in id order).
+  const auto local = [&](std::int64_t id) {
+    return static_cast<std::int32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+  };
+  // Both for_each_field walks visit the same fields in the same order: pair them by index.
+  std::vector<void*> targets;
+  l.rods.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
+  for (const std::size_t k : keep) {
+    l.key.push_back(rods.key[k]);
+    l.rods.ends.push_back({local(rods.end_id[k][0]), local(rods.end_id[k][1])});
+    std::size_t f = 0;
+    rods.rods.for_each_field([&](const char*, auto& v) {
+      static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++])->push_back(v[k]);
+    });
+  }
+  return l;
+}
+
+void DomainRun::adopt(Local&& l) {
+  owned_ = std::move(l.owned);
+  rod_key_ = std::move(l.key);
+  if (!sim_) {
+    local_.particles = std::move(l.particles);
+    local_.rods.ends = std::move(l.rods.ends);
+    std::vector<void*> targets;
+    local_.rods.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
+    std::size_t f = 0;
+    l.rods.for_each_field([&](const char*, auto& v) {
+      *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]) = std::move(v);
+    });
+    local_.rods.build_rows(local_.particles.size());
+    for (Group& g : local_.groups) g.members.clear();  // (as Simulation::replace_particles finds them)
+    for (std::size_t i = 0; i < local_.particles.size(); ++i)
+      if (const std::int32_t g = local_.particles.group[i]; g >= 0)
+        local_.groups[g].members.push_back(static_cast<std::int32_t>(i));
+    sim_ = std::make_unique<Simulation>(local_, settings_);
+  } else {
+    sim_->replace_particles(std::move(l.particles), std::move(l.rods));
+  }
+  plan_halo();
+}
+
+void DomainRun::plan_halo() {
+  const int size = comm_.size(), rank = comm_.rank();
+  const Particles& p = local_.particles;
+  // Ask each owner for the ghosts it owns (by id, in local order).
+  std::vector<std::vector<std::int64_t>> want(size);
+  recv_.assign(size, {});
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (owned_[i]) continue;
+    const int o = partition_.owner(p.position[i]);
+    if (o == rank) throw std::logic_error(fmt::format("domain {}: ghost {} lies in its own slab", rank, p.id[i]));
+    want[o].push_back(p.id[i]);
+    recv_[o].push_back(static_cast<std::int32_t>(i));
+  }
+  std::vector<Bytes> ask(size);
+  for (int r = 0; r < size; ++r) ask[r] = Comm::to_bytes(want[r]);
+  const std::vector<Bytes> asked = comm_.all_to_all(std::move(ask));
+  send_.assign(size, {});
+  for (int r = 0; r < size; ++r)
+    for (const std::int64_t id : Comm::from_bytes<std::int64_t>(asked[r])) {
+      const auto it = std::lower_bound(p.id.begin(), p.id.end(), id);  // (local particles are in id order)
+      if (it == p.id.end() || *it != id || !owned_[it - p.id.begin()])
+        throw std::logic_error(fmt::format("domain {}: rank {} asks for particle {}, not owned here", rank, r, id));
+      send_[r].push_back(static_cast<std::int32_t>(it - p.id.begin()));
+    }
+}
+
+void DomainRun::exchange_halo() {
+  const int size = comm_.size();
+  Particles& p = local_.particles;
+  std::vector<Bytes> out(size);
+  for (int r = 0; r < size; ++r)
+    for (const std::int32_t i : send_[r]) pack_particle(out[r], p, i);
+  const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
+  for (int r = 0; r < size; ++r) {
+    const std::byte* at = in[r].data();
+    for (const std::int32_t i : recv_[r]) at += unpack_particle(at, p, i);
+  }
+}
+
+Particles DomainRun::gather_owned() {
+  Particles& p = local_.particles;
+  Bytes mine;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (owned_[i]) pack_particle(mine, p, i);
+  Particles all;
+  for (const Bytes& b : comm_.all_gather(std::move(mine)))
+    for (const std::byte* at = b.data(); at != b.data() + b.size();) at += unpack_new_particle(at, all);
+  std::vector<std::size_t> order(all.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+  Particles out;
+  Bytes buf;
+  for (const std::size_t i : order) {
+    buf.clear();
+    pack_particle(buf, all, i);
+    unpack_new_particle(buf.data(), out);
+  }
+  out.next_id = p.next_id;
+  return out;
+}
+
+std::vector<std::int64_t> DomainRun::weights() const {
+  const Rods& r = local_.rods;
+  std::vector<std::int64_t> w(local_.particles.size(), 1);
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if (r.intact[k]) ++w[r.ends[k][0]], ++w[r.ends[k][1]];
+  return w;
+}
+
+void DomainRun::step() {
+  sim_->step();
+  exchange_halo();
+  ++steps_;
+  const int rank = comm_.rank();
+  const Particles& p = local_.particles;
+  double left = 0.0;
+  for (std::size_t i = 0; i < p.size() && left == 0.0; ++i)
+    if (owned_[i] && !partition_.near(p.position[i], rank, ds_.skin)) left = 1.0;
+  // Every rebalance_every steps new cuts; in between, when a particle strayed beyond its slab
+  // and skin, every particle goes to the owner of its slab, the cuts kept.
+  const bool recut = steps_ % ds_.rebalance_every == 0;
+  if (comm_.max_all(left) > 0.0 || recut) migrate(recut);
+}
+
+void DomainRun::migrate(bool recut) {
+  const int size = comm_.size(), rank = comm_.rank();
+  Particles& p = local_.particles;
+  Rods& r = local_.rods;
+  ++migrations_;
+  if (recut && ds_.fixed_cuts.empty()) {
+    const std::vector<std::int64_t> w = weights();  // (owned particles have all their rods here)
+    std::vector<double> x;
+    std::vector<std::int64_t> ow;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (owned_[i]) x.push_back(p.position[i][0]), ow.push_back(w[i]);
+    partition_ = SlabPartition::balanced(comm_, x, ow);
+  }
+  // Each particle leaving this rank goes with its rods and their other ends (the new owner's ghosts).
+  std::vector<std::vector<std::int64_t>> leaving(size);
+  std::vector<std::vector<std::int32_t>> with_particle(size), with_rod(size);  // local indices, per rank
+  std::vector<std::int64_t> staying;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!owned_[i]) continue;
+    const int o = partition_.owner(p.position[i]);
+    if (o == rank) {
+      staying.push_back(p.id[i]);
+      continue;
+    }
+    leaving[o].push_back(p.id[i]);
+    with_particle[o].push_back(static_cast<std::int32_t>(i));
+    for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
+      with_rod[o].push_back(r.entries[e].rod);
+      with_particle[o].push_back(r.entries[e].other);
+    }
+  }
+  std::vector<Bytes> out(size);
+  for (int o = 0; o < size; ++o) {
+    if (o == rank) continue;
+    Bytes& b = out[o];
+    put_count(b, leaving[o].size());
+    const Bytes ids = Comm::to_bytes(leaving[o]);
+    b.insert(b.end(), ids.begin(), ids.end());
+    for (auto* list : {&with_particle[o], &with_rod[o]}) {
+      std::sort(list->begin(), list->end());
+      list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    put_count(b, with_particle[o].size());
+    for (const std::int32_t i : with_particle[o]) pack_particle(b, p, i);
+    put_count(b, with_rod[o].size());
+    for (const std::int32_t k : with_rod[o]) pack_rod(b, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
+  }
+  const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
+  // What this rank has and what it received; the owned ids: those staying and those arriving.
+  Particles pool;
+  RodPool rods;
+  Bytes buf;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    buf.clear();
+    pack_particle(buf, p, i);
+    unpack_new_particle(buf.data(), pool);
+  }
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    buf.clear();
+    pack_rod(buf, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
+    unpack_rod(buf.data(), rods);
+  }
+  std::vector<std::int64_t> owned_ids = std::move(staying);
+  for (int s = 0; s < size; ++s) {
+    if (in[s].empty()) continue;
+    const std::byte* at = in[s].data();
+    const std::uint64_t arriving = get_count(at);
+    for (std::uint64_t q = 0; q < arriving; ++q) {
+      std::int64_t id;
+      std::memcpy(&id, at, sizeof id);
+      at += sizeof id;
+      owned_ids.push_back(id);
+    }
+    arrivals_ += static_cast<std::int64_t>(arriving);
+    const std::uint64_t np = get_count(at);
+    for (std::uint64_t q = 0; q < np; ++q) at += unpack_new_particle(at, pool);
+    const std::uint64_t nr = get_count(at);
+    for (std::uint64_t q = 0; q < nr; ++q) at += unpack_rod(at, rods);
+  }
+  std::sort(owned_ids.begin(), owned_ids.end());
+  adopt(assemble(pool, rods, owned_ids));
+}
+
+}  // namespace swarf

@@ -1,0 +1,113 @@
+// domain_run.h: one run over the ranks of a Comm by domain decomposition (issue 38), with the
+// serial run's bits for any rank count. First slice: rods only, velocity Verlet.
+//
+// Why the bits are the serial ones: each particle's force is summed over its rods in rod order
+// (state/reindex.h), and each rod is evaluated from its ends' state and its own. A domain's
+// local World therefore holds
+//   - the particles it owns (those in its slab, partition.h),
+//   - ghost copies of the other ends of their rods,
+//   - every rod with an owned end, in the GLOBAL rod order (each rod keyed by its index in the
+//     serial run's rod list, carried with it),
+// and all its particles in id order, so that a rod's ends keep their order (i < j) as in the
+// serial run. An owned particle's force is then the same terms added in the same order as in
+// the serial run, whatever the partition: the same bits, compared with == in the tests, not
+// within a tolerance. A rod with ends on two domains is evaluated on both from identical inputs,
+// so its plastic shift and breakage agree without being sent. Ghosts are stepped too (their
+// forces are partial and wrong), and after every step the owners overwrite them: the halo
+// exchange sends every per-particle field of each ghost (records.h).
+//
+// Which domain owns a particle never changes the bits (ghosts follow the rods, not space); the
+// slabs only decide where the work is done. Migration: every 'rebalance_every' steps with new
+// cuts (unless fixed), and with the cuts kept once an owned particle strays more than 'skin'
+// beyond its slab, every particle goes to the owner of its slab, point to point in one
+// all-to-all, with its rods and the particles at their other ends (the new owner's ghosts). Each
+// domain assembles its new local World from what it had and what it received and hands it to
+// the Simulation's door (Simulation::replace_particles), which keeps the step's own state (time,
+// counters, the plastic strain window: a migrant's open window is folded in by its new owner).
+//
+// Groups (grips, prescribed motions) act on each particle alone, owned or ghost; their reactions
+// and work are per domain (sums over the ranks still to come).
+// Not in this slice (refused by name, check_supported): contacts, meshes and tools, rigid bodies,
+// particle flows, heat,
+// bond formation, a periodic width, the implicit Newmark step and the Newton solver. Rotations are
+// off (they come with contacts). The ledger and the Simulation's sums (energies, broken rods)
+// are per domain and not yet reduced: only the particles' and rods' state is the serial one.
+// Setup: every rank builds the same global World (setup is deterministic) and keeps its part.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "swarf/core/comm.h"
+#include "swarf/domains/partition.h"
+#include "swarf/domains/records.h"
+#include "swarf/integrate/step_settings.h"
+#include "swarf/simulation.h"
+#include "swarf/state/world.h"
+
+namespace swarf {
+
+struct DomainSettings {
+  int rebalance_every = 100;       ///< steps between re-partitions and migrations (>= 1)
+  std::vector<double> fixed_cuts;  ///< the slabs' cut planes along x, m (ranks - 1 of them); empty: balanced
+  /// How far an owned particle may stray beyond its slab before all particles go to the owners
+  /// of their slabs, m (0: as soon as one leaves). Ownership never changes the bits, so a skin
+  /// only trades a larger domain for fewer migrations (LAMMPS's reneighbouring skin).
+  double skin = 0.0;
+};
+
+class DomainRun {
+ public:
+  /// This rank's domain of 'global' (the whole World, the same on every rank; ids and rods as
+  /// the serial run has them), stepped with 'settings'. Collective. Throws InputError for a
+  /// World or settings the domains do not support yet (check_supported).
+  DomainRun(Comm& comm, const World& global, const StepSettings& settings, DomainSettings ds = {});
+  DomainRun(const DomainRun&) = delete;
+  DomainRun& operator=(const DomainRun&) = delete;
+
+  /// One step, the halo exchange, and a migration when due. Collective.
+  void step();
+
+  /// Collective: every rank's owned particles, in id order, on every rank: the serial run's
+  /// particles, bit for bit. O(N) on every rank: for outputs and checks, not for every step.
+  Particles gather_owned();
+
+  /// Throws InputError naming the first feature of 'w' or 's' that the domains do not support.
+  static void check_supported(const World& w, const StepSettings& s);
+
+  /// The local World: owned particles and ghosts, in id order.
+  const World& world() const { return local_; }
+  bool owned(std::size_t i) const { return owned_[i] != 0; }
+  std::size_t owned_count() const;
+  /// Per local rod: its index in the global (serial) rod order.
+  const std::vector<std::int64_t>& rod_keys() const { return rod_key_; }
+  const SlabPartition& partition() const { return partition_; }
+  const Simulation& simulation() const { return *sim_; }
+  /// Particles that arrived at this rank as their new owner, over the run.
+  std::int64_t arrivals() const { return arrivals_; }
+  /// Migrations done (with new cuts or not).
+  std::int64_t migrations() const { return migrations_; }
+
+ private:
+  struct Local;  // a local World's particles and rods before the Simulation takes them
+  Local assemble(Particles& pool, RodPool& rods, const std::vector<std::int64_t>& owned_ids) const;
+  void adopt(Local&& l);  // into the Simulation (built on the first call)
+  void plan_halo();       // who sends which owned particle to whom after each step
+  void exchange_halo();
+  void migrate(bool recut);                   // recut: choose the cuts again (unless fixed)
+  std::vector<std::int64_t> weights() const;  // per local particle: 1 + its intact rods
+
+  Comm& comm_;
+  DomainSettings ds_;
+  StepSettings settings_;
+  World local_;
+  std::unique_ptr<Simulation> sim_;
+  std::vector<std::uint8_t> owned_;    // per local particle
+  std::vector<std::int64_t> rod_key_;  // per local rod
+  SlabPartition partition_;
+  std::vector<std::vector<std::int32_t>> send_, recv_;  // per rank: local indices, in the halo's order
+  std::int64_t arrivals_ = 0, migrations_ = 0, steps_ = 0;
+};
+
+}  // namespace swarf

@@ -1,0 +1,61 @@
+// records.cpp: particles and rods as bytes (see records.h).
+#include "swarf/domains/records.h"
+
+#include <cstring>
+
+namespace swarf {
+
+namespace {
+
+template <class T>
+void put(Bytes& out, const T& v) {
+  const std::size_t n = out.size();
+  out.resize(n + sizeof(T));
+  std::memcpy(out.data() + n, &v, sizeof(T));
+}
+
+template <class T>
+std::size_t get(const std::byte* in, T& v) {
+  std::memcpy(static_cast<void*>(&v), in, sizeof(T));  // (Eigen vectors: plain doubles)
+  return sizeof(T);
+}
+
+}  // namespace
+
+void pack_particle(Bytes& out, Particles& p, std::size_t i) {
+  p.for_each_field([&](const char*, auto& v) { put(out, v[i]); });
+}
+
+std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i) {
+  std::size_t at = 0;
+  p.for_each_field([&](const char*, auto& v) { at += get(in + at, v[i]); });
+  return at;
+}
+
+std::size_t unpack_new_particle(const std::byte* in, Particles& p) {
+  std::size_t at = 0;
+  p.for_each_field([&](const char*, auto& v) {
+    v.emplace_back();
+    at += get(in + at, v.back());
+  });
+  return at;
+}
+
+void pack_rod(Bytes& out, Rods& r, std::size_t k, std::int64_t key, std::array<std::int64_t, 2> end_id) {
+  put(out, key);
+  put(out, end_id);
+  r.for_each_field([&](const char*, auto& v) { put(out, v[k]); });
+}
+
+std::size_t unpack_rod(const std::byte* in, RodPool& pool) {
+  std::size_t at = 0;
+  at += get(in + at, pool.key.emplace_back());
+  at += get(in + at, pool.end_id.emplace_back());
+  pool.rods.for_each_field([&](const char*, auto& v) {
+    v.emplace_back();
+    at += get(in + at, v.back());
+  });
+  return at;
+}
+
+}  // namespace swarf

@@ -1,0 +1,380 @@
+// test_domains.cpp: one run over several domains (swarf/domains/domain_run.h, issue 38) gives
+// the serial run's bits, whatever the number of domains, the cut planes and the migrations.
+//
+// The comparison is exact (the whole record of every particle and rod, byte for byte), not
+// within a tolerance: each owned particle's force is the same terms summed in the same (rod)
+// order as in the serial run, and each rod is evaluated from bitwise identical inputs, so any
+// difference is a bug. The domains run as threads of this process (run_loopback), and under
+// mpirun -n 2 as MPI ranks (DomainsMpi, the ctest test domains_mpi_two_ranks).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+
+#include "scenes/pulled_bar.h"
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "study/mpi_comm.h"
+#include "study/sweep_mpi.h"
+#include "swarf/core/errors.h"
+#include "swarf/core/loopback_comm.h"
+#include "swarf/domains/domain_run.h"
+#include "test_helpers.h"
+
+namespace swarf {
+namespace {
+
+constexpr int kSteps = 1500;
+
+// A free steel-like block on the FCC lattice (pulled_bar.h's material, no grips) given a
+// velocity field: a translation along x that carries it through the domains' cut planes, a
+// stretch along x that makes the rods yield and break, and a shear (x velocity growing with z).
+struct Scene {
+  World world;  // as built, before any Simulation touched it
+  StepSettings step;
+  double length = 0;  // extent along x, m
+  double x0 = 0;      // its lowest x, m
+};
+
+Scene make_scene() {
+  Model m = build_model(parse_case(
+      test::pulled_bar_case({.cells = {16, 6, 6}, .integrator = "scheme = \"verlet\"\nend_time = 1"}), "domains", {}));
+  Scene s;
+  s.step = m.step;
+  m.groups.clear();  // (the case's grips: a free block)
+  auto& p = m.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) p.prescribed[i] = 0, p.group[i] = -1;
+  double lo = HUGE_VAL, hi = -HUGE_VAL, zlo = HUGE_VAL, zhi = -HUGE_VAL;
+  for (const Vec3& x : p.position)
+    lo = std::min(lo, x[0]), hi = std::max(hi, x[0]), zlo = std::min(zlo, x[2]), zhi = std::max(zhi, x[2]);
+  s.length = hi - lo;
+  s.x0 = lo;
+  // Speeds of the block's ends against each other of about 30 m/s: strains of a few 1e-3
+  // (c = 5 km/s), past the yield strain (1e-3) and the rods' strength.
+  const double time = kSteps * s.step.dt;
+  const double travel = 0.4 * s.length / time;  // m/s: the block moves 40 % of its length
+  const double stretch = 60.0 / s.length;       // 1/s
+  const double shear = 30.0 / (zhi - zlo);      // 1/s
+  const double xc = 0.5 * (lo + hi), zc = 0.5 * (zlo + zhi);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    p.velocity[i] = Vec3(travel + stretch * (p.position[i][0] - xc) + shear * (p.position[i][2] - zc), 0.0, 0.0);
+  std::printf("domains scene: %zu particles, %zu rods, dt = %.3g s, %.3g m long, moving at %.3g m/s\n", p.size(),
+              m.rods.size(), s.step.dt, s.length, travel);
+  s.world = static_cast<const World&>(m);
+  return s;
+}
+
+const Scene& scene() {
+  static const Scene s = make_scene();
+  return s;
+}
+
+// The serial run's World after kSteps (one thread).
+struct Serial {
+  World world;
+  std::size_t broken = 0;
+  bool plastic = false;
+};
+
+const Serial& serial() {
+  static const Serial r = [] {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    Serial out;
+    out.world = scene().world;
+    Simulation sim(out.world, scene().step);
+    for (int k = 0; k < kSteps; ++k) sim.step();
+    out.broken = sim.broken_rods();
+    for (double v : out.world.rods.shift) out.plastic = out.plastic || v != 0.0;
+    omp_set_num_threads(saved);
+    return out;
+  }();
+  return r;
+}
+
+// What one domain found different from the serial run, and what it saw.
+struct DomainReport {
+  std::vector<std::int64_t> owned_ids;
+  std::int64_t arrivals = 0, migrations = 0;
+  std::size_t ghosts = 0;  // at the end
+  std::size_t particle_mismatches = 0, rod_mismatches = 0, rods_checked = 0;
+  std::string first_mismatch;
+  bool gathered_serial = false;  // DomainRun::gather_owned gave the serial run's particles, bit for bit
+};
+
+// Every per-particle array of a and b holds the same bytes.
+bool same_particles(Particles& a, Particles& b) {
+  std::vector<Bytes> fa;
+  a.for_each_field([&](const char*, auto& v) { fa.push_back(Comm::to_bytes(v)); });
+  std::size_t f = 0;
+  bool same = true;
+  b.for_each_field([&](const char*, auto& v) { same = same && Comm::to_bytes(v) == fa[f++]; });
+  return same;
+}
+
+// Compares every owned particle's record and every local rod's with the serial run's.
+DomainReport compare(const DomainRun& d) {
+  DomainReport rep;
+  World& s = const_cast<World&>(serial().world);
+  World& l = const_cast<World&>(d.world());
+  Bytes a, b;
+  for (std::size_t i = 0; i < l.particles.size(); ++i) {
+    if (!d.owned(i)) continue;
+    const std::int64_t id = l.particles.id[i];
+    rep.owned_ids.push_back(id);
+    a.clear(), b.clear();
+    pack_particle(a, l.particles, i);
+    pack_particle(b, s.particles, static_cast<std::size_t>(id));  // (serial: id == index)
+    if (a != b && rep.particle_mismatches++ == 0) {
+      // Name the first field that differs.
+      std::vector<std::string> names;
+      std::vector<Bytes> values;
+      l.particles.for_each_field([&](const char* name, auto& v) {
+        names.push_back(name);
+        values.push_back(Comm::to_bytes(std::vector{v[i]}));
+      });
+      std::size_t f = 0;
+      std::string field;
+      s.particles.for_each_field([&](const char*, auto& v) {
+        if (field.empty() && Comm::to_bytes(std::vector{v[id]}) != values[f]) field = names[f];
+        ++f;
+      });
+      rep.first_mismatch = fmt::format("particle {}: its {} differs from the serial run's", id, field);
+    }
+  }
+  for (std::size_t k = 0; k < l.rods.size(); ++k) {
+    const std::int64_t key = d.rod_keys()[k];
+    a.clear(), b.clear();
+    const auto [i, j] = l.rods.ends[k];
+    pack_rod(a, l.rods, k, key, {l.particles.id[i], l.particles.id[j]});
+    const auto [si, sj] = s.rods.ends[key];
+    pack_rod(b, s.rods, static_cast<std::size_t>(key), key, {s.particles.id[si], s.particles.id[sj]});
+    ++rep.rods_checked;
+    if (a != b && rep.rod_mismatches++ == 0 && rep.first_mismatch.empty())
+      rep.first_mismatch = fmt::format("rod {} differs", key);
+  }
+  rep.arrivals = d.arrivals();
+  rep.ghosts = d.world().particles.size() - d.owned_count();
+  rep.migrations = d.migrations();
+  return rep;
+}
+
+// Runs the scene on n loopback domains with 'threads' OpenMP threads each.
+std::vector<DomainReport> run_domains(int n, const DomainSettings& ds, int threads = 1) {
+  std::vector<DomainReport> reports(n);
+  run_loopback(n, [&](Comm& comm) {
+    omp_set_num_threads(threads);
+    DomainRun d(comm, scene().world, scene().step, ds);
+    for (int k = 0; k < kSteps; ++k) d.step();
+    reports[comm.rank()] = compare(d);
+    Particles all = d.gather_owned();
+    reports[comm.rank()].gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
+  });
+  return reports;
+}
+
+// Every particle owned once, all identical to the serial run; returns the migrants' total.
+std::int64_t expect_serial_bits(const std::vector<DomainReport>& reports, bool all_own = true) {
+  std::vector<std::int64_t> ids;
+  std::int64_t arrivals = 0;
+  for (std::size_t r = 0; r < reports.size(); ++r) {
+    const DomainReport& d = reports[r];
+    EXPECT_EQ(d.particle_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
+    EXPECT_EQ(d.rod_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
+    EXPECT_TRUE(d.gathered_serial) << "domain " << r << ": the gathered particles are not the serial run's";
+    if (all_own) EXPECT_GT(d.owned_ids.size(), 0u) << "domain " << r << " owns nothing";
+    ids.insert(ids.end(), d.owned_ids.begin(), d.owned_ids.end());
+    arrivals += d.arrivals;
+  }
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(ids.size(), serial().world.particles.size());
+  EXPECT_TRUE(std::adjacent_find(ids.begin(), ids.end()) == ids.end()) << "a particle owned twice";
+  return arrivals;
+}
+
+TEST(Domains, TheSceneYieldsAndBreaks) {
+  // Without plasticity and breakage the comparisons below would prove less.
+  EXPECT_TRUE(serial().plastic);
+  EXPECT_GT(serial().broken, 0u);
+  EXPECT_GT(scene().world.particles.size(), 2000u);
+}
+
+TEST(Domains, TwoDomainsWithFixedCutsGiveTheSerialBits) {
+  // The cut plane at 60 % of the block's length: the block moves 40 % of its length through
+  // it, and every particle that crosses migrates as soon as it has.
+  DomainSettings ds;
+  ds.rebalance_every = 1000000;
+  ds.fixed_cuts = {scene().x0 + 0.6 * scene().length};
+  const auto reports = run_domains(2, ds);
+  const std::int64_t arrivals = expect_serial_bits(reports);
+  std::printf("2 domains, fixed cut: %lld particles changed owner in %lld migrations, %d steps\n",
+              static_cast<long long>(arrivals), static_cast<long long>(reports[0].migrations), kSteps);
+  EXPECT_GT(arrivals, 300);
+  // With a skin of a particle's diameter, owners lag behind their slabs: fewer migrations, the same bits.
+  ds.skin = 1e-3;
+  const auto lagging = run_domains(2, ds);
+  const std::int64_t lagged = expect_serial_bits(lagging);
+  std::printf("   with a 1 mm skin: %lld particles changed owner in %lld migrations\n", static_cast<long long>(lagged),
+              static_cast<long long>(lagging[0].migrations));
+  EXPECT_LT(lagging[0].migrations, reports[0].migrations / 4);
+  EXPECT_GT(lagged, 300);
+}
+
+TEST(Domains, ThreeDomainsRebalancedEveryTenStepsGiveTheSerialBits) {
+  // Balanced cuts chosen again every 10 steps follow the stretching, breaking block.
+  DomainSettings ds;
+  ds.rebalance_every = 10;
+  const auto reports = run_domains(3, ds);
+  const std::int64_t arrivals = expect_serial_bits(reports);
+  std::printf("3 domains, rebalanced every 10 steps: %lld particles changed owner in %lld migrations; at the end\n",
+              static_cast<long long>(arrivals), static_cast<long long>(reports[0].migrations));
+  for (const DomainReport& d : reports) std::printf("   %zu owned, %zu ghosts\n", d.owned_ids.size(), d.ghosts);
+  EXPECT_GE(reports[0].migrations, kSteps / 10);
+  EXPECT_GT(arrivals, 300);
+}
+
+TEST(Domains, ThreeDomainsWithFixedCutsAndTwoThreadsEachGiveTheSerialBits) {
+  DomainSettings ds;
+  ds.rebalance_every = 1000000;
+  ds.fixed_cuts = {scene().x0 + 0.4 * scene().length, scene().x0 + 0.9 * scene().length};
+  const std::int64_t arrivals = expect_serial_bits(run_domains(3, ds, 2));
+  EXPECT_GT(arrivals, 300);
+}
+
+TEST(Domains, ADomainThatStartsEmptyFillsAsTheBlockArrives) {
+  // Four slabs, the last beyond the block at the start: it owns nothing (and no ghosts) until
+  // the block reaches it.
+  DomainSettings ds;
+  ds.rebalance_every = 1000000;
+  ds.skin = 0.5e-3;
+  ds.fixed_cuts = {scene().x0 + 0.3 * scene().length, scene().x0 + 1.1 * scene().length,
+                   scene().x0 + 1.3 * scene().length};
+  const auto reports = run_domains(4, ds);
+  expect_serial_bits(reports, false);  // (the block has left the first slab by the end)
+  EXPECT_EQ(reports[0].owned_ids.size(), 0u);
+  EXPECT_GT(reports[3].arrivals, 0);
+}
+
+// The pulled bar (pulled_bar.h) with its grips: the x- face held, the x+ face pulled until rods
+// yield and break; the groups' prescriptions act on owned particles and ghosts alike.
+TEST(Domains, APulledBarWithItsGripsOnThreeDomainsGivesTheSerialBits) {
+  Model m = build_model(parse_case(
+      test::pulled_bar_case({.cells = {12, 3, 3}, .velocity = 40.0, .integrator = "scheme = \"verlet\"\nend_time = 1"}),
+      "bar", {}));
+  const World initial = static_cast<const World&>(m);
+  World serial_world = initial;
+  Simulation sim(serial_world, m.step);
+  for (int k = 0; k < kSteps; ++k) sim.step();
+  ASSERT_GT(sim.broken_rods(), 0u);
+  std::vector<int> same(3, 0);
+  std::int64_t arrivals = 0;
+  std::mutex mutex;
+  run_loopback(3, [&](Comm& comm) {
+    omp_set_num_threads(1);
+    DomainSettings ds;
+    ds.rebalance_every = 25;
+    DomainRun d(comm, initial, m.step, ds);
+    for (int k = 0; k < kSteps; ++k) d.step();
+    Particles all = d.gather_owned();
+    same[comm.rank()] = same_particles(all, serial_world.particles);
+    const std::lock_guard lock(mutex);
+    arrivals += d.arrivals();
+  });
+  EXPECT_EQ(same, std::vector<int>(3, 1));
+  EXPECT_GT(arrivals, 0);
+}
+
+TEST(Domains, OneDomainIsTheSerialRun) {
+  SerialComm comm;
+  DomainRun d(comm, scene().world, scene().step);
+  for (int k = 0; k < kSteps; ++k) d.step();
+  DomainReport rep = compare(d);
+  Particles all = d.gather_owned();
+  rep.gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
+  expect_serial_bits({rep});
+}
+
+// Every feature the domains cannot run yet is refused by name, never run wrong.
+TEST(Domains, UnsupportedFeaturesAreRefusedByName) {
+  const auto refused = [](const std::function<void(World&, StepSettings&)>& change, const std::string& name) {
+    World w = scene().world;
+    StepSettings s = scene().step;
+    change(w, s);
+    SerialComm comm;
+    try {
+      DomainRun d(comm, w, s);
+      ADD_FAILURE() << name << " was not refused";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("does not support"), std::string::npos) << e.what();
+    }
+  };
+  refused([](World& w, StepSettings&) { w.contacts = true; }, "contacts");
+  refused([](World& w, StepSettings&) { w.meshes.emplace_back(); }, "meshes (tools)");
+  refused([](World& w, StepSettings&) { w.bodies.emplace_back(); }, "rigid bodies");
+  refused([](World& w, StepSettings&) { w.groups.emplace_back().members = {0}; }, "groups whose members'");
+  refused([](World& w, StepSettings&) { w.inflows.emplace_back(); }, "inflows");
+  refused([](World& w, StepSettings&) { w.outflows.emplace_back(); }, "outflows");
+  refused([](World& w, StepSettings&) { w.heat.enabled = true; }, "heat");
+  refused([](World& w, StepSettings&) { w.periodic.period = 1.0; }, "periodic");
+  refused([](World& w, StepSettings&) { w.rods.formation.overlap = 0.5; }, "bond formation");
+  refused([](World&, StepSettings& s) { s.scheme = Scheme::Newmark; }, "Newmark");
+  refused(
+      [](World&, StepSettings& s) {
+        s.scheme = Scheme::Newmark;
+        s.solver = Solver::Newton;
+      },
+      "Newton");
+}
+
+TEST(Domains, LoopbackRethrowsARanksError) {
+  EXPECT_THROW(run_loopback(3,
+                            [](Comm& c) {
+                              if (c.rank() == 1) throw InputError("rank 1 fails");
+                              for (int k = 0; k < 5; ++k) c.barrier();
+                            }),
+               InputError);
+}
+
+// Under mpirun (the ctest test domains_mpi_two_ranks runs DomainsMpi.*, which starts this one
+// on two ranks): each rank runs the serial run and its domain, and checks its particles.
+TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
+  if (!MpiSession::launched()) GTEST_SKIP() << "started by DomainsMpi.TwoRanksUnderMpirun";
+  MpiSession session;
+  MpiComm comm;
+  ASSERT_EQ(comm.size(), 2);
+  omp_set_num_threads(1);
+  const Serial& s = serial();
+  (void)s;
+  DomainSettings ds;
+  ds.rebalance_every = 10;
+  DomainRun d(comm, scene().world, scene().step, ds);
+  for (int k = 0; k < kSteps; ++k) d.step();
+  const DomainReport rep = compare(d);
+  Particles all = d.gather_owned();
+  EXPECT_TRUE(same_particles(all, const_cast<Particles&>(serial().world.particles)));
+  EXPECT_EQ(rep.particle_mismatches, 0u) << rep.first_mismatch;
+  EXPECT_EQ(rep.rod_mismatches, 0u) << rep.first_mismatch;
+  const std::int64_t owned = comm.sum_all(static_cast<std::int64_t>(rep.owned_ids.size()));
+  const std::int64_t arrivals = comm.sum_all(rep.arrivals);
+  EXPECT_EQ(owned, static_cast<std::int64_t>(serial().world.particles.size()));
+  EXPECT_GT(arrivals, 100);
+  std::printf("rank %d of 2: %zu particles owned, %lld changed owner in all, %lld migrations\n", comm.rank(),
+              rep.owned_ids.size(), static_cast<long long>(arrivals), static_cast<long long>(rep.migrations));
+}
+
+TEST(DomainsMpi, TwoRanksUnderMpirun) {
+  if (!std::getenv("SWARF_TEST_MPI")) GTEST_SKIP() << "run by the ctest test domains_mpi_two_ranks";
+  if (test::run_command("command -v mpirun").exit_code != 0) GTEST_SKIP() << "mpirun not installed";
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const auto r = test::run_command("mpirun -n 2 --oversubscribe --bind-to none --allow-run-as-root " + self +
+                                   " --gtest_filter=DomainsMpiRank.*");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("rank 1 of 2"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("SKIPPED"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace swarf
