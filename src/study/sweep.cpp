@@ -56,8 +56,14 @@ int run_logged(const std::vector<std::string>& argv, const std::string& log_path
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  // A case is a process of its own, not a rank of the study's mpirun: it gets the environment
+  // without the launcher's rank variables, which 'swarf run' reads as one run over several ranks.
+  std::vector<char*> env;
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "OMPI_COMM_WORLD_", 16) != 0 && std::strncmp(*e, "PMI_", 4) != 0) env.push_back(*e);
+  env.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0].c_str(), &fa, nullptr, args.data(), environ);
+  const int rc = posix_spawn(&pid, argv[0].c_str(), &fa, nullptr, args.data(), env.data());
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) throw std::runtime_error(fmt::format("cannot start '{}': {}", argv[0], std::strerror(rc)));
   int status = 0;
