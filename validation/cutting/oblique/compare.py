@@ -48,6 +48,7 @@ def main():
             "Fp_per_width_kN_per_m": num(c, "passive_force_per_width_mean_N_per_m") / 1e3,
             "Fp_ci95_kN_per_m": num(c, "passive_force_per_width_ci95_N_per_m") / 1e3,
             "chip_thickness_mm": num(ch, "thickness_m") * 1e3,
+            "width_mm": num(c, "width_m") * 1e3,
             "run": os.path.basename(os.path.dirname(path)),
         })
     if not rows:
@@ -74,7 +75,7 @@ def main():
     lam = [r["inclination_deg"] for r in rows]
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
     a1.errorbar(lam, [r["flow_angle_deg"] for r in rows], yerr=[r["flow_angle_ci95_deg"] for r in rows], fmt="o-",
-                capsize=3, label="swarf (5 layers, b = 0.8 mm)")
+                capsize=3, label="swarf (5 layers, b = %.2g mm)" % rows[0]["width_mm"])
     top = max(lam + [r["flow_angle_deg"] for r in rows]) * 1.1 + 1
     a1.plot([0, top], [0, top], "k--", label="Stabler: eta_c = lambda")
     a1.set_xlabel("inclination lambda (deg)")
