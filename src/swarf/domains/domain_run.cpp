@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <numeric>
 #include <stdexcept>
@@ -250,6 +251,8 @@ void DomainRun::exchange_halo() {
   std::vector<Bytes> out(size);
   for (int r = 0; r < size; ++r)
     for (const std::int32_t i : send_[r]) pack_particle(out[r], p, i);
+  halo_bytes_ = 0;
+  for (const Bytes& b : out) halo_bytes_ += b.size();
   const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
   for (int r = 0; r < size; ++r) {
     const std::byte* at = in[r].data();
@@ -289,6 +292,7 @@ std::vector<std::int64_t> DomainRun::weights() const {
 
 void DomainRun::step() {
   sim_->step();
+  const auto t0 = std::chrono::steady_clock::now();
   exchange_halo();
   ++steps_;
   const int rank = comm_.rank();
@@ -300,6 +304,7 @@ void DomainRun::step() {
   // and skin, every particle goes to the owner of its slab, the cuts kept.
   const bool recut = steps_ % ds_.rebalance_every == 0;
   if (comm_.max_all(left) > 0.0 || recut) migrate(recut);
+  exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void DomainRun::migrate(bool recut) {

@@ -88,6 +88,11 @@ class DomainRun {
   std::int64_t arrivals() const { return arrivals_; }
   /// Migrations done (with new cuts or not).
   std::int64_t migrations() const { return migrations_; }
+  /// Wall time spent after the steps in the halo exchange, the stray check and the migrations
+  /// (what waits on the other ranks), s.
+  double exchange_seconds() const { return exchange_seconds_; }
+  /// Bytes this rank sent in the last halo exchange.
+  std::size_t halo_bytes() const { return halo_bytes_; }
 
  private:
   struct Local;  // a local World's particles and rods before the Simulation takes them
@@ -108,6 +113,8 @@ class DomainRun {
   SlabPartition partition_;
   std::vector<std::vector<std::int32_t>> send_, recv_;  // per rank: local indices, in the halo's order
   std::int64_t arrivals_ = 0, migrations_ = 0, steps_ = 0;
+  double exchange_seconds_ = 0.0;
+  std::size_t halo_bytes_ = 0;
 };
 
 }  // namespace swarf

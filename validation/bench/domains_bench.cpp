@@ -1,0 +1,106 @@
+// domains_bench.cpp: W1 (or another rods-only case) stepped over MPI ranks by the domain
+// decomposition (swarf/domains/domain_run.h, issue 38 item 5), timed beside the serial run.
+//
+//   swarf_domains_bench CASE STEPS [--set key=value ...]            one process: the serial run
+//   mpirun -n N swarf_domains_bench CASE STEPS [--set ...]          N domains
+//
+// Prints, per rank, the owned and ghost particles and the halo's bytes per step, and on rank 0
+// the wall time per particle-step of the stepping (the setup excluded) and the time in the
+// halo exchange and migrations (the part of a step that waits on the other ranks). Not a test:
+// validation/bench/README.md ("Domains") keeps what it measured. The last line is a hash of
+// every particle's position in id order, the same for any rank count (the serial bits).
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "setup/case_config.h"
+#include "setup/model.h"
+#include "study/mpi_comm.h"
+#include "study/sweep_mpi.h"
+#include "swarf/core/errors.h"
+#include "swarf/domains/domain_run.h"
+#include "swarf/simulation.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// FNV-1a over the positions' bytes, in id order.
+std::uint64_t position_hash(const swarf::Particles& p) {
+  std::vector<std::size_t> order(p.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
+  std::uint64_t h = 1469598103934665603ULL;
+  for (std::size_t i : order) {
+    unsigned char bytes[sizeof(swarf::Vec3)];
+    std::memcpy(bytes, &p.position[i], sizeof bytes);
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
+  }
+  return h;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace swarf;
+  if (argc < 3) {
+    fmt::print(stderr, "usage: [mpirun -n N] swarf_domains_bench CASE STEPS [--set key=value ...]\n");
+    return 2;
+  }
+  MpiSession session;
+  try {
+    std::vector<std::string> overrides;
+    for (int a = 3; a + 1 < argc; a += 2)
+      if (std::string(argv[a]) == "--set") overrides.push_back(argv[a + 1]);
+    const int steps = std::stoi(argv[2]);
+    Model model = build_model(load_case(argv[1], overrides));
+    const std::size_t n = model.particles.size();
+    if (session.size() == 1) {
+      Simulation sim(model, model.step);
+      const auto t0 = Clock::now();
+      for (int k = 0; k < steps; ++k) sim.step();
+      const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+      fmt::print("serial: {} particles, {} rods, {} threads: {:.1f} ns per particle-step ({:.3f} s for {} steps)\n", n,
+                 model.rods.size(), omp_get_max_threads(), 1e9 * s / (double(n) * steps), s, steps);
+      fmt::print("positions hash {:016x}\n", position_hash(model.particles));
+      return 0;
+    }
+    MpiComm comm;
+    DomainRun d(comm, model, model.step);
+    comm.barrier();
+    const auto t0 = Clock::now();
+    for (int k = 0; k < steps; ++k) d.step();
+    comm.barrier();
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double in_halo = d.exchange_seconds();
+    const std::size_t owned = d.owned_count(), local = d.world().particles.size();
+    const std::size_t ghosts = local - owned;
+    for (int r = 0; r < comm.size(); ++r) {
+      comm.barrier();
+      if (r == comm.rank())
+        fmt::print(
+            "rank {} of {}: {} owned, {} ghosts ({:.1f} % of owned), halo {:.0f} kB sent in the last step, {} "
+            "migrations; "
+            "{:.3f} s of {:.3f} in the halo exchange and migrations\n",
+            r, comm.size(), owned, ghosts, 100.0 * double(ghosts) / double(owned), 1e-3 * double(d.halo_bytes()),
+            d.migrations(), in_halo, s);
+      std::fflush(stdout);
+    }
+    Particles all = d.gather_owned();
+    if (comm.rank() == 0) {
+      fmt::print("{} ranks x {} threads: {:.1f} ns per particle-step ({:.3f} s for {} steps)\n", comm.size(),
+                 omp_get_max_threads(), 1e9 * s / (double(n) * steps), s, steps);
+      fmt::print("positions hash {:016x}\n", position_hash(all));
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "swarf_domains_bench: {}\n", e.what());
+    return 1;
+  }
+}
