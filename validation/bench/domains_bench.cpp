@@ -2,7 +2,7 @@
 // decomposition (swarf/domains/domain_run.h, issue 38 item 5), timed beside the serial run.
 //
 //   swarf_domains_bench CASE STEPS [--set key=value ...]            one process: the serial run
-//   mpirun -n N swarf_domains_bench CASE STEPS [--set ...]          N domains
+//   mpirun -n N swarf_domains_bench CASE STEPS [--set ...] [--rebalance-every K]   N domains
 //
 // Prints, per rank, the owned and ghost particles and the halo's bytes per step, and on rank 0
 // the wall time per particle-step of the stepping (the setup excluded) and the time in the
@@ -56,8 +56,16 @@ int main(int argc, char** argv) {
   MpiSession session;
   try {
     std::vector<std::string> overrides;
-    for (int a = 3; a + 1 < argc; a += 2)
-      if (std::string(argv[a]) == "--set") overrides.push_back(argv[a + 1]);
+    DomainSettings ds;
+    for (int a = 3; a + 1 < argc; a += 2) {
+      const std::string opt = argv[a];
+      if (opt == "--set")
+        overrides.push_back(argv[a + 1]);
+      else if (opt == "--rebalance-every")
+        ds.rebalance_every = std::stoi(argv[a + 1]);
+      else
+        throw InputError("unknown option '" + opt + "'");
+    }
     const int steps = std::stoi(argv[2]);
     Model model = build_model(load_case(argv[1], overrides));
     const std::size_t n = model.particles.size();
@@ -72,7 +80,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     MpiComm comm;
-    DomainRun d(comm, model, model.step);
+    DomainRun d(comm, model, model.step, ds);
     comm.barrier();
     const auto t0 = Clock::now();
     for (int k = 0; k < steps; ++k) d.step();

@@ -23,7 +23,15 @@ std::size_t get(const std::byte* in, T& v) {
 }  // namespace
 
 void pack_particle(Bytes& out, Particles& p, std::size_t i) {
-  p.for_each_field([&](const char*, auto& v) { put(out, v[i]); });
+  // One resize per record, not one per field: the halo packs every ghost's record each step.
+  std::size_t bytes = 0;
+  p.for_each_field([&](const char*, auto& v) { bytes += sizeof(v[i]); });
+  std::size_t at = out.size();
+  out.resize(at + bytes);
+  p.for_each_field([&](const char*, auto& v) {
+    std::memcpy(out.data() + at, &v[i], sizeof(v[i]));
+    at += sizeof(v[i]);
+  });
 }
 
 std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i) {
