@@ -134,7 +134,7 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
       pack_particle(buf, gp, i);
       unpack_new_particle(buf.data(), pool);
     }
-  adopt(assemble(pool, rods, owned_ids));
+  adopt(assemble(pool, std::vector<std::uint8_t>(pool.size(), 1), rods, owned_ids));
   exchange_halo();  // (the Simulation's first evaluation gave the ghosts partial forces)
 }
 
@@ -142,7 +142,8 @@ std::size_t DomainRun::owned_count() const {
   return static_cast<std::size_t>(std::count(owned_.begin(), owned_.end(), std::uint8_t{1}));
 }
 
-DomainRun::Local DomainRun::assemble(Particles& pool, RodPool& rods, const std::vector<std::int64_t>& owned_ids) const {
+DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uint8_t>& exact, RodPool& rods,
+                                     const std::vector<std::int64_t>& owned_ids) const {
   Local l;
   // The rods with an owned end, once each, in the global order.
   std::vector<std::size_t> ro(rods.key.size());
@@ -171,8 +172,16 @@ DomainRun::Local DomainRun::assemble(Particles& pool, RodPool& rods, const std::
     while (q < po.size() && pool.id[po[q]] < id) ++q;
     if (q == po.size() || pool.id[po[q]] != id)
       throw std::logic_error(fmt::format("domain {}: particle {} is needed but was not sent", comm_.rank(), id));
+    // Of several copies, an exact one (its owner's): a ghost's copy is exact only in the fields
+    // the halo sends, and a particle arriving here as owned must bring all of them.
+    std::size_t pick = po[q];
+    for (std::size_t c = q; c < po.size() && pool.id[po[c]] == id; ++c)
+      if (exact[po[c]]) {
+        pick = po[c];
+        break;
+      }
     buf.clear();
-    pack_particle(buf, pool, po[q]);
+    pack_particle(buf, pool, pick);
     unpack_new_particle(buf.data(), l.particles);
     l.owned.push_back(contains(owned_ids, id) ? 1 : 0);
   }
@@ -250,13 +259,13 @@ void DomainRun::exchange_halo() {
   Particles& p = local_.particles;
   std::vector<Bytes> out(size);
   for (int r = 0; r < size; ++r)
-    for (const std::int32_t i : send_[r]) pack_particle(out[r], p, i);
+    for (const std::int32_t i : send_[r]) pack_kinematics(out[r], p, i);
   halo_bytes_ = 0;
   for (const Bytes& b : out) halo_bytes_ += b.size();
   const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
   for (int r = 0; r < size; ++r) {
     const std::byte* at = in[r].data();
-    for (const std::int32_t i : recv_[r]) at += unpack_particle(at, p, i);
+    for (const std::int32_t i : recv_[r]) at += unpack_kinematics(at, p, i);
   }
 }
 
@@ -350,19 +359,24 @@ void DomainRun::migrate(bool recut) {
       list->erase(std::unique(list->begin(), list->end()), list->end());
     }
     put_count(b, with_particle[o].size());
-    for (const std::int32_t i : with_particle[o]) pack_particle(b, p, i);
+    for (const std::int32_t i : with_particle[o]) {
+      b.push_back(static_cast<std::byte>(owned_[i]));  // exact: the sender owns it
+      pack_particle(b, p, i);
+    }
     put_count(b, with_rod[o].size());
     for (const std::int32_t k : with_rod[o]) pack_rod(b, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
   }
   const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
   // What this rank has and what it received; the owned ids: those staying and those arriving.
   Particles pool;
+  std::vector<std::uint8_t> exact;  // per pool entry: the copy of the particle's owner
   RodPool rods;
   Bytes buf;
   for (std::size_t i = 0; i < p.size(); ++i) {
     buf.clear();
     pack_particle(buf, p, i);
     unpack_new_particle(buf.data(), pool);
+    exact.push_back(owned_[i]);
   }
   for (std::size_t k = 0; k < r.size(); ++k) {
     buf.clear();
@@ -382,12 +396,15 @@ void DomainRun::migrate(bool recut) {
     }
     arrivals_ += static_cast<std::int64_t>(arriving);
     const std::uint64_t np = get_count(at);
-    for (std::uint64_t q = 0; q < np; ++q) at += unpack_new_particle(at, pool);
+    for (std::uint64_t q = 0; q < np; ++q) {
+      exact.push_back(static_cast<std::uint8_t>(*at++));
+      at += unpack_new_particle(at, pool);
+    }
     const std::uint64_t nr = get_count(at);
     for (std::uint64_t q = 0; q < nr; ++q) at += unpack_rod(at, rods);
   }
   std::sort(owned_ids.begin(), owned_ids.end());
-  adopt(assemble(pool, rods, owned_ids));
+  adopt(assemble(pool, exact, rods, owned_ids));
 }
 
 }  // namespace swarf

@@ -96,7 +96,9 @@ class DomainRun {
 
  private:
   struct Local;  // a local World's particles and rods before the Simulation takes them
-  Local assemble(Particles& pool, RodPool& rods, const std::vector<std::int64_t>& owned_ids) const;
+  // exact[k]: pool entry k is its owner's copy (a ghost's is exact in the halo's fields only).
+  Local assemble(Particles& pool, const std::vector<std::uint8_t>& exact, RodPool& rods,
+                 const std::vector<std::int64_t>& owned_ids) const;
   void adopt(Local&& l);  // into the Simulation (built on the first call)
   void plan_halo();       // who sends which owned particle to whom after each step
   void exchange_halo();

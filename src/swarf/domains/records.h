@@ -25,6 +25,15 @@ std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i);
 /// Appends the record at 'in' as a new particle of p; returns the bytes read.
 std::size_t unpack_new_particle(const std::byte* in, Particles& p);
 
+/// The halo's record of particle i: the fields a step changes and the next step reads of a ghost
+/// (position, velocity, acceleration; the domains refuse rotations and heat, whose fields would
+/// join them). The other fields of a ghost stay as it arrived: constant ones (mass, radius, ...)
+/// exact, the plastic strain's window and the force its own partial sums, which nothing of an
+/// owned particle reads.
+void pack_kinematics(Bytes& out, const Particles& p, std::size_t i);
+/// Writes the halo's record at 'in' over particle i; returns the bytes read.
+std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i);
+
 /// Rods gathered from records: their per-rod fields (in 'rods', whose 'ends' stay empty), keys
 /// and end ids, in the order received.
 struct RodPool {
