@@ -13,8 +13,9 @@
 // the serial run, whatever the partition: the same bits, compared with == in the tests, not
 // within a tolerance. A rod with ends on two domains is evaluated on both from identical inputs,
 // so its plastic shift and breakage agree without being sent. Ghosts are stepped too (their
-// forces are partial and wrong), and after every step the owners overwrite them: the halo
-// exchange sends every per-particle field of each ghost (records.h).
+// forces are partial and wrong), and after every step the owners overwrite what the next step
+// reads of them: the halo sends a ghost's position, velocity and acceleration (records.h), and
+// a particle arriving as owned at a migration takes its old owner's whole record.
 //
 // Which domain owns a particle never changes the bits (ghosts follow the rods, not space); the
 // slabs only decide where the work is done. Migration: every 'rebalance_every' steps with new
