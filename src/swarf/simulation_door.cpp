@@ -105,12 +105,7 @@ void Simulation::replace_particles(Particles particles, Rods rods) {
         "out of range");
   m_.particles = std::move(particles);
   m_.rods.ends = std::move(rods.ends);
-  // Both for_each_field walks visit the same fields in the same order: pair them by index.
-  std::vector<void*> targets;
-  m_.rods.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
-  std::size_t f = 0;
-  rods.for_each_field(
-      [&](const char*, auto& v) { *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]) = std::move(v); });
+  m_.rods.for_each_field_with(rods, [](auto& mine, auto& theirs) { mine = std::move(theirs); });
   m_.rods.build_rows(n);
   for (Group& g : m_.groups) g.members.clear();  // (the members from the particles' group indices, ascending)
   for (std::size_t i = 0; i < n; ++i)

@@ -24,6 +24,7 @@
 #include "study/mpi_comm.h"
 #include "study/sweep_mpi.h"
 #include "swarf/core/errors.h"
+#include "swarf/core/state_archive.h"
 #include "swarf/domains/domain_run.h"
 #include "swarf/simulation.h"
 
@@ -31,18 +32,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// FNV-1a over the positions' bytes, in id order.
+// The state archive's hash (core/state_archive.h) of the positions, in id order.
 std::uint64_t position_hash(const swarf::Particles& p) {
   std::vector<std::size_t> order(p.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
-  std::uint64_t h = 1469598103934665603ULL;
-  for (std::size_t i : order) {
-    unsigned char bytes[sizeof(swarf::Vec3)];
-    std::memcpy(bytes, &p.position[i], sizeof bytes);
-    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
-  }
-  return h;
+  std::vector<swarf::Vec3> x;
+  for (std::size_t i : order) x.push_back(p.position[i]);
+  swarf::HashArchive h;
+  h.array("position", x, x.size());
+  return h.value();
 }
 
 }  // namespace

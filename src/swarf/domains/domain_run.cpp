@@ -190,16 +190,10 @@ DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uin
   const auto local = [&](std::int64_t id) {
     return static_cast<std::int32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
   };
-  // Both for_each_field walks visit the same fields in the same order: pair them by index.
-  std::vector<void*> targets;
-  l.rods.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
   for (const std::size_t k : keep) {
     l.key.push_back(rods.key[k]);
     l.rods.ends.push_back({local(rods.end_id[k][0]), local(rods.end_id[k][1])});
-    std::size_t f = 0;
-    rods.rods.for_each_field([&](const char*, auto& v) {
-      static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++])->push_back(v[k]);
-    });
+    l.rods.for_each_field_with(rods.rods, [&](auto& mine, auto& theirs) { mine.push_back(theirs[k]); });
   }
   return l;
 }

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "swarf/core/vec3.h"
@@ -62,6 +63,16 @@ struct Rods {
     f("trial_broken", trial_broken);
     f("stress", stress);
     f("force_coef", force_coef);
+  }
+  /// Calls f(mine, theirs) for each per-rod array of this and of 'other' (the same field, so the
+  /// same type), in for_each_field's order: copying or moving rods' fields between two Rods.
+  template <class F>
+  void for_each_field_with(Rods& other, F&& f) {
+    std::vector<void*> theirs;
+    other.for_each_field([&](const char*, auto& v) { theirs.push_back(&v); });
+    std::size_t k = 0;
+    for_each_field(
+        [&](const char*, auto& v) { f(v, *static_cast<std::remove_reference_t<decltype(v)>*>(theirs[k++])); });
   }
 
   /// Sets the committed state to virgin (no shift, all intact) and sizes the scratch arrays.

@@ -55,7 +55,8 @@ class PlasticStrainSystem {
 
   // Domains (issue 38): the per-particle arrays migrate with the particles; a rod's increment is
   // added to both ends, and a domain holds every rod of the particles it owns, so an owned
-  // particle's window is its serial one (a ghost's is overwritten by its owner's).
+  // particle's window is its serial one (a ghost's is its own partial one, never read; a migrant
+  // arriving as owned brings its old owner's).
   static constexpr Sharing sharing = Sharing::Replicated;
   double ghost_reach(const World&) const { return 0.0; }
 

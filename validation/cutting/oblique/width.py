@@ -14,10 +14,7 @@ import json
 import os
 import sys
 
-
-def num(d, key):
-    v = d.get(key)
-    return float(v) if isinstance(v, (int, float)) else float("nan")
+from compare import num  # (this folder's: a summary's number, NaN when absent)
 
 
 def load(path):
