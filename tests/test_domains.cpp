@@ -7,6 +7,8 @@
 // difference is a bug. The domains run as threads of this process (run_loopback), and under
 // mpirun -n 2 as MPI ranks (DomainsMpi, the ctest test domains_mpi_two_ranks).
 #include <gtest/gtest.h>
+
+#include <bit>
 #include <omp.h>
 
 #include <cstring>
@@ -76,6 +78,8 @@ struct Serial {
   World world;
   std::size_t broken = 0;
   bool plastic = false;
+  double kinetic = 0.0, elastic = 0.0;  // J
+  std::int64_t broken_now = 0;          // rods not intact at the end
 };
 
 const Serial& serial() {
@@ -87,6 +91,9 @@ const Serial& serial() {
     Simulation sim(out.world, scene().step);
     for (int k = 0; k < kSteps; ++k) sim.step();
     out.broken = sim.broken_rods();
+    out.kinetic = sim.kinetic_energy();
+    out.elastic = sim.elastic_energy();
+    for (auto f : out.world.rods.intact) out.broken_now += f == 0;
     for (double v : out.world.rods.shift) out.plastic = out.plastic || v != 0.0;
     omp_set_num_threads(saved);
     return out;
@@ -102,6 +109,7 @@ struct DomainReport {
   std::size_t particle_mismatches = 0, rod_mismatches = 0, rods_checked = 0;
   std::string first_mismatch;
   bool gathered_serial = false;  // DomainRun::gather_owned gave the serial run's particles, bit for bit
+  DomainRun::Sums sums;          // DomainRun::sums at the end
 };
 
 // Every per-particle array of a and b holds the same bytes.
@@ -171,6 +179,7 @@ std::vector<DomainReport> run_domains(int n, const DomainSettings& ds, int threa
     reports[comm.rank()] = compare(d);
     Particles all = d.gather_owned();
     reports[comm.rank()].gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
+    reports[comm.rank()].sums = d.sums();
   });
   return reports;
 }
@@ -184,6 +193,12 @@ std::int64_t expect_serial_bits(const std::vector<DomainReport>& reports, bool a
     EXPECT_EQ(d.particle_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
     EXPECT_EQ(d.rod_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
     EXPECT_TRUE(d.gathered_serial) << "domain " << r << ": the gathered particles are not the serial run's";
+    // The reduced sums: the serial run's bits (exact sums, each term counted by one owner).
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(d.sums.kinetic_energy), std::bit_cast<std::uint64_t>(serial().kinetic))
+        << "domain " << r << ": kinetic energy " << d.sums.kinetic_energy << " J against " << serial().kinetic;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(d.sums.elastic_energy), std::bit_cast<std::uint64_t>(serial().elastic))
+        << "domain " << r << ": elastic energy " << d.sums.elastic_energy << " J against " << serial().elastic;
+    EXPECT_EQ(d.sums.broken_rods, serial().broken_now) << "domain " << r;
     if (all_own) EXPECT_GT(d.owned_ids.size(), 0u) << "domain " << r << " owns nothing";
     ids.insert(ids.end(), d.owned_ids.begin(), d.owned_ids.end());
     arrivals += d.arrivals;
@@ -293,6 +308,7 @@ TEST(Domains, OneDomainIsTheSerialRun) {
   DomainReport rep = compare(d);
   Particles all = d.gather_owned();
   rep.gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
+  rep.sums = d.sums();
   expect_serial_bits({rep});
 }
 
@@ -357,6 +373,10 @@ TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
   EXPECT_TRUE(same_particles(all, const_cast<Particles&>(serial().world.particles)));
   EXPECT_EQ(rep.particle_mismatches, 0u) << rep.first_mismatch;
   EXPECT_EQ(rep.rod_mismatches, 0u) << rep.first_mismatch;
+  const DomainRun::Sums sums = d.sums();  // (over MPI: the serial bits too)
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.kinetic_energy), std::bit_cast<std::uint64_t>(serial().kinetic));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.elastic_energy), std::bit_cast<std::uint64_t>(serial().elastic));
+  EXPECT_EQ(sums.broken_rods, serial().broken_now);
   const std::int64_t owned = comm.sum_all(static_cast<std::int64_t>(rep.owned_ids.size()));
   const std::int64_t arrivals = comm.sum_all(rep.arrivals);
   EXPECT_EQ(owned, static_cast<std::int64_t>(serial().world.particles.size()));

@@ -144,20 +144,30 @@ double Simulation::ghost_reach() const {
   return reach;
 }
 
-double Simulation::kinetic_energy() const {
+double Simulation::kinetic_energy() const { return particle_kinetic_energy().value() + body_kinetic_energy(); }
+
+ExactSum Simulation::particle_kinetic_energy(const std::uint8_t* counted) const {
   const auto& p = m_.particles;
-  const bool rot = ms_.rotations;
-  return deterministic_sum(p.size(), [&](std::size_t i) { return 0.5 * p.mass[i] * p.velocity[i].squaredNorm(); }) +
-         (rot ? rotational_energy() : 0.0) + body_kinetic_energy();
+  ExactSum e = exact_sum(p.size(), [&](std::size_t i) {
+    return counted && !counted[i] ? 0.0 : 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+  });
+  if (ms_.rotations)
+    e.add(exact_sum(p.size(), [&](std::size_t i) {
+      if (counted && !counted[i]) return 0.0;
+      const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
+      return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
+    }));
+  return e;
 }
 
 double Simulation::rotational_energy() const {
   if (!ms_.rotations) return 0.0;
   const auto& p = m_.particles;
-  return deterministic_sum(p.size(), [&](std::size_t i) {
-    const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
-    return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
-  });
+  return exact_sum(p.size(), [&](std::size_t i) {
+           const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
+           return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
+         })
+      .value();
 }
 
 double Simulation::elastic_energy() const { return sys_.rods.elastic_energy(m_); }

@@ -13,6 +13,7 @@
 #include <limits>
 #include <vector>
 
+#include "swarf/core/exact_sum.h"
 #include "swarf/core/stage_clock.h"
 #include "swarf/core/state_archive.h"
 #include "swarf/integrate/integration.h"
@@ -89,8 +90,17 @@ class Simulation {
 
   double kinetic_energy() const;     ///< translational + rotational, J
   double rotational_energy() const;  ///< rotational part of the kinetic energy, J
+  /// The particles' kinetic energy (translational + rotational, the bodies' apart), J, summed
+  /// exactly over the particles i with counted[i] (all when null): the same bits for any
+  /// split of the particles over domains (core/exact_sum.h). kinetic_energy() is its value
+  /// plus the bodies'.
+  ExactSum particle_kinetic_energy(const std::uint8_t* counted = nullptr) const;
   /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy() const;
+  /// The same over the rods k with counted[k] (all when null), exactly (as particle_kinetic_energy).
+  ExactSum rod_elastic_energy(const std::uint8_t* counted = nullptr) const {
+    return sys_.rods.elastic_energy_exact(m_, counted);
+  }
   /// Elastic energy stored in the contacts now (Hertz, normal part), J.
   double contact_energy() const { return sys_.contacts.enabled() ? sys_.contacts.elastic_energy() : 0.0; }
   /// Potential energy in gravity relative to the initial positions, J.

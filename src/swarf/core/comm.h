@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include "swarf/core/exact_sum.h"
+
 namespace swarf {
 
 using Bytes = std::vector<std::byte>;
@@ -55,6 +57,27 @@ class Comm {
       const std::vector<double> part = from_bytes<double>(b);
       for (std::size_t k = 0; k < out.size(); ++k) out[k] += part[k];
     }
+    return out;
+  }
+
+  /// The exact sums of the ranks' accumulators, element-wise: the same bits on every rank and
+  /// for any split of the terms over the ranks (exact_sum.h).
+  std::vector<ExactSum> sum_exact(const std::vector<ExactSum>& v) {
+    std::vector<std::int64_t> words;
+    words.reserve(v.size() * ExactSum::kWords);
+    for (const ExactSum& s : v) {
+      const std::vector<std::int64_t> d = s.digits();
+      words.insert(words.end(), d.begin(), d.end());
+    }
+    std::vector<std::int64_t> total(words.size(), 0);
+    for (const Bytes& b : all_gather(to_bytes(words))) {
+      const std::vector<std::int64_t> part = from_bytes<std::int64_t>(b);
+      for (std::size_t k = 0; k < total.size(); ++k)
+        total[k] = (k + 1) % ExactSum::kWords == 0 ? (total[k] | part[k]) : total[k] + part[k];  // (flags: or)
+    }
+    std::vector<ExactSum> out;
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(ExactSum::from_digits(total, i * ExactSum::kWords));
     return out;
   }
 

@@ -285,6 +285,23 @@ Particles DomainRun::gather_owned() {
   return out;
 }
 
+DomainRun::Sums DomainRun::sums() {
+  const Rods& r = local_.rods;
+  std::vector<std::uint8_t> first_end_owned(r.size());
+  std::int64_t broken = 0;
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    first_end_owned[k] = owned_[r.ends[k][0]];
+    if (first_end_owned[k] && !r.intact[k]) ++broken;
+  }
+  const std::vector<ExactSum> total = comm_.sum_exact(
+      {sim_->particle_kinetic_energy(owned_.data()), sim_->rod_elastic_energy(first_end_owned.data())});
+  Sums s;
+  s.kinetic_energy = total[0].value();
+  s.elastic_energy = total[1].value();
+  s.broken_rods = comm_.sum_all(broken);
+  return s;
+}
+
 std::vector<std::int64_t> DomainRun::weights() const {
   const Rods& r = local_.rods;
   std::vector<std::int64_t> w(local_.particles.size(), 1);

@@ -27,7 +27,9 @@
 // counters, the plastic strain window: a migrant's open window is folded in by its new owner).
 //
 // Groups (grips, prescribed motions) act on each particle alone, owned or ghost; their reactions
-// and work are per domain (sums over the ranks still to come).
+// and work are per domain (sums over the ranks still to come). The energies and the broken rods
+// are reduced over the ranks (sums()): each term counted by one owner and added exactly, which
+// gives the serial run's bits because the serial run adds its energies exactly too.
 // Not in this slice (refused by name, check_supported): contacts, meshes and tools, rigid bodies,
 // particle flows, heat,
 // bond formation, a periodic width, the implicit Newmark step and the Newton solver. Rotations are
@@ -73,6 +75,17 @@ class DomainRun {
   /// Collective: every rank's owned particles, in id order, on every rank: the serial run's
   /// particles, bit for bit. O(N) on every rank: for outputs and checks, not for every step.
   Particles gather_owned();
+
+  /// The run's sums over all domains, each term counted once (a particle by its owner, a rod by
+  /// the owner of its first end) and added exactly (core/exact_sum.h): the serial run's values,
+  /// bit for bit. Collective. The Simulation's ledger, with shared rods counted on both sides,
+  /// is not reduced yet.
+  struct Sums {
+    double kinetic_energy = 0.0;  ///< of the particles, translational + rotational, J
+    double elastic_energy = 0.0;  ///< of the intact rods, J
+    std::int64_t broken_rods = 0;  ///< rods broken now (the intact flags), of the serial rod list
+  };
+  Sums sums();
 
   /// Throws InputError naming the first feature of 'w' or 's' that the domains do not support.
   static void check_supported(const World& w, const StepSettings& s);

@@ -102,13 +102,16 @@ double RodSystem::ghost_reach(const World& m_) const {
   return std::sqrt(longest2);
 }
 
-double RodSystem::elastic_energy(const World& m_) const {
+double RodSystem::elastic_energy(const World& m_) const { return elastic_energy_exact(m_).value(); }
+
+ExactSum RodSystem::elastic_energy_exact(const World& m_, const std::uint8_t* counted) const {
   const auto& r = m_.rods;
   const double A = r.area;
   return std::visit(  // (one visit: the sum's loop sees the concrete law)
       [&](const auto& law) {
-        return deterministic_sum(r.size(), [&](std::size_t k) {
-          return r.intact[k] ? elastic_energy_density(law, r.stress[k]) * A * r.rest_length[k] : 0.0;
+        return exact_sum(r.size(), [&](std::size_t k) {
+          return r.intact[k] && (!counted || counted[k]) ? elastic_energy_density(law, r.stress[k]) * A * r.rest_length[k]
+                                                         : 0.0;
         });
       },
       r.law);

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "swarf/core/exact_sum.h"
 #include "swarf/core/vec3.h"
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
@@ -70,6 +71,8 @@ class RodSystem {
 
   /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy(const World& w) const;
+  /// Over the rods k with counted[k] (all when null), summed exactly (core/exact_sum.h), J.
+  ExactSum elastic_energy_exact(const World& w, const std::uint8_t* counted = nullptr) const;
   /// The lattice's own rods that are broken (Rods::broken_count, kept up to date by the stages).
   std::size_t broken() const { return broken_; }
   /// Rods formed (or formed again) during the run by bond formation.
