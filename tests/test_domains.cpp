@@ -7,10 +7,9 @@
 // difference is a bug. The domains run as threads of this process (run_loopback), and under
 // mpirun -n 2 as MPI ranks (DomainsMpi, the ctest test domains_mpi_two_ranks).
 #include <gtest/gtest.h>
-
-#include <bit>
 #include <omp.h>
 
+#include <bit>
 #include <cstring>
 #include <filesystem>
 #include <mutex>

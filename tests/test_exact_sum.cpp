@@ -88,7 +88,7 @@ TEST(ExactSum, SumsThatRoundOffLosesComeOutExact) {
   for (double x : t) b.add(x);
   for (double x : t) b.add(-x);
   EXPECT_EQ(bits(b.value()), bits(0.0));  // every term cancelled exactly
-  ExactSum c;  // sum_{k=1}^{n} k 2^-10 = n (n + 1) / 2 * 2^-10, exact in a double
+  ExactSum c;                             // sum_{k=1}^{n} k 2^-10 = n (n + 1) / 2 * 2^-10, exact in a double
   const int n = 100000;
   for (int k = n; k >= 1; --k) c.add(std::ldexp(k, -10));
   EXPECT_EQ(c.value(), std::ldexp(static_cast<double>(n) * (n + 1) / 2, -10));
@@ -105,8 +105,8 @@ TEST(ExactSum, SumsThatRoundOffLosesComeOutExact) {
   for (double x : {0.1, 0.2, 0.3, -0.6}) f.add(x);
   // 0.1 + 0.2 + 0.3 - 0.6 as doubles is exactly 2^-54 + 2^-55 + ... : compare with long double,
   // which holds this short sum exactly (64-bit mantissa; the terms span 3 binary orders).
-  const long double ld = static_cast<long double>(0.1) + static_cast<long double>(0.2) +
-                         static_cast<long double>(0.3) - static_cast<long double>(0.6);
+  const long double ld = static_cast<long double>(0.1) + static_cast<long double>(0.2) + static_cast<long double>(0.3) -
+                         static_cast<long double>(0.6);
   EXPECT_EQ(f.value(), static_cast<double>(ld));
 }
 

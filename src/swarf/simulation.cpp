@@ -163,10 +163,11 @@ ExactSum Simulation::particle_kinetic_energy(const std::uint8_t* counted) const 
 double Simulation::rotational_energy() const {
   if (!ms_.rotations) return 0.0;
   const auto& p = m_.particles;
-  return exact_sum(p.size(), [&](std::size_t i) {
-           const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
-           return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
-         })
+  return exact_sum(p.size(),
+                   [&](std::size_t i) {
+                     const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
+                     return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
+                   })
       .value();
 }
 

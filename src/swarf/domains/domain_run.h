@@ -81,8 +81,8 @@ class DomainRun {
   /// bit for bit. Collective. The Simulation's ledger, with shared rods counted on both sides,
   /// is not reduced yet.
   struct Sums {
-    double kinetic_energy = 0.0;  ///< of the particles, translational + rotational, J
-    double elastic_energy = 0.0;  ///< of the intact rods, J
+    double kinetic_energy = 0.0;   ///< of the particles, translational + rotational, J
+    double elastic_energy = 0.0;   ///< of the intact rods, J
     std::int64_t broken_rods = 0;  ///< rods broken now (the intact flags), of the serial rod list
   };
   Sums sums();

@@ -110,8 +110,9 @@ ExactSum RodSystem::elastic_energy_exact(const World& m_, const std::uint8_t* co
   return std::visit(  // (one visit: the sum's loop sees the concrete law)
       [&](const auto& law) {
         return exact_sum(r.size(), [&](std::size_t k) {
-          return r.intact[k] && (!counted || counted[k]) ? elastic_energy_density(law, r.stress[k]) * A * r.rest_length[k]
-                                                         : 0.0;
+          return r.intact[k] && (!counted || counted[k])
+                     ? elastic_energy_density(law, r.stress[k]) * A * r.rest_length[k]
+                     : 0.0;
         });
       },
       r.law);
