@@ -67,7 +67,8 @@ void PlasticStrainSystem::fit(World& w) {
   const auto& entries = rows ? r.entries : own.entries;
   const double inv_time = time > 0.0 ? 1.0 / time : 0.0;
   // Each particle on its own (its rods' directions, its window): any thread count, the same bits.
-#pragma omp parallel for schedule(static) if (n > 4096)
+  // (Dynamic: the flowing particles, the costly ones, sit together in the index order.)
+#pragma omp parallel for schedule(dynamic, 64) if (n > 4096)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 a = p.window_normal[i], b = p.window_shear[i];
     if (a.isZero(0.0) && b.isZero(0.0)) {

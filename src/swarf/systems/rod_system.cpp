@@ -210,7 +210,8 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
         const CommitArrays a{r.intact.data(),      r.trial_broken.data(), r.formed.data(), r.trial_shift.data(),
                              r.rest_length.data(), r.shift.data(),        r.stress.data(), r.ends.data()};
         const int* changed = block_changed_.data();
-#pragma omp parallel for schedule(static) if (nb > 0)
+// (Dynamic: the blocks that yield or break, the costly ones, sit together in the rod order.)
+#pragma omp parallel for schedule(dynamic, 1) if (nb > 0)
         for (std::size_t b = 0; b < nb; ++b) {
           WorkList* wb = work ? &block_work_[b] : nullptr;
           if (wb) wb->clear();
