@@ -234,6 +234,15 @@ TEST(Domains, TwoDomainsWithFixedCutsGiveTheSerialBits) {
               static_cast<long long>(lagging[0].migrations));
   EXPECT_LT(lagging[0].migrations, reports[0].migrations / 4);
   EXPECT_GT(lagged, 300);
+  // Strays looked for every 7th step only: owners lag by up to 6 steps, the same bits.
+  ds.skin = 0.0;
+  ds.check_every = 7;
+  const auto seldom = run_domains(2, ds);
+  const std::int64_t moved = expect_serial_bits(seldom);
+  std::printf("   stray checks every 7 steps: %lld particles changed owner in %lld migrations\n",
+              static_cast<long long>(moved), static_cast<long long>(seldom[0].migrations));
+  EXPECT_LE(seldom[0].migrations, kSteps / 7);
+  EXPECT_GT(moved, 300);
 }
 
 TEST(Domains, ThreeDomainsRebalancedEveryTenStepsGiveTheSerialBits) {

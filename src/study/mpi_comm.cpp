@@ -63,6 +63,34 @@ std::vector<Bytes> MpiComm::all_gather(Bytes mine) {
 
 void MpiComm::barrier() { MPI_Barrier(MPI_COMM_WORLD); }
 
+std::vector<Bytes> MpiComm::exchange(std::vector<Bytes> send, const std::vector<std::size_t>& recv_bytes) {
+  if (static_cast<int>(send.size()) != size_ || static_cast<int>(recv_bytes.size()) != size_)
+    throw std::logic_error("exchange: buffers for " + std::to_string(send.size()) + " and " +
+                           std::to_string(recv_bytes.size()) + " ranks, not " + std::to_string(size_));
+  constexpr int kTag = 38;  // (the halo's; no other point-to-point traffic on MPI_COMM_WORLD)
+  std::vector<Bytes> out(size_);
+  std::vector<MPI_Request> requests;
+  for (int r = 0; r < size_; ++r) {
+    if (r == rank_) {
+      out[r] = std::move(send[r]);
+      continue;
+    }
+    if (recv_bytes[r] == 0) continue;
+    if (recv_bytes[r] > 2147483647u) throw std::runtime_error("MpiComm: more than 2 GB from one rank");
+    out[r].resize(recv_bytes[r]);
+    requests.emplace_back();
+    MPI_Irecv(out[r].data(), static_cast<int>(recv_bytes[r]), MPI_BYTE, r, kTag, MPI_COMM_WORLD, &requests.back());
+  }
+  for (int r = 0; r < size_; ++r) {
+    if (r == rank_ || send[r].empty()) continue;
+    if (send[r].size() > 2147483647u) throw std::runtime_error("MpiComm: more than 2 GB to one rank");
+    requests.emplace_back();
+    MPI_Isend(send[r].data(), static_cast<int>(send[r].size()), MPI_BYTE, r, kTag, MPI_COMM_WORLD, &requests.back());
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  return out;
+}
+
 #else
 
 MpiComm::MpiComm() = default;
@@ -73,6 +101,7 @@ std::vector<Bytes> MpiComm::all_gather(Bytes mine) {
   return out;
 }
 void MpiComm::barrier() {}
+std::vector<Bytes> MpiComm::exchange(std::vector<Bytes> send, const std::vector<std::size_t>&) { return send; }
 
 #endif
 

@@ -15,6 +15,7 @@ class MpiComm final : public Comm {
   std::vector<Bytes> all_to_all(std::vector<Bytes> send) override;
   std::vector<Bytes> all_gather(Bytes mine) override;
   void barrier() override;
+  std::vector<Bytes> exchange(std::vector<Bytes> send, const std::vector<std::size_t>& recv_bytes) override;
 
  private:
   int rank_ = 0, size_ = 1;

@@ -2,7 +2,7 @@
 // decomposition (swarf/domains/domain_run.h, issue 38 item 5), timed beside the serial run.
 //
 //   swarf_domains_bench CASE STEPS [--set key=value ...]            one process: the serial run
-//   mpirun -n N swarf_domains_bench CASE STEPS [--set ...] [--rebalance-every K]   N domains
+//   mpirun -n N swarf_domains_bench CASE STEPS [--set ...] [--rebalance-every K] [--check-every S]   N domains
 //
 // Prints, per rank, the owned and ghost particles and the halo's bytes per step, and on rank 0
 // the wall time per particle-step of the stepping (the setup excluded) and the time in the
@@ -49,7 +49,9 @@ std::uint64_t position_hash(const swarf::Particles& p) {
 int main(int argc, char** argv) {
   using namespace swarf;
   if (argc < 3) {
-    fmt::print(stderr, "usage: [mpirun -n N] swarf_domains_bench CASE STEPS [--set key=value ...]\n");
+    fmt::print(stderr,
+               "usage: [mpirun -n N] swarf_domains_bench CASE STEPS [--set key=value ...] [--rebalance-every K] "
+               "[--check-every S]\n");
     return 2;
   }
   MpiSession session;
@@ -62,6 +64,8 @@ int main(int argc, char** argv) {
         overrides.push_back(argv[a + 1]);
       else if (opt == "--rebalance-every")
         ds.rebalance_every = std::stoi(argv[a + 1]);
+      else if (opt == "--check-every")
+        ds.check_every = std::stoi(argv[a + 1]);
       else
         throw InputError("unknown option '" + opt + "'");
     }

@@ -2,7 +2,8 @@
 //
 // A Comm is one rank's end of a group of ranks that call its collectives together, in the same
 // order. Two primitives carry bytes: all_to_all (a buffer for every rank, one from every rank)
-// and all_gather (every rank's buffer to every rank); the reductions are built on them so that
+// and all_gather (every rank's buffer to every rank), and 'exchange' sends point to point when
+// both sides know the sizes (the halo); the reductions are built on them so that
 // their results do not depend on how the numbers are split over the ranks: integers are summed
 // exactly, minima and maxima are exact, and sums of doubles are gathered and added in rank order.
 // SerialComm is the one-rank group; LoopbackComm (loopback_comm.h) runs N ranks as threads of
@@ -33,6 +34,14 @@ class Comm {
   /// Every rank's 'mine', indexed by rank, on every rank.
   virtual std::vector<Bytes> all_gather(Bytes mine) = 0;
   virtual void barrier() = 0;
+  /// Point to point with sizes known on both sides: send[r] goes to rank r and recv_bytes[r]
+  /// bytes come from rank r; ranks with nothing to send or receive are not contacted (the
+  /// halo after each step talks to its neighbours only, not to every rank as all_to_all does).
+  /// Every rank calls it together. The default goes through all_to_all.
+  virtual std::vector<Bytes> exchange(std::vector<Bytes> send, const std::vector<std::size_t>& recv_bytes) {
+    (void)recv_bytes;
+    return all_to_all(std::move(send));
+  }
 
   /// Element-wise sums of the ranks' integer vectors (all the same length): exact.
   std::vector<std::int64_t> sum_all(const std::vector<std::int64_t>& v) {

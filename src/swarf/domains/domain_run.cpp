@@ -79,6 +79,8 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   if (!(ds_.skin >= 0.0)) throw InputError(fmt::format("domains: skin = {} m must be at least 0", ds_.skin));
   if (ds_.rebalance_every < 1)
     throw InputError(fmt::format("domains: rebalance_every = {} must be at least 1", ds_.rebalance_every));
+  if (ds_.check_every < 1)
+    throw InputError(fmt::format("domains: check_every = {} must be at least 1", ds_.check_every));
   if (!ds_.fixed_cuts.empty() && static_cast<int>(ds_.fixed_cuts.size()) != size - 1)
     throw InputError(
         fmt::format("domains: {} cut planes for {} ranks (one fewer than the ranks)", ds_.fixed_cuts.size(), size));
@@ -252,12 +254,20 @@ void DomainRun::exchange_halo() {
   const int size = comm_.size();
   Particles& p = local_.particles;
   std::vector<Bytes> out(size);
-  for (int r = 0; r < size; ++r)
+  for (int r = 0; r < size; ++r) {
+    out[r].reserve(send_[r].size() * kKinematicsBytes);
     for (const std::int32_t i : send_[r]) pack_kinematics(out[r], p, i);
+  }
   halo_bytes_ = 0;
   for (const Bytes& b : out) halo_bytes_ += b.size();
-  const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
+  // (the sizes are the plan's: point to point with the neighbours only)
+  std::vector<std::size_t> expect(size);
+  for (int r = 0; r < size; ++r) expect[r] = recv_[r].size() * kKinematicsBytes;
+  const std::vector<Bytes> in = comm_.exchange(std::move(out), expect);
   for (int r = 0; r < size; ++r) {
+    if (in[r].size() != expect[r])
+      throw std::logic_error(
+          fmt::format("domains: halo from rank {}: {} bytes, {} expected", r, in[r].size(), expect[r]));
     const std::byte* at = in[r].data();
     for (const std::int32_t i : recv_[r]) at += unpack_kinematics(at, p, i);
   }
@@ -315,15 +325,20 @@ void DomainRun::step() {
   const auto t0 = std::chrono::steady_clock::now();
   exchange_halo();
   ++steps_;
-  const int rank = comm_.rank();
-  const Particles& p = local_.particles;
-  double left = 0.0;
-  for (std::size_t i = 0; i < p.size() && left == 0.0; ++i)
-    if (owned_[i] && !partition_.near(p.position[i], rank, ds_.skin)) left = 1.0;
   // Every rebalance_every steps new cuts; in between, when a particle strayed beyond its slab
-  // and skin, every particle goes to the owner of its slab, the cuts kept.
+  // and skin (looked for every check_every steps), every particle goes to the owner of its
+  // slab, the cuts kept.
   const bool recut = steps_ % ds_.rebalance_every == 0;
-  if (comm_.max_all(left) > 0.0 || recut) migrate(recut);
+  bool stray = false;
+  if (!recut && steps_ % ds_.check_every == 0) {
+    const int rank = comm_.rank();
+    const Particles& p = local_.particles;
+    double left = 0.0;
+    for (std::size_t i = 0; i < p.size() && left == 0.0; ++i)
+      if (owned_[i] && !partition_.near(p.position[i], rank, ds_.skin)) left = 1.0;
+    stray = comm_.max_all(left) > 0.0;
+  }
+  if (stray || recut) migrate(recut);
   exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

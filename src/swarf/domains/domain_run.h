@@ -58,6 +58,12 @@ struct DomainSettings {
   /// of their slabs, m (0: as soon as one leaves). Ownership never changes the bits, so a skin
   /// only trades a larger domain for fewer migrations (LAMMPS's reneighbouring skin).
   double skin = 0.0;
+  /// Steps between the stray checks (>= 1): each scans the owned particles and costs one
+  /// collective. Ownership never changes the bits here (ghosts follow the rods, not space), so
+  /// a particle that strays between checks is still stepped right; the checks only keep the
+  /// slabs compact and balanced. (With contacts, whose ghosts are spatial, the skin will have to
+  /// cover the travel between checks, as LAMMPS's reneighbouring does.)
+  int check_every = 1;
 };
 
 class DomainRun {

@@ -51,7 +51,7 @@ std::size_t unpack_new_particle(const std::byte* in, Particles& p) {
 
 void pack_kinematics(Bytes& out, const Particles& p, std::size_t i) {
   const std::size_t at = out.size();
-  out.resize(at + 3 * sizeof(Vec3));
+  out.resize(at + kKinematicsBytes);
   std::memcpy(out.data() + at, &p.position[i], sizeof(Vec3));
   std::memcpy(out.data() + at + sizeof(Vec3), &p.velocity[i], sizeof(Vec3));
   std::memcpy(out.data() + at + 2 * sizeof(Vec3), &p.acceleration[i], sizeof(Vec3));
@@ -61,7 +61,7 @@ std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i) 
   std::memcpy(static_cast<void*>(&p.position[i]), in, sizeof(Vec3));
   std::memcpy(static_cast<void*>(&p.velocity[i]), in + sizeof(Vec3), sizeof(Vec3));
   std::memcpy(static_cast<void*>(&p.acceleration[i]), in + 2 * sizeof(Vec3), sizeof(Vec3));
-  return 3 * sizeof(Vec3);
+  return kKinematicsBytes;
 }
 
 void pack_rod(Bytes& out, Rods& r, std::size_t k, std::int64_t key, std::array<std::int64_t, 2> end_id) {

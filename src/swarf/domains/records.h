@@ -31,6 +31,8 @@ std::size_t unpack_new_particle(const std::byte* in, Particles& p);
 /// exact, the plastic strain's window and the force its own partial sums, which nothing of an
 /// owned particle reads.
 void pack_kinematics(Bytes& out, const Particles& p, std::size_t i);
+/// The bytes of one halo record.
+inline constexpr std::size_t kKinematicsBytes = 3 * sizeof(Vec3);
 /// Writes the halo's record at 'in' over particle i; returns the bytes read.
 std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i);
 
