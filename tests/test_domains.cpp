@@ -40,8 +40,10 @@ struct Scene {
 };
 
 Scene make_scene() {
-  Model m = build_model(parse_case(
-      test::pulled_bar_case({.cells = {16, 6, 6}, .integrator = "scheme = \"verlet\"\nend_time = 1"}), "domains", {}));
+  Model m = build_model(
+      parse_case(test::pulled_bar_case(
+                     {.cells = {16, 6, 6}, .damping_ratio = 0.05, .integrator = "scheme = \"verlet\"\nend_time = 1"}),
+                 "domains", {}));
   Scene s;
   s.step = m.step;
   m.groups.clear();  // (the case's grips: a free block)
@@ -79,6 +81,7 @@ struct Serial {
   bool plastic = false;
   double kinetic = 0.0, elastic = 0.0;  // J
   std::int64_t broken_now = 0;          // rods not intact at the end
+  EnergyLedger ledger;                  // its plain sums
 };
 
 const Serial& serial() {
@@ -92,6 +95,7 @@ const Serial& serial() {
     out.broken = sim.broken_rods();
     out.kinetic = sim.kinetic_energy();
     out.elastic = sim.elastic_energy();
+    out.ledger = sim.ledger();
     for (auto f : out.world.rods.intact) out.broken_now += f == 0;
     for (double v : out.world.rods.shift) out.plastic = out.plastic || v != 0.0;
     omp_set_num_threads(saved);
@@ -183,6 +187,20 @@ std::vector<DomainReport> run_domains(int n, const DomainSettings& ds, int threa
   return reports;
 }
 
+// The sums of the run on one domain: the rods' exact ledger lines every partition must match.
+const DomainRun::Sums& one_domain_sums() {
+  static const DomainRun::Sums s = [] {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    SerialComm comm;
+    DomainRun d(comm, scene().world, scene().step);
+    for (int k = 0; k < kSteps; ++k) d.step();
+    omp_set_num_threads(saved);
+    return d.sums();
+  }();
+  return s;
+}
+
 // Every particle owned once, all identical to the serial run; returns the migrants' total.
 std::int64_t expect_serial_bits(const std::vector<DomainReport>& reports, bool all_own = true) {
   std::vector<std::int64_t> ids;
@@ -198,6 +216,22 @@ std::int64_t expect_serial_bits(const std::vector<DomainReport>& reports, bool a
     EXPECT_EQ(std::bit_cast<std::uint64_t>(d.sums.elastic_energy), std::bit_cast<std::uint64_t>(serial().elastic))
         << "domain " << r << ": elastic energy " << d.sums.elastic_energy << " J against " << serial().elastic;
     EXPECT_EQ(d.sums.broken_rods, serial().broken_now) << "domain " << r;
+    // The rods' ledger: the same bits as on one domain, and the serial run's plain sums to
+    // round-off (1e-12 relative: 1,500 steps of sums that differ in their last bits).
+    const DomainRun::Sums& one = one_domain_sums();
+    const EnergyLedger& l = serial().ledger;
+    const std::pair<double, double> lines[] = {{d.sums.plastic_work, one.plastic_work},
+                                               {d.sums.viscous_work, one.viscous_work},
+                                               {d.sums.fracture_energy, one.fracture_energy}};
+    const double plain[] = {l.plastic_work, l.viscous_work, l.fracture_energy};
+    const char* names[] = {"plastic work", "viscous work", "fracture energy"};
+    for (int q = 0; q < 3; ++q) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(lines[q].first), std::bit_cast<std::uint64_t>(lines[q].second))
+          << "domain " << r << ": " << names[q] << " " << lines[q].first << " J against one domain's "
+          << lines[q].second;
+      EXPECT_NEAR(lines[q].first, plain[q], 1e-12 * std::abs(plain[q])) << "domain " << r << ": " << names[q];
+      EXPECT_GT(plain[q], 0.0) << names[q] << ": the scene must book some";
+    }
     if (all_own) EXPECT_GT(d.owned_ids.size(), 0u) << "domain " << r << " owns nothing";
     ids.insert(ids.end(), d.owned_ids.begin(), d.owned_ids.end());
     arrivals += d.arrivals;
@@ -385,6 +419,12 @@ TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
   EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.kinetic_energy), std::bit_cast<std::uint64_t>(serial().kinetic));
   EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.elastic_energy), std::bit_cast<std::uint64_t>(serial().elastic));
   EXPECT_EQ(sums.broken_rods, serial().broken_now);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.plastic_work),
+            std::bit_cast<std::uint64_t>(one_domain_sums().plastic_work));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.viscous_work),
+            std::bit_cast<std::uint64_t>(one_domain_sums().viscous_work));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.fracture_energy),
+            std::bit_cast<std::uint64_t>(one_domain_sums().fracture_energy));
   const std::int64_t owned = comm.sum_all(static_cast<std::int64_t>(rep.owned_ids.size()));
   const std::int64_t arrivals = comm.sum_all(rep.arrivals);
   EXPECT_EQ(owned, static_cast<std::int64_t>(serial().world.particles.size()));

@@ -78,6 +78,11 @@ class Simulation {
   /// Counters of the Newton solver (zero with the fixed-point one).
   const NewtonStats& newton_stats() const { return ms_.newton_stats; }
   const EnergyLedger& ledger() const { return ledger_; }
+  /// The rods' ledger lines summed exactly over the rods whose first particle has counted[i]
+  /// != 0 (RodSystem::count_exactly; nullptr: off): a domain's share, the same sums over the
+  /// ranks for any partition. The array must be set again when the particles change.
+  void count_exactly(const std::uint8_t* counted) { sys_.rods.count_exactly(counted); }
+  const RodSystem::ExactLedger& exact_ledger() const { return sys_.rods.exact_ledger(); }
   std::size_t broken_rods() const { return sys_.rods.broken(); }
   /// Rods formed (or formed again) during the run by bond formation (laws/bond_formation.h).
   std::size_t formed_rods() const { return sys_.rods.formed(); }

@@ -221,6 +221,7 @@ void DomainRun::adopt(Local&& l) {
   } else {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods));
   }
+  sim_->count_exactly(owned_.data());  // (the rods' ledger: each rod booked by its first end's owner)
   plan_halo();
 }
 
@@ -303,11 +304,16 @@ DomainRun::Sums DomainRun::sums() {
     first_end_owned[k] = owned_[r.ends[k][0]];
     if (first_end_owned[k] && !r.intact[k]) ++broken;
   }
-  const std::vector<ExactSum> total = comm_.sum_exact(
-      {sim_->particle_kinetic_energy(owned_.data()), sim_->rod_elastic_energy(first_end_owned.data())});
+  const RodSystem::ExactLedger& x = sim_->exact_ledger();
+  const std::vector<ExactSum> total = comm_.sum_exact({sim_->particle_kinetic_energy(owned_.data()),
+                                                       sim_->rod_elastic_energy(first_end_owned.data()), x.plastic_work,
+                                                       x.viscous_work, x.fracture_energy});
   Sums s;
   s.kinetic_energy = total[0].value();
   s.elastic_energy = total[1].value();
+  s.plastic_work = total[2].value();
+  s.viscous_work = total[3].value();
+  s.fracture_energy = total[4].value();
   s.broken_rods = comm_.sum_all(broken);
   return s;
 }

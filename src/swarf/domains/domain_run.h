@@ -29,12 +29,15 @@
 // Groups (grips, prescribed motions) act on each particle alone, owned or ghost; their reactions
 // and work are per domain (sums over the ranks still to come). The energies and the broken rods
 // are reduced over the ranks (sums()): each term counted by one owner and added exactly, which
-// gives the serial run's bits because the serial run adds its energies exactly too.
+// gives the serial run's bits because the serial run adds its energies exactly too. The rods'
+// ledger lines (plastic, viscous, fracture) are booked per step by the owner of each rod's first
+// end into exact sums beside the plain ones (RodSystem::count_exactly) and reduced by sums(): the
+// same bits for any rank count; the plain sums of the serial run agree to round-off only (it adds
+// in blocks, the cheaper way: exact adds in the rod kernel cost 11-20 % of the cut's step,
+// validation/bench/README.md). The Simulation's own ledger stays per domain.
 // Not in this slice (refused by name, check_supported): contacts, meshes and tools, rigid bodies,
-// particle flows, heat,
-// bond formation, a periodic width, the implicit Newmark step and the Newton solver. Rotations are
-// off (they come with contacts). The ledger and the Simulation's sums (energies, broken rods)
-// are per domain and not yet reduced: only the particles' and rods' state is the serial one.
+// particle flows, heat, bond formation, a periodic width, the implicit Newmark step and the Newton
+// solver. Rotations are off (they come with contacts).
 // Setup: every rank builds the same global World (setup is deterministic) and keeps its part.
 #pragma once
 
@@ -83,13 +86,19 @@ class DomainRun {
   Particles gather_owned();
 
   /// The run's sums over all domains, each term counted once (a particle by its owner, a rod by
-  /// the owner of its first end) and added exactly (core/exact_sum.h): the serial run's values,
-  /// bit for bit. Collective. The Simulation's ledger, with shared rods counted on both sides,
-  /// is not reduced yet.
+  /// the owner of its first end) and added exactly (core/exact_sum.h). Collective. The energies
+  /// now are the serial run's values, bit for bit (it sums them exactly too); the rods' ledger
+  /// lines (since the start: each step's terms booked by the owner then) are the same bits for
+  /// any rank count, and agree with the serial run's plain sums to round-off. The Simulation's
+  /// own ledger, with shared rods counted on both sides, and the groups' work and reactions are
+  /// not reduced yet.
   struct Sums {
     double kinetic_energy = 0.0;   ///< of the particles, translational + rotational, J
     double elastic_energy = 0.0;   ///< of the intact rods, J
     std::int64_t broken_rods = 0;  ///< rods broken now (the intact flags), of the serial rod list
+    double plastic_work = 0.0;     ///< EnergyLedger::plastic_work, J
+    double viscous_work = 0.0;     ///< EnergyLedger::viscous_work, J
+    double fracture_energy = 0.0;  ///< EnergyLedger::fracture_energy, J
   };
   Sums sums();
 

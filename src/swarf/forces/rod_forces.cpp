@@ -35,7 +35,7 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
                const double* rest_length, const double* inv_rest_length, const double* shift,
                const std::uint8_t* intact, const Vec3* x, const Vec3* v, const double* temperature, const Vec3* lag_x,
                const Vec3* lag_v, double* trial_shift, std::uint8_t* trial_broken, double* stress, double* coef,
-               double& viscous_power, int& changed, Periodic periodic) {
+               double& viscous_power, int& changed, Periodic periodic, double* rod_visc) {
   double visc = 0.0;
   int any = 0;
   // In chunks, three passes: the rods' vectors (scalar gathers), their lengths and inverse
@@ -103,6 +103,7 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
     }
     for (std::size_t c = 0; c < nc; ++c) {
       const std::size_t k = c0 + c;
+      if (rod_visc) rod_visc[k] = 0.0;
       if (!intact[k]) continue;
       const double len = len_c[c];
       const double inv_len = inv_c[c];
@@ -134,7 +135,17 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
         coef[k] = 0.0;
       } else {
         coef[k] = (res.stress + res.viscous_stress) * A * inv_len;
-        if constexpr (Rate) visc += res.viscous_stress * rate * A * l0;
+        if constexpr (Rate) {
+          const double sA = res.viscous_stress * rate * A;
+          // (the fused sum the compiler made of 'visc += sA * l0' before the per-rod power was
+          // also stored, which stops the contraction: the golden series keep their bits)
+#if defined(__FMA__)
+          visc = std::fma(sA, l0, visc);
+#else
+          visc += sA * l0;
+#endif
+          if (rod_visc) rod_visc[k] = sA * l0;
+        }
       }
     }
   }
@@ -167,6 +178,7 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
   double* coef = view.coef;
   double* block_visc = view.block_viscous;
   int* block_changed = view.block_changed;
+  double* rod_visc = view.rod_viscous;
   const bool rate = uses_rate(law);
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < nb; ++b) {
@@ -175,19 +187,19 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
     if (rate && periodic.on())
       rod_block<Law, true, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
                                        trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
-                                       periodic);
+                                       periodic, rod_visc);
     else if (rate)
       rod_block<Law, true, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
                                         trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
-                                        periodic);
+                                        periodic, rod_visc);
     else if (periodic.on())
       rod_block<Law, false, true, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
                                         trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
-                                        periodic);
+                                        periodic, rod_visc);
     else
       rod_block<Law, false, false, Temp>(law, A, begin, end, ends, l0, inv_l0, shift, intact, x, v, temp, lag_x, lag_v,
                                          trial_shift, trial_broken, stress, coef, block_visc[b], block_changed[b],
-                                         periodic);
+                                         periodic, rod_visc);
   }
 }
 

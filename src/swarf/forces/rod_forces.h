@@ -38,6 +38,7 @@ struct RodKernelView {
   double* coef = nullptr;                   ///< out, N/m
   double* block_viscous = nullptr;          ///< out per block of kBlock rods: viscous power, W
   int* block_changed = nullptr;             ///< out per block: 1 if a rod yielded or broke
+  double* rod_viscous = nullptr;            ///< out per rod when set: viscous power, W (0 for a broken rod)
   /// Positions and velocities from which a law that scales its flow stresses by the rate
   /// (Johnson-Cook) takes the rate of its factor, m and m/s; nullptr: x and v (the trial's own
   /// rate). The Newton solve passes the step's start: a lagged rate factor, so that the trial's

@@ -62,6 +62,10 @@ void RodSystem::forces(World& m_, const Vec3* rate_x, const Vec3* rate_v) {
   view.coef = r.force_coef.data();
   view.block_viscous = block_viscous_.data();
   view.block_changed = block_changed_.data();
+  if (counted_) {
+    rod_viscous_.resize(r.size());
+    view.rod_viscous = rod_viscous_.data();
+  }
   evaluate_rods(r.law, r.area, view, m_.periodic);
   if (!mesh_edge_.empty()) part(m_);
 }
@@ -83,10 +87,15 @@ void RodSystem::part(World& m_) {
   }
 }
 
-void RodSystem::account(const StepContext& c) const {
+void RodSystem::account(const StepContext& c) {
   double visc = 0.0;
   for (double v : block_viscous_) visc += v;
   c.ledger.viscous_work += visc * c.h;
+  if (counted_ && rod_viscous_.size() == c.world.rods.size()) {
+    const auto& ends = c.world.rods.ends;
+    for (std::size_t k = 0; k < rod_viscous_.size(); ++k)
+      if (rod_viscous_[k] != 0.0 && counted_[ends[k][0]]) exact_.viscous_work.add(rod_viscous_[k] * c.h);
+  }
 }
 
 double RodSystem::ghost_reach(const World& m_) const {
@@ -144,7 +153,7 @@ struct CommitArrays {
 template <class Law>
 void commit_block(const Law law, double A, std::size_t begin, std::size_t end, const CommitArrays arrays,
                   double& plastic, double& fracture, std::size_t& broke_original, RodSystem::PairList& pairs,
-                  RodSystem::WorkList* works) {
+                  RodSystem::WorkList* works, const std::uint8_t* counted, RodSystem::ExactLedger* exact) {
   std::uint8_t* intact = arrays.intact;
   const std::uint8_t* trial_broken = arrays.trial_broken;
   const std::uint8_t* formed = arrays.formed;
@@ -172,11 +181,20 @@ void commit_block(const Law law, double A, std::size_t begin, std::size_t end, c
       if (works)
         works->push_back({ends[k], w, static_cast<std::int32_t>(k),
                           plastic_strain(law, trial_shift[k]) - plastic_strain(law, shift[k])});
+      if (exact && counted[ends[k][0]]) exact->plastic_work.add(w);
       shift[k] = trial_shift[k];
     }
     if (trial_broken[k]) {
       intact[k] = 0;
-      fracture_b += elastic_energy_density(law, stress[k]) * A * rest_length[k];
+      const double eA = elastic_energy_density(law, stress[k]) * A;
+      // (the fused sum the compiler made of 'fracture_b += eA * L' before the exact ledger also
+      // read the product, as for the plastic work above: the golden series keep their bits)
+#if defined(__FMA__)
+      fracture_b = std::fma(eA, rest_length[k], fracture_b);
+#else
+      fracture_b += eA * rest_length[k];
+#endif
+      if (exact && counted[ends[k][0]]) exact->fracture_energy.add(eA * rest_length[k]);
       stress[k] = 0.0;
       original += !formed[k];  // (broken_rods counts the lattice's own rods: Rods::broken_count)
       pairs.push_back(ends[k]);
@@ -200,6 +218,7 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
   // The rods that break now, per block: their pairs become contact candidates (and their
   // particles may become free to rotate).
   std::vector<PairList> broken_pairs(nb);
+  std::vector<ExactLedger> exact(counted_ ? nb : 0);  // (per block: any thread count, the same sums)
   if (work) {
     work->clear();
     if (block_work_.size() != nb) block_work_.resize(nb);
@@ -217,11 +236,15 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
           if (wb) wb->clear();
           if (!changed[b]) continue;  // no rod of the block yielded or broke
           commit_block(law, A, b * kBlock, std::min(m, (b + 1) * kBlock), a, plastic[b], fracture[b], broke_original[b],
-                       broken_pairs[b], wb);
+                       broken_pairs[b], wb, counted_, counted_ ? &exact[b] : nullptr);
         }
       },
       r.law);
   PairList pairs;
+  for (const ExactLedger& e : exact) {
+    exact_.plastic_work.add(e.plastic_work);
+    exact_.fracture_energy.add(e.fracture_energy);
+  }
   for (std::size_t b = 0; b < nb; ++b) {
     ledger.plastic_work += plastic[b];
     ledger.fracture_energy += fracture[b];

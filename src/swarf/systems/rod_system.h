@@ -67,7 +67,7 @@ class RodSystem {
   /// exchanged ones. Returns the pairs whose particles gained or lost a rod.
   PairList form(World& w, ContactSystem& contacts, EnergyLedger& ledger);
   /// The viscous work of the step's last evaluation over the step.
-  void account(const StepContext& c) const;
+  void account(const StepContext& c);
 
   /// Recoverable elastic energy of the intact rods, J.
   double elastic_energy(const World& w) const;
@@ -79,6 +79,19 @@ class RodSystem {
   std::size_t formed() const { return formed_; }
   void visit_state(StateArchive& ar, World& w, EnergyLedger& ledger);
 
+  /// The rods' ledger lines summed exactly (core/exact_sum.h) over the rods whose first end has
+  /// counted[i] != 0, J: what a domain books so that the sums over the ranks are the same for
+  /// any partition (issue 38). Kept beside the EnergyLedger's plain sums, which it leaves as
+  /// they are.
+  struct ExactLedger {
+    ExactSum plastic_work, viscous_work, fracture_energy;
+  };
+  /// Turns the exact ledger on over the particles with counted[i] != 0 (a domain's owned ones;
+  /// the array must outlive the next step and be set again when the particles change), or off
+  /// (nullptr). Costs a pass over the rods per step and a store per rod in the kernel.
+  void count_exactly(const std::uint8_t* counted) { counted_ = counted; }
+  const ExactLedger& exact_ledger() const { return exact_; }
+
   // Domains (issue 38): a rod is computed once, by the rank that owns its first particle; that
   // rank needs a copy of the other end.
   static constexpr Sharing sharing = Sharing::PerRod;
@@ -88,6 +101,9 @@ class RodSystem {
  private:
   void part(World& w);  // rods on the meshes' parting lines break in this trial
 
+  const std::uint8_t* counted_ = nullptr;  // per particle: its first-end rods count in exact_ (null: off)
+  ExactLedger exact_;
+  std::vector<double> rod_viscous_;  // with counted_: per rod, viscous power of the last evaluation, W
   std::size_t broken_ = 0;
   std::size_t formed_ = 0;             // state: 'formed_rods'
   std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m; empty: none
