@@ -81,8 +81,13 @@ class Simulation {
   /// The rods' ledger lines summed exactly over the rods whose first particle has counted[i]
   /// != 0 (RodSystem::count_exactly; nullptr: off): a domain's share, the same sums over the
   /// ranks for any partition. The array must be set again when the particles change.
-  void count_exactly(const std::uint8_t* counted) { sys_.rods.count_exactly(counted); }
+  /// The groups' work and reactions too (GroupSystem::count_exactly).
+  void count_exactly(const std::uint8_t* counted) {
+    sys_.rods.count_exactly(counted);
+    sys_.groups.count_exactly(counted, m_);
+  }
   const RodSystem::ExactLedger& exact_ledger() const { return sys_.rods.exact_ledger(); }
+  const GroupSystem::ExactShare& exact_group_share() const { return sys_.groups.exact_share(); }
   std::size_t broken_rods() const { return sys_.rods.broken(); }
   /// Rods formed (or formed again) during the run by bond formation (laws/bond_formation.h).
   std::size_t formed_rods() const { return sys_.rods.formed(); }

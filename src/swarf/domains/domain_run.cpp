@@ -221,7 +221,7 @@ void DomainRun::adopt(Local&& l) {
   } else {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods));
   }
-  sim_->count_exactly(owned_.data());  // (the rods' ledger: each rod booked by its first end's owner)
+  sim_->count_exactly(owned_.data());  // (each rod booked by its first end's owner)
   plan_halo();
 }
 
@@ -305,15 +305,27 @@ DomainRun::Sums DomainRun::sums() {
     if (first_end_owned[k] && !r.intact[k]) ++broken;
   }
   const RodSystem::ExactLedger& x = sim_->exact_ledger();
-  const std::vector<ExactSum> total = comm_.sum_exact({sim_->particle_kinetic_energy(owned_.data()),
-                                                       sim_->rod_elastic_energy(first_end_owned.data()), x.plastic_work,
-                                                       x.viscous_work, x.fracture_energy});
+  const GroupSystem::ExactShare& gx = sim_->exact_group_share();
+  std::vector<ExactSum> parts = {sim_->particle_kinetic_energy(owned_.data()),
+                                 sim_->rod_elastic_energy(first_end_owned.data()),
+                                 x.plastic_work,
+                                 x.viscous_work,
+                                 x.fracture_energy,
+                                 gx.external_work};
+  const std::size_t ng = local_.groups.size();
+  for (std::size_t g = 0; g < ng; ++g)
+    for (int c = 0; c < 3; ++c) parts.push_back(g < gx.reaction.size() ? gx.reaction[g][c] : ExactSum{});
+  const std::vector<ExactSum> total = comm_.sum_exact(parts);
   Sums s;
   s.kinetic_energy = total[0].value();
   s.elastic_energy = total[1].value();
   s.plastic_work = total[2].value();
   s.viscous_work = total[3].value();
   s.fracture_energy = total[4].value();
+  s.external_work = total[5].value();
+  s.reactions.resize(ng);
+  for (std::size_t g = 0; g < ng; ++g)
+    for (int c = 0; c < 3; ++c) s.reactions[g][c] = total[6 + 3 * g + c].value();
   s.broken_rods = comm_.sum_all(broken);
   return s;
 }

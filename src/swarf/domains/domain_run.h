@@ -26,8 +26,8 @@
 // the Simulation's door (Simulation::replace_particles), which keeps the step's own state (time,
 // counters, the plastic strain window: a migrant's open window is folded in by its new owner).
 //
-// Groups (grips, prescribed motions) act on each particle alone, owned or ghost; their reactions
-// and work are per domain (sums over the ranks still to come). The energies and the broken rods
+// Groups (grips, prescribed motions) act on each particle alone, owned or ghost; their work and
+// reactions are booked exactly by the members' owners (GroupSystem::count_exactly). The energies and the broken rods
 // are reduced over the ranks (sums()): each term counted by one owner and added exactly, which
 // gives the serial run's bits because the serial run adds its energies exactly too. The rods'
 // ledger lines (plastic, viscous, fracture) are booked per step by the owner of each rod's first
@@ -89,9 +89,9 @@ class DomainRun {
   /// the owner of its first end) and added exactly (core/exact_sum.h). Collective. The energies
   /// now are the serial run's values, bit for bit (it sums them exactly too); the rods' ledger
   /// lines (since the start: each step's terms booked by the owner then) are the same bits for
-  /// any rank count, and agree with the serial run's plain sums to round-off. The Simulation's
-  /// own ledger, with shared rods counted on both sides, and the groups' work and reactions are
-  /// not reduced yet.
+  /// any rank count, and agree with the serial run's plain sums to round-off; so do the groups'
+  /// work and reactions. The Simulation's own ledger, with shared rods counted on both sides,
+  /// stays per domain.
   struct Sums {
     double kinetic_energy = 0.0;   ///< of the particles, translational + rotational, J
     double elastic_energy = 0.0;   ///< of the intact rods, J
@@ -99,6 +99,8 @@ class DomainRun {
     double plastic_work = 0.0;     ///< EnergyLedger::plastic_work, J
     double viscous_work = 0.0;     ///< EnergyLedger::viscous_work, J
     double fracture_energy = 0.0;  ///< EnergyLedger::fracture_energy, J
+    double external_work = 0.0;    ///< EnergyLedger::external_work of the groups' motions, J
+    std::vector<Vec3> reactions;   ///< per group, Simulation::group_reaction now, N
   };
   Sums sums();
 

@@ -57,6 +57,7 @@ void GroupSystem::account(const StepContext& ctx) {
   const double h = ctx.h;
   EnergyLedger& ledger = ctx.ledger;
   const auto& p = ctx.world.particles;
+  if (counted_) v_prev_ = v_;
   reaction_old_.swap(reaction_);
   reactions(groups, p, reaction_);
   for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -70,6 +71,56 @@ void GroupSystem::account(const StepContext& ctx) {
       ledger.external_work += 0.5 * mass_[g] * (v[c] * v[c] - v_[g][c] * v_[g][c]);
     }
     v_[g] = v;
+  }
+  if (counted_) account_exactly(ctx);
+}
+
+void GroupSystem::account_exactly(const StepContext& ctx) {
+  const auto& groups = ctx.world.groups;
+  const auto& p = ctx.world.particles;
+  const double h = ctx.h;
+  exact_.reaction.assign(groups.size(), {});
+  // The start-of-step half: the forces booked at the last account, this step's displacement.
+  for (const auto& o : old_forces_) {
+    const auto g = static_cast<std::size_t>(o[0]);
+    const Vec3 du = u_new_[g] - u_old_[g];
+    for (int c = 0; c < 3; ++c)
+      if (groups[g].dofs & (1u << c)) exact_.external_work.add(-0.5 * o[1 + c] * du[c]);
+  }
+  // The end-of-step half and the members' own kinetic energy change, per counted member (the
+  // plain ledger books the latter with the group's mass: the same up to round-off).
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const Vec3 du = u_new_[g] - u_old_[g];
+    const Vec3 v = du / h;
+    for (auto i : groups[g].members) {
+      if (!counted_[i]) continue;
+      for (int c = 0; c < 3; ++c) {
+        exact_.reaction[g][c].add(-p.force[i][c]);
+        if (!(groups[g].dofs & (1u << c))) continue;
+        exact_.external_work.add(-0.5 * p.force[i][c] * du[c]);
+        exact_.external_work.add(0.5 * p.mass[i] * (v[c] * v[c] - v_prev_[g][c] * v_prev_[g][c]));
+      }
+    }
+  }
+  book_old_forces(ctx.world);
+}
+
+void GroupSystem::book_old_forces(const World& w) {
+  old_forces_.clear();
+  const auto& f = w.particles.force;
+  for (std::size_t g = 0; g < w.groups.size(); ++g)
+    for (auto i : w.groups[g].members)
+      if (counted_[i]) old_forces_.push_back({static_cast<double>(g), f[i][0], f[i][1], f[i][2]});
+}
+
+void GroupSystem::count_exactly(const std::uint8_t* counted, const World& w) {
+  // (on: the forces now are the first step's start, as init_reactions took them; again after a
+  // migration: the forces this domain booked at the last account stay its to finish)
+  const bool starting = counted_ == nullptr && counted != nullptr;
+  counted_ = counted;
+  if (starting) {
+    exact_.reaction.assign(w.groups.size(), {});
+    book_old_forces(w);
   }
 }
 

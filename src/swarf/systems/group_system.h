@@ -9,8 +9,10 @@
 // the door (simulation_door.cpp) reindexes them; the system keeps only per-group values.
 #pragma once
 
+#include <array>
 #include <vector>
 
+#include "swarf/core/exact_sum.h"
 #include "swarf/core/vec3.h"
 #include "swarf/state/motion.h"
 #include "swarf/state/particles.h"
@@ -45,13 +47,32 @@ class GroupSystem {
   /// the internal forces on its particles).
   Vec3 reaction(std::size_t g) const { return reaction_[g]; }
 
+  /// A domain's exact share of the groups' sums (issue 38), beside the plain ones: the work of
+  /// the motions booked per member particle with counted[i] != 0 (the trapezoid's two halves,
+  /// the force at the step's start and at its end, each times the step's displacement, and the
+  /// member's own kinetic energy change), and the reactions now over the counted members.
+  /// Summed over the domains, the same bits for any partition. nullptr: off. The array must be
+  /// set again when the particles change.
+  struct ExactShare {
+    ExactSum external_work;                         ///< J
+    std::vector<std::array<ExactSum, 3>> reaction;  ///< per group, N
+  };
+  void count_exactly(const std::uint8_t* counted, const World& w);
+  const ExactShare& exact_share() const { return exact_; }
+
  private:
   static void reactions(const std::vector<Group>& groups, const Particles& p, std::vector<Vec3>& out);
+  void account_exactly(const StepContext& c);
+  void book_old_forces(const World& w);  // the counted members' forces now, for the next account
 
   std::vector<Vec3> u_old_, u_new_;            // displacements at t and t + h, m
   std::vector<Vec3> reaction_, reaction_old_;  // N
   std::vector<Vec3> v_;                        // velocity of the prescribed components in the last step, m/s
   std::vector<double> mass_;                   // total mass of each group, kg
+  const std::uint8_t* counted_ = nullptr;      // exact share: per particle, counted here (null: off)
+  ExactShare exact_;
+  std::vector<Vec3> v_prev_;                       // exact share: v_ before the account, m/s
+  std::vector<std::array<double, 4>> old_forces_;  // exact share: (group, f) of the counted members at the last account
 };
 
 }  // namespace swarf
