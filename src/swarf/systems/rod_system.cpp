@@ -218,7 +218,9 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
   // The rods that break now, per block: their pairs become contact candidates (and their
   // particles may become free to rotate).
   std::vector<PairList> broken_pairs(nb);
-  std::vector<ExactLedger> exact(counted_ ? nb : 0);  // (per block: any thread count, the same sums)
+  // (per block, zeroed and merged only where a rod yielded or broke: a domain of millions of rods
+  // would otherwise clear a kilobyte per block and step)
+  if (counted_ && block_exact_.size() != nb) block_exact_.resize(nb);
   if (work) {
     work->clear();
     if (block_work_.size() != nb) block_work_.resize(nb);
@@ -236,15 +238,17 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
           if (wb) wb->clear();
           if (!changed[b]) continue;  // no rod of the block yielded or broke
           commit_block(law, A, b * kBlock, std::min(m, (b + 1) * kBlock), a, plastic[b], fracture[b], broke_original[b],
-                       broken_pairs[b], wb, counted_, counted_ ? &exact[b] : nullptr);
+                       broken_pairs[b], wb, counted_, counted_ ? &(block_exact_[b] = ExactLedger{}) : nullptr);
         }
       },
       r.law);
   PairList pairs;
-  for (const ExactLedger& e : exact) {
-    exact_.plastic_work.add(e.plastic_work);
-    exact_.fracture_energy.add(e.fracture_energy);
-  }
+  if (counted_)
+    for (std::size_t b = 0; b < nb; ++b)
+      if (block_changed_[b]) {
+        exact_.plastic_work.add(block_exact_[b].plastic_work);
+        exact_.fracture_energy.add(block_exact_[b].fracture_energy);
+      }
   for (std::size_t b = 0; b < nb; ++b) {
     ledger.plastic_work += plastic[b];
     ledger.fracture_energy += fracture[b];

@@ -103,7 +103,8 @@ class RodSystem {
 
   const std::uint8_t* counted_ = nullptr;  // per particle: its first-end rods count in exact_ (null: off)
   ExactLedger exact_;
-  std::vector<double> rod_viscous_;  // with counted_: per rod, viscous power of the last evaluation, W
+  std::vector<double> rod_viscous_;       // with counted_: per rod, viscous power of the last evaluation, W
+  std::vector<ExactLedger> block_exact_;  // with counted_: commit's scratch per rod block
   std::size_t broken_ = 0;
   std::size_t formed_ = 0;             // state: 'formed_rods'
   std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m; empty: none
