@@ -7,8 +7,11 @@
 // Prints, per rank, the owned and ghost particles and the halo's bytes per step, and on rank 0
 // the wall time per particle-step of the stepping (the setup excluded) and the time in the
 // halo exchange and migrations (the part of a step that waits on the other ranks). Not a test:
-// validation/bench/README.md ("Domains") keeps what it measured. The last line is a hash of
-// every particle's position in id order, the same for any rank count (the serial bits).
+// validation/bench/README.md ("Domains") keeps what it measured. Then a hash of every
+// particle's position in id order, the same for any rank count (the serial bits), the energies
+// (exact sums: the same bits serial and over ranks) and the ledger: over ranks its exact sums
+// (DomainRun::sums, the same bits for any rank count), serial its plain sums (equal to those to
+// round-off).
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -80,6 +83,11 @@ int main(int argc, char** argv) {
       fmt::print("serial: {} particles, {} rods, {} threads: {:.1f} ns per particle-step ({:.3f} s for {} steps)\n", n,
                  model.rods.size(), omp_get_max_threads(), 1e9 * s / (double(n) * steps), s, steps);
       fmt::print("positions hash {:016x}\n", position_hash(model.particles));
+      const EnergyLedger& l = sim.ledger();
+      fmt::print("energies: kinetic {:.17g} J, elastic {:.17g} J (exact sums)\n", sim.kinetic_energy(),
+                 sim.elastic_energy());
+      fmt::print("ledger (plain sums): plastic {:.17g} J, viscous {:.17g} J, fracture {:.17g} J, external {:.17g} J\n",
+                 l.plastic_work, l.viscous_work, l.fracture_energy, l.external_work);
       return 0;
     }
     MpiComm comm;
@@ -104,7 +112,12 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
     Particles all = d.gather_owned();
+    const DomainRun::Sums sums = d.sums();
     if (comm.rank() == 0) {
+      fmt::print("energies: kinetic {:.17g} J, elastic {:.17g} J (exact sums)\n", sums.kinetic_energy,
+                 sums.elastic_energy);
+      fmt::print("ledger (exact sums): plastic {:.17g} J, viscous {:.17g} J, fracture {:.17g} J, external {:.17g} J\n",
+                 sums.plastic_work, sums.viscous_work, sums.fracture_energy, sums.external_work);
       fmt::print("{} ranks x {} threads: {:.1f} ns per particle-step ({:.3f} s for {} steps)\n", comm.size(),
                  omp_get_max_threads(), 1e9 * s / (double(n) * steps), s, steps);
       fmt::print("positions hash {:016x}\n", position_hash(all));
