@@ -206,12 +206,7 @@ void DomainRun::adopt(Local&& l) {
   if (!sim_) {
     local_.particles = std::move(l.particles);
     local_.rods.ends = std::move(l.rods.ends);
-    std::vector<void*> targets;
-    local_.rods.for_each_field([&](const char*, auto& v) { targets.push_back(&v); });
-    std::size_t f = 0;
-    l.rods.for_each_field([&](const char*, auto& v) {
-      *static_cast<std::remove_reference_t<decltype(v)>*>(targets[f++]) = std::move(v);
-    });
+    local_.rods.for_each_field_with(l.rods, [](auto& mine, auto& theirs) { mine = std::move(theirs); });
     local_.rods.build_rows(local_.particles.size());
     for (Group& g : local_.groups) g.members.clear();  // (as Simulation::replace_particles finds them)
     for (std::size_t i = 0; i < local_.particles.size(); ++i)
