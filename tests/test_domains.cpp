@@ -113,6 +113,7 @@ struct DomainReport {
   std::string first_mismatch;
   bool gathered_serial = false;  // DomainRun::gather_owned gave the serial run's particles, bit for bit
   DomainRun::Sums sums;          // DomainRun::sums at the end
+  bool world_serial = false;     // DomainRun::gather_world gave the serial run's particles and rods
 };
 
 // Every per-particle array of a and b holds the same bytes.
@@ -123,6 +124,17 @@ bool same_particles(Particles& a, Particles& b) {
   bool same = true;
   b.for_each_field([&](const char*, auto& v) { same = same && Comm::to_bytes(v) == fa[f++]; });
   return same;
+}
+
+// The gathered World against the serial run's: every particle field, the rod ends and every
+// per-rod field, byte for byte, and the groups' members.
+bool same_world(World& a, const World& b_const) {
+  World& b = const_cast<World&>(b_const);
+  if (!same_particles(a.particles, b.particles) || a.rods.ends != b.rods.ends) return false;
+  bool same = true;
+  a.rods.for_each_field_with(b.rods, [&](auto& x, auto& y) { same = same && Comm::to_bytes(x) == Comm::to_bytes(y); });
+  for (std::size_t g = 0; g < a.groups.size() && same; ++g) same = a.groups[g].members == b.groups[g].members;
+  return same && a.groups.size() == b.groups.size();
 }
 
 // Compares every owned particle's record and every local rod's with the serial run's.
@@ -183,6 +195,8 @@ std::vector<DomainReport> run_domains(int n, const DomainSettings& ds, int threa
     Particles all = d.gather_owned();
     reports[comm.rank()].gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
     reports[comm.rank()].sums = d.sums();
+    World w = d.gather_world();
+    reports[comm.rank()].world_serial = same_world(w, serial().world);
   });
   return reports;
 }
@@ -210,6 +224,7 @@ std::int64_t expect_serial_bits(const std::vector<DomainReport>& reports, bool a
     EXPECT_EQ(d.particle_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
     EXPECT_EQ(d.rod_mismatches, 0u) << "domain " << r << ": " << d.first_mismatch;
     EXPECT_TRUE(d.gathered_serial) << "domain " << r << ": the gathered particles are not the serial run's";
+    EXPECT_TRUE(d.world_serial) << "domain " << r << ": the gathered World is not the serial run's";
     // The reduced sums: the serial run's bits (exact sums, each term counted by one owner).
     EXPECT_EQ(std::bit_cast<std::uint64_t>(d.sums.kinetic_energy), std::bit_cast<std::uint64_t>(serial().kinetic))
         << "domain " << r << ": kinetic energy " << d.sums.kinetic_energy << " J against " << serial().kinetic;
@@ -394,6 +409,8 @@ TEST(Domains, OneDomainIsTheSerialRun) {
   Particles all = d.gather_owned();
   rep.gathered_serial = same_particles(all, const_cast<Particles&>(serial().world.particles));
   rep.sums = d.sums();
+  World w = d.gather_world();
+  rep.world_serial = same_world(w, serial().world);
   expect_serial_bits({rep});
 }
 

@@ -325,6 +325,52 @@ DomainRun::Sums DomainRun::sums() {
   return s;
 }
 
+World DomainRun::gather_world() {
+  World out;
+  out.rods.law = local_.rods.law;
+  out.rods.area = local_.rods.area;
+  out.rods.formation = local_.rods.formation;
+  out.gravity = local_.gravity;
+  out.periodic = local_.periodic;
+  out.contact = local_.contact;
+  out.heat = local_.heat;
+  out.groups = local_.groups;
+  out.particles = gather_owned();
+  // Each rod once, from the owner of its first end, with its key and its ends' ids.
+  Rods& r = local_.rods;
+  const Particles& p = local_.particles;
+  Bytes mine;
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if (owned_[r.ends[k][0]]) pack_rod(mine, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
+  RodPool pool;
+  for (const Bytes& b : comm_.all_gather(std::move(mine)))
+    for (const std::byte* at = b.data(); at != b.data() + b.size();) at += unpack_rod(at, pool);
+  const std::size_t m = pool.key.size();
+  std::vector<std::size_t> order(m);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pool.key[a] < pool.key[b]; });
+  const std::vector<std::int64_t>& ids = out.particles.id;  // (ascending: gather_owned's order)
+  const auto index = [&](std::int64_t id) {
+    const auto it = std::lower_bound(ids.begin(), ids.end(), id);
+    if (it == ids.end() || *it != id)
+      throw std::logic_error(fmt::format("domains: a rod's end, particle id {}, is owned by no rank", id));
+    return static_cast<std::int32_t>(it - ids.begin());
+  };
+  out.rods.ends.resize(m);
+  for (std::size_t q = 0; q < m; ++q)
+    out.rods.ends[q] = {index(pool.end_id[order[q]][0]), index(pool.end_id[order[q]][1])};
+  out.rods.for_each_field_with(pool.rods, [&](auto& mine_field, auto& theirs) {
+    mine_field.resize(m);
+    for (std::size_t q = 0; q < m; ++q) mine_field[q] = theirs[order[q]];
+  });
+  out.rods.build_rows(out.particles.size());
+  for (Group& g : out.groups) g.members.clear();
+  for (std::size_t i = 0; i < out.particles.size(); ++i)
+    if (const std::int32_t g = out.particles.group[i]; g >= 0)
+      out.groups[g].members.push_back(static_cast<std::int32_t>(i));
+  return out;
+}
+
 std::vector<std::int64_t> DomainRun::weights() const {
   const Rods& r = local_.rods;
   std::vector<std::int64_t> w(local_.particles.size(), 1);

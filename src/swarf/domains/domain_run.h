@@ -84,6 +84,11 @@ class DomainRun {
   /// Collective: every rank's owned particles, in id order, on every rank: the serial run's
   /// particles, bit for bit. O(N) on every rank: for outputs and checks, not for every step.
   Particles gather_owned();
+  /// Collective: the whole World as the serial run has it, on every rank: the particles in id
+  /// order (gather_owned), every rod once in the global rod order with its ends as indices into
+  /// them, the groups' members from the particles' group indices, the configuration (law, area,
+  /// motions, ...) the run's. What a checkpoint or an output of the run holds; O(N) per rank.
+  World gather_world();
 
   /// The run's sums over all domains, each term counted once (a particle by its owner, a rod by
   /// the owner of its first end) and added exactly (core/exact_sum.h). Collective. The energies
