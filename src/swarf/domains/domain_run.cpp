@@ -22,6 +22,19 @@ struct DomainRun::Local {
 
 namespace {
 
+// The World's configuration (law, area, gravity, ...) without its particles and rods; the
+// groups with their motions (their members are rebuilt from the particles' group indices).
+void copy_configuration(const World& from, World& to) {
+  to.rods.law = from.rods.law;
+  to.rods.area = from.rods.area;
+  to.rods.formation = from.rods.formation;
+  to.gravity = from.gravity;
+  to.periodic = from.periodic;
+  to.contact = from.contact;
+  to.heat = from.heat;
+  to.groups = from.groups;
+}
+
 // Buffers: a count, then that many records.
 void put_count(Bytes& out, std::uint64_t n) {
   const std::size_t at = out.size();
@@ -84,15 +97,7 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   if (!ds_.fixed_cuts.empty() && static_cast<int>(ds_.fixed_cuts.size()) != size - 1)
     throw InputError(
         fmt::format("domains: {} cut planes for {} ranks (one fewer than the ranks)", ds_.fixed_cuts.size(), size));
-  // The World's configuration (law, area, gravity, ...) with no particles and no rods yet.
-  local_.rods.law = global.rods.law;
-  local_.rods.area = global.rods.area;
-  local_.rods.formation = global.rods.formation;
-  local_.gravity = global.gravity;
-  local_.periodic = global.periodic;
-  local_.contact = global.contact;
-  local_.heat = global.heat;
-  local_.groups = global.groups;  // (the motions; the members follow the local particles in adopt)
+  copy_configuration(global, local_);  // (no particles and no rods yet: adopt brings them)
   local_.particles.next_id = global.particles.next_id;
   Particles& gp = const_cast<Particles&>(global.particles);  // (records are read through for_each_field)
   Rods& gr = const_cast<Rods&>(global.rods);
@@ -327,14 +332,7 @@ DomainRun::Sums DomainRun::sums() {
 
 World DomainRun::gather_world() {
   World out;
-  out.rods.law = local_.rods.law;
-  out.rods.area = local_.rods.area;
-  out.rods.formation = local_.rods.formation;
-  out.gravity = local_.gravity;
-  out.periodic = local_.periodic;
-  out.contact = local_.contact;
-  out.heat = local_.heat;
-  out.groups = local_.groups;
+  copy_configuration(local_, out);
   out.particles = gather_owned();
   // Each rod once, from the owner of its first end, with its key and its ends' ids.
   Rods& r = local_.rods;
