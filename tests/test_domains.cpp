@@ -401,6 +401,61 @@ TEST(Domains, APulledBarWithItsGripsOnThreeDomainsGivesTheSerialBits) {
               s1.external_work, sim.ledger().external_work, kMid, s1_mid.reactions[0][0], pull_mid[0]);
 }
 
+// A run over 2 domains stopped after 700 steps, its state gathered as a checkpoint holds it (a
+// serial Simulation: the World, the step state, the reduced sums), and continued over 3 domains
+// and serially: the particles of both are the uninterrupted serial run's, byte for byte. The
+// pulled bar with damping: its grips' motion reads the time, and its viscous forces the
+// half-step velocities, so a restart that lost the time or recomputed the accelerations fails.
+TEST(Domains, ARunGoesOnOverAnotherRankCountFromItsGatheredState) {
+  Model m = build_model(parse_case(test::pulled_bar_case({.cells = {12, 3, 3},
+                                                          .velocity = 40.0,
+                                                          .damping_ratio = 0.05,
+                                                          .integrator = "scheme = \"verlet\"\nend_time = 1"}),
+                                   "bar", {}));
+  const World initial = static_cast<const World&>(m);
+  World serial_world = initial;
+  Simulation sim(serial_world, m.step);
+  constexpr int kFirst = 700;
+  for (int k = 0; k < kSteps; ++k) sim.step();
+  // 2 domains, then the gathered state: each rank gets the whole of it.
+  std::vector<World> storage(2);
+  std::vector<std::unique_ptr<Simulation>> stopped(2);
+  run_loopback(2, [&](Comm& comm) {
+    omp_set_num_threads(1);
+    DomainSettings ds;
+    ds.rebalance_every = 25;
+    DomainRun d(comm, initial, m.step, ds);
+    for (int k = 0; k < kFirst; ++k) d.step();
+    stopped[comm.rank()] = d.gather_simulation(storage[comm.rank()]);
+  });
+  EXPECT_EQ(stopped[0]->time(), stopped[1]->time());
+  EXPECT_EQ(stopped[0]->steps(), kFirst);
+  // On 3 domains from it.
+  std::vector<int> same(3, 0);
+  std::vector<DomainRun::Sums> sums(3);
+  run_loopback(3, [&](Comm& comm) {
+    omp_set_num_threads(1);
+    DomainSettings ds;
+    ds.rebalance_every = 25;
+    DomainRun d(comm, *stopped[0], ds);
+    for (int k = kFirst; k < kSteps; ++k) d.step();
+    Particles all = d.gather_owned();
+    same[comm.rank()] = same_particles(all, serial_world.particles);
+    sums[comm.rank()] = d.sums();
+    EXPECT_EQ(d.simulation().steps(), kSteps);
+  });
+  EXPECT_EQ(same, std::vector<int>(3, 1)) << "3 domains from the state gathered on 2";
+  for (int r = 1; r < 3; ++r)
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(sums[r].external_work), std::bit_cast<std::uint64_t>(sums[0].external_work));
+  EXPECT_NEAR(sums[0].external_work, sim.ledger().external_work, 1e-9 * sim.ledger().external_work);
+  EXPECT_NEAR(sums[0].viscous_work, sim.ledger().viscous_work, 1e-9 * sim.ledger().viscous_work);
+  EXPECT_GT(sim.ledger().viscous_work, 0.0);
+  // Serially from it (rank 1's copy): a checkpoint of the domains read by a serial run.
+  for (int k = kFirst; k < kSteps; ++k) stopped[1]->step();
+  EXPECT_TRUE(same_particles(storage[1].particles, serial_world.particles)) << "serially from the gathered state";
+  EXPECT_NEAR(stopped[1]->ledger().external_work, sim.ledger().external_work, 1e-9 * sim.ledger().external_work);
+}
+
 TEST(Domains, OneDomainIsTheSerialRun) {
   SerialComm comm;
   DomainRun d(comm, scene().world, scene().step);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "swarf/core/errors.h"
+#include "swarf/domains/step_state.h"
 
 namespace swarf {
 
@@ -143,6 +144,32 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
     }
   adopt(assemble(pool, std::vector<std::uint8_t>(pool.size(), 1), rods, owned_ids));
   exchange_halo();  // (the Simulation's first evaluation gave the ghosts partial forces)
+}
+
+DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds)
+    : DomainRun(comm, start.world(), start.settings(), std::move(ds)) {
+  // The local Simulation's construction evaluated the forces of the state as it is: right for a
+  // run's first step, not for one that goes on (an acceleration is the last step's, made with
+  // its half-step velocities). Every local particle takes its record from 'start' again.
+  Particles& gp = const_cast<Particles&>(start.world().particles);
+  Particles& p = local_.particles;
+  Bytes buf;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto it = std::lower_bound(gp.id.begin(), gp.id.end(), p.id[i]);
+    buf.clear();
+    pack_particle(buf, gp, static_cast<std::size_t>(it - gp.id.begin()));
+    unpack_particle(buf.data(), p, i);
+  }
+  copy_step_state(start, *sim_);
+  sim_->count_exactly(nullptr);  // (the grips' exact share starts from the forces as they are now)
+  sim_->count_exactly(owned_.data());
+  if (comm_.rank() == 0) {
+    const EnergyLedger& l = start.ledger();
+    base_.plastic_work = l.plastic_work;
+    base_.viscous_work = l.viscous_work;
+    base_.fracture_energy = l.fracture_energy;
+    base_.external_work = l.external_work;
+  }
 }
 
 std::size_t DomainRun::owned_count() const {
@@ -312,6 +339,11 @@ DomainRun::Sums DomainRun::sums() {
                                  x.viscous_work,
                                  x.fracture_energy,
                                  gx.external_work};
+  // (what the run booked before it started here, on rank 0)
+  parts[2].add(base_.plastic_work);
+  parts[3].add(base_.viscous_work);
+  parts[4].add(base_.fracture_energy);
+  parts[5].add(base_.external_work);
   const std::size_t ng = local_.groups.size();
   for (std::size_t g = 0; g < ng; ++g)
     for (int c = 0; c < 3; ++c) parts.push_back(g < gx.reaction.size() ? gx.reaction[g][c] : ExactSum{});
@@ -366,6 +398,24 @@ World DomainRun::gather_world() {
   for (std::size_t i = 0; i < out.particles.size(); ++i)
     if (const std::int32_t g = out.particles.group[i]; g >= 0)
       out.groups[g].members.push_back(static_cast<std::int32_t>(i));
+  return out;
+}
+
+std::unique_ptr<Simulation> DomainRun::gather_simulation(World& storage) {
+  const Sums s = sums();
+  storage = gather_world();
+  World records = storage;  // (the Simulation's construction evaluates forces over 'storage')
+  auto out = std::make_unique<Simulation>(storage, settings_);
+  out->replace_particles(std::move(records.particles), std::move(records.rods));
+  MemoryArchive a = save_step_state(*sim_);
+  // The run's sums where this rank's Simulation has its own share.
+  a.set("ledger/plastic_work", s.plastic_work);
+  a.set("ledger/viscous_work", s.viscous_work);
+  a.set("ledger/fracture_energy", s.fracture_energy);
+  a.set("ledger/external_work", s.external_work);
+  a.set("groups/reaction", s.reactions);
+  a.set("broken_rods", static_cast<std::int64_t>(out->broken_rods()));
+  load_step_state(a, *out);
   return out;
 }
 

@@ -75,6 +75,12 @@ class DomainRun {
   /// the serial run has them), stepped with 'settings'. Collective. Throws InputError for a
   /// World or settings the domains do not support yet (check_supported).
   DomainRun(Comm& comm, const World& global, const StepSettings& settings, DomainSettings ds = {});
+  /// This rank's domain of a run that goes on from where 'start' is (a serial Simulation, e.g.
+  /// loaded from a checkpoint, or built over gather_world() with another run's step state): its
+  /// World partitioned, each particle's and rod's record as it is there (not recomputed), and
+  /// its step state (time, counters, the systems' own state; step_state.h). The sums go on
+  /// from its ledger (rounded once: the checkpoint's doubles). Collective.
+  DomainRun(Comm& comm, const Simulation& start, DomainSettings ds = {});
   DomainRun(const DomainRun&) = delete;
   DomainRun& operator=(const DomainRun&) = delete;
 
@@ -89,6 +95,11 @@ class DomainRun {
   /// them, the groups' members from the particles' group indices, the configuration (law, area,
   /// motions, ...) the run's. What a checkpoint or an output of the run holds; O(N) per rank.
   World gather_world();
+  /// Collective: a serial Simulation over gather_world() (held in 'storage', which must outlive
+  /// it) at this run's step state, with the run's reduced sums as its ledger, reactions and
+  /// broken rods: what a checkpoint of the run holds, readable by a run on any rank count
+  /// (DomainRun(comm, start)) or by a serial one. The exact sums are rounded into it once.
+  std::unique_ptr<Simulation> gather_simulation(World& storage);
 
   /// The run's sums over all domains, each term counted once (a particle by its owner, a rod by
   /// the owner of its first end) and added exactly (core/exact_sum.h). Collective. The energies
@@ -152,6 +163,7 @@ class DomainRun {
   std::vector<std::vector<std::int32_t>> send_, recv_;  // per rank: local indices, in the halo's order
   std::int64_t arrivals_ = 0, migrations_ = 0, steps_ = 0;
   double exchange_seconds_ = 0.0;
+  Sums base_;  // what the run booked before it started here (rank 0's share; zeros elsewhere)
   std::size_t halo_bytes_ = 0;
 };
 
