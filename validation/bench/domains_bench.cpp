@@ -3,6 +3,8 @@
 //
 //   swarf_domains_bench CASE STEPS [--set key=value ...]            one process: the serial run
 //   mpirun -n N swarf_domains_bench CASE STEPS [--set ...] [--rebalance-every K] [--check-every S]   N domains
+//   ... [--checkpoint-at K FILE]   after step K the gathered state as a checkpoint (HDF5, rank 0 writes)
+//   ... [--restart FILE]           go on from a checkpoint to step STEPS, on any rank count (serially: a plain run)
 //
 // Prints, per rank, the owned and ghost particles and the halo's bytes per step, and on rank 0
 // the wall time per particle-step of the stepping (the setup excluded) and the time in the
@@ -22,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checkpoint.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "study/mpi_comm.h"
@@ -54,16 +57,24 @@ int main(int argc, char** argv) {
   if (argc < 3) {
     fmt::print(stderr,
                "usage: [mpirun -n N] swarf_domains_bench CASE STEPS [--set key=value ...] [--rebalance-every K] "
-               "[--check-every S]\n");
+               "[--check-every S] [--checkpoint-at K FILE] [--restart FILE]\n");
     return 2;
   }
   MpiSession session;
   try {
     std::vector<std::string> overrides;
     DomainSettings ds;
+    int checkpoint_at = -1;
+    std::string checkpoint, restart;
     for (int a = 3; a + 1 < argc; a += 2) {
       const std::string opt = argv[a];
-      if (opt == "--set")
+      if (opt == "--checkpoint-at" && a + 2 < argc) {
+        checkpoint_at = std::stoi(argv[a + 1]);
+        checkpoint = argv[a + 2];
+        ++a;
+      } else if (opt == "--restart")
+        restart = argv[a + 1];
+      else if (opt == "--set")
         overrides.push_back(argv[a + 1]);
       else if (opt == "--rebalance-every")
         ds.rebalance_every = std::stoi(argv[a + 1]);
@@ -73,9 +84,23 @@ int main(int argc, char** argv) {
         throw InputError("unknown option '" + opt + "'");
     }
     const int steps = std::stoi(argv[2]);
-    Model model = build_model(load_case(argv[1], overrides));
+    CaseSettings cs = load_case(argv[1], overrides);
+    Model model = build_model(cs);
     const std::size_t n = model.particles.size();
-    if (session.size() == 1) {
+    // A checkpoint written from any rank count (the gathered state), read by any rank count.
+    std::unique_ptr<Simulation> start;
+    if (!restart.empty()) {
+      start = std::make_unique<Simulation>(model, model.step);
+      RunRecord rec;
+      read_checkpoint(restart, *start, rec, [](StateArchive&) {});
+      fmt::print("rank {}: restarted from {} at step {}\n", session.rank(), restart, start->steps());
+    }
+    if (session.size() == 1 && start) {  // (serially from a checkpoint: the plain run goes on)
+      while (start->steps() < steps) start->step();
+      fmt::print("positions hash {:016x}\n", position_hash(model.particles));
+      return 0;
+    }
+    if (session.size() == 1 && checkpoint.empty()) {
       Simulation sim(model, model.step);
       const auto t0 = Clock::now();
       for (int k = 0; k < steps; ++k) sim.step();
@@ -91,10 +116,23 @@ int main(int argc, char** argv) {
       return 0;
     }
     MpiComm comm;
-    DomainRun d(comm, model, model.step, ds);
+    DomainRun d = start ? DomainRun(comm, *start, ds) : DomainRun(comm, model, model.step, ds);
     comm.barrier();
     const auto t0 = Clock::now();
-    for (int k = 0; k < steps; ++k) d.step();
+    while (d.simulation().steps() < steps) {
+      d.step();
+      if (d.simulation().steps() == checkpoint_at) {
+        World storage;
+        const std::unique_ptr<Simulation> g = d.gather_simulation(storage);
+        if (comm.rank() == 0) {
+          CheckpointCase c{cs.text, cs.source, cs.directory, cs.overrides, g->time(), double(g->steps())};
+          RunRecord rec;
+          rec.columns = 1;  // (no series here: a record of no rows)
+          write_checkpoint(checkpoint, *g, rec, c, [](StateArchive&) {});
+          fmt::print("checkpoint {} written at step {}\n", checkpoint, g->steps());
+        }
+      }
+    }
     comm.barrier();
     const double s = std::chrono::duration<double>(Clock::now() - t0).count();
     const double in_halo = d.exchange_seconds();
