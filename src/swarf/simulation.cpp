@@ -146,29 +146,28 @@ double Simulation::ghost_reach() const {
 
 double Simulation::kinetic_energy() const { return particle_kinetic_energy().value() + body_kinetic_energy(); }
 
+namespace {
+// Particle i's rotational kinetic energy, J.
+double rotational_term(const Particles& p, std::size_t i) {
+  const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
+  return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
+}
+}  // namespace
+
 ExactSum Simulation::particle_kinetic_energy(const std::uint8_t* counted) const {
   const auto& p = m_.particles;
   ExactSum e = exact_sum(p.size(), [&](std::size_t i) {
     return counted && !counted[i] ? 0.0 : 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
   });
   if (ms_.rotations)
-    e.add(exact_sum(p.size(), [&](std::size_t i) {
-      if (counted && !counted[i]) return 0.0;
-      const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
-      return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
-    }));
+    e.add(exact_sum(p.size(), [&](std::size_t i) { return counted && !counted[i] ? 0.0 : rotational_term(p, i); }));
   return e;
 }
 
 double Simulation::rotational_energy() const {
   if (!ms_.rotations) return 0.0;
   const auto& p = m_.particles;
-  return exact_sum(p.size(),
-                   [&](std::size_t i) {
-                     const Vec3 wb = to_body(p.orientation[i], p.omega[i]);
-                     return 0.5 * wb.dot(p.inertia[i].cwiseProduct(wb));
-                   })
-      .value();
+  return exact_sum(p.size(), [&](std::size_t i) { return rotational_term(p, i); }).value();
 }
 
 double Simulation::elastic_energy() const { return sys_.rods.elastic_energy(m_); }

@@ -346,7 +346,7 @@ DomainRun::Sums DomainRun::sums() {
   parts[5].add(base_.external_work);
   const std::size_t ng = local_.groups.size();
   for (std::size_t g = 0; g < ng; ++g)
-    for (int c = 0; c < 3; ++c) parts.push_back(g < gx.reaction.size() ? gx.reaction[g][c] : ExactSum{});
+    for (int c = 0; c < 3; ++c) parts.push_back(gx.reaction[g][c]);  // (sized when counting began)
   const std::vector<ExactSum> total = comm_.sum_exact(parts);
   Sums s;
   s.kinetic_energy = total[0].value();

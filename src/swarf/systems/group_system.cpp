@@ -57,7 +57,7 @@ void GroupSystem::account(const StepContext& ctx) {
   const double h = ctx.h;
   EnergyLedger& ledger = ctx.ledger;
   const auto& p = ctx.world.particles;
-  if (counted_) v_prev_ = v_;
+  if (counted_) account_exactly(ctx);  // (first: v_ is still the last step's velocity)
   reaction_old_.swap(reaction_);
   reactions(groups, p, reaction_);
   for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -72,7 +72,6 @@ void GroupSystem::account(const StepContext& ctx) {
     }
     v_[g] = v;
   }
-  if (counted_) account_exactly(ctx);
 }
 
 void GroupSystem::account_exactly(const StepContext& ctx) {
@@ -81,11 +80,10 @@ void GroupSystem::account_exactly(const StepContext& ctx) {
   const double h = ctx.h;
   exact_.reaction.assign(groups.size(), {});
   // The start-of-step half: the forces booked at the last account, this step's displacement.
-  for (const auto& o : old_forces_) {
-    const auto g = static_cast<std::size_t>(o[0]);
-    const Vec3 du = u_new_[g] - u_old_[g];
+  for (const OldForce& o : old_forces_) {
+    const Vec3 du = u_new_[o.group] - u_old_[o.group];
     for (int c = 0; c < 3; ++c)
-      if (groups[g].dofs & (1u << c)) exact_.external_work.add(-0.5 * o[1 + c] * du[c]);
+      if (groups[o.group].dofs & (1u << c)) exact_.external_work.add(-0.5 * o.force[c] * du[c]);
   }
   // The end-of-step half and the members' own kinetic energy change, per counted member (the
   // plain ledger books the latter with the group's mass: the same up to round-off).
@@ -98,7 +96,7 @@ void GroupSystem::account_exactly(const StepContext& ctx) {
         exact_.reaction[g][c].add(-p.force[i][c]);
         if (!(groups[g].dofs & (1u << c))) continue;
         exact_.external_work.add(-0.5 * p.force[i][c] * du[c]);
-        exact_.external_work.add(0.5 * p.mass[i] * (v[c] * v[c] - v_prev_[g][c] * v_prev_[g][c]));
+        exact_.external_work.add(0.5 * p.mass[i] * (v[c] * v[c] - v_[g][c] * v_[g][c]));
       }
     }
   }
@@ -110,7 +108,7 @@ void GroupSystem::book_old_forces(const World& w) {
   const auto& f = w.particles.force;
   for (std::size_t g = 0; g < w.groups.size(); ++g)
     for (auto i : w.groups[g].members)
-      if (counted_[i]) old_forces_.push_back({static_cast<double>(g), f[i][0], f[i][1], f[i][2]});
+      if (counted_[i]) old_forces_.push_back({static_cast<std::int32_t>(g), f[i]});
 }
 
 void GroupSystem::count_exactly(const std::uint8_t* counted, const World& w) {

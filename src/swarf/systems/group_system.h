@@ -71,8 +71,11 @@ class GroupSystem {
   std::vector<double> mass_;                   // total mass of each group, kg
   const std::uint8_t* counted_ = nullptr;      // exact share: per particle, counted here (null: off)
   ExactShare exact_;
-  std::vector<Vec3> v_prev_;                       // exact share: v_ before the account, m/s
-  std::vector<std::array<double, 4>> old_forces_;  // exact share: (group, f) of the counted members at the last account
+  struct OldForce {
+    std::int32_t group;
+    Vec3 force;  // N
+  };
+  std::vector<OldForce> old_forces_;  // exact share: the counted members' forces at the last account
 };
 
 }  // namespace swarf

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/parallel.h"
@@ -91,7 +92,11 @@ void RodSystem::account(const StepContext& c) {
   double visc = 0.0;
   for (double v : block_viscous_) visc += v;
   c.ledger.viscous_work += visc * c.h;
-  if (counted_ && rod_viscous_.size() == c.world.rods.size()) {
+  if (counted_) {
+    // (the rods of the last evaluation, index for index: bond formation, which appends and
+    // removes rods between the two, is refused where the exact ledger is on, the domains)
+    if (rod_viscous_.size() != c.world.rods.size())
+      throw std::logic_error("RodSystem::account: the rods changed since their evaluation under count_exactly");
     const auto& ends = c.world.rods.ends;
     for (std::size_t k = 0; k < rod_viscous_.size(); ++k)
       if (rod_viscous_[k] != 0.0 && counted_[ends[k][0]]) exact_.viscous_work.add(rod_viscous_[k] * c.h);

@@ -20,6 +20,15 @@ def num(d, key):
     return float(v) if isinstance(v, (int, float)) else float("nan")
 
 
+def finish_figure(fig, dest, stem, title):
+    """Titles, lays out and writes DEST/STEM.png; names it beside DEST/STEM.csv."""
+    fig.suptitle(title)
+    fig.tight_layout()
+    png = os.path.join(dest, stem + ".png")
+    fig.savefig(png, dpi=110)
+    print("wrote %s and %s" % (os.path.join(dest, stem + ".csv"), png))
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__, file=sys.stderr)
@@ -90,10 +99,7 @@ def main():
     a2.set_ylabel("force per width (kN/m)")
     a2.legend()
     a2.grid(alpha=0.3)
-    fig.suptitle("Oblique cut of C45, h = 0.2 mm, 600 m/min, normal rake 10 deg")
-    fig.tight_layout()
-    fig.savefig(os.path.join(dest, "oblique.png"), dpi=110)
-    print("wrote %s and %s" % (os.path.join(dest, "oblique.csv"), os.path.join(dest, "oblique.png")))
+    finish_figure(fig, dest, "oblique", "Oblique cut of C45, h = 0.2 mm, 600 m/min, normal rake 10 deg")
     return 0
 
 

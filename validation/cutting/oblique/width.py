@@ -14,7 +14,7 @@ import json
 import os
 import sys
 
-from compare import num  # (this folder's: a summary's number, NaN when absent)
+from compare import finish_figure, num  # (this folder's: a summary's number, NaN when absent; the figure's end)
 
 
 def load(path):
@@ -102,10 +102,7 @@ def main():
         ax.set_ylabel("%s/w (kN/m)" % f)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    fig.suptitle("C45, h = 0.2 mm, 600 m/min, rake 10 deg, 5 layers: free sides against plane strain")
-    fig.tight_layout()
-    fig.savefig(os.path.join(dest, "width.png"), dpi=110)
-    print("wrote %s and %s" % (os.path.join(dest, "width.csv"), os.path.join(dest, "width.png")))
+    finish_figure(fig, dest, "width", "C45, h = 0.2 mm, 600 m/min, rake 10 deg, 5 layers: free sides against plane strain")
     return 0
 
 
