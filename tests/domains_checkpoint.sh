@@ -3,13 +3,8 @@
 # DomainRun::gather_simulation) and read by a serial run and by a run on 3 ranks: all three end
 # with the positions of the uninterrupted serial run, bit for bit (the bench's position hash).
 # Usage: domains_checkpoint.sh SWARF_DOMAINS_BENCH CASE   (exit 77: mpirun missing, skipped)
-set -euo pipefail
 bench=$1 case=$2
-command -v mpirun >/dev/null || { echo "mpirun not installed: skipped"; exit 77; }
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
-MPI="mpirun --allow-run-as-root --oversubscribe --bind-to none"
+source "$(dirname "$0")/mpi_prelude.sh"
 hash_of() { grep -o 'positions hash [0-9a-f]*' | awk '{print $3}'; }
 whole=$("$bench" "$case" 600 | hash_of)
 two=$($MPI -n 2 "$bench" "$case" 600 --checkpoint-at 250 "$dir/c.h5" | hash_of)

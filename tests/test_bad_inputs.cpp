@@ -253,20 +253,6 @@ TEST(BadInput, ThreadCountsOutOfRangeAreRefused) {
 
 // Started by mpirun on two ranks (its environment stands in for it: no launcher needed), 'swarf
 // run' refuses before writing anything: each rank would run the whole case into one directory.
-TEST(BadInput, OneRunOverSeveralMpiRanksIsRefusedUntilDomainsExist) {
-  TempDir dir("bad_ranks");
-  write_file(dir / "bar.toml", kBar);
-  const auto r = run_command(fmt::format("OMPI_COMM_WORLD_SIZE=2 timeout 120 {} run {} --out {}", SWARF_BINARY,
-                                         dir / "bar.toml", dir / "out"));
-  expect_refused(r, "mpirun with 2 ranks");
-  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << r.output;
-  // One rank is a plain run.
-  EXPECT_EQ(run_command(fmt::format("OMPI_COMM_WORLD_SIZE=1 timeout 120 {} run {} --out {} --check", SWARF_BINARY,
-                                    dir / "bar.toml", dir / "out1"))
-                .exit_code,
-            0);
-}
-
 TEST(BadInput, ObjNumbersWithFractionsJunkOrOverflowAreRefused) {
   TempDir dir("bad_obj");
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";

@@ -59,7 +59,8 @@ nlohmann::json provenance_json(const RunProvenance& run) {
           {"compile_flags", b.compile_flags},
           {"started_utc", run.started_utc},
           {"host", run.host},
-          {"threads", run.threads}};
+          {"threads", run.threads},
+          {"ranks", run.ranks}};
 }
 
 void write_provenance_attributes(H5File& f, const RunProvenance& run) {
@@ -73,6 +74,7 @@ void write_provenance_attributes(H5File& f, const RunProvenance& run) {
   f.write_attribute("started_utc", run.started_utc);
   f.write_attribute("host", run.host);
   f.write_attribute("threads", static_cast<double>(run.threads));
+  f.write_attribute("ranks", static_cast<double>(run.ranks));
 }
 
 }  // namespace swarf

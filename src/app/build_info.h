@@ -30,7 +30,8 @@ std::string version_text();
 struct RunProvenance {
   std::string started_utc;  ///< "2026-12-02T17:05:09Z"
   std::string host;
-  int threads = 1;
+  int threads = 1;  ///< OpenMP threads (per rank)
+  int ranks = 1;    ///< MPI ranks of the run (domain decomposition)
 };
 
 /// The run's provenance now (its start time: call it when the run starts).

@@ -8,11 +8,13 @@
 #include <sstream>
 
 #include "app/bench.h"
+#include "app/interrupt.h"
 #include "app/material_lab.h"
 #include "app/post.h"
 #include "app/rod_driver.h"
 #include "app/run.h"
 #include "app/threads.h"
+#include "io/console.h"
 #include "io/mesh_file.h"
 #include "io/vtk_output.h"
 #include "lattice_gen/fcc_lattice.h"
@@ -21,6 +23,7 @@
 #include "setup/case_config.h"
 #include "setup/case_keys_doc.h"
 #include "setup/rod_laws/rod_laws.h"
+#include "study/mpi_comm.h"
 #include "study/report.h"
 #include "study/sweep.h"
 #include "study/sweep_mpi.h"
@@ -144,7 +147,9 @@ struct MaterialCommand final : Command {
 struct RunCommand final : Command {
   RunOptions ro;
   explicit RunCommand(CLI::App& app) {
-    sub = app.add_subcommand("run", "Run a case (no case file: the built-in default case)");
+    sub = app.add_subcommand("run",
+                             "Run a case (no case file: the built-in default case); under mpirun -n N one run over N "
+                             "ranks (rods and grips; docs/cluster.md)");
     sub->add_option("case", ro.case_path, "Case file (TOML); see docs/case-reference.md");
     sub->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
     sub->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")
@@ -166,15 +171,34 @@ struct RunCommand final : Command {
   }
   int run() override {
     if (sub->count("--threads")) check_thread_count(ro.threads, "--threads");
-    // One run over several ranks needs domain decomposition (issue 38), not built yet: without
-    // this, every rank would run the whole case into the same directory.
-    if (const int ranks = MpiSession::launched_size(); ranks > 1)
-      throw InputError(fmt::format(
-          "swarf run under mpirun with {} ranks: one run over several ranks (domain decomposition) is not "
-          "built yet; run it on one rank with threads (--threads N, or OMP_NUM_THREADS), or spread the cases "
-          "of a study over the ranks with 'mpirun -n {} swarf sweep STUDY'",
-          ranks, ranks));
+    // Under mpirun: one run over the ranks by domain decomposition (run_ranks.h).
+    if (MpiSession::launched()) return run_on_ranks();
     run_case(ro);
+    return 0;
+  }
+
+ private:
+  // An error on one rank stops them all (the others would wait for it in the next collective):
+  // it is printed by the rank that met it, with its rank, and the job ends with main()'s exit
+  // code for it. Errors of the case itself arise on every rank alike (each builds it), and an
+  // interruption is agreed on by all ranks after the same step: both end normally.
+  int run_on_ranks() {
+    MpiSession session;
+    MpiComm comm;
+    ro.comm = &comm;
+    try {
+      run_case(ro);
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::exception& e) {
+      if (session.size() == 1) throw;
+      const auto* input = dynamic_cast<const InputError*>(&e);
+      const auto* sim = dynamic_cast<const SimulationError*>(&e);
+      eprint("swarf: {} (rank {} of {}): {}\n", sim ? "simulation stopped" : "error", session.rank(), session.size(),
+             e.what());
+      std::fflush(stderr);
+      session.abort(input ? 2 : sim ? 3 : 1);
+    }
     return 0;
   }
 };

@@ -17,12 +17,14 @@
 #include "app/build_info.h"
 #include "app/interrupt.h"
 #include "app/observers/case_observers.h"
+#include "app/observers/exact_ledger.h"
 #include "app/observers/observer_set.h"
 #include "app/plots.h"
 #include "app/progress.h"
 #include "app/run_directory.h"
 #include "app/run_limits.h"
 #include "app/run_outputs.h"
+#include "app/run_ranks.h"
 #include "app/setup_report.h"
 #include "app/summary.h"
 #include "io/atomic_file.h"
@@ -31,7 +33,9 @@
 #include "io/h5file.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
+#include "swarf/core/comm.h"
 #include "swarf/core/errors.h"
+#include "swarf/domains/domain_run.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
@@ -141,16 +145,33 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
 
 // A signal arrived: the step it interrupted is finished; a checkpoint keeps the place when
 // checkpoints are on. No summary.json: the run did not complete (series.csv stays .part).
-[[noreturn]] void stop_interrupted(int signal, const std::string& dir, const Simulation& sim, RunOutputs& outputs) {
+// (A run over ranks: the mirror holds the gathered state; rank 0 writes, 'outputs' is null on the others.)
+[[noreturn]] void stop_interrupted(int signal, const std::string& dir, const Simulation& sim, RunOutputs* outputs) {
   const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
   std::string where = fmt::format("at t = {:.6g} s after step {}", sim.time(), sim.steps());
-  if (outputs.checkpoints()) {
-    outputs.write_checkpoint_now();
+  if (!outputs) throw Interrupted(signal, fmt::format("interrupted by {} {}", name, where));
+  if (outputs->checkpoints()) {
+    outputs->write_checkpoint_now();
     where += fmt::format("; checkpoint written: continue with 'swarf run --restart {}/checkpoint.h5'", dir);
   } else {
     where += "; no checkpoint (output.checkpoint_every = 0): the run is lost";
   }
   throw Interrupted(signal, fmt::format("interrupted by {} {}", name, where));
+}
+
+// Under mpirun: the case must be one the domains run (else a clear error before anything is
+// written), with nothing attached to the steps from outside.
+void check_ranks(const RunOptions& opt, const Model& model) {
+  if (!opt.comm) return;
+  const std::string what = fmt::format("swarf run under mpirun with {} rank{}", opt.comm->size(),
+                                       opt.comm->size() == 1 ? "" : "s");
+  if (!opt.listeners.empty())
+    throw InputError(what + ": listeners attached to the steps (co-simulation) need one process");
+  try {
+    DomainRun::check_supported(model, model.step);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", what, e.what()));
+  }
 }
 
 }  // namespace
@@ -160,10 +181,14 @@ std::vector<RunFile> run_case_files() {
 }
 
 void run_case(const RunOptions& opt) {
+  // Under mpirun every rank runs this, and the first alone prints and writes.
+  const bool root = !opt.comm || opt.comm->rank() == 0;
+  if (!root) set_quiet(true);
   CheckpointCase stored;
   const CaseSettings cs = read_case(opt, stored);
   check_memory(cs, opt.force);
   Model model = build_model(cs);
+  check_ranks(opt, model);
   double t_start = 0.0;        // s
   if (!opt.restart.empty()) {  // (before the run directory is touched)
     const double t = H5File(opt.restart, H5File::Mode::Read).read_double_attribute("time_s");
@@ -176,42 +201,74 @@ void run_case(const RunOptions& opt) {
   }
   check_run_length(model, opt.allow_long, opt.force, t_start);
   const int threads = set_threads(opt.threads);
-  const RunProvenance prov = run_provenance(threads);
+  RunProvenance prov = run_provenance(threads);
+  prov.ranks = opt.comm ? opt.comm->size() : 1;
   print_setup(model, threads);
+  if (opt.comm)
+    say("  ranks {} (one run by domain decomposition: slabs along x; rank 0 writes the outputs)\n", prov.ranks);
   if (opt.check) {
     say("\n  --check: the case builds; nothing was run and nothing was written\n");
     return;
   }
-  const std::string dir = prepare_run_directory(opt);
-  // DIR/run.log: what this run prints (a restart appends to the log of the run it continues).
-  if (!open_transcript(dir + "/" + kLog, !opt.restart.empty()))
-    eprint("swarf: warning: cannot write {}/run.log; the run goes on without a log\n", dir);
+  std::string dir;
+  if (root) {
+    dir = prepare_run_directory(opt);
+    // DIR/run.log: what this run prints (a restart appends to the log of the run it continues).
+    if (!open_transcript(dir + "/" + kLog, !opt.restart.empty()))
+      eprint("swarf: warning: cannot write {}/run.log; the run goes on without a log\n", dir);
+  }
 
+  // Over ranks, this is the mirror of the whole run that rank 0's outputs read (run_ranks.h).
   Simulation sim(model, model.step);
   for (StepListener* l : opt.listeners) sim.add_listener(l);
-  ObserverSet observers(sim, observers_for(model, opt.energy_check));
-  RunOutputs outputs(dir, model, sim, observers, stored);
+  std::vector<std::unique_ptr<Observer>> observing = observers_for(model, opt.energy_check);
+  auto exact_ledger = std::make_unique<ExactLedger>();  // (over ranks: the ledger's exact sums in checkpoints)
+  ExactLedger& ledger = *exact_ledger;
+  if (opt.comm) observing.push_back(std::move(exact_ledger));
+  ObserverSet observers(sim, std::move(observing));
+  std::unique_ptr<RunOutputs> outputs = root ? std::make_unique<RunOutputs>(dir, model, sim, observers, stored)
+                                             : nullptr;
   // The ordered sites served the selections and the observers' setup, all done now; the
   // step and the outputs do not read them, and they are the size of the positions.
   std::vector<Vec3>().swap(model.sites);
-  if (opt.restart.empty())
-    outputs.begin();
-  else
-    outputs.restore(opt.restart);
+  if (outputs && opt.restart.empty()) {
+    outputs->begin();
+  } else if (outputs) {
+    outputs->restore(opt.restart);
+  } else if (!opt.restart.empty()) {  // (another rank: the state only)
+    RunRecord rec;
+    read_checkpoint(opt.restart, sim, rec, nullptr);
+  }
   std::fflush(stdout);
+  const std::unique_ptr<RankSteps> ranks = opt.comm ? std::make_unique<RankSteps>(*opt.comm, sim,
+                                                                                  observers.step_listeners(), ledger)
+                                                    : nullptr;
 
   const double end_time = model.settings.integrator.end_time;  // s
-  Progress progress(model.settings.output.progress, end_time);
+  Progress progress(model.settings.output.progress && root, end_time);
   const double t_end = end_time * (1.0 - 1e-12);  // (a last step that lands within round-off of the end is the last)
   install_interrupt_handlers();
-  while (sim.time() < t_end) {
-    sim.step(end_time - sim.time());
-    outputs.after_step(sim.time() >= t_end);
-    progress.update(sim.time(), sim.steps());
-    if (const int s = interrupt_signal(); s != 0) stop_interrupted(s, dir, sim, outputs);
+  if (!ranks) {
+    while (sim.time() < t_end) {
+      sim.step(end_time - sim.time());
+      outputs->after_step(sim.time() >= t_end);
+      progress.update(sim.time(), sim.steps());
+      if (const int s = interrupt_signal(); s != 0) stop_interrupted(s, dir, sim, outputs.get());
+    }
+  } else {
+    while (ranks->time() < t_end) {
+      ranks->step(end_time - ranks->time());
+      const bool last = ranks->time() >= t_end;
+      const RankSteps::After a = ranks->agree(outputs && outputs->due(ranks->time(), ranks->steps(), last),
+                                              interrupt_signal());
+      if (a.output || a.signal != 0) ranks->gather();
+      if (outputs && a.output) outputs->after_step(last);
+      progress.update(ranks->time(), ranks->steps());
+      if (a.signal != 0) stop_interrupted(a.signal, dir, sim, outputs.get());
+    }
   }
   progress.done(sim.time(), sim.steps());
-  finish_run(dir, model, sim, outputs, observers, prov, opt.restart);
+  if (outputs) finish_run(dir, model, sim, *outputs, observers, prov, opt.restart);
 }
 
 }  // namespace swarf

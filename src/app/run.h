@@ -10,6 +10,8 @@
 
 namespace swarf {
 
+class Comm;
+
 struct RunOptions {
   std::string case_path;                 ///< empty = the built-in default case
   std::string out_dir;                   ///< empty: "swarf-out", or the checkpoint's directory on restart
@@ -21,6 +23,9 @@ struct RunOptions {
   bool energy_check = true;              ///< false (--no-energy-check): a lost energy balance does not stop the run
   bool check = false;                    ///< --check: build the case and print its set-up; no run, no outputs
   std::vector<StepListener*> listeners;  ///< called around every step of the run (not owned; swarf.run's)
+  /// Under mpirun: the ranks, over which the run is one run by domain decomposition (every rank
+  /// calls run_case; rank 0 writes; run_ranks.h). Null: one process.
+  Comm* comm = nullptr;
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

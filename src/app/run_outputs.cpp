@@ -144,11 +144,15 @@ void RunOutputs::restore(const std::string& checkpoint) {
   start_ = std::chrono::steady_clock::now();
 }
 
+bool RunOutputs::due(double t, std::int64_t steps, bool last) const {
+  return row_due(t, last) || frame_due(t, last) || checkpoint_due(steps, last);
+}
+
 void RunOutputs::after_step(bool last) {
   const double t = sim_.time();
-  const bool row = t >= rec_.next_row * (1.0 - 1e-12) || last;
-  const bool frame = vtk_ && (t >= rec_.next_frame * (1.0 - 1e-12) || last);
-  const bool checkpoint = last ? checkpoint_at_end_ : checkpoint_every_ > 0 && sim_.steps() % checkpoint_every_ == 0;
+  const bool row = row_due(t, last);
+  const bool frame = frame_due(t, last);
+  const bool checkpoint = checkpoint_due(sim_.steps(), last);
   if (!row && !frame && !checkpoint) return;
   const auto o0 = std::chrono::steady_clock::now();
   if (row) write_row();

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,6 +55,9 @@ class RunOutputs {
   /// After a step: the row, frame and checkpoint due now ('last': the final step, which
   /// writes a row and a frame and no checkpoint).
   void after_step(bool last);
+  /// Whether after_step would write anything after the step that ended at time t (s) as step
+  /// number 'steps' (a run over ranks gathers its state only then).
+  bool due(double t, std::int64_t steps, bool last) const;
 
   struct WallTimes {
     double wall_s = 0;    ///< the whole run so far (the part before a restart too), s
@@ -79,6 +83,11 @@ class RunOutputs {
 
  private:
   void write_row();
+  bool row_due(double t, bool last) const { return t >= rec_.next_row * (1.0 - 1e-12) || last; }
+  bool frame_due(double t, bool last) const { return vtk_ && (t >= rec_.next_frame * (1.0 - 1e-12) || last); }
+  bool checkpoint_due(std::int64_t steps, bool last) const {
+    return last ? checkpoint_at_end_ : checkpoint_every_ > 0 && steps % checkpoint_every_ == 0;
+  }
   void write_frame(double t);  // the ParaView frame with the per-particle fields
   double seconds_since(std::chrono::steady_clock::time_point t) const;
 

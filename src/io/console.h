@@ -24,6 +24,7 @@ namespace console_detail {
 struct Transcript {
   std::string held;     // what was said before the log opened
   FILE* log = nullptr;  // DIR/run.log once open
+  bool quiet = false;   // say() prints and keeps nothing (the ranks of a run but the first)
 };
 inline Transcript& transcript() {
   static Transcript t;
@@ -65,9 +66,14 @@ inline void close_transcript() noexcept {
   t.log = nullptr;
 }
 
+/// say() prints and keeps nothing from now on (true) or again (false): the ranks of a run over
+/// MPI other than the first, which would print the same lines. Errors (eprint) still show.
+inline void set_quiet(bool quiet) noexcept { console_detail::transcript().quiet = quiet; }
+
 /// Prints on stdout and adds to the transcript.
 template <class... Args>
 void say(fmt::format_string<Args...> format, Args&&... args) {
+  if (console_detail::transcript().quiet) return;
   const std::string s = fmt::format(format, std::forward<Args>(args)...);
   std::fwrite(s.data(), 1, s.size(), stdout);
   transcript_add(s);

@@ -62,6 +62,11 @@ int MpiSession::from_root(int v) const {
   return v;
 }
 
+void MpiSession::abort(int code) const {
+  if (active_) MPI_Abort(MPI_COMM_WORLD, code);
+  std::exit(code);
+}
+
 #else
 
 MpiSession::MpiSession() {
@@ -74,6 +79,8 @@ MpiSession::~MpiSession() = default;
 void MpiSession::barrier() const {}
 int MpiSession::max_all(int v) const { return v; }
 int MpiSession::from_root(int v) const { return v; }
+
+void MpiSession::abort(int code) const { std::exit(code); }
 
 #endif
 

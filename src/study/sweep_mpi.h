@@ -29,6 +29,9 @@ class MpiSession {
   int max_all(int v) const;
   /// Rank 0's v, on every rank.
   int from_root(int v) const;
+  /// Ends every rank of the job with 'code' (MPI_Abort; mpirun exits non-zero): for an error on
+  /// one rank of a run over ranks, whose others would wait for it forever in a collective.
+  [[noreturn]] void abort(int code) const;
 
  private:
   bool active_ = false;

@@ -29,6 +29,13 @@ ObserverSet::~ObserverSet() {
     if (StepListener* l = o->step_listener()) sim_.remove_listener(l);
 }
 
+std::vector<StepListener*> ObserverSet::step_listeners() const {
+  std::vector<StepListener*> out;
+  for (const auto& o : observers_)
+    if (StepListener* l = o->step_listener()) out.push_back(l);
+  return out;
+}
+
 std::vector<Column> ObserverSet::column_specs() const {
   std::vector<Column> cols{{"time", "s", "simulated time"}};
   for (const auto& o : observers_) o->columns(cols);

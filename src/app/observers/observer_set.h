@@ -35,6 +35,9 @@ class ObserverSet {
   void visit_state(StateArchive& ar);
   void write_results(H5File& f) const;
   void finish(const RunEnd& end, nlohmann::json& summary);
+  /// The observers' step listeners (registered with the Simulation already; a run over ranks
+  /// registers them with rank 0's domain too).
+  std::vector<StepListener*> step_listeners() const;
   /// True if an observer of that name is in the set.
   bool has(std::string_view name) const;
 

@@ -118,6 +118,14 @@ class ExactSum {
     return s;
   }
   static constexpr std::size_t kWords = kDigits + 1;  ///< int64 words of digits()
+  /// True if v[offset, offset + kWords) can be digits() of some sum (a checkpoint's, read back).
+  static bool canonical(const std::vector<std::int64_t>& v, std::size_t offset = 0) {
+    if (v.size() < offset + kWords) return false;
+    for (int k = 0; k + 1 < kDigits; ++k)
+      if (v[offset + k] < 0 || v[offset + k] >= (std::int64_t{1} << 32)) return false;
+    const std::int64_t top = v[offset + kDigits - 1], special = v[offset + kDigits];
+    return top > -(std::int64_t{1} << 32) && top < (std::int64_t{1} << 32) && special >= 0 && special <= 7;
+  }
 
  private:
   static constexpr int kNan = 1, kPosInf = 2, kNegInf = 4;

@@ -83,7 +83,9 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
   if (!what && members != grouped) what = "groups whose members' Particles::group differ";
   if (what)
     throw InputError(
-        fmt::format("domain decomposition (issue 38) does not support {} yet: run this case on one rank", what));
+        fmt::format("domain decomposition does not support {} yet: run this case in one process, on "
+                    "threads (swarf run --threads N)",
+                    what));
 }
 
 DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settings, DomainSettings ds)
@@ -146,7 +148,8 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   exchange_halo();  // (the Simulation's first evaluation gave the ghosts partial forces)
 }
 
-DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds)
+DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds,
+                     const std::vector<std::int64_t>* ledger_digits)
     : DomainRun(comm, start.world(), start.settings(), std::move(ds)) {
   // The local Simulation's construction evaluated the forces of the state as it is: right for a
   // run's first step, not for one that goes on (an acceleration is the last step's, made with
@@ -163,12 +166,18 @@ DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds)
   copy_step_state(start, *sim_);
   sim_->count_exactly(nullptr);  // (the grips' exact share starts from the forces as they are now)
   sim_->count_exactly(owned_.data());
-  if (comm_.rank() == 0) {
+  if (comm_.rank() == 0 && ledger_digits) {
+    if (ledger_digits->size() != kLedgerLines * ExactSum::kWords)
+      throw std::logic_error(fmt::format("domains: {} words of ledger digits, {} expected", ledger_digits->size(),
+                                         kLedgerLines * ExactSum::kWords));
+    for (std::size_t k = 0; k < kLedgerLines; ++k)
+      base_[k] = ExactSum::from_digits(*ledger_digits, k * ExactSum::kWords);
+  } else if (comm_.rank() == 0) {
     const EnergyLedger& l = start.ledger();
-    base_.plastic_work = l.plastic_work;
-    base_.viscous_work = l.viscous_work;
-    base_.fracture_energy = l.fracture_energy;
-    base_.external_work = l.external_work;
+    base_[0].add(l.plastic_work);
+    base_[1].add(l.viscous_work);
+    base_[2].add(l.fracture_energy);
+    base_[3].add(l.external_work);
   }
 }
 
@@ -340,10 +349,7 @@ DomainRun::Sums DomainRun::sums() {
                                  x.fracture_energy,
                                  gx.external_work};
   // (what the run booked before it started here, on rank 0)
-  parts[2].add(base_.plastic_work);
-  parts[3].add(base_.viscous_work);
-  parts[4].add(base_.fracture_energy);
-  parts[5].add(base_.external_work);
+  for (std::size_t k = 0; k < kLedgerLines; ++k) parts[2 + k].add(base_[k]);
   const std::size_t ng = local_.groups.size();
   for (std::size_t g = 0; g < ng; ++g)
     for (int c = 0; c < 3; ++c) parts.push_back(gx.reaction[g][c]);  // (sized when counting began)
@@ -355,6 +361,11 @@ DomainRun::Sums DomainRun::sums() {
   s.viscous_work = total[3].value();
   s.fracture_energy = total[4].value();
   s.external_work = total[5].value();
+  ledger_digits_.clear();
+  for (std::size_t k = 0; k < kLedgerLines; ++k) {
+    const std::vector<std::int64_t> d = total[2 + k].digits();
+    ledger_digits_.insert(ledger_digits_.end(), d.begin(), d.end());
+  }
   s.reactions.resize(ng);
   for (std::size_t g = 0; g < ng; ++g)
     for (int c = 0; c < 3; ++c) s.reactions[g][c] = total[6 + 3 * g + c].value();
@@ -402,11 +413,26 @@ World DomainRun::gather_world() {
 }
 
 std::unique_ptr<Simulation> DomainRun::gather_simulation(World& storage) {
-  const Sums s = sums();
   storage = gather_world();
   World records = storage;  // (the Simulation's construction evaluates forces over 'storage')
   auto out = std::make_unique<Simulation>(storage, settings_);
   out->replace_particles(std::move(records.particles), std::move(records.rods));
+  load_sums_into(*out);
+  return out;
+}
+
+void DomainRun::gather_into(Simulation& mirror) {
+  World w = gather_world();
+  if (w.particles.size() != mirror.world().particles.size() || w.rods.size() != mirror.world().rods.size())
+    throw std::logic_error(fmt::format("domains: the mirror holds {} particles and {} rods, the run {} and {}",
+                                       mirror.world().particles.size(), mirror.world().rods.size(), w.particles.size(),
+                                       w.rods.size()));
+  mirror.replace_particles(std::move(w.particles), std::move(w.rods));
+  load_sums_into(mirror);
+}
+
+void DomainRun::load_sums_into(Simulation& out) {
+  const Sums s = sums();
   MemoryArchive a = save_step_state(*sim_);
   // The run's sums where this rank's Simulation has its own share.
   a.set("ledger/plastic_work", s.plastic_work);
@@ -414,9 +440,8 @@ std::unique_ptr<Simulation> DomainRun::gather_simulation(World& storage) {
   a.set("ledger/fracture_energy", s.fracture_energy);
   a.set("ledger/external_work", s.external_work);
   a.set("groups/reaction", s.reactions);
-  a.set("broken_rods", static_cast<std::int64_t>(out->broken_rods()));
-  load_step_state(a, *out);
-  return out;
+  a.set("broken_rods", static_cast<std::int64_t>(out.broken_rods()));
+  load_step_state(a, out);
 }
 
 std::vector<std::int64_t> DomainRun::weights() const {
@@ -427,8 +452,8 @@ std::vector<std::int64_t> DomainRun::weights() const {
   return w;
 }
 
-void DomainRun::step() {
-  sim_->step();
+void DomainRun::step(double max_dt) {
+  sim_->step(max_dt);
   const auto t0 = std::chrono::steady_clock::now();
   exchange_halo();
   ++steps_;

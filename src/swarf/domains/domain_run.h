@@ -42,10 +42,12 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include "swarf/core/comm.h"
+#include "swarf/core/exact_sum.h"
 #include "swarf/domains/partition.h"
 #include "swarf/domains/records.h"
 #include "swarf/integrate/step_settings.h"
@@ -80,12 +82,23 @@ class DomainRun {
   /// World partitioned, each particle's and rod's record as it is there (not recomputed), and
   /// its step state (time, counters, the systems' own state; step_state.h). The sums go on
   /// from its ledger (rounded once: the checkpoint's doubles). Collective.
-  DomainRun(Comm& comm, const Simulation& start, DomainSettings ds = {});
+  /// 'ledger_digits' (read on rank 0; optional): the exact sums of the ledger lines up to
+  /// 'start' as ledger_digits() gave them, so that a run that goes on from a checkpoint books
+  /// on the unrounded sums and gives the uninterrupted run's bits; without them the sums go on
+  /// from start's ledger (its doubles).
+  DomainRun(Comm& comm, const Simulation& start, DomainSettings ds = {},
+            const std::vector<std::int64_t>* ledger_digits = nullptr);
   DomainRun(const DomainRun&) = delete;
   DomainRun& operator=(const DomainRun&) = delete;
 
-  /// One step, the halo exchange, and a migration when due. Collective.
-  void step();
+  /// One step of at most max_dt (s; the step's own size otherwise, as Simulation::step), the
+  /// halo exchange, and a migration when due. Collective.
+  void step(double max_dt = std::numeric_limits<double>::infinity());
+  /// Called around every step of this rank's Simulation (not owned). Its World is the domain's:
+  /// the time, counters and settings are the run's, the particles only this rank's and its ghosts.
+  void add_listener(StepListener* l) { sim_->add_listener(l); }
+  double time() const { return sim_->time(); }          ///< s
+  std::int64_t steps() const { return sim_->steps(); }  ///< accepted steps
 
   /// Collective: every rank's owned particles, in id order, on every rank: the serial run's
   /// particles, bit for bit. O(N) on every rank: for outputs and checks, not for every step.
@@ -100,6 +113,10 @@ class DomainRun {
   /// broken rods: what a checkpoint of the run holds, readable by a run on any rank count
   /// (DomainRun(comm, start)) or by a serial one. The exact sums are rounded into it once.
   std::unique_ptr<Simulation> gather_simulation(World& storage);
+  /// Collective: 'mirror' (a serial Simulation of the same case, over a World with the run's
+  /// particles and rods, e.g. the one the run started from) takes the run's state as
+  /// gather_simulation gives it: what the outputs of a run over ranks read, on any rank.
+  void gather_into(Simulation& mirror);
 
   /// The run's sums over all domains, each term counted once (a particle by its owner, a rod by
   /// the owner of its first end) and added exactly (core/exact_sum.h). Collective. The energies
@@ -119,6 +136,11 @@ class DomainRun {
     std::vector<Vec3> reactions;   ///< per group, Simulation::group_reaction now, N
   };
   Sums sums();
+  /// The exact sums of the ledger lines (plastic, viscous and fracture work, the groups'
+  /// external work) as the last sums() reduced them: ExactSum::kWords int64 words each, the
+  /// same on every rank; what a checkpoint keeps for DomainRun(comm, start, ds, digits).
+  const std::vector<std::int64_t>& ledger_digits() const { return ledger_digits_; }
+  static constexpr std::size_t kLedgerLines = 4;
 
   /// Throws InputError naming the first feature of 'w' or 's' that the domains do not support.
   static void check_supported(const World& w, const StepSettings& s);
@@ -150,6 +172,7 @@ class DomainRun {
   void plan_halo();       // who sends which owned particle to whom after each step
   void exchange_halo();
   void migrate(bool recut);                   // recut: choose the cuts again (unless fixed)
+  void load_sums_into(Simulation& out);       // collective: this rank's step state and the run's sums
   std::vector<std::int64_t> weights() const;  // per local particle: 1 + its intact rods
 
   Comm& comm_;
@@ -163,7 +186,9 @@ class DomainRun {
   std::vector<std::vector<std::int32_t>> send_, recv_;  // per rank: local indices, in the halo's order
   std::int64_t arrivals_ = 0, migrations_ = 0, steps_ = 0;
   double exchange_seconds_ = 0.0;
-  Sums base_;  // what the run booked before it started here (rank 0's share; zeros elsewhere)
+  // What the run booked before it started here, per ledger line (rank 0's share; zeros elsewhere).
+  std::vector<ExactSum> base_ = std::vector<ExactSum>(kLedgerLines);
+  std::vector<std::int64_t> ledger_digits_;
   std::size_t halo_bytes_ = 0;
 };
 

@@ -127,7 +127,8 @@ void GroupSystem::visit_state(StateArchive& ar, World& w, EnergyLedger&) {
   ar.array("groups/u_old", u_old_, ng);
   ar.array("groups/u_new", u_new_, ng);
   ar.array("groups/reaction", reaction_, ng);
-  ar.array("groups/reaction_old", reaction_old_, StateArchive::kAnySize);  // (empty before the first step)
+  // (not reaction_old_: the last step's reactions, scratch that account() overwrites before it
+  // reads it; a checkpoint of a run over ranks could not hold it as the serial run has it)
   ar.array("groups/velocity", v_, ng);
 }
 

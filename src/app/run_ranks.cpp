@@ -1,0 +1,33 @@
+// run_ranks.cpp: the steps of a run over MPI ranks (see run_ranks.h).
+#include "app/run_ranks.h"
+
+#include "app/observers/exact_ledger.h"
+#include "swarf/simulation.h"
+
+namespace swarf {
+
+RankSteps::RankSteps(Comm& comm, Simulation& mirror, const std::vector<StepListener*>& listeners, ExactLedger& ledger)
+    : comm_(comm),
+      mirror_(mirror),
+      ledger_(ledger),
+      run_(std::make_unique<DomainRun>(comm, mirror, DomainSettings{},
+                                       ledger.digits.empty() ? nullptr : &ledger.digits)) {
+  if (root())
+    for (StepListener* l : listeners) run_->add_listener(l);
+}
+
+RankSteps::After RankSteps::agree(bool output_due, int signal) {
+  const std::vector<std::int64_t> s = comm_.sum_all({root() && output_due ? 1 : 0, signal != 0 ? 1 : 0});
+  After a;
+  a.output = s[0] > 0;
+  // (rare: a second collective only when a signal came, on every rank alike)
+  if (s[1] > 0) a.signal = static_cast<int>(comm_.max_all(static_cast<double>(signal)));
+  return a;
+}
+
+void RankSteps::gather() {
+  run_->gather_into(mirror_);
+  ledger_.digits = run_->ledger_digits();
+}
+
+}  // namespace swarf
