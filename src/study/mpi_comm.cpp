@@ -61,6 +61,28 @@ std::vector<Bytes> MpiComm::all_gather(Bytes mine) {
   return out;
 }
 
+void MpiComm::gather_to_root(const Bytes& mine, std::vector<Bytes>& from) {
+  // Point to point into each rank's own buffer (a Gatherv would need one buffer and a copy out).
+  constexpr int kTag = 39;
+  if (mine.size() > 2147483647u) throw std::runtime_error("MpiComm: more than 2 GB from one rank");
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(rank_ == 0 ? size_ : 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (rank_ != 0) {
+    MPI_Send(mine.data(), count, MPI_BYTE, 0, kTag, MPI_COMM_WORLD);
+    return;
+  }
+  from.resize(size_);
+  from[0].clear();
+  std::vector<MPI_Request> requests;
+  for (int r = 1; r < size_; ++r) {
+    from[r].resize(static_cast<std::size_t>(counts[r]));  // (no new memory when it is as large as last time)
+    requests.emplace_back();
+    MPI_Irecv(from[r].data(), counts[r], MPI_BYTE, r, kTag, MPI_COMM_WORLD, &requests.back());
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
 void MpiComm::barrier() { MPI_Barrier(MPI_COMM_WORLD); }
 
 std::vector<Bytes> MpiComm::exchange(std::vector<Bytes> send, const std::vector<std::size_t>& recv_bytes) {
@@ -100,6 +122,7 @@ std::vector<Bytes> MpiComm::all_gather(Bytes mine) {
   out.push_back(std::move(mine));
   return out;
 }
+void MpiComm::gather_to_root(const Bytes&, std::vector<Bytes>& from) { from.assign(1, Bytes{}); }
 void MpiComm::barrier() {}
 std::vector<Bytes> MpiComm::exchange(std::vector<Bytes> send, const std::vector<std::size_t>&) { return send; }
 

@@ -14,6 +14,7 @@ class MpiComm final : public Comm {
   int size() const override { return size_; }
   std::vector<Bytes> all_to_all(std::vector<Bytes> send) override;
   std::vector<Bytes> all_gather(Bytes mine) override;
+  void gather_to_root(const Bytes& mine, std::vector<Bytes>& from) override;
   void barrier() override;
   std::vector<Bytes> exchange(std::vector<Bytes> send, const std::vector<std::size_t>& recv_bytes) override;
 

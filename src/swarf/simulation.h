@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -61,6 +62,11 @@ class Simulation {
   /// stays. Throws InputError with contacts, bodies or flows, whose per-particle lists cannot
   /// follow a wholesale change, or arrays of unequal length.
   void replace_particles(Particles particles, Rods rods);
+  /// Lets 'write' overwrite the values of the particles' and rods' fields in place (the same
+  /// particles and rods: a run over ranks bringing its mirror up to date, issue 38); 'write'
+  /// must not resize or reorder them, nor change rod ends. The rows, the groups' members and
+  /// scratch follow as in replace_particles, with the same refusals.
+  void overwrite_records(const std::function<void(Particles&, Rods&)>& write);
   /// Places rigid body b at 'position' (centre of mass, m) and 'orientation' (principal frame
   /// -> world, normalised here) between steps, its mesh with it. A hinge's orientation follows its
   /// angle, so it is refused for a hinged body unless unchanged. Throws InputError on a
@@ -82,8 +88,10 @@ class Simulation {
   /// != 0 (RodSystem::count_exactly; nullptr: off): a domain's share, the same sums over the
   /// ranks for any partition. The array must be set again when the particles change.
   /// The groups' work and reactions too (GroupSystem::count_exactly).
-  void count_exactly(const std::uint8_t* counted) {
-    sys_.rods.count_exactly(counted);
+  /// 'rod_keys': per rod, its place in the global rod order (nullptr: this World's rods are the
+  /// global list), for RodSystem::count_exactly.
+  void count_exactly(const std::uint8_t* counted, const std::int64_t* rod_keys = nullptr) {
+    sys_.rods.count_exactly(counted, rod_keys);
     sys_.groups.count_exactly(counted, m_);
   }
   const RodSystem::ExactLedger& exact_ledger() const { return sys_.rods.exact_ledger(); }
@@ -149,6 +157,7 @@ class Simulation {
   /// What the integrators work on in a step that starts now.
   Integration integration() { return Integration{m_, sys_, ms_, set_, clock_, stats_, ledger_, time_, implicit_}; }
   void reindex_all(const Reindex& r);  // the door's common part
+  void records_replaced();             // after replace_particles, overwrite_records: rows, members, scratch
   void resize_scratch();               // per-particle, per-rod-block and per-group scratch after a change
   void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows
   void update_mesh_step_limit();  // after the particles change (construction, the door, a load)

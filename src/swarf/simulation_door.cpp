@@ -106,6 +106,21 @@ void Simulation::replace_particles(Particles particles, Rods rods) {
   m_.particles = std::move(particles);
   m_.rods.ends = std::move(rods.ends);
   m_.rods.for_each_field_with(rods, [](auto& mine, auto& theirs) { mine = std::move(theirs); });
+  records_replaced();
+}
+
+void Simulation::overwrite_records(const std::function<void(Particles&, Rods&)>& write) {
+  if (sys_.contacts.enabled() || !m_.bodies.empty() || !m_.inflows.empty() || !m_.outflows.empty())
+    throw InputError("overwrite_records: not with contacts, rigid bodies or particle flows");  // (as replace_particles)
+  const std::size_t n = m_.particles.size(), m = m_.rods.size();
+  write(m_.particles, m_.rods);
+  if (m_.particles.size() != n || m_.rods.size() != m)
+    throw std::logic_error("overwrite_records: the particles or rods were resized");
+  records_replaced();
+}
+
+void Simulation::records_replaced() {
+  const std::size_t n = m_.particles.size();
   m_.rods.build_rows(n);
   for (Group& g : m_.groups) g.members.clear();  // (the members from the particles' group indices, ascending)
   for (std::size_t i = 0; i < n; ++i)

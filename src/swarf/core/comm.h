@@ -33,6 +33,16 @@ class Comm {
   virtual std::vector<Bytes> all_to_all(std::vector<Bytes> send) = 0;
   /// Every rank's 'mine', indexed by rank, on every rank.
   virtual std::vector<Bytes> all_gather(Bytes mine) = 0;
+  /// On rank 0, every other rank's 'mine' in 'from[r]' (r = 1..size-1; from[0] is left empty:
+  /// rank 0's own is its 'mine'); nothing on the others: what only the rank that writes needs.
+  /// 'from' is reused from call to call (its buffers keep their memory: a run gathers its whole
+  /// state at every output). The default goes through all_gather.
+  virtual void gather_to_root(const Bytes& mine, std::vector<Bytes>& from) {
+    std::vector<Bytes> all = all_gather(mine);
+    if (rank() != 0) return;
+    all[0].clear();
+    from = std::move(all);
+  }
   virtual void barrier() = 0;
   /// Point to point with sizes known on both sides: send[r] goes to rank r and recv_bytes[r]
   /// bytes come from rank r; ranks with nothing to send or receive are not contacted (the

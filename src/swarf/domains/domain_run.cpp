@@ -165,7 +165,7 @@ DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds,
   }
   copy_step_state(start, *sim_);
   sim_->count_exactly(nullptr);  // (the grips' exact share starts from the forces as they are now)
-  sim_->count_exactly(owned_.data());
+  sim_->count_exactly(owned_.data(), rod_key_.data());
   if (comm_.rank() == 0 && ledger_digits) {
     if (ledger_digits->size() != kLedgerLines * ExactSum::kWords)
       throw std::logic_error(fmt::format("domains: {} words of ledger digits, {} expected", ledger_digits->size(),
@@ -257,7 +257,7 @@ void DomainRun::adopt(Local&& l) {
   } else {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods));
   }
-  sim_->count_exactly(owned_.data());  // (each rod booked by its first end's owner)
+  sim_->count_exactly(owned_.data(), rod_key_.data());  // (each rod booked by its first end's owner)
   plan_halo();
 }
 
@@ -422,12 +422,62 @@ std::unique_ptr<Simulation> DomainRun::gather_simulation(World& storage) {
 }
 
 void DomainRun::gather_into(Simulation& mirror) {
-  World w = gather_world();
-  if (w.particles.size() != mirror.world().particles.size() || w.rods.size() != mirror.world().rods.size())
-    throw std::logic_error(fmt::format("domains: the mirror holds {} particles and {} rods, the run {} and {}",
-                                       mirror.world().particles.size(), mirror.world().rods.size(), w.particles.size(),
-                                       w.rods.size()));
-  mirror.replace_particles(std::move(w.particles), std::move(w.rods));
+  // Each rank's owned particles (each record after its id) and the rods whose first end it owns,
+  // to rank 0, which writes them over the mirror's: the same particles, in id order, and the
+  // same rods, in the global order (no particle or rod is made or removed over ranks yet).
+  Particles& p = local_.particles;
+  Rods& r = local_.rods;
+  std::uint64_t np = 0, nr = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) np += owned_[i];
+  for (std::size_t k = 0; k < r.size(); ++k) nr += owned_[r.ends[k][0]];
+  // One buffer, kept from gather to gather, sized once and filled in place.
+  const std::size_t pb = sizeof(std::int64_t) + particle_record_bytes(p), rb = rod_record_bytes(r);
+  Bytes& mine = gather_out_;
+  mine.resize(2 * sizeof(std::uint64_t) + np * pb + nr * rb);
+  std::byte* at = mine.data();
+  std::memcpy(at, &np, sizeof np);
+  at += sizeof np;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (owned_[i]) {
+      std::memcpy(at, &p.id[i], sizeof(std::int64_t));
+      at += sizeof(std::int64_t);
+      at += write_particle(at, p, i);
+    }
+  std::memcpy(at, &nr, sizeof nr);
+  at += sizeof nr;
+  for (std::size_t k = 0; k < r.size(); ++k)
+    if (owned_[r.ends[k][0]]) at += write_rod(at, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
+  comm_.gather_to_root(mine, gather_in_);
+  if (comm_.rank() == 0) {
+    mirror.overwrite_records([&](Particles& mp, Rods& mr) {
+      std::size_t particles = 0, rods = 0;
+      for (int rank = 0; rank < comm_.size(); ++rank) {
+        const std::byte* at = rank == 0 ? mine.data() : gather_in_[rank].data();
+        const std::uint64_t n = get_count(at);
+        for (std::uint64_t q = 0; q < n; ++q) {
+          const auto id = static_cast<std::int64_t>(get_count(at));
+          const auto it = std::lower_bound(mp.id.begin(), mp.id.end(), id);
+          if (it == mp.id.end() || *it != id)
+            throw std::logic_error(fmt::format("domains: particle id {} is not in the mirror", id));
+          at += unpack_particle(at, mp, static_cast<std::size_t>(it - mp.id.begin()));
+        }
+        const std::uint64_t m = get_count(at);
+        for (std::uint64_t q = 0; q < m; ++q) {
+          const RodHead h = rod_head(at);
+          const auto k = static_cast<std::size_t>(h.key);
+          if (h.key < 0 || k >= mr.size() || mp.id[mr.ends[k][0]] != h.end_id[0] || mp.id[mr.ends[k][1]] != h.end_id[1])
+            throw std::logic_error(
+                fmt::format("domains: rod {} (particles {}, {}) is not the mirror's", h.key, h.end_id[0], h.end_id[1]));
+          at += unpack_rod_over(at, mr, k);
+        }
+        particles += n;
+        rods += m;
+      }
+      if (particles != mp.size() || rods != mr.size())
+        throw std::logic_error(fmt::format("domains: {} particles and {} rods gathered, the mirror has {} and {}",
+                                           particles, rods, mp.size(), mr.size()));
+    });
+  }
   load_sums_into(mirror);
 }
 

@@ -113,9 +113,11 @@ class DomainRun {
   /// broken rods: what a checkpoint of the run holds, readable by a run on any rank count
   /// (DomainRun(comm, start)) or by a serial one. The exact sums are rounded into it once.
   std::unique_ptr<Simulation> gather_simulation(World& storage);
-  /// Collective: 'mirror' (a serial Simulation of the same case, over a World with the run's
-  /// particles and rods, e.g. the one the run started from) takes the run's state as
-  /// gather_simulation gives it: what the outputs of a run over ranks read, on any rank.
+  /// Collective: on rank 0, 'mirror' (a serial Simulation of the same case, over a World with the
+  /// run's particles and rods, e.g. the one the run started from) takes the run's state as
+  /// gather_simulation gives it: what the outputs of a run over ranks read. The records travel
+  /// to rank 0 only and are written over the mirror's in place (Simulation::overwrite_records);
+  /// the other ranks' mirrors take the step state and sums only.
   void gather_into(Simulation& mirror);
 
   /// The run's sums over all domains, each term counted once (a particle by its owner, a rod by
@@ -189,6 +191,8 @@ class DomainRun {
   // What the run booked before it started here, per ledger line (rank 0's share; zeros elsewhere).
   std::vector<ExactSum> base_ = std::vector<ExactSum>(kLedgerLines);
   std::vector<std::int64_t> ledger_digits_;
+  Bytes gather_out_;  // gather_into's buffers, kept (an output gathers the whole state)
+  std::vector<Bytes> gather_in_;
   std::size_t halo_bytes_ = 0;
 };
 

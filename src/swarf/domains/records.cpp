@@ -2,6 +2,7 @@
 #include "swarf/domains/records.h"
 
 #include <cstring>
+#include <type_traits>
 
 namespace swarf {
 
@@ -22,16 +23,26 @@ std::size_t get(const std::byte* in, T& v) {
 
 }  // namespace
 
-void pack_particle(Bytes& out, Particles& p, std::size_t i) {
-  // One resize per record, not one per field: the halo packs every ghost's record each step.
+std::size_t particle_record_bytes(Particles& p) {
   std::size_t bytes = 0;
-  p.for_each_field([&](const char*, auto& v) { bytes += sizeof(v[i]); });
-  std::size_t at = out.size();
-  out.resize(at + bytes);
+  p.for_each_field([&](const char*, auto& v) { bytes += sizeof(typename std::decay_t<decltype(v)>::value_type); });
+  return bytes;
+}
+
+std::size_t write_particle(std::byte* out, Particles& p, std::size_t i) {
+  std::size_t at = 0;
   p.for_each_field([&](const char*, auto& v) {
-    std::memcpy(out.data() + at, &v[i], sizeof(v[i]));
+    std::memcpy(out + at, &v[i], sizeof(v[i]));
     at += sizeof(v[i]);
   });
+  return at;
+}
+
+void pack_particle(Bytes& out, Particles& p, std::size_t i) {
+  // One resize per record, not one per field: the halo packs every ghost's record each step.
+  const std::size_t at = out.size();
+  out.resize(at + particle_record_bytes(p));
+  write_particle(out.data() + at, p, i);
 }
 
 std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i) {
@@ -64,10 +75,40 @@ std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i) 
   return kKinematicsBytes;
 }
 
+std::size_t rod_record_bytes(Rods& r) {
+  std::size_t bytes = sizeof(std::int64_t) + sizeof(std::array<std::int64_t, 2>);
+  r.for_each_field([&](const char*, auto& v) { bytes += sizeof(typename std::decay_t<decltype(v)>::value_type); });
+  return bytes;
+}
+
+std::size_t write_rod(std::byte* out, Rods& r, std::size_t k, std::int64_t key, std::array<std::int64_t, 2> end_id) {
+  std::memcpy(out, &key, sizeof key);
+  std::memcpy(out + sizeof key, &end_id, sizeof end_id);
+  std::size_t at = sizeof key + sizeof end_id;
+  r.for_each_field([&](const char*, auto& v) {
+    std::memcpy(out + at, &v[k], sizeof(v[k]));
+    at += sizeof(v[k]);
+  });
+  return at;
+}
+
 void pack_rod(Bytes& out, Rods& r, std::size_t k, std::int64_t key, std::array<std::int64_t, 2> end_id) {
-  put(out, key);
-  put(out, end_id);
-  r.for_each_field([&](const char*, auto& v) { put(out, v[k]); });
+  const std::size_t at = out.size();  // (one resize per record, as pack_particle)
+  out.resize(at + rod_record_bytes(r));
+  write_rod(out.data() + at, r, k, key, end_id);
+}
+
+RodHead rod_head(const std::byte* in) {
+  RodHead h;
+  std::memcpy(&h.key, in, sizeof h.key);
+  std::memcpy(&h.end_id, in + sizeof h.key, sizeof h.end_id);
+  return h;
+}
+
+std::size_t unpack_rod_over(const std::byte* in, Rods& r, std::size_t k) {
+  std::size_t at = sizeof(std::int64_t) + sizeof(std::array<std::int64_t, 2>);
+  r.for_each_field([&](const char*, auto& v) { at += get(in + at, v[k]); });
+  return at;
 }
 
 std::size_t unpack_rod(const std::byte* in, RodPool& pool) {

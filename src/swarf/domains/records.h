@@ -20,6 +20,9 @@ namespace swarf {
 
 /// Appends particle i's record to 'out'.
 void pack_particle(Bytes& out, Particles& p, std::size_t i);
+/// The bytes of one particle's record; writes particle i's record at 'out' (that many bytes).
+std::size_t particle_record_bytes(Particles& p);
+std::size_t write_particle(std::byte* out, Particles& p, std::size_t i);
 /// Writes the record at 'in' over particle i; returns the bytes read.
 std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i);
 /// Appends the record at 'in' as a new particle of p; returns the bytes read.
@@ -46,7 +49,18 @@ struct RodPool {
 
 /// Appends rod k's record with its key and its ends' ids.
 void pack_rod(Bytes& out, Rods& r, std::size_t k, std::int64_t key, std::array<std::int64_t, 2> end_id);
+/// The bytes of one rod's record; writes rod k's record at 'out' (that many bytes).
+std::size_t rod_record_bytes(Rods& r);
+std::size_t write_rod(std::byte* out, Rods& r, std::size_t k, std::int64_t key, std::array<std::int64_t, 2> end_id);
 /// Appends the record at 'in' to the pool; returns the bytes read.
 std::size_t unpack_rod(const std::byte* in, RodPool& pool);
+/// A rod record's key and end ids.
+struct RodHead {
+  std::int64_t key = 0;
+  std::array<std::int64_t, 2> end_id{};
+};
+RodHead rod_head(const std::byte* in);
+/// Writes the per-rod fields of the record at 'in' over rod k of r (its ends stay); returns the bytes read.
+std::size_t unpack_rod_over(const std::byte* in, Rods& r, std::size_t k);
 
 }  // namespace swarf

@@ -88,8 +88,13 @@ class RodSystem {
   };
   /// Turns the exact ledger on over the particles with counted[i] != 0 (a domain's owned ones;
   /// the array must outlive the next step and be set again when the particles change), or off
-  /// (nullptr). Costs a pass over the rods per step and a store per rod in the kernel.
-  void count_exactly(const std::uint8_t* counted) { counted_ = counted; }
+  /// (nullptr). 'keys' (per rod: its place in the global rod order; nullptr: the rods are the
+  /// global list) group the viscous work for its exact adds. Costs a pass over the rods per
+  /// step and a store per rod in the kernel.
+  void count_exactly(const std::uint8_t* counted, const std::int64_t* keys = nullptr) {
+    counted_ = counted;
+    keys_ = keys;
+  }
   const ExactLedger& exact_ledger() const { return exact_; }
 
   // Domains (issue 38): a rod is computed once, by the rank that owns its first particle; that
@@ -102,6 +107,8 @@ class RodSystem {
   void part(World& w);  // rods on the meshes' parting lines break in this trial
 
   const std::uint8_t* counted_ = nullptr;  // per particle: its first-end rods count in exact_ (null: off)
+
+  const std::int64_t* keys_ = nullptr;  // per rod, the global order (count_exactly)
   ExactLedger exact_;
   std::vector<double> rod_viscous_;       // with counted_: per rod, viscous power of the last evaluation, W
   std::vector<ExactLedger> block_exact_;  // with counted_: commit's scratch per rod block
