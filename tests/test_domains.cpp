@@ -456,6 +456,69 @@ TEST(Domains, ARunGoesOnOverAnotherRankCountFromItsGatheredState) {
   EXPECT_NEAR(stopped[1]->ledger().external_work, sim.ledger().external_work, 1e-9 * sim.ledger().external_work);
 }
 
+// What 'mpirun -n N swarf run' does at each output (app/run_ranks.h): the case's serial
+// Simulation, the mirror, takes the run's state in place on rank 0 (gather_into: the records
+// sent to rank 0 only and written over the mirror's arrays). The mirror's World is then the
+// serial run's, byte for byte, at every gather (twice: the kept buffers), with its time, step
+// count and the reduced ledger (the serial run's plain sums to round-off); and it steps on
+// serially as the serial run does.
+TEST(Domains, TheMirrorTakesTheRunsStateOnRankZero) {
+  Model m = build_model(parse_case(test::pulled_bar_case({.cells = {12, 3, 3},
+                                                          .velocity = 40.0,
+                                                          .damping_ratio = 0.05,
+                                                          .integrator = "scheme = \"verlet\"\nend_time = 1"}),
+                                   "bar", {}));
+  const World initial = static_cast<const World&>(m);
+  World serial_world = initial;
+  Simulation sim(serial_world, m.step);
+  constexpr int kFirst = 400, kSecond = 700;
+  std::vector<World> worlds(3, initial);  // each rank's copy of the case, as each rank builds it
+  std::vector<std::unique_ptr<Simulation>> mirrors(3);
+  for (int r = 0; r < 3; ++r) mirrors[r] = std::make_unique<Simulation>(worlds[r], m.step);
+  std::vector<int> same(2, 0);
+  std::vector<std::vector<std::int64_t>> digits(3);
+  for (int k = 0; k < kSecond; ++k) {
+    sim.step();
+    if (k + 1 == kFirst) same[0] = same_world(worlds[0], serial_world);  // (not yet gathered: false)
+  }
+  ASSERT_FALSE(same[0]);
+  World at_first;
+  run_loopback(3, [&](Comm& comm) {
+    omp_set_num_threads(1);
+    DomainSettings ds;
+    ds.rebalance_every = 25;
+    Simulation& mirror = *mirrors[comm.rank()];
+    DomainRun d(comm, mirror, ds);
+    for (int k = 0; k < kFirst; ++k) d.step();
+    d.gather_into(mirror);
+    if (comm.rank() == 0) at_first = worlds[0];
+    for (int k = kFirst; k < kSecond; ++k) d.step();
+    d.gather_into(mirror);
+    digits[comm.rank()] = d.ledger_digits();
+  });
+  Simulation& mirror = *mirrors[0];
+  EXPECT_TRUE(same_world(worlds[0], serial_world)) << "the mirror after the second gather";
+  EXPECT_EQ(mirror.steps(), kSecond);
+  EXPECT_EQ(mirror.time(), sim.time());
+  EXPECT_GT(sim.ledger().viscous_work, 0.0);
+  EXPECT_NEAR(mirror.ledger().viscous_work, sim.ledger().viscous_work, 1e-9 * sim.ledger().viscous_work);
+  EXPECT_NEAR(mirror.ledger().external_work, sim.ledger().external_work, 1e-9 * sim.ledger().external_work);
+  EXPECT_EQ(digits[1], digits[0]);
+  EXPECT_EQ(digits[2], digits[0]);
+  EXPECT_EQ(digits[0].size(), DomainRun::kLedgerLines * ExactSum::kWords);
+  // The first gather was the serial run at step 400 (a serial run of 400 steps from the start).
+  World again = initial;
+  Simulation s400(again, m.step);
+  for (int k = 0; k < kFirst; ++k) s400.step();
+  EXPECT_TRUE(same_world(at_first, again)) << "the mirror after the first gather";
+  // The mirror steps on serially as the uninterrupted serial run.
+  for (int k = kSecond; k < kSteps; ++k) {
+    mirror.step();
+    sim.step();
+  }
+  EXPECT_TRUE(same_particles(worlds[0].particles, serial_world.particles)) << "the mirror stepped on";
+}
+
 TEST(Domains, OneDomainIsTheSerialRun) {
   SerialComm comm;
   DomainRun d(comm, scene().world, scene().step);
