@@ -126,8 +126,9 @@ void finish_run(const std::string& dir, const Model& model, Simulation& sim, Run
   sum["provenance"] = provenance_json(prov);
   const SeriesColumns series = outputs.series();
   const bool plots = model.settings.output.plots;
-  observers.finish(RunEnd{sim, series, dir, outputs.vtk(), plots, threads, wall.wall_s, wall.wall_s - wall.output_s},
-                   sum);
+  observers.finish(
+      RunEnd{sim, series, dir, outputs.vtk(), plots, threads, wall.wall_s, wall.wall_s - wall.output_s, prov.ranks},
+      sum);
   if (plots) add_plots(dir, sum);
   write_text_atomic(dir + "/" + kSummary, sum.dump(2) + "\n");
   std::string pictures;
@@ -200,7 +201,7 @@ void run_case(const RunOptions& opt) {
     t_start = t;
   }
   check_run_length(model, opt.allow_long, opt.force, t_start);
-  const int threads = set_threads(opt.threads);
+  const int threads = set_threads(opt.threads, opt.local_rank, opt.local_size);
   RunProvenance prov = run_provenance(threads);
   prov.ranks = opt.comm ? opt.comm->size() : 1;
   print_setup(model, threads);

@@ -26,6 +26,7 @@ struct RunOptions {
   /// Under mpirun: the ranks, over which the run is one run by domain decomposition (every rank
   /// calls run_case; rank 0 writes; run_ranks.h). Null: one process.
   Comm* comm = nullptr;
+  int local_rank = 0, local_size = 1;  ///< under mpirun: this rank among the ranks on its machine (thread pinning)
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

@@ -5,6 +5,7 @@
 #include <omp.h>
 #include <pthread.h>
 #include <sched.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -20,8 +21,10 @@ namespace {
 // (OMP_PROC_BIND, OMP_PLACES, GOMP_CPU_AFFINITY; OMP_PROC_BIND=false keeps them free).
 // Unpinned threads were migrated between the cores and lost most of the second thread's gain
 // (validation/bench/README.md). A process limited to one CPU (a sweep's case, an MPI rank
-// bound to a core) is left alone.
-void pin_threads(int threads) {
+// bound to a core) is left alone. The ranks of one run on one machine (local_size > 1) that
+// may each run anywhere take turns: rank r's threads go to CPUs r x threads, ...; when they do
+// not all fit, they stay free (all ranks pinned to the first CPUs would share them).
+void pin_threads(int threads, int local_rank, int local_size) {
   if (threads < 2 || std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("GOMP_CPU_AFFINITY"))
     return;
   cpu_set_t allowed;
@@ -30,22 +33,36 @@ void pin_threads(int threads) {
   for (int c = 0; c < CPU_SETSIZE; ++c)
     if (CPU_ISSET(c, &allowed)) cpus.push_back(c);
   if (static_cast<int>(cpus.size()) < threads) return;
+  int first = 0;
+  const bool whole_machine = static_cast<long>(cpus.size()) >= sysconf(_SC_NPROCESSORS_ONLN);
+  if (local_size > 1 && whole_machine) {  // (a rank bound to its own CPUs by mpirun pins within them)
+    if (static_cast<int>(cpus.size()) < threads * local_size) return;
+    first = local_rank * threads;
+  }
 #pragma omp parallel num_threads(threads)
   {
     cpu_set_t one;
     CPU_ZERO(&one);
-    CPU_SET(cpus[omp_get_thread_num()], &one);
+    CPU_SET(cpus[first + omp_get_thread_num()], &one);
     pthread_setaffinity_np(pthread_self(), sizeof one, &one);  // (on failure the thread stays free)
   }
 }
 
 }  // namespace
 
-int set_threads(int n) {
+int set_threads(int n, int local_rank, int local_size) {
   if (n > 0) omp_set_num_threads(n);
   const int used = omp_get_max_threads();
-  pin_threads(used);
+  pin_threads(used, local_rank, local_size);
   return used;
+}
+
+int threads_per_rank(int local_size) {
+  cpu_set_t allowed;
+  int cpus = omp_get_num_procs();
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) cpus = CPU_COUNT(&allowed);
+  const bool whole_machine = cpus >= sysconf(_SC_NPROCESSORS_ONLN);
+  return std::max(1, whole_machine ? cpus / std::max(1, local_size) : cpus);
 }
 
 int max_thread_count() { return std::max(64, 8 * omp_get_num_procs()); }

@@ -4,8 +4,12 @@
 namespace swarf {
 
 /// Sets the OpenMP thread count (n > 0) and returns the count in effect; pins the threads to
-/// CPUs when that helps (threads.cpp says when).
-int set_threads(int n);
+/// CPUs when that helps (threads.cpp says when). 'local_rank' of 'local_size': this process's
+/// place among the MPI ranks of one run on its machine (their threads must not share CPUs).
+int set_threads(int n, int local_rank = 0, int local_size = 1);
+/// The threads a rank of a run over MPI ranks takes when none are asked for: the CPUs it may run
+/// on, shared with the other 'local_size' ranks on its machine unless mpirun bound it to its own.
+int threads_per_rank(int local_size);
 
 /// Throws InputError naming 'option' unless 1 <= n <= max_thread_count(): OpenMP crashes
 /// when it cannot create the threads it was asked for.

@@ -22,8 +22,9 @@ class MpiSession {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
-  /// Ranks on this machine (they share its cores).
+  /// Ranks on this machine (they share its cores), and this one's place among them.
   int local_size() const { return local_size_; }
+  int local_rank() const { return local_rank_; }
   void barrier() const;
   /// The largest v over the ranks.
   int max_all(int v) const;
@@ -35,7 +36,7 @@ class MpiSession {
 
  private:
   bool active_ = false;
-  int rank_ = 0, size_ = 1, local_size_ = 1;
+  int rank_ = 0, size_ = 1, local_size_ = 1, local_rank_ = 0;
 };
 
 }  // namespace swarf

@@ -42,6 +42,7 @@ struct RunEnd {
   int threads;                  ///< OpenMP threads in effect
   double wall_s;                ///< wall time of the whole run (the part before a restart too), s
   double step_wall_s;           ///< of it, outside the outputs, s
+  int ranks = 1;                ///< MPI ranks of the run (mpirun -n N swarf run)
 };
 
 class Observer {

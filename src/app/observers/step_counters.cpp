@@ -65,10 +65,10 @@ void StepCounters::finish(const RunEnd& end, nlohmann::json& summary) {
     summary["run"]["krylov_capped"] = ns.krylov_capped;
     summary["run"]["steps_rejected_indefinite"] = ns.indefinite;
   }
-  say("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({} ns per particle-step, {} thread{})\n", sim.steps(),
+  say("\n  {} steps ({}), simulated {:.4g} s, wall {:.2f} s ({} ns per particle-step, {}{} thread{})\n", sim.steps(),
       sim.implicit() ? "newmark" : "verlet", sim.time(), end.wall_s,
-      particle_steps > 0.0 ? fmt::format("{:.1f}", ns_per_particle_step) : std::string("no"), end.threads,
-      end.threads == 1 ? "" : "s");
+      particle_steps > 0.0 ? fmt::format("{:.1f}", ns_per_particle_step) : std::string("no"),
+      end.ranks > 1 ? fmt::format("{} ranks x ", end.ranks) : std::string(), end.threads, end.threads == 1 ? "" : "s");
   if (sim.implicit())
     say("  newmark: {} steps rejected, sweeps per step mean {:.2f} max {}, {:.4g} force evaluations per us\n",
         st.rejected, sweeps_mean, st.max_iterations, evaluations_per_us);
