@@ -14,6 +14,7 @@
 #include "app/post.h"
 #include "app/rod_driver.h"
 #include "app/run.h"
+#include "app/run_ranks.h"
 #include "app/threads.h"
 #include "io/console.h"
 #include "io/mesh_file.h"
@@ -181,8 +182,9 @@ struct RunCommand final : Command {
  private:
   // An error on one rank stops them all (the others would wait for it in the next collective):
   // it is printed by the rank that met it, with its rank, and the job ends with main()'s exit
-  // code for it. Errors of the case itself arise on every rank alike (each builds it), and an
-  // interruption is agreed on by all ranks after the same step: both end normally.
+  // code for it. An error in setting the case up that every rank met (SetupAgreement) is printed
+  // once, by rank 0, and an interruption is agreed on by all ranks after the same step: both end
+  // normally.
   int run_on_ranks() {
     MpiSession session;
     MpiComm comm;
@@ -199,6 +201,11 @@ struct RunCommand final : Command {
     } catch (const std::exception& e) {
       if (session.size() == 1) throw;
       const auto* input = dynamic_cast<const InputError*>(&e);
+      // (every rank met the same error in setting the case up: rank 0 says it once, all end normally)
+      if (SetupAgreement::failed_everywhere()) {
+        if (session.rank() == 0) throw;
+        return input ? 2 : 1;
+      }
       const auto* sim = dynamic_cast<const SimulationError*>(&e);
       eprint("swarf: {} (rank {} of {}): {}\n", sim ? "simulation stopped" : "error", session.rank(), session.size(),
              e.what());

@@ -185,6 +185,7 @@ void run_case(const RunOptions& opt) {
   // Under mpirun every rank runs this, and the first alone prints and writes.
   const bool root = !opt.comm || opt.comm->rank() == 0;
   if (!root) set_quiet(true);
+  SetupAgreement agreement(opt.comm);  // (over ranks: every rank's setup done, or all stop)
   CheckpointCase stored;
   const CaseSettings cs = read_case(opt, stored);
   check_memory(cs, opt.force);
@@ -208,6 +209,7 @@ void run_case(const RunOptions& opt) {
   if (opt.comm)
     say("  ranks {} (one run by domain decomposition: slabs along x; rank 0 writes the outputs)\n", prov.ranks);
   if (opt.check) {
+    agreement.passed();
     say("\n  --check: the case builds; nothing was run and nothing was written\n");
     return;
   }
@@ -241,6 +243,7 @@ void run_case(const RunOptions& opt) {
     read_checkpoint(opt.restart, sim, rec, nullptr);
   }
   std::fflush(stdout);
+  agreement.passed();
   const std::unique_ptr<RankSteps> ranks = opt.comm ? std::make_unique<RankSteps>(*opt.comm, sim,
                                                                                   observers.step_listeners(), ledger)
                                                     : nullptr;

@@ -1,10 +1,35 @@
 // run_ranks.cpp: the steps of a run over MPI ranks (see run_ranks.h).
 #include "app/run_ranks.h"
 
+#include <fmt/format.h>
+
+#include <stdexcept>
+
 #include "app/observers/exact_ledger.h"
 #include "swarf/simulation.h"
 
 namespace swarf {
+
+namespace {
+bool g_failed_everywhere = false;  // (process-wide: the last SetupAgreement's verdict)
+}  // namespace
+
+SetupAgreement::~SetupAgreement() {
+  if (!comm_ || done_) return;
+  try {  // (unwinding from this rank's setup error: meet the others' passed())
+    g_failed_everywhere = comm_->sum_all(1) == comm_->size();
+  } catch (...) {
+  }
+}
+
+void SetupAgreement::passed() {
+  if (!comm_) return;
+  done_ = true;
+  if (const std::int64_t failed = comm_->sum_all(0); failed > 0)
+    throw std::runtime_error(fmt::format("{} of the {} ranks failed to set the run up", failed, comm_->size()));
+}
+
+bool SetupAgreement::failed_everywhere() { return g_failed_everywhere; }
 
 namespace {
 // The slabs are balanced anew every 1,000 steps and checked for strays every 10 (each check is a

@@ -21,6 +21,27 @@
 namespace swarf {
 
 class ExactLedger;
+
+/// The ranks agree that each has set its part up (read the case, built the model, prepared the
+/// outputs) before the first collective of the steps. A rank whose setup threw meets the others
+/// in the destructor, so that nobody waits forever: when every rank failed (an error in the case,
+/// met by all alike) they all end normally with rank 0's message (setup_failed_everywhere());
+/// when only some did, the others throw too and the run ends through MpiSession::abort.
+class SetupAgreement {
+ public:
+  explicit SetupAgreement(Comm* comm) : comm_(comm) {}
+  SetupAgreement(const SetupAgreement&) = delete;
+  SetupAgreement& operator=(const SetupAgreement&) = delete;
+  ~SetupAgreement();
+  /// This rank's setup is done. Collective. Throws std::runtime_error if another rank failed.
+  void passed();
+  /// True after a setup that threw on every rank (this process's last agreement).
+  static bool failed_everywhere();
+
+ private:
+  Comm* comm_;
+  bool done_ = false;
+};
 class Simulation;
 class StepListener;
 
