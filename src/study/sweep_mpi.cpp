@@ -14,15 +14,6 @@ namespace swarf {
 
 bool MpiSession::launched() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
 
-int MpiSession::launched_size() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-    if (const char* v = std::getenv(name)) {
-      const int n = std::atoi(v);
-      if (n > 0) return n;
-    }
-  return 1;
-}
-
 #ifdef SWARF_HAVE_MPI
 
 MpiSession::MpiSession() {

@@ -16,9 +16,6 @@ class MpiSession {
 
   /// True when OMPI_COMM_WORLD_SIZE or PMI_SIZE is set (a process started by mpirun).
   static bool launched();
-  /// The number of ranks mpirun started, read from its environment without initialising MPI
-  /// (1 when not launched by mpirun).
-  static int launched_size();
 
   int rank() const { return rank_; }
   int size() const { return size_; }
