@@ -10,7 +10,10 @@ source "$(dirname "$0")/mpi_prelude.sh"
 set_out="--set output.series_interval=6e-6 --set output.frame_interval=1e-4 --set output.checkpoint_at_end=true"
 # (1 rank x 2 threads against 2 ranks x 1 thread: MPI and OpenMP; more threads than cores crawl)
 OMP_NUM_THREADS=2 $MPI -n 1 "$swarf" run "$case" $set_out --set integrator.end_time=3e-4 --out "$dir/one" >"$dir/one.log" 2>&1
-$MPI -n 2 "$swarf" run "$case" $set_out --set integrator.end_time=3e-4 --out "$dir/two" >"$dir/two.log" 2>&1
+# (2 ranks whose slabs are cut anew every 7 steps, strays looked for every 3: hundreds of
+# migrations, which must not change a bit)
+$MPI -n 2 "$swarf" run "$case" $set_out --set integrator.end_time=3e-4 --rebalance-every 7 --stray-check-every 3 \
+  --out "$dir/two" >"$dir/two.log" 2>&1
 $MPI -n 2 "$swarf" run "$case" $set_out --set integrator.end_time=1.5e-4 --out "$dir/half" >"$dir/half.log" 2>&1
 $MPI -n 3 "$swarf" run --restart "$dir/half/checkpoint.h5" --set integrator.end_time=3e-4 --out "$dir/rest" \
   >"$dir/rest.log" 2>&1
@@ -42,6 +45,14 @@ set -e
 # (every rank meets it: said once, by rank 0)
 if [ $code -ne 2 ] || [ "$(grep -c "does not support contacts" <<<"$refusal")" != 1 ] || [ -e "$dir/cut" ]; then
   echo "the default cut on 2 ranks: exit code $code (2 expected), output: $refusal"
+  fail=1
+fi
+set +e
+"$swarf" run "$case" --rebalance-every 0 --out "$dir/bad" >"$dir/bad.log" 2>&1
+code=$?
+set -e
+if [ $code -ne 2 ] || ! grep -q "rebalance-every 0" "$dir/bad.log"; then
+  echo "--rebalance-every 0: exit code $code (2 expected): $(cat "$dir/bad.log")"
   fail=1
 fi
 echo "rows $(($(wc -l <"$dir/one/series.csv") - 1)), frames $(ls "$dir/one/frames" | wc -l), state $(hash_of "$dir/one")"

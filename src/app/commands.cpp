@@ -156,7 +156,15 @@ struct RunCommand final : Command {
     sub->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
     sub->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")
         ->allow_extra_args(false);
-    sub->add_option("--threads", ro.threads, "Threads (default: OpenMP's, OMP_NUM_THREADS)");
+    sub->add_option(
+        "--threads", ro.threads,
+        "Threads (default: OpenMP's, OMP_NUM_THREADS; under mpirun the CPUs over the ranks on the machine)");
+    sub->add_option("--rebalance-every", ro.rebalance_every,
+                    "Under mpirun: steps between new slab cuts balancing the ranks' work (default 1000; the results do "
+                    "not depend on it)");
+    sub->add_option("--stray-check-every", ro.stray_check_every,
+                    "Under mpirun: steps between the checks for particles that left their rank's slab (default 10; "
+                    "the results do not depend on it)");
     sub->add_flag("--force", ro.force, "Run even if the case's memory estimate exceeds the machine's memory");
     sub->add_flag("--allow-long", ro.allow_long,
                   "Run even if the case is estimated to need more steps than integrator.max_steps");
@@ -173,6 +181,10 @@ struct RunCommand final : Command {
   }
   int run() override {
     if (sub->count("--threads")) check_thread_count(ro.threads, "--threads");
+    for (const auto& [option, v] :
+         {std::pair{"--rebalance-every", ro.rebalance_every}, std::pair{"--stray-check-every", ro.stray_check_every}})
+      if (v < 1 || v > 1000000000)
+        throw InputError(fmt::format("{} {}: the step count must lie in [1, 1e9]", option, v));
     // Under mpirun: one run over the ranks by domain decomposition (run_ranks.h).
     if (MpiSession::launched()) return run_on_ranks();
     run_case(ro);

@@ -27,6 +27,9 @@ struct RunOptions {
   /// calls run_case; rank 0 writes; run_ranks.h). Null: one process.
   Comm* comm = nullptr;
   int local_rank = 0, local_size = 1;  ///< under mpirun: this rank among the ranks on its machine (thread pinning)
+  /// Under mpirun: steps between new slab cuts (--rebalance-every) and between the checks for
+  /// particles that left their slab (--stray-check-every). Neither changes the results.
+  long long rebalance_every = 1000, stray_check_every = 10;
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

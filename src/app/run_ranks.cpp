@@ -31,23 +31,12 @@ void SetupAgreement::passed() {
 
 bool SetupAgreement::failed_everywhere() { return g_failed_everywhere; }
 
-namespace {
-// The slabs are balanced anew every 1,000 steps and checked for strays every 10 (each check is a
-// collective, each migration rebuilds the domains: 37 ms for 27,648 particles of the bar on 2
-// ranks, validation/bench/README.md). Ownership never changes the bits, only the balance.
-DomainSettings settings() {
-  DomainSettings ds;
-  ds.rebalance_every = 1000;
-  ds.check_every = 10;
-  return ds;
-}
-}  // namespace
-
-RankSteps::RankSteps(Comm& comm, Simulation& mirror, const std::vector<StepListener*>& listeners, ExactLedger& ledger)
+RankSteps::RankSteps(Comm& comm, Simulation& mirror, const std::vector<StepListener*>& listeners, ExactLedger& ledger,
+                     const DomainSettings& settings)
     : comm_(comm),
       mirror_(mirror),
       ledger_(ledger),
-      run_(std::make_unique<DomainRun>(comm, mirror, settings(), ledger.digits.empty() ? nullptr : &ledger.digits)) {
+      run_(std::make_unique<DomainRun>(comm, mirror, settings, ledger.digits.empty() ? nullptr : &ledger.digits)) {
   if (root())
     for (StepListener* l : listeners) run_->add_listener(l);
 }

@@ -50,7 +50,8 @@ class RankSteps {
   /// The run's domains, starting where 'mirror' is (a fresh run or a restored checkpoint, with
   /// the ledger's exact sums in 'ledger' if it had them). 'listeners' are rank 0's (not owned);
   /// 'ledger' (not owned) takes the exact sums at every gather, for the checkpoints. Collective.
-  RankSteps(Comm& comm, Simulation& mirror, const std::vector<StepListener*>& listeners, ExactLedger& ledger);
+  RankSteps(Comm& comm, Simulation& mirror, const std::vector<StepListener*>& listeners, ExactLedger& ledger,
+            const DomainSettings& settings);
   RankSteps(const RankSteps&) = delete;
   RankSteps& operator=(const RankSteps&) = delete;
 
