@@ -15,8 +15,8 @@ PKGS=(
   libgtest-dev
   # the Python module (src/python)
   pybind11-dev python3-dev
-  # MPI (parameter studies)
-  libopenmpi-dev openmpi-bin
+  # MPI (parameter studies, one run over ranks); procps: pkill for the tests that interrupt a run
+  libopenmpi-dev openmpi-bin procps
   # plots (PNG) and headless rendering
   python3 python3-numpy python3-matplotlib python3-h5py xvfb xauth
 )

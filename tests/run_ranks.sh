@@ -2,7 +2,8 @@
 # 'mpirun -n N swarf run': one run over N ranks by domain decomposition gives the outputs of one
 # rank, bit for bit, with 2 threads or 1 per rank (series.csv, the ParaView frames, the final state's hash in summary.json),
 # and a checkpoint written on 2 ranks goes on over 3 ranks with the uninterrupted run's rows and
-# state (the ledger's exact sums travel in the checkpoint); the default cut is refused. The case: the uniaxial bar
+# state (the ledger's exact sums travel in the checkpoint), as does one interrupted by SIGTERM; the
+# default cut is refused. The case: the uniaxial bar
 # (validation/hysteresis/bar.toml: rods, grips, velocity Verlet) for 0.3 ms, 5,524 steps.
 # Usage: run_ranks.sh SWARF BAR_CASE   (exit 77: mpirun missing, skipped)
 swarf=$1 case=$2
@@ -46,6 +47,31 @@ set -e
 if [ $code -ne 2 ] || [ "$(grep -c "does not support contacts" <<<"$refusal")" != 1 ] || [ -e "$dir/cut" ]; then
   echo "the default cut on 2 ranks: exit code $code (2 expected), output: $refusal"
   fail=1
+fi
+# Interrupted: SIGTERM to the ranks (as Slurm's --signal sends it to a job's tasks; mpirun passes
+# its own on only after about 2 s here) once 10 rows are written: the ranks stop after the same
+# step, rank 0 writes checkpoint.h5, no summary.json, exit code 143; the checkpoint continued on
+# 1 rank to 0.3 ms gives the uninterrupted run's series.csv.
+$MPI -n 2 "$swarf" run "$case" $set_out --set integrator.end_time=3e-3 --set output.checkpoint_every=1000000 \
+  --out "$dir/stop" >"$dir/stop.log" 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+  [ -f "$dir/stop/series.csv.part" ] && [ "$(wc -l <"$dir/stop/series.csv.part")" -ge 11 ] && break
+  sleep 0.1
+done
+pkill -TERM -P $pid
+set +e
+wait $pid
+code=$?
+set -e
+if [ $code -ne 143 ] || [ ! -f "$dir/stop/checkpoint.h5" ] || [ -e "$dir/stop/summary.json" ]; then
+  echo "interrupted on 2 ranks: exit code $code (143 expected), checkpoint.h5 and no summary.json expected"
+  ls "$dir/stop"
+  fail=1
+else
+  $MPI -n 1 "$swarf" run --restart "$dir/stop/checkpoint.h5" --set integrator.end_time=3e-4 --out "$dir/stop2" \
+    >"$dir/stop2.log" 2>&1
+  cmp "$dir/one/series.csv" "$dir/stop2/series.csv" || { echo "the interrupted run, continued, differs"; fail=1; }
 fi
 set +e
 "$swarf" run "$case" --rebalance-every 0 --out "$dir/bad" >"$dir/bad.log" 2>&1
