@@ -58,7 +58,10 @@ class Observer {
   virtual void begin(const Simulation&) {}
   /// Its checkpoint state, each field named once for save and load (as Simulation::visit_state).
   virtual void visit_state(StateArchive&) {}
-  /// The listener to register when it must see every step, not only the rows (else null).
+  /// The listener to register when it must see every step, not only the rows (else null). In a
+  /// run over MPI ranks it is called with rank 0's domain Simulation, whose time, counters and
+  /// settings are the run's but whose particles are only that rank's (app/run_ranks.h): a
+  /// listener that needs the particles at every step cannot run over ranks yet.
   virtual StepListener* step_listener() { return nullptr; }
   /// Adds its datasets to results.h5 (the final state) before the file is closed.
   virtual void write_results(H5File&) const {}
