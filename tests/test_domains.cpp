@@ -477,13 +477,13 @@ TEST(Domains, TheMirrorTakesTheRunsStateOnRankZero) {
   std::vector<World> worlds(3, initial);  // each rank's copy of the case, as each rank builds it
   std::vector<std::unique_ptr<Simulation>> mirrors(3);
   for (int r = 0; r < 3; ++r) mirrors[r] = std::make_unique<Simulation>(worlds[r], m.step);
-  std::vector<int> same(2, 0);
   std::vector<std::vector<std::int64_t>> digits(3);
+  bool before_gather = true;
   for (int k = 0; k < kSecond; ++k) {
     sim.step();
-    if (k + 1 == kFirst) same[0] = same_world(worlds[0], serial_world);  // (not yet gathered: false)
+    if (k + 1 == kFirst) before_gather = same_world(worlds[0], serial_world);  // (not yet gathered: false)
   }
-  ASSERT_FALSE(same[0]);
+  ASSERT_FALSE(before_gather);
   World at_first;
   run_loopback(3, [&](Comm& comm) {
     omp_set_num_threads(1);

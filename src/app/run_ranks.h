@@ -70,8 +70,6 @@ class RankSteps {
   void gather();
 
   bool root() const { return comm_.rank() == 0; }
-  int ranks() const { return comm_.size(); }
-  const DomainRun& domains() const { return *run_; }
 
  private:
   Comm& comm_;

@@ -16,6 +16,22 @@
 namespace swarf {
 namespace {
 
+// The CPUs this process may run on (empty if the affinity cannot be read), and whether they are
+// the whole machine (mpirun --bind-to none) rather than a share mpirun bound it to.
+struct AllowedCpus {
+  std::vector<int> cpus;
+  bool whole_machine = false;
+};
+AllowedCpus allowed_cpus() {
+  AllowedCpus a;
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return a;
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &allowed)) a.cpus.push_back(c);
+  a.whole_machine = static_cast<long>(a.cpus.size()) >= sysconf(_SC_NPROCESSORS_ONLN);
+  return a;
+}
+
 // Pins OpenMP thread t to the t-th CPU this process may run on, when it runs 2 or more
 // threads, has at least as many CPUs, and the environment does not place threads itself
 // (OMP_PROC_BIND, OMP_PLACES, GOMP_CPU_AFFINITY; OMP_PROC_BIND=false keeps them free).
@@ -27,15 +43,11 @@ namespace {
 void pin_threads(int threads, int local_rank, int local_size) {
   if (threads < 2 || std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("GOMP_CPU_AFFINITY"))
     return;
-  cpu_set_t allowed;
-  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
-  std::vector<int> cpus;
-  for (int c = 0; c < CPU_SETSIZE; ++c)
-    if (CPU_ISSET(c, &allowed)) cpus.push_back(c);
+  const AllowedCpus allowed = allowed_cpus();
+  const std::vector<int>& cpus = allowed.cpus;
   if (static_cast<int>(cpus.size()) < threads) return;
   int first = 0;
-  const bool whole_machine = static_cast<long>(cpus.size()) >= sysconf(_SC_NPROCESSORS_ONLN);
-  if (local_size > 1 && whole_machine) {  // (a rank bound to its own CPUs by mpirun pins within them)
+  if (local_size > 1 && allowed.whole_machine) {  // (a rank bound to its own CPUs by mpirun pins within them)
     if (static_cast<int>(cpus.size()) < threads * local_size) return;
     first = local_rank * threads;
   }
@@ -58,11 +70,9 @@ int set_threads(int n, int local_rank, int local_size) {
 }
 
 int threads_per_rank(int local_size) {
-  cpu_set_t allowed;
-  int cpus = omp_get_num_procs();
-  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) cpus = CPU_COUNT(&allowed);
-  const bool whole_machine = cpus >= sysconf(_SC_NPROCESSORS_ONLN);
-  return std::max(1, whole_machine ? cpus / std::max(1, local_size) : cpus);
+  const AllowedCpus a = allowed_cpus();
+  const int cpus = a.cpus.empty() ? omp_get_num_procs() : static_cast<int>(a.cpus.size());
+  return std::max(1, a.whole_machine || a.cpus.empty() ? cpus / std::max(1, local_size) : cpus);
 }
 
 int max_thread_count() { return std::max(64, 8 * omp_get_num_procs()); }
