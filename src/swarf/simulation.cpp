@@ -164,6 +164,16 @@ ExactSum Simulation::particle_kinetic_energy(const std::uint8_t* counted) const 
   return e;
 }
 
+ExactSum Simulation::contact_power_exact(const std::uint8_t* counted) const {
+  const auto& p = m_.particles;
+  if (!sys_.contacts.enabled()) return ExactSum{};
+  const bool rot = ms_.rotations;
+  // (the terms of integrate::contact_power, here counted by owner and added exactly)
+  return exact_sum(p.size(), [&](std::size_t i) {
+    return !counted[i] ? 0.0 : ms_.contact_force[i].dot(p.velocity[i]) + (rot ? p.torque[i].dot(p.omega[i]) : 0.0);
+  });
+}
+
 double Simulation::rotational_energy() const {
   if (!ms_.rotations) return 0.0;
   const auto& p = m_.particles;

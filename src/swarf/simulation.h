@@ -59,14 +59,17 @@ class Simulation {
   /// becomes the World's particles, the ends and per-rod arrays of 'rods' its rods' (the law,
   /// area and bond formation stay the World's); the rows, the groups' members (from the
   /// particles' group indices) and scratch follow, the step's state (time, counters, windows)
-  /// stays. Throws InputError with contacts, bodies or flows, whose per-particle lists cannot
-  /// follow a wholesale change, or arrays of unequal length.
-  void replace_particles(Particles particles, Rods rods);
+  /// stays. With contacts, 'contacts' holds the contacts that touch or carry a history
+  /// (ContactSystem::records, indices into 'particles'): the lists are made anew around them
+  /// (ContactSystem::replace). Throws InputError with contacts but no records, with bodies or
+  /// flows, whose per-particle state cannot follow a wholesale change, or arrays of unequal length.
+  void replace_particles(Particles particles, Rods rods, const ContactSystem::Records* contacts = nullptr);
   /// Lets 'write' overwrite the values of the particles' and rods' fields in place (the same
   /// particles and rods: a run over ranks bringing its mirror up to date, issue 38); 'write'
-  /// must not resize or reorder them, nor change rod ends. The rows, the groups' members and
-  /// scratch follow as in replace_particles, with the same refusals.
-  void overwrite_records(const std::function<void(Particles&, Rods&)>& write);
+  /// must not resize or reorder them, nor change rod ends. The rows, the groups' members,
+  /// scratch and the contacts follow as in replace_particles, with the same refusals.
+  void overwrite_records(const std::function<void(Particles&, Rods&)>& write,
+                         const ContactSystem::Records* contacts = nullptr);
   /// Places rigid body b at 'position' (centre of mass, m) and 'orientation' (principal frame
   /// -> world, normalised here) between steps, its mesh with it. A hinge's orientation follows its
   /// angle, so it is refused for a hinged body unless unchanged. Throws InputError on a
@@ -90,10 +93,16 @@ class Simulation {
   /// The groups' work and reactions too (GroupSystem::count_exactly).
   /// 'rod_keys': per rod, its place in the global rod order (nullptr: this World's rods are the
   /// global list), for RodSystem::count_exactly.
+  /// With contacts, the contact part of each particle's force is kept (contact_power_exact).
   void count_exactly(const std::uint8_t* counted, const std::int64_t* rod_keys = nullptr) {
     sys_.rods.count_exactly(counted, rod_keys);
     sys_.groups.count_exactly(counted, m_);
+    ms_.keep_contact_force = counted != nullptr;
   }
+  /// The power of the contact forces and torques on the particles i with counted[i] at the end
+  /// of the last step (the ledger's contact line measures it so, trapezoid over the step), each
+  /// term added exactly, W: a domain's share (issue 38; needs count_exactly's mask set).
+  ExactSum contact_power_exact(const std::uint8_t* counted) const;
   const RodSystem::ExactLedger& exact_ledger() const { return sys_.rods.exact_ledger(); }
   const GroupSystem::ExactShare& exact_group_share() const { return sys_.groups.exact_share(); }
   std::size_t broken_rods() const { return sys_.rods.broken(); }
@@ -125,6 +134,9 @@ class Simulation {
   double potential_energy() const;
   /// Force the particles exert on mesh m in the last evaluation of an accepted step, N.
   Vec3 mesh_force(std::size_t m) const { return ms_.mesh_force[m]; }
+  /// The power of the contact forces at the end of the last step, W: where the ledger's
+  /// contact line (a trapezoid over each step) goes on from.
+  double contact_power() const { return ms_.contact_power_old; }
   /// Kinetic energy of the rigid bodies, J (part of kinetic_energy()).
   double body_kinetic_energy() const { return sys_.bodies.kinetic_energy(m_); }
   const ContactSystem& contacts() const { return sys_.contacts; }
@@ -157,8 +169,9 @@ class Simulation {
   /// What the integrators work on in a step that starts now.
   Integration integration() { return Integration{m_, sys_, ms_, set_, clock_, stats_, ledger_, time_, implicit_}; }
   void reindex_all(const Reindex& r);  // the door's common part
-  void records_replaced();             // after replace_particles, overwrite_records: rows, members, scratch
-  void resize_scratch();               // per-particle, per-rod-block and per-group scratch after a change
+  // after replace_particles, overwrite_records: rows, members, contacts, scratch
+  void records_replaced(const ContactSystem::Records* contacts);
+  void resize_scratch();  // per-particle, per-rod-block and per-group scratch after a change
   void check_loaded_world(const std::vector<std::int32_t>& ends);  // after a load: sizes, indices, rows
   void update_mesh_step_limit();  // after the particles change (construction, the door, a load)
 

@@ -88,9 +88,17 @@ void Simulation::append_particles(const Particles& extra) {
   resize_scratch();
 }
 
-void Simulation::replace_particles(Particles particles, Rods rods) {
-  if (sys_.contacts.enabled() || !m_.bodies.empty() || !m_.inflows.empty() || !m_.outflows.empty())
-    throw InputError("replace_particles: not with contacts, rigid bodies or particle flows");
+namespace {
+// The door's refusals for a wholesale change of the particles (replace_particles, overwrite_records).
+void check_wholesale(const World& w, bool contacts, const ContactSystem::Records* records, const char* door) {
+  if (!w.bodies.empty() || !w.inflows.empty() || !w.outflows.empty())
+    throw InputError(fmt::format("{}: not with rigid bodies or particle flows", door));
+  if (contacts && !records) throw InputError(fmt::format("{}: the contacts' records are missing", door));
+}
+}  // namespace
+
+void Simulation::replace_particles(Particles particles, Rods rods, const ContactSystem::Records* contacts) {
+  check_wholesale(m_, sys_.contacts.enabled(), contacts, "replace_particles");
   const std::size_t n = particles.position.size(), m = rods.ends.size();
   bool consistent = true;
   particles.for_each_field([&](const char*, auto& v) { consistent = consistent && v.size() == n; });
@@ -106,25 +114,29 @@ void Simulation::replace_particles(Particles particles, Rods rods) {
   m_.particles = std::move(particles);
   m_.rods.ends = std::move(rods.ends);
   m_.rods.for_each_field_with(rods, [](auto& mine, auto& theirs) { mine = std::move(theirs); });
-  records_replaced();
+  records_replaced(contacts);
 }
 
-void Simulation::overwrite_records(const std::function<void(Particles&, Rods&)>& write) {
-  if (sys_.contacts.enabled() || !m_.bodies.empty() || !m_.inflows.empty() || !m_.outflows.empty())
-    throw InputError("overwrite_records: not with contacts, rigid bodies or particle flows");  // (as replace_particles)
+void Simulation::overwrite_records(const std::function<void(Particles&, Rods&)>& write,
+                                   const ContactSystem::Records* contacts) {
+  check_wholesale(m_, sys_.contacts.enabled(), contacts, "overwrite_records");
   const std::size_t n = m_.particles.size(), m = m_.rods.size();
   write(m_.particles, m_.rods);
   if (m_.particles.size() != n || m_.rods.size() != m)
     throw std::logic_error("overwrite_records: the particles or rods were resized");
-  records_replaced();
+  records_replaced(contacts);
 }
 
-void Simulation::records_replaced() {
+void Simulation::records_replaced(const ContactSystem::Records* contacts) {
   const std::size_t n = m_.particles.size();
   m_.rods.build_rows(n);
   for (Group& g : m_.groups) g.members.clear();  // (the members from the particles' group indices, ascending)
   for (std::size_t i = 0; i < n; ++i)
     if (m_.particles.group[i] >= 0) m_.groups[m_.particles.group[i]].members.push_back(static_cast<std::int32_t>(i));
+  if (sys_.contacts.enabled()) {
+    sys_.contacts.replace(m_.particles, m_.rods, *contacts);
+    ms_.contact_force.assign(n, Vec3::Zero());  // (the next evaluation's gather fills it)
+  }
   resize_scratch();
 }
 

@@ -16,6 +16,7 @@ namespace swarf {
 
 void ContactSystem::visit_state(StateArchive& ar, const Particles& p) {
   const bool load = ar.loading();
+  if (!ar.keeps("contacts/pairs")) return;  // (a domain's step state: the contacts travel as records)
   // Lists as flat index arrays (i, j) and (i, triangle), their histories beside them.
   std::vector<std::int32_t> pairs(2 * pairs_.size()), tris(2 * tris_.size());
   std::vector<Vec3> th(tris_.size());

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "swarf/core/exact_sum.h"
 #include "swarf/core/parallel.h"
 #include "swarf/core/periodic.h"
 #include "swarf/core/sym_tensor.h"
@@ -230,6 +231,46 @@ class ContactSystem {
   /// Current number of touching sphere-sphere contacts.
   std::size_t touching_pairs() const;
   std::size_t list_builds() const { return builds_; }
+
+  /// A contact's state as it travels between domains or to a run's mirror (issue 38): its ends
+  /// (particle indices, i < j; a triangle contact: the particle and the global triangle index),
+  /// its committed friction history, whether it touched in the last evaluation and what that
+  /// evaluation gave (its result, elastic energy and, for a triangle, point of action).
+  struct PairRecord {
+    std::int32_t i = 0, j = 0;
+    Vec3 history = Vec3::Zero();
+    std::uint8_t touching = 0;
+    Result result{Vec3::Zero(), Vec3::Zero()};
+    double energy = 0.0;  ///< J
+  };
+  struct TriangleRecord {
+    std::int32_t i = 0, tri = 0;
+    Vec3 history = Vec3::Zero();
+    std::uint8_t touching = 0;
+    Result result{Vec3::Zero(), Vec3::Zero()};
+    Vec3 point = Vec3::Zero();  ///< m
+    double energy = 0.0;        ///< J
+  };
+  struct Records {
+    std::vector<PairRecord> pairs;          ///< sorted by (i, j)
+    std::vector<TriangleRecord> triangles;  ///< sorted by (i, tri)
+  };
+  /// The contacts that touched in the last evaluation or carry a history (all others are
+  /// candidates only: a new list finds them again), in list order (contact_records.cpp).
+  Records records() const;
+  /// New lists over 'p' (after the door replaced the particles and rods) with the contacts of
+  /// 'r' (indices into p, sorted; no rod between a pair's ends) carried: their histories, touch
+  /// flags and last results as they were, so that the next evaluation and the outputs read
+  /// them as if the contacts had never moved. The lists are built (a full search) and valid
+  /// for the next step.
+  void replace(const Particles& p, const Rods& rods, const Records& r);
+  /// The contacts' shares counted by particle (a domain's, issue 38; counted: per particle,
+  /// 1 if this domain owns it), each term added exactly (core/exact_sum.h), so that the sums
+  /// over all domains are the same bits for any partition: the elastic energy of the touching
+  /// pairs whose first particle is counted and of the triangle contacts of counted particles,
+  /// J; per mesh, the force those triangle contacts exert on it, N (3 sums per mesh: x y z).
+  ExactSum elastic_energy_exact(const std::uint8_t* counted) const;
+  std::vector<ExactSum> mesh_forces_exact(const std::uint8_t* counted) const;
 
   /// Follows a change of particle indices (state/reindex.h): contacts of removed particles
   /// are dropped, the others renumbered with their histories (a pair whose ends swap keeps

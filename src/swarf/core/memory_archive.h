@@ -22,6 +22,7 @@ class MemoryArchive final : public StateArchive {
   explicit MemoryArchive(std::function<bool(std::string_view)> skip = {}) : skip_(std::move(skip)) {}
   bool loading() const override { return loading_; }
   void set_loading(bool l) { loading_ = l; }
+  bool keeps(std::string_view n) const override { return !(skip_ && skip_(n)); }
   void array(std::string_view n, std::vector<double>& v, std::size_t) override { io(n, d_, v); }
   void array(std::string_view n, std::vector<Vec3>& v, std::size_t) override { io(n, v3_, v); }
   void array(std::string_view n, std::vector<Quat>& v, std::size_t) override { io(n, q_, v); }

@@ -25,6 +25,10 @@ class StateArchive {
   virtual ~StateArchive() = default;
   /// True when the visit writes into the state (a load); false when it reads it (save, hash).
   virtual bool loading() const = 0;
+  /// False for a field this archive neither keeps nor gives back (a domain's step state leaves
+  /// the particle, rod and contact arrays to records: MemoryArchive's skip): a visit whose load
+  /// derives more from such fields skips that too.
+  virtual bool keeps(std::string_view /*name*/) const { return true; }
 
   // On save and hash the array is read; on load it is replaced by the stored one, whose
   // length must be 'expected' (elements) unless that is kAnySize: an archive of another

@@ -19,6 +19,17 @@ struct DomainRun::Local {
   Rods rods;
   std::vector<std::uint8_t> owned;
   std::vector<std::int64_t> key;
+  ContactSystem::Records contacts;  // (indices into 'particles')
+};
+
+// Contact records with their particles' ids (the records' own indices are the sender's).
+struct DomainRun::ContactPool {
+  std::vector<std::array<std::int64_t, 2>> pair_ids;
+  std::vector<ContactSystem::PairRecord> pairs;
+  std::vector<std::int64_t> tri_ids;
+  std::vector<ContactSystem::TriangleRecord> tris;
+  void put(Bytes& out) const;      // appends the pool: counts, then the records
+  void get(const std::byte*& in);  // appends the records at 'in'
 };
 
 namespace {
@@ -26,6 +37,9 @@ namespace {
 // The World's configuration (law, area, gravity, ...) without its particles and rods; the
 // groups with their motions (their members are rebuilt from the particles' group indices).
 void copy_configuration(const World& from, World& to) {
+  to.meshes = from.meshes;
+  to.mesh_motion = from.mesh_motion;
+  to.contacts = from.contacts;
   to.rods.law = from.rods.law;
   to.rods.area = from.rods.area;
   to.rods.formation = from.rods.formation;
@@ -53,16 +67,47 @@ bool contains(const std::vector<std::int64_t>& sorted, std::int64_t v) {
   return std::binary_search(sorted.begin(), sorted.end(), v);
 }
 
+// A contact record as bytes: its particles' ids, then the record (its indices the sender's).
+template <class Record>
+void put_record(Bytes& out, const std::int64_t* ids, int n_ids, const Record& r) {
+  const std::size_t at = out.size();
+  out.resize(at + n_ids * sizeof(std::int64_t) + sizeof(Record));
+  std::memcpy(out.data() + at, ids, n_ids * sizeof(std::int64_t));
+  std::memcpy(out.data() + at + n_ids * sizeof(std::int64_t), static_cast<const void*>(&r), sizeof(Record));
+}
+template <class Record>
+void get_record(const std::byte*& in, std::int64_t* ids, int n_ids, Record& r) {
+  std::memcpy(ids, in, n_ids * sizeof(std::int64_t));
+  std::memcpy(static_cast<void*>(&r), in + n_ids * sizeof(std::int64_t), sizeof(Record));
+  in += n_ids * sizeof(std::int64_t) + sizeof(Record);
+}
+
 }  // namespace
+
+void DomainRun::ContactPool::put(Bytes& out) const {
+  put_count(out, pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) put_record(out, pair_ids[k].data(), 2, pairs[k]);
+  put_count(out, tris.size());
+  for (std::size_t k = 0; k < tris.size(); ++k) put_record(out, &tri_ids[k], 1, tris[k]);
+}
+
+void DomainRun::ContactPool::get(const std::byte*& in) {
+  for (std::uint64_t n = get_count(in), q = 0; q < n; ++q) {
+    pair_ids.emplace_back();
+    pairs.emplace_back();
+    get_record(in, pair_ids.back().data(), 2, pairs.back());
+  }
+  for (std::uint64_t n = get_count(in), q = 0; q < n; ++q) {
+    tri_ids.emplace_back();
+    tris.emplace_back();
+    get_record(in, &tri_ids.back(), 1, tris.back());
+  }
+}
 
 void DomainRun::check_supported(const World& w, const StepSettings& s) {
   const char* what = nullptr;
   if (s.implicit())
     what = s.solver == Solver::Newton ? "the Newton solver" : "the implicit Newmark step (integrator.scheme)";
-  else if (w.contacts)
-    what = "contacts";
-  else if (!w.meshes.empty())
-    what = "meshes (tools)";
   else if (!w.bodies.empty())
     what = "rigid bodies";
   else if (!w.inflows.empty() || !w.outflows.empty())
@@ -71,8 +116,6 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what = "heat";
   else if (w.rods.formation.enabled())
     what = "bond formation";
-  else if (w.periodic.on())
-    what = "a periodic width";
   // A group's members are found again from the particles' group indices after a migration.
   for (std::size_t g = 0; g < w.groups.size() && !what; ++g)
     for (const std::int32_t i : w.groups[g].members)
@@ -100,6 +143,16 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   if (!ds_.fixed_cuts.empty() && static_cast<int>(ds_.fixed_cuts.size()) != size - 1)
     throw InputError(
         fmt::format("domains: {} cut planes for {} ranks (one fewer than the ranks)", ds_.fixed_cuts.size(), size));
+  contacts_ = global.contacts;
+  if (contacts_) {
+    // Every particle within reach of a slab is a copy there: a contact of an owned particle
+    // then always has both ends at hand, as long as no particle moves more than half the lists'
+    // skin between migrations (step()).
+    double largest = 0.0;
+    for (const double r : global.particles.radius) largest = std::max(largest, r);
+    contact_skin_ = global.contact.skin;
+    reach_ = 2.0 * largest + contact_skin_;
+  }
   copy_configuration(global, local_);  // (no particles and no rods yet: adopt brings them)
   local_.particles.next_id = global.particles.next_id;
   Particles& gp = const_cast<Particles&>(global.particles);  // (records are read through for_each_field)
@@ -121,11 +174,13 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   // This rank's particles, their rods and the rods' other ends, from the global World.
   std::vector<std::int64_t> owned_ids;
   std::vector<std::uint8_t> needed(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n; ++i) {
     if (partition_.owner(gp.position[i]) == rank) {
       owned_ids.push_back(gp.id[i]);
       needed[i] = 1;
     }
+    if (contacts_ && partition_.near(gp.position[i], rank, reach_)) needed[i] = 1;  // (a spatial ghost)
+  }
   std::sort(owned_ids.begin(), owned_ids.end());
   RodPool rods;
   Bytes buf;
@@ -144,8 +199,9 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
       pack_particle(buf, gp, i);
       unpack_new_particle(buf.data(), pool);
     }
-  adopt(assemble(pool, std::vector<std::uint8_t>(pool.size(), 1), rods, owned_ids));
+  adopt(assemble(pool, std::vector<std::uint8_t>(pool.size(), 1), rods, owned_ids, ContactPool{}));
   exchange_halo();  // (the Simulation's first evaluation gave the ghosts partial forces)
+  if (contacts_) book_contacts(true);
 }
 
 DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds,
@@ -154,30 +210,58 @@ DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds,
   // The local Simulation's construction evaluated the forces of the state as it is: right for a
   // run's first step, not for one that goes on (an acceleration is the last step's, made with
   // its half-step velocities). Every local particle takes its record from 'start' again.
+  // So do the contacts (their friction histories): those of start with an owned end here.
   Particles& gp = const_cast<Particles&>(start.world().particles);
-  Particles& p = local_.particles;
-  Bytes buf;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto it = std::lower_bound(gp.id.begin(), gp.id.end(), p.id[i]);
-    buf.clear();
-    pack_particle(buf, gp, static_cast<std::size_t>(it - gp.id.begin()));
-    unpack_particle(buf.data(), p, i);
+  const Particles& p = local_.particles;
+  const auto global_index = [&](std::int64_t id) {
+    return static_cast<std::size_t>(std::lower_bound(gp.id.begin(), gp.id.end(), id) - gp.id.begin());
+  };
+  ContactSystem::Records contacts;
+  if (contacts_) {
+    // start's index -> local index (-1: not here)
+    std::vector<std::int32_t> local(gp.size(), -1);
+    for (std::size_t i = 0; i < p.size(); ++i) local[global_index(p.id[i])] = static_cast<std::int32_t>(i);
+    const ContactSystem::Records all = start.contacts().records();
+    for (ContactSystem::PairRecord q : all.pairs) {
+      q.i = local[q.i];
+      q.j = local[q.j];
+      if (q.i >= 0 && q.j >= 0 && (owned_[q.i] || owned_[q.j])) contacts.pairs.push_back(q);
+    }
+    for (ContactSystem::TriangleRecord q : all.triangles) {
+      q.i = local[q.i];
+      if (q.i >= 0 && owned_[q.i]) contacts.triangles.push_back(q);
+    }
   }
+  sim_->overwrite_records(
+      [&](Particles& lp, Rods&) {
+        Bytes buf;
+        for (std::size_t i = 0; i < lp.size(); ++i) {
+          buf.clear();
+          pack_particle(buf, gp, global_index(lp.id[i]));
+          unpack_particle(buf.data(), lp, i);
+        }
+      },
+      &contacts);
   copy_step_state(start, *sim_);
+  if (contacts_) {
+    mesh_force_.resize(start.world().meshes.size());
+    for (std::size_t k = 0; k < mesh_force_.size(); ++k) mesh_force_[k] = start.mesh_force(k);
+    contact_power_ = start.contact_power();
+  }
   sim_->count_exactly(nullptr);  // (the grips' exact share starts from the forces as they are now)
   sim_->count_exactly(owned_.data(), rod_key_.data());
-  if (comm_.rank() == 0 && ledger_digits) {
-    if (ledger_digits->size() != kLedgerLines * ExactSum::kWords)
+  if (comm_.rank() == 0) {
+    // The exact sums a checkpoint of a run over ranks kept (of the first four lines only if
+    // written before the contacts' line joined them), the rest from start's doubles.
+    const std::size_t lines = ledger_digits ? ledger_digits->size() / ExactSum::kWords : 0;
+    if (ledger_digits && (ledger_digits->size() % ExactSum::kWords != 0 || (lines != kLedgerLines && lines != 4)))
       throw std::logic_error(fmt::format("domains: {} words of ledger digits, {} expected", ledger_digits->size(),
                                          kLedgerLines * ExactSum::kWords));
-    for (std::size_t k = 0; k < kLedgerLines; ++k)
-      base_[k] = ExactSum::from_digits(*ledger_digits, k * ExactSum::kWords);
-  } else if (comm_.rank() == 0) {
+    for (std::size_t k = 0; k < lines; ++k) base_[k] = ExactSum::from_digits(*ledger_digits, k * ExactSum::kWords);
     const EnergyLedger& l = start.ledger();
-    base_[0].add(l.plastic_work);
-    base_[1].add(l.viscous_work);
-    base_[2].add(l.fracture_energy);
-    base_[3].add(l.external_work);
+    const double plain[kLedgerLines] = {l.plastic_work, l.viscous_work, l.fracture_energy, l.external_work,
+                                        l.contact_work};
+    for (std::size_t k = lines; k < kLedgerLines; ++k) base_[k].add(plain[k]);
   }
 }
 
@@ -186,7 +270,7 @@ std::size_t DomainRun::owned_count() const {
 }
 
 DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uint8_t>& exact, RodPool& rods,
-                                     const std::vector<std::int64_t>& owned_ids) const {
+                                     const std::vector<std::int64_t>& owned_ids, const ContactPool& contacts) const {
   Local l;
   // The rods with an owned end, once each, in the global order.
   std::vector<std::size_t> ro(rods.key.size());
@@ -203,7 +287,11 @@ DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uin
     ids.push_back(a);
     ids.push_back(b);
   }
-  // The particles: the owned ones and the rods' other ends, once each, in id order.
+  // With contacts, every particle within reach of the slab (its owner sent it).
+  if (contacts_)
+    for (std::size_t q = 0; q < pool.size(); ++q)
+      if (partition_.near(pool.position[q], comm_.rank(), reach_)) ids.push_back(pool.id[q]);
+  // The particles: the owned ones, the rods' other ends and the spatial ghosts, once each, in id order.
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   std::vector<std::size_t> po(pool.size());
@@ -238,7 +326,120 @@ DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uin
     l.rods.ends.push_back({local(rods.end_id[k][0]), local(rods.end_id[k][1])});
     l.rods.for_each_field_with(rods.rods, [&](auto& mine, auto& theirs) { mine.push_back(theirs[k]); });
   }
+  // The contacts of the owned particles (every record in the pool is its owner's: copies of one
+  // contact are identical), once each, sorted as the lists are: by the particles' ids.
+  std::vector<std::size_t> co(contacts.pairs.size());
+  std::iota(co.begin(), co.end(), std::size_t{0});
+  std::sort(co.begin(), co.end(),
+            [&](std::size_t a, std::size_t b) { return contacts.pair_ids[a] < contacts.pair_ids[b]; });
+  for (std::size_t q = 0; q < co.size(); ++q) {
+    const std::size_t k = co[q];
+    const auto [a, b] = contacts.pair_ids[k];
+    if (q > 0 && contacts.pair_ids[co[q - 1]] == contacts.pair_ids[k]) continue;
+    if (!contains(owned_ids, a) && !contains(owned_ids, b)) continue;
+    if (!contains(ids, a) || !contains(ids, b))
+      throw std::logic_error(fmt::format("domain {}: contact ({}, {}) has an end that is not here", comm_.rank(), a, b));
+    ContactSystem::PairRecord r = contacts.pairs[k];
+    r.i = local(a);
+    r.j = local(b);
+    l.contacts.pairs.push_back(r);
+  }
+  std::vector<std::size_t> to(contacts.tris.size());
+  std::iota(to.begin(), to.end(), std::size_t{0});
+  const auto tri_key = [&](std::size_t k) { return std::pair{contacts.tri_ids[k], contacts.tris[k].tri}; };
+  std::sort(to.begin(), to.end(), [&](std::size_t a, std::size_t b) { return tri_key(a) < tri_key(b); });
+  for (std::size_t q = 0; q < to.size(); ++q) {
+    const std::size_t k = to[q];
+    if (q > 0 && tri_key(to[q - 1]) == tri_key(k)) continue;
+    if (!contains(owned_ids, contacts.tri_ids[k])) continue;
+    ContactSystem::TriangleRecord r = contacts.tris[k];
+    r.i = local(contacts.tri_ids[k]);
+    l.contacts.triangles.push_back(r);
+  }
   return l;
+}
+
+DomainRun::ContactPool DomainRun::own_contacts(bool any_end) const {
+  ContactPool out;
+  if (!contacts_) return out;
+  const Particles& p = local_.particles;
+  const ContactSystem::Records r = sim_->contacts().records();
+  for (const ContactSystem::PairRecord& q : r.pairs)
+    if (owned_[q.i] || (any_end && owned_[q.j])) {
+      out.pair_ids.push_back({p.id[q.i], p.id[q.j]});
+      out.pairs.push_back(q);
+    }
+  for (const ContactSystem::TriangleRecord& q : r.triangles)
+    if (owned_[q.i]) {
+      out.tri_ids.push_back(p.id[q.i]);
+      out.tris.push_back(q);
+    }
+  return out;
+}
+
+ContactSystem::Records DomainRun::gather_contacts(const std::vector<std::int64_t>& ids, bool all) {
+  Bytes mine;
+  own_contacts(false).put(mine);
+  std::vector<Bytes> parts;
+  if (all) {
+    parts = comm_.all_gather(std::move(mine));
+  } else {
+    comm_.gather_to_root(mine, parts);
+    if (comm_.rank() != 0) return {};
+    parts[0] = std::move(mine);
+  }
+  ContactPool pool;
+  for (const Bytes& b : parts) {
+    const std::byte* at = b.data();
+    pool.get(at);
+  }
+  const auto index = [&](std::int64_t id) {
+    const auto it = std::lower_bound(ids.begin(), ids.end(), id);
+    if (it == ids.end() || *it != id)
+      throw std::logic_error(fmt::format("domains: a contact's particle, id {}, is owned by no rank", id));
+    return static_cast<std::int32_t>(it - ids.begin());
+  };
+  ContactSystem::Records out;
+  for (std::size_t k = 0; k < pool.pairs.size(); ++k) {
+    out.pairs.push_back(pool.pairs[k]);
+    out.pairs.back().i = index(pool.pair_ids[k][0]);
+    out.pairs.back().j = index(pool.pair_ids[k][1]);
+  }
+  for (std::size_t k = 0; k < pool.tris.size(); ++k) {
+    out.triangles.push_back(pool.tris[k]);
+    out.triangles.back().i = index(pool.tri_ids[k]);
+  }
+  // (each contact once: a pair from the owner of its first end; sorted as the lists are)
+  std::sort(out.pairs.begin(), out.pairs.end(), [](const auto& a, const auto& b) {
+    return std::pair{a.i, a.j} < std::pair{b.i, b.j};
+  });
+  std::sort(out.triangles.begin(), out.triangles.end(), [](const auto& a, const auto& b) {
+    return std::pair{a.i, a.tri} < std::pair{b.i, b.tri};
+  });
+  return out;
+}
+
+void DomainRun::book_contacts(bool start) {
+  std::vector<ExactSum> parts = sim_->contacts().mesh_forces_exact(owned_.data());
+  parts.push_back(sim_->contact_power_exact(owned_.data()));
+  const std::vector<ExactSum> total = comm_.sum_exact(parts);
+  const std::size_t nm = local_.meshes.size();
+  std::vector<Vec3> force(nm);
+  for (std::size_t k = 0; k < nm; ++k)
+    for (int c = 0; c < 3; ++c) force[k][c] = total[3 * k + c].value();
+  // (the contacts' power on the particles and, as integrate::contact_power adds it, on the meshes)
+  double power = total.back().value();
+  for (std::size_t k = 0; k < nm; ++k) power += force[k].dot(local_.meshes[k].velocity);
+  if (!start && comm_.rank() == 0) {
+    // As the step's account books them (integrate/stages.cpp), from the reduced sums: the same
+    // bits for any rank count.
+    const double h = sim_->last_dt();
+    for (std::size_t k = 0; k < nm; ++k)
+      base_[3].add(-(0.5 * (mesh_force_[k] + force[k]).dot(local_.meshes[k].velocity * h)));
+    base_[4].add(-(0.5 * (contact_power_ + power) * h));
+  }
+  mesh_force_ = std::move(force);
+  contact_power_ = power;
 }
 
 void DomainRun::adopt(Local&& l) {
@@ -255,9 +456,10 @@ void DomainRun::adopt(Local&& l) {
         local_.groups[g].members.push_back(static_cast<std::int32_t>(i));
     sim_ = std::make_unique<Simulation>(local_, settings_);
   } else {
-    sim_->replace_particles(std::move(l.particles), std::move(l.rods));
+    sim_->replace_particles(std::move(l.particles), std::move(l.rods), contacts_ ? &l.contacts : nullptr);
   }
   sim_->count_exactly(owned_.data(), rod_key_.data());  // (each rod booked by its first end's owner)
+  if (contacts_) x_migrated_ = local_.particles.position;
   plan_halo();
 }
 
@@ -291,22 +493,24 @@ void DomainRun::exchange_halo() {
   const int size = comm_.size();
   Particles& p = local_.particles;
   std::vector<Bytes> out(size);
+  const bool omega = sim_->rotations();
+  const std::size_t record = kinematics_bytes(omega);
   for (int r = 0; r < size; ++r) {
-    out[r].reserve(send_[r].size() * kKinematicsBytes);
-    for (const std::int32_t i : send_[r]) pack_kinematics(out[r], p, i);
+    out[r].reserve(send_[r].size() * record);
+    for (const std::int32_t i : send_[r]) pack_kinematics(out[r], p, i, omega);
   }
   halo_bytes_ = 0;
   for (const Bytes& b : out) halo_bytes_ += b.size();
   // (the sizes are the plan's: point to point with the neighbours only)
   std::vector<std::size_t> expect(size);
-  for (int r = 0; r < size; ++r) expect[r] = recv_[r].size() * kKinematicsBytes;
+  for (int r = 0; r < size; ++r) expect[r] = recv_[r].size() * record;
   const std::vector<Bytes> in = comm_.exchange(std::move(out), expect);
   for (int r = 0; r < size; ++r) {
     if (in[r].size() != expect[r])
       throw std::logic_error(
           fmt::format("domains: halo from rank {}: {} bytes, {} expected", r, in[r].size(), expect[r]));
     const std::byte* at = in[r].data();
-    for (const std::int32_t i : recv_[r]) at += unpack_kinematics(at, p, i);
+    for (const std::int32_t i : recv_[r]) at += unpack_kinematics(at, p, i, omega);
   }
 }
 
@@ -344,12 +548,15 @@ DomainRun::Sums DomainRun::sums() {
   const GroupSystem::ExactShare& gx = sim_->exact_group_share();
   std::vector<ExactSum> parts = {sim_->particle_kinetic_energy(owned_.data()),
                                  sim_->rod_elastic_energy(first_end_owned.data()),
+                                 contacts_ ? sim_->contacts().elastic_energy_exact(owned_.data()) : ExactSum{},
                                  x.plastic_work,
                                  x.viscous_work,
                                  x.fracture_energy,
-                                 gx.external_work};
-  // (what the run booked before it started here, on rank 0)
-  for (std::size_t k = 0; k < kLedgerLines; ++k) parts[2 + k].add(base_[k]);
+                                 gx.external_work,
+                                 ExactSum{}};
+  constexpr std::size_t kLine = 3;  // parts[kLine + k]: ledger line k
+  // (what rank 0 booked: before the run started here, and the meshes' and contacts' lines)
+  for (std::size_t k = 0; k < kLedgerLines; ++k) parts[kLine + k].add(base_[k]);
   const std::size_t ng = local_.groups.size();
   for (std::size_t g = 0; g < ng; ++g)
     for (int c = 0; c < 3; ++c) parts.push_back(gx.reaction[g][c]);  // (sized when counting began)
@@ -357,18 +564,21 @@ DomainRun::Sums DomainRun::sums() {
   Sums s;
   s.kinetic_energy = total[0].value();
   s.elastic_energy = total[1].value();
-  s.plastic_work = total[2].value();
-  s.viscous_work = total[3].value();
-  s.fracture_energy = total[4].value();
-  s.external_work = total[5].value();
+  s.contact_energy = total[2].value();
+  s.plastic_work = total[kLine].value();
+  s.viscous_work = total[kLine + 1].value();
+  s.fracture_energy = total[kLine + 2].value();
+  s.external_work = total[kLine + 3].value();
+  s.contact_work = total[kLine + 4].value();
   ledger_digits_.clear();
   for (std::size_t k = 0; k < kLedgerLines; ++k) {
-    const std::vector<std::int64_t> d = total[2 + k].digits();
+    const std::vector<std::int64_t> d = total[kLine + k].digits();
     ledger_digits_.insert(ledger_digits_.end(), d.begin(), d.end());
   }
   s.reactions.resize(ng);
   for (std::size_t g = 0; g < ng; ++g)
-    for (int c = 0; c < 3; ++c) s.reactions[g][c] = total[6 + 3 * g + c].value();
+    for (int c = 0; c < 3; ++c) s.reactions[g][c] = total[kLine + kLedgerLines + 3 * g + c].value();
+  s.mesh_forces = mesh_force_;  // (reduced after every step)
   s.broken_rods = comm_.sum_all(broken);
   return s;
 }
@@ -415,8 +625,10 @@ World DomainRun::gather_world() {
 std::unique_ptr<Simulation> DomainRun::gather_simulation(World& storage) {
   storage = gather_world();
   World records = storage;  // (the Simulation's construction evaluates forces over 'storage')
+  const ContactSystem::Records contacts = contacts_ ? gather_contacts(storage.particles.id, true)
+                                                    : ContactSystem::Records{};
   auto out = std::make_unique<Simulation>(storage, settings_);
-  out->replace_particles(std::move(records.particles), std::move(records.rods));
+  out->replace_particles(std::move(records.particles), std::move(records.rods), contacts_ ? &contacts : nullptr);
   load_sums_into(*out);
   return out;
 }
@@ -448,35 +660,41 @@ void DomainRun::gather_into(Simulation& mirror) {
   for (std::size_t k = 0; k < r.size(); ++k)
     if (owned_[r.ends[k][0]]) at += write_rod(at, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
   comm_.gather_to_root(mine, gather_in_);
+  // The contacts: each pair from the owner of its first end, each triangle contact from its particle's.
+  const ContactSystem::Records contacts = contacts_ ? gather_contacts(mirror.world().particles.id, false)
+                                                    : ContactSystem::Records{};
   if (comm_.rank() == 0) {
-    mirror.overwrite_records([&](Particles& mp, Rods& mr) {
-      std::size_t particles = 0, rods = 0;
-      for (int rank = 0; rank < comm_.size(); ++rank) {
-        const std::byte* at = rank == 0 ? mine.data() : gather_in_[rank].data();
-        const std::uint64_t n = get_count(at);
-        for (std::uint64_t q = 0; q < n; ++q) {
-          const auto id = static_cast<std::int64_t>(get_count(at));
-          const auto it = std::lower_bound(mp.id.begin(), mp.id.end(), id);
-          if (it == mp.id.end() || *it != id)
-            throw std::logic_error(fmt::format("domains: particle id {} is not in the mirror", id));
-          at += unpack_particle(at, mp, static_cast<std::size_t>(it - mp.id.begin()));
-        }
-        const std::uint64_t m = get_count(at);
-        for (std::uint64_t q = 0; q < m; ++q) {
-          const RodHead h = rod_head(at);
-          const auto k = static_cast<std::size_t>(h.key);
-          if (h.key < 0 || k >= mr.size() || mp.id[mr.ends[k][0]] != h.end_id[0] || mp.id[mr.ends[k][1]] != h.end_id[1])
-            throw std::logic_error(
-                fmt::format("domains: rod {} (particles {}, {}) is not the mirror's", h.key, h.end_id[0], h.end_id[1]));
-          at += unpack_rod_over(at, mr, k);
-        }
-        particles += n;
-        rods += m;
-      }
-      if (particles != mp.size() || rods != mr.size())
-        throw std::logic_error(fmt::format("domains: {} particles and {} rods gathered, the mirror has {} and {}",
-                                           particles, rods, mp.size(), mr.size()));
-    });
+    mirror.overwrite_records(
+        [&](Particles& mp, Rods& mr) {
+          std::size_t particles = 0, rods = 0;
+          for (int rank = 0; rank < comm_.size(); ++rank) {
+            const std::byte* at = rank == 0 ? mine.data() : gather_in_[rank].data();
+            const std::uint64_t n = get_count(at);
+            for (std::uint64_t q = 0; q < n; ++q) {
+              const auto id = static_cast<std::int64_t>(get_count(at));
+              const auto it = std::lower_bound(mp.id.begin(), mp.id.end(), id);
+              if (it == mp.id.end() || *it != id)
+                throw std::logic_error(fmt::format("domains: particle id {} is not in the mirror", id));
+              at += unpack_particle(at, mp, static_cast<std::size_t>(it - mp.id.begin()));
+            }
+            const std::uint64_t m = get_count(at);
+            for (std::uint64_t q = 0; q < m; ++q) {
+              const RodHead h = rod_head(at);
+              const auto k = static_cast<std::size_t>(h.key);
+              if (h.key < 0 || k >= mr.size() || mp.id[mr.ends[k][0]] != h.end_id[0] ||
+                  mp.id[mr.ends[k][1]] != h.end_id[1])
+                throw std::logic_error(fmt::format("domains: rod {} (particles {}, {}) is not the mirror's", h.key,
+                                                   h.end_id[0], h.end_id[1]));
+              at += unpack_rod_over(at, mr, k);
+            }
+            particles += n;
+            rods += m;
+          }
+          if (particles != mp.size() || rods != mr.size())
+            throw std::logic_error(fmt::format("domains: {} particles and {} rods gathered, the mirror has {} and {}",
+                                               particles, rods, mp.size(), mr.size()));
+        },
+        contacts_ ? &contacts : nullptr);
   }
   load_sums_into(mirror);
 }
@@ -489,7 +707,12 @@ void DomainRun::load_sums_into(Simulation& out) {
   a.set("ledger/viscous_work", s.viscous_work);
   a.set("ledger/fracture_energy", s.fracture_energy);
   a.set("ledger/external_work", s.external_work);
+  a.set("ledger/contact_work", s.contact_work);
   a.set("groups/reaction", s.reactions);
+  if (contacts_) {
+    a.set("mesh_force", s.mesh_forces);
+    a.set("contact_power_old", contact_power_);
+  }
   a.set("broken_rods", static_cast<std::int64_t>(out.broken_rods()));
   load_step_state(a, out);
 }
@@ -506,13 +729,24 @@ void DomainRun::step(double max_dt) {
   sim_->step(max_dt);
   const auto t0 = std::chrono::steady_clock::now();
   exchange_halo();
+  if (contacts_) book_contacts(false);
   ++steps_;
   // Every rebalance_every steps new cuts; in between, when a particle strayed beyond its slab
   // and skin (looked for every check_every steps), every particle goes to the owner of its
-  // slab, the cuts kept.
+  // slab, the cuts kept. With contacts the ghosts are spatial: all particles move to their
+  // slabs' owners and the ghost layers are made anew once any particle has moved half the
+  // lists' skin since the last time (looked for after every step), so that a contact of an
+  // owned particle never misses its other end.
   const bool recut = steps_ % ds_.rebalance_every == 0;
   bool stray = false;
-  if (!recut && steps_ % ds_.check_every == 0) {
+  if (contacts_ && !recut) {
+    const Particles& p = local_.particles;
+    double moved2 = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (owned_[i]) moved2 = std::max(moved2, (p.position[i] - x_migrated_[i]).squaredNorm());
+    const double half = 0.5 * contact_skin_;
+    stray = !(comm_.max_all(moved2) <= half * half);  // (NaN: migrate; the next step fails)
+  } else if (!recut && steps_ % ds_.check_every == 0) {
     const int rank = comm_.rank();
     const Particles& p = local_.particles;
     double left = 0.0;
@@ -537,17 +771,27 @@ void DomainRun::migrate(bool recut) {
       if (owned_[i]) x.push_back(p.position[i][0]), ow.push_back(w[i]);
     partition_ = SlabPartition::balanced(comm_, x, ow);
   }
-  // Each particle leaving this rank goes with its rods and their other ends (the new owner's ghosts).
+  // Each particle leaving this rank goes with its rods and their other ends (the new owner's
+  // ghosts) and its contacts; with contacts, every owned particle within reach of another
+  // rank's slab goes there too (a spatial ghost).
   std::vector<std::vector<std::int64_t>> leaving(size);
   std::vector<std::vector<std::int32_t>> with_particle(size), with_rod(size);  // local indices, per rank
   std::vector<std::int64_t> staying;
+  std::vector<int> leaves_to(p.size(), -1);
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!owned_[i]) continue;
     const int o = partition_.owner(p.position[i]);
+    if (contacts_) {
+      for (int q = o - 1; q >= 0 && partition_.near(p.position[i], q, reach_); --q)
+        if (q != rank) with_particle[q].push_back(static_cast<std::int32_t>(i));
+      for (int q = o + 1; q < size && partition_.near(p.position[i], q, reach_); ++q)
+        if (q != rank) with_particle[q].push_back(static_cast<std::int32_t>(i));
+    }
     if (o == rank) {
       staying.push_back(p.id[i]);
       continue;
     }
+    leaves_to[i] = o;
     leaving[o].push_back(p.id[i]);
     with_particle[o].push_back(static_cast<std::int32_t>(i));
     for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
@@ -555,6 +799,22 @@ void DomainRun::migrate(bool recut) {
       with_particle[o].push_back(r.entries[e].other);
     }
   }
+  // The contacts this rank computed exactly; those of a leaving particle go with it.
+  const ContactPool own = own_contacts(true);
+  std::vector<ContactPool> with_contacts(size);
+  for (std::size_t k = 0; k < own.pairs.size(); ++k) {
+    const int a = leaves_to[own.pairs[k].i], b = leaves_to[own.pairs[k].j];
+    for (const int o : {a, b == a ? -1 : b})
+      if (o >= 0) {
+        with_contacts[o].pair_ids.push_back(own.pair_ids[k]);
+        with_contacts[o].pairs.push_back(own.pairs[k]);
+      }
+  }
+  for (std::size_t k = 0; k < own.tris.size(); ++k)
+    if (const int o = leaves_to[own.tris[k].i]; o >= 0) {
+      with_contacts[o].tri_ids.push_back(own.tri_ids[k]);
+      with_contacts[o].tris.push_back(own.tris[k]);
+    }
   std::vector<Bytes> out(size);
   for (int o = 0; o < size; ++o) {
     if (o == rank) continue;
@@ -573,6 +833,7 @@ void DomainRun::migrate(bool recut) {
     }
     put_count(b, with_rod[o].size());
     for (const std::int32_t k : with_rod[o]) pack_rod(b, r, k, rod_key_[k], {p.id[r.ends[k][0]], p.id[r.ends[k][1]]});
+    with_contacts[o].put(b);
   }
   const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
   // What this rank has and what it received; the owned ids: those staying and those arriving.
@@ -592,6 +853,7 @@ void DomainRun::migrate(bool recut) {
     unpack_rod(buf.data(), rods);
   }
   std::vector<std::int64_t> owned_ids = std::move(staying);
+  ContactPool contacts = own;
   for (int s = 0; s < size; ++s) {
     if (in[s].empty()) continue;
     const std::byte* at = in[s].data();
@@ -610,9 +872,10 @@ void DomainRun::migrate(bool recut) {
     }
     const std::uint64_t nr = get_count(at);
     for (std::uint64_t q = 0; q < nr; ++q) at += unpack_rod(at, rods);
+    contacts.get(at);
   }
   std::sort(owned_ids.begin(), owned_ids.end());
-  adopt(assemble(pool, exact, rods, owned_ids));
+  adopt(assemble(pool, exact, rods, owned_ids, contacts));
 }
 
 }  // namespace swarf

@@ -70,6 +70,7 @@ struct DomainSettings {
   /// cover the travel between checks, as LAMMPS's reneighbouring does.)
   int check_every = 1;
 };
+// With contacts the stray check is replaced: see domain_run.h's head (spatial ghosts).
 
 class DomainRun {
  public:
@@ -128,21 +129,24 @@ class DomainRun {
   /// work and reactions. The Simulation's own ledger, with shared rods counted on both sides,
   /// stays per domain.
   struct Sums {
-    double kinetic_energy = 0.0;   ///< of the particles, translational + rotational, J
-    double elastic_energy = 0.0;   ///< of the intact rods, J
-    std::int64_t broken_rods = 0;  ///< rods broken now (the intact flags), of the serial rod list
-    double plastic_work = 0.0;     ///< EnergyLedger::plastic_work, J
-    double viscous_work = 0.0;     ///< EnergyLedger::viscous_work, J
-    double fracture_energy = 0.0;  ///< EnergyLedger::fracture_energy, J
-    double external_work = 0.0;    ///< EnergyLedger::external_work of the groups' motions, J
-    std::vector<Vec3> reactions;   ///< per group, Simulation::group_reaction now, N
+    double kinetic_energy = 0.0;    ///< of the particles, translational + rotational, J
+    double elastic_energy = 0.0;    ///< of the intact rods, J
+    double contact_energy = 0.0;    ///< in the touching contacts, J
+    std::int64_t broken_rods = 0;   ///< rods broken now (the intact flags), of the serial rod list
+    double plastic_work = 0.0;      ///< EnergyLedger::plastic_work, J
+    double viscous_work = 0.0;      ///< EnergyLedger::viscous_work, J
+    double fracture_energy = 0.0;   ///< EnergyLedger::fracture_energy, J
+    double external_work = 0.0;     ///< EnergyLedger::external_work of the groups' and meshes' motions, J
+    double contact_work = 0.0;      ///< EnergyLedger::contact_work, J
+    std::vector<Vec3> mesh_forces;  ///< per mesh, Simulation::mesh_force now, N
+    std::vector<Vec3> reactions;    ///< per group, Simulation::group_reaction now, N
   };
   Sums sums();
-  /// The exact sums of the ledger lines (plastic, viscous and fracture work, the groups'
-  /// external work) as the last sums() reduced them: ExactSum::kWords int64 words each, the
+  /// The exact sums of the ledger lines (plastic, viscous and fracture work, the groups' and
+  /// meshes' external work, the contacts' line) as the last sums() reduced them: ExactSum::kWords int64 words each, the
   /// same on every rank; what a checkpoint keeps for DomainRun(comm, start, ds, digits).
   const std::vector<std::int64_t>& ledger_digits() const { return ledger_digits_; }
-  static constexpr std::size_t kLedgerLines = 4;
+  static constexpr std::size_t kLedgerLines = 5;
 
   /// Throws InputError naming the first feature of 'w' or 's' that the domains do not support.
   static void check_supported(const World& w, const StepSettings& s);
@@ -166,10 +170,20 @@ class DomainRun {
   std::size_t halo_bytes() const { return halo_bytes_; }
 
  private:
-  struct Local;  // a local World's particles and rods before the Simulation takes them
+  struct Local;        // a local World's particles, rods and contacts before the Simulation takes them
+  struct ContactPool;  // contact records by their particles' ids, as a migration gathers them
   // exact[k]: pool entry k is its owner's copy (a ghost's is exact in the halo's fields only).
   Local assemble(Particles& pool, const std::vector<std::uint8_t>& exact, RodPool& rods,
-                 const std::vector<std::int64_t>& owned_ids) const;
+                 const std::vector<std::int64_t>& owned_ids, const ContactPool& contacts) const;
+  // The contacts this rank computes exactly (of an owned particle: a pair with an owned end if
+  // 'any_end', else with an owned first end), by the particles' ids.
+  ContactPool own_contacts(bool any_end) const;
+  // Collective: per step, the meshes' forces and the contacts' power over the owned particles,
+  // reduced exactly; the meshes' work and the contacts' line booked from them (not at 'start').
+  void book_contacts(bool start);
+  // Collective: every rank's contacts (own_contacts(false)) on every rank (all) or on rank 0,
+  // as records of the particles with these ids (ascending).
+  ContactSystem::Records gather_contacts(const std::vector<std::int64_t>& ids, bool all);
   void adopt(Local&& l);  // into the Simulation (built on the first call)
   void plan_halo();       // who sends which owned particle to whom after each step
   void exchange_halo();
@@ -188,12 +202,21 @@ class DomainRun {
   std::vector<std::vector<std::int32_t>> send_, recv_;  // per rank: local indices, in the halo's order
   std::int64_t arrivals_ = 0, migrations_ = 0, steps_ = 0;
   double exchange_seconds_ = 0.0;
-  // What the run booked before it started here, per ledger line (rank 0's share; zeros elsewhere).
+  // Per ledger line, booked on rank 0 only (zeros elsewhere): what the run booked before it
+  // started here, and what the domains book from reduced sums (the meshes' work, the contacts' line).
   std::vector<ExactSum> base_ = std::vector<ExactSum>(kLedgerLines);
   std::vector<std::int64_t> ledger_digits_;
   Bytes gather_out_;  // gather_into's buffers, kept (an output gathers the whole state)
   std::vector<Bytes> gather_in_;
   std::size_t halo_bytes_ = 0;
+  // Contacts (spatial ghosts): the reach of the ghost layer (contact distance of the two largest
+  // spheres plus the lists' skin, m), the lists' skin (m), where the local particles were at the
+  // last migration, and the reduced meshes' forces (N) and contacts' power (W) of the last step.
+  bool contacts_ = false;
+  double reach_ = 0.0, contact_skin_ = 0.0;
+  std::vector<Vec3> x_migrated_;
+  std::vector<Vec3> mesh_force_;
+  double contact_power_ = 0.0;
 };
 
 }  // namespace swarf

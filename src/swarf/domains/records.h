@@ -29,15 +29,15 @@ std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i);
 std::size_t unpack_new_particle(const std::byte* in, Particles& p);
 
 /// The halo's record of particle i: the fields a step changes and the next step reads of a ghost
-/// (position, velocity, acceleration; the domains refuse rotations and heat, whose fields would
-/// join them). The other fields of a ghost stay as it arrived: constant ones (mass, radius, ...)
-/// exact, the plastic strain's window and the force its own partial sums, which nothing of an
-/// owned particle reads.
-void pack_kinematics(Bytes& out, const Particles& p, std::size_t i);
+/// (position, velocity, acceleration; with rotations its angular velocity too, which its
+/// contacts read; the domains refuse heat, whose temperature would join them). The other fields
+/// of a ghost stay as it arrived: constant ones (mass, radius, ...) exact, its orientation, the
+/// plastic strain's window and the force its own, which nothing of an owned particle reads.
+void pack_kinematics(Bytes& out, const Particles& p, std::size_t i, bool omega);
 /// The bytes of one halo record.
-inline constexpr std::size_t kKinematicsBytes = 3 * sizeof(Vec3);
+constexpr std::size_t kinematics_bytes(bool omega) { return (omega ? 4 : 3) * sizeof(Vec3); }
 /// Writes the halo's record at 'in' over particle i; returns the bytes read.
-std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i);
+std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i, bool omega);
 
 /// Rods gathered from records: their per-rod fields (in 'rods', whose 'ends' stay empty), keys
 /// and end ids, in the order received.

@@ -8,11 +8,13 @@
 namespace swarf {
 
 namespace {
-// The per-particle and per-rod arrays and the member lists: carried by the domains' records.
+// The per-particle and per-rod arrays, the member lists and the contact lists: carried by the
+// domains' records.
 bool carried_elsewhere(std::string_view n) {
   const auto starts = [&](std::string_view p) { return n.substr(0, p.size()) == p; };
   if (starts("particles/") && n != "particles/next_id") return true;
   if (starts("rods/")) return true;
+  if (starts("contacts/")) return true;  // (the lists: by particle index, made anew from the contacts' records)
   if (starts("groups/") && n.size() > 8 && n.substr(n.size() - 8) == "/members") return true;
   return n == "contact_force";
 }

@@ -62,6 +62,7 @@ double gather_impl(Integration& it, double h) {
   const Rods::Entry* entries = r.entries.data();
   const double* force_coef = r.force_coef.data();
   Vec3* contact_force = ms.contact_force.data();
+  const bool keep_contact_force = ms.keep_contact_force;
   const ContactSystem::Sums sums = contacts ? it.sys.contacts.sums() : ContactSystem::Sums{};
   [[maybe_unused]] const double half = 0.5 * h;
   const bool turn_spheres = it.set.sphere_orientations;
@@ -87,7 +88,8 @@ double gather_impl(Integration& it, double h) {
         Vec3 tau = Vec3::Zero();
         sums.add(i, radius[i], fc, tau);
         f += fc;
-        if constexpr (!Kick) contact_force[i] = fc;  // (the explicit scheme's power is summed below)
+        // (the explicit scheme's power is summed below; a domain counts it per particle)
+        if (!Kick || keep_contact_force) contact_force[i] = fc;
         torque[i] = tau;
       }
       f += mass[i] * gravity;

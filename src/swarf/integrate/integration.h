@@ -55,19 +55,22 @@ struct MotionState {
   std::vector<RotState> rot_n;               ///< start-of-step rotations (Newmark)
   std::vector<Vec3> a_guess;                 ///< accelerations a sweep placed with (integrator.relaxation < 1)
   std::vector<Vec3> contact_force;           ///< contact part of each particle's force, N
-  std::vector<Vec3> mesh_force;              ///< force on each mesh after the last accepted step, N
-  double contact_power_old = 0;              ///< power of the contact forces at the start of the step, W
-  double kick_power = 0;                     ///< power of the contact forces on the particles after the kick, W
-  std::vector<double> block_power;           ///< its parts per block of particles, W
-  double sweep_force_level2 = 0;             ///< the particles' force level of the last sweep squared, N^2
-  double sweep_dt = 0;                       ///< step size of the current sweep, s
-  double step_disp2 = 0;                     ///< largest squared displacement of the step so far, m^2
-  double moved2 = -1.0;          ///< largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
-  bool rebuild_lists = false;    ///< rebuild the contact lists at the next evaluation (after an append)
-  bool mesh_rejected = false;    ///< the last implicit try was rejected because a mesh moved too far
-  RodSystem::WorkList rod_work;  ///< commit's scratch: the rods that flowed (the heat's and PEEQ's sources)
-  NewtonWork newton;             ///< the Newton solve's work arrays
-  NewtonStats newton_stats;      ///< and its counters
+  /// Keep contact_force in the explicit step too (whose kick sums the power without it): a
+  /// domain counts the contacts' power per owned particle (Simulation::contact_power_exact).
+  bool keep_contact_force = false;
+  std::vector<Vec3> mesh_force;     ///< force on each mesh after the last accepted step, N
+  double contact_power_old = 0;     ///< power of the contact forces at the start of the step, W
+  double kick_power = 0;            ///< power of the contact forces on the particles after the kick, W
+  std::vector<double> block_power;  ///< its parts per block of particles, W
+  double sweep_force_level2 = 0;    ///< the particles' force level of the last sweep squared, N^2
+  double sweep_dt = 0;              ///< step size of the current sweep, s
+  double step_disp2 = 0;            ///< largest squared displacement of the step so far, m^2
+  double moved2 = -1.0;             ///< largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
+  bool rebuild_lists = false;       ///< rebuild the contact lists at the next evaluation (after an append)
+  bool mesh_rejected = false;       ///< the last implicit try was rejected because a mesh moved too far
+  RodSystem::WorkList rod_work;     ///< commit's scratch: the rods that flowed (the heat's and PEEQ's sources)
+  NewtonWork newton;                ///< the Newton solve's work arrays
+  NewtonStats newton_stats;         ///< and its counters
 };
 
 /// What an integrator works on in one step: built by the Simulation for every step.
