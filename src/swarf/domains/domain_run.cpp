@@ -663,7 +663,10 @@ void DomainRun::gather_into(Simulation& mirror) {
   // The contacts: each pair from the owner of its first end, each triangle contact from its particle's.
   const ContactSystem::Records contacts = contacts_ ? gather_contacts(mirror.world().particles.id, false)
                                                     : ContactSystem::Records{};
+  MemoryArchive state = sums_archive();
   if (comm_.rank() == 0) {
+    // The step state first: the contacts are found again where the meshes are now.
+    load_step_state(state, mirror);
     mirror.overwrite_records(
         [&](Particles& mp, Rods& mr) {
           std::size_t particles = 0, rods = 0;
@@ -696,10 +699,17 @@ void DomainRun::gather_into(Simulation& mirror) {
         },
         contacts_ ? &contacts : nullptr);
   }
-  load_sums_into(mirror);
+  state.set("broken_rods", static_cast<std::int64_t>(mirror.broken_rods()));  // (counted from its records)
+  load_step_state(state, mirror);
 }
 
 void DomainRun::load_sums_into(Simulation& out) {
+  MemoryArchive a = sums_archive();
+  a.set("broken_rods", static_cast<std::int64_t>(out.broken_rods()));  // (counted from its records)
+  load_step_state(a, out);
+}
+
+MemoryArchive DomainRun::sums_archive() {
   const Sums s = sums();
   MemoryArchive a = save_step_state(*sim_);
   // The run's sums where this rank's Simulation has its own share.
@@ -713,8 +723,7 @@ void DomainRun::load_sums_into(Simulation& out) {
     a.set("mesh_force", s.mesh_forces);
     a.set("contact_power_old", contact_power_);
   }
-  a.set("broken_rods", static_cast<std::int64_t>(out.broken_rods()));
-  load_step_state(a, out);
+  return a;
 }
 
 std::vector<std::int64_t> DomainRun::weights() const {

@@ -48,6 +48,7 @@
 
 #include "swarf/core/comm.h"
 #include "swarf/core/exact_sum.h"
+#include "swarf/core/memory_archive.h"
 #include "swarf/domains/partition.h"
 #include "swarf/domains/records.h"
 #include "swarf/integrate/step_settings.h"
@@ -189,6 +190,7 @@ class DomainRun {
   void exchange_halo();
   void migrate(bool recut);                   // recut: choose the cuts again (unless fixed)
   void load_sums_into(Simulation& out);       // collective: this rank's step state and the run's sums
+  MemoryArchive sums_archive();               // collective: that step state, to load (broken_rods not set)
   std::vector<std::int64_t> weights() const;  // per local particle: 1 + its intact rods
 
   Comm& comm_;
