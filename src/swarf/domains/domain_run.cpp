@@ -324,8 +324,11 @@ DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uin
   for (const std::size_t k : keep) {
     l.key.push_back(rods.key[k]);
     l.rods.ends.push_back({local(rods.end_id[k][0]), local(rods.end_id[k][1])});
-    l.rods.for_each_field_with(rods.rods, [&](auto& mine, auto& theirs) { mine.push_back(theirs[k]); });
   }
+  l.rods.for_each_field_with(rods.rods, [&](auto& mine, auto& theirs) {  // (field by field: one walk of the fields)
+    mine.reserve(keep.size());
+    for (const std::size_t k : keep) mine.push_back(theirs[k]);
+  });
   // The contacts of the owned particles (every record in the pool is its owner's: copies of one
   // contact are identical), once each, sorted as the lists are: by the particles' ids.
   std::vector<std::size_t> co(contacts.pairs.size());
