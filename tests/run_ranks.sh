@@ -26,14 +26,14 @@ for kind in particles rods; do
   cmp "$a" "$b" || { echo "the last $kind frame of the restart differs"; fail=1; }
 done
 grep -q '"ranks": 2' "$dir/two/summary.json" || { echo "summary.json of 2 ranks does not say so"; fail=1; }
-# A case the domains do not run yet (the default cut: heat, bond formation) is refused by name, with
+# A case the domains do not run yet (the default cut: bond formation) is refused by name, with
 # exit code 2, before anything is written.
 set +e
 refusal=$($MPI -n 2 "$swarf" run --out "$dir/cut" 2>&1)
 code=$?
 set -e
 # (every rank meets it: said once, by rank 0)
-if [ $code -ne 2 ] || [ "$(grep -c "does not support heat" <<<"$refusal")" != 1 ] || [ -e "$dir/cut" ]; then
+if [ $code -ne 2 ] || [ "$(grep -c "does not support bond formation" <<<"$refusal")" != 1 ] || [ -e "$dir/cut" ]; then
   echo "the default cut on 2 ranks: exit code $code (2 expected), output: $refusal"
   fail=1
 fi

@@ -99,13 +99,20 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
       out.conductance[i] += g;
     }
   }
+  if (in.counted) {
+    out.mesh_friction_exact.assign(meshes.size(), ExactSum{});
+    out.mesh_flux_exact.assign(meshes.size(), ExactSum{});
+  }
   for (std::size_t q = 0; q < nt; ++q) {  // (list order: the meshes' sums do not depend on the threads)
     if (!ttouch_[q]) continue;
     const std::int32_t m = tri_mesh_[tris_[q].tri];
     out.mesh_friction[m] += 0.5 * tf[q];
+    const bool counted = in.counted && in.counted[tris_[q].i];
+    if (counted && in.friction) out.mesh_friction_exact[m].add(in.scale * (0.5 * tf[q]));
     if (T) {
       out.mesh_flux[m] += tg[q] * (T[tris_[q].i] - Tm[m]);
       out.mesh_conductance[m] += tg[q];
+      if (counted) out.mesh_flux_exact[m].add(in.scale * (tg[q] * (T[tris_[q].i] - Tm[m])));
     }
   }
 }

@@ -206,10 +206,16 @@ class ContactSystem {
     const double* mesh_temperature = nullptr;  ///< per mesh, K
     double mesh_conductivity = 0.0;            ///< of the meshes, W/(m K); 0: no conduction into them
     bool friction = true;                      ///< add the frictional power
+    /// Domains (issue 38): per particle, 1 for one this domain owns; the meshes' shares of the
+    /// triangle contacts of those particles are then also added exactly, each term times 'scale'
+    /// (a step or sub-step, s: J), into HeatOutput's mesh_*_exact.
+    const std::uint8_t* counted = nullptr;
+    double scale = 1.0;
   };
   struct HeatOutput {
     std::vector<double> friction, flux, conductance;                 ///< per particle: W, W, W/K
     std::vector<double> mesh_friction, mesh_flux, mesh_conductance;  ///< per mesh: W, W, W/K
+    std::vector<ExactSum> mesh_friction_exact, mesh_flux_exact;      ///< per mesh, with 'counted': J
   };
   void heat(const Particles& p, const HeatInput& in, HeatOutput& out) const;
 

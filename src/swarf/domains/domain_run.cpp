@@ -112,8 +112,8 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what = "rigid bodies";
   else if (!w.inflows.empty() || !w.outflows.empty())
     what = "particle inflows and outflows";
-  else if (w.heat.enabled)
-    what = "heat";
+  else if (w.heat.enabled && (w.heat.tool_heat_capacity > 0.0 || w.heat.tool_conductivity > 0.0))
+    what = "tools that warm or conduct heat (heat.tool_heat_capacity, heat.tool_conductivity)";
   else if (w.rods.formation.enabled())
     what = "bond formation";
   // A group's members are found again from the particles' group indices after a migration.
@@ -259,8 +259,9 @@ DomainRun::DomainRun(Comm& comm, const Simulation& start, DomainSettings ds,
                                          kLedgerLines * ExactSum::kWords));
     for (std::size_t k = 0; k < lines; ++k) base_[k] = ExactSum::from_digits(*ledger_digits, k * ExactSum::kWords);
     const EnergyLedger& l = start.ledger();
-    const double plain[kLedgerLines] = {l.plastic_work, l.viscous_work, l.fracture_energy, l.external_work,
-                                        l.contact_work};
+    const double plain[kLedgerLines] = {l.plastic_work,  l.viscous_work,  l.fracture_energy,
+                                        l.external_work, l.contact_work,  l.heat_plastic,
+                                        l.heat_friction, l.heat_to_tools, l.heat_to_clamps};
     for (std::size_t k = lines; k < kLedgerLines; ++k) base_[k].add(plain[k]);
   }
 }
@@ -458,6 +459,7 @@ void DomainRun::adopt(Local&& l) {
       if (const std::int32_t g = local_.particles.group[i]; g >= 0)
         local_.groups[g].members.push_back(static_cast<std::int32_t>(i));
     sim_ = std::make_unique<Simulation>(local_, settings_);
+    sim_->set_exchange(this);
   } else {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods), contacts_ ? &l.contacts : nullptr);
   }
@@ -492,15 +494,20 @@ void DomainRun::plan_halo() {
     }
 }
 
-void DomainRun::exchange_halo() {
+void DomainRun::exchange_halo() { exchange_halo(HaloFields{sim_->rotations(), local_.heat.enabled}); }
+
+void DomainRun::temperatures() { exchange_halo(HaloFields{false, true, false}); }
+
+double DomainRun::min_all(double v) { return -comm_.max_all(-v); }
+
+void DomainRun::exchange_halo(HaloFields fields) {
   const int size = comm_.size();
   Particles& p = local_.particles;
   std::vector<Bytes> out(size);
-  const bool omega = sim_->rotations();
-  const std::size_t record = kinematics_bytes(omega);
+  const std::size_t record = fields.bytes();
   for (int r = 0; r < size; ++r) {
     out[r].reserve(send_[r].size() * record);
-    for (const std::int32_t i : send_[r]) pack_kinematics(out[r], p, i, omega);
+    for (const std::int32_t i : send_[r]) pack_kinematics(out[r], p, i, fields);
   }
   halo_bytes_ = 0;
   for (const Bytes& b : out) halo_bytes_ += b.size();
@@ -513,7 +520,7 @@ void DomainRun::exchange_halo() {
       throw std::logic_error(
           fmt::format("domains: halo from rank {}: {} bytes, {} expected", r, in[r].size(), expect[r]));
     const std::byte* at = in[r].data();
-    for (const std::int32_t i : recv_[r]) at += unpack_kinematics(at, p, i, omega);
+    for (const std::int32_t i : recv_[r]) at += unpack_kinematics(at, p, i, fields);
   }
 }
 
@@ -549,6 +556,7 @@ DomainRun::Sums DomainRun::sums() {
   }
   const RodSystem::ExactLedger& x = sim_->exact_ledger();
   const GroupSystem::ExactShare& gx = sim_->exact_group_share();
+  const ThermalSystem::ExactShare& hx = sim_->thermal().exact_share();
   std::vector<ExactSum> parts = {sim_->particle_kinetic_energy(owned_.data()),
                                  sim_->rod_elastic_energy(first_end_owned.data()),
                                  contacts_ ? sim_->contacts().elastic_energy_exact(owned_.data()) : ExactSum{},
@@ -556,7 +564,11 @@ DomainRun::Sums DomainRun::sums() {
                                  x.viscous_work,
                                  x.fracture_energy,
                                  gx.external_work,
-                                 ExactSum{}};
+                                 ExactSum{},
+                                 hx.plastic,
+                                 hx.friction,
+                                 hx.to_tools,
+                                 hx.to_clamps};
   constexpr std::size_t kLine = 3;  // parts[kLine + k]: ledger line k
   // (what rank 0 booked: before the run started here, and the meshes' and contacts' lines)
   for (std::size_t k = 0; k < kLedgerLines; ++k) parts[kLine + k].add(base_[k]);
@@ -573,6 +585,10 @@ DomainRun::Sums DomainRun::sums() {
   s.fracture_energy = total[kLine + 2].value();
   s.external_work = total[kLine + 3].value();
   s.contact_work = total[kLine + 4].value();
+  s.heat_plastic = total[kLine + 5].value();
+  s.heat_friction = total[kLine + 6].value();
+  s.heat_to_tools = total[kLine + 7].value();
+  s.heat_to_clamps = total[kLine + 8].value();
   ledger_digits_.clear();
   for (std::size_t k = 0; k < kLedgerLines; ++k) {
     const std::vector<std::int64_t> d = total[kLine + k].digits();
@@ -721,6 +737,12 @@ MemoryArchive DomainRun::sums_archive() {
   a.set("ledger/fracture_energy", s.fracture_energy);
   a.set("ledger/external_work", s.external_work);
   a.set("ledger/contact_work", s.contact_work);
+  if (local_.heat.enabled) {
+    a.set("ledger/heat_plastic", s.heat_plastic);
+    a.set("ledger/heat_friction", s.heat_friction);
+    a.set("ledger/heat_to_tools", s.heat_to_tools);
+    a.set("ledger/heat_to_clamps", s.heat_to_clamps);
+  }
   a.set("groups/reaction", s.reactions);
   if (contacts_) {
     a.set("mesh_force", s.mesh_forces);

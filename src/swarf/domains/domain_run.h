@@ -54,6 +54,7 @@
 #include "swarf/integrate/step_settings.h"
 #include "swarf/simulation.h"
 #include "swarf/state/world.h"
+#include "swarf/systems/step_exchange.h"
 
 namespace swarf {
 
@@ -73,7 +74,7 @@ struct DomainSettings {
 };
 // With contacts the stray check is replaced: see domain_run.h's head (spatial ghosts).
 
-class DomainRun {
+class DomainRun : private StepExchange {
  public:
   /// This rank's domain of 'global' (the whole World, the same on every rank; ids and rods as
   /// the serial run has them), stepped with 'settings'. Collective. Throws InputError for a
@@ -130,24 +131,26 @@ class DomainRun {
   /// work and reactions. The Simulation's own ledger, with shared rods counted on both sides,
   /// stays per domain.
   struct Sums {
-    double kinetic_energy = 0.0;    ///< of the particles, translational + rotational, J
-    double elastic_energy = 0.0;    ///< of the intact rods, J
-    double contact_energy = 0.0;    ///< in the touching contacts, J
-    std::int64_t broken_rods = 0;   ///< rods broken now (the intact flags), of the serial rod list
-    double plastic_work = 0.0;      ///< EnergyLedger::plastic_work, J
-    double viscous_work = 0.0;      ///< EnergyLedger::viscous_work, J
-    double fracture_energy = 0.0;   ///< EnergyLedger::fracture_energy, J
-    double external_work = 0.0;     ///< EnergyLedger::external_work of the groups' and meshes' motions, J
-    double contact_work = 0.0;      ///< EnergyLedger::contact_work, J
+    double kinetic_energy = 0.0;   ///< of the particles, translational + rotational, J
+    double elastic_energy = 0.0;   ///< of the intact rods, J
+    double contact_energy = 0.0;   ///< in the touching contacts, J
+    std::int64_t broken_rods = 0;  ///< rods broken now (the intact flags), of the serial rod list
+    double plastic_work = 0.0;     ///< EnergyLedger::plastic_work, J
+    double viscous_work = 0.0;     ///< EnergyLedger::viscous_work, J
+    double fracture_energy = 0.0;  ///< EnergyLedger::fracture_energy, J
+    double external_work = 0.0;    ///< EnergyLedger::external_work of the groups' and meshes' motions, J
+    double contact_work = 0.0;     ///< EnergyLedger::contact_work, J
+    double heat_plastic = 0.0, heat_friction = 0.0, heat_to_tools = 0.0, heat_to_clamps = 0.0;  ///< EnergyLedger's, J
     std::vector<Vec3> mesh_forces;  ///< per mesh, Simulation::mesh_force now, N
     std::vector<Vec3> reactions;    ///< per group, Simulation::group_reaction now, N
   };
   Sums sums();
   /// The exact sums of the ledger lines (plastic, viscous and fracture work, the groups' and
-  /// meshes' external work, the contacts' line) as the last sums() reduced them: ExactSum::kWords int64 words each, the
-  /// same on every rank; what a checkpoint keeps for DomainRun(comm, start, ds, digits).
+  /// meshes' external work, the contacts' line, the heat's plastic, friction, tools and clamps lines) as the last
+  /// sums() reduced them: ExactSum::kWords int64 words each, the same on every rank; what a checkpoint keeps for
+  /// DomainRun(comm, start, ds, digits).
   const std::vector<std::int64_t>& ledger_digits() const { return ledger_digits_; }
-  static constexpr std::size_t kLedgerLines = 5;
+  static constexpr std::size_t kLedgerLines = 9;
 
   /// Throws InputError naming the first feature of 'w' or 's' that the domains do not support.
   static void check_supported(const World& w, const StepSettings& s);
@@ -187,7 +190,12 @@ class DomainRun {
   ContactSystem::Records gather_contacts(const std::vector<std::int64_t>& ids, bool all);
   void adopt(Local&& l);  // into the Simulation (built on the first call)
   void plan_halo();       // who sends which owned particle to whom after each step
-  void exchange_halo();
+  void exchange_halo();   // after each step: the halo's fields of this run
+  void exchange_halo(HaloFields fields);
+  // StepExchange: what this domain's step needs of the others midway (the heat's conduction).
+  void temperatures() override;
+  double min_all(double v) override;
+  const std::uint8_t* counted() const override { return owned_.data(); }
   void migrate(bool recut);                   // recut: choose the cuts again (unless fixed)
   void load_sums_into(Simulation& out);       // collective: this rank's step state and the run's sums
   MemoryArchive sums_archive();               // collective: that step state, to load (broken_rods not set)

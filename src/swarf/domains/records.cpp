@@ -60,21 +60,36 @@ std::size_t unpack_new_particle(const std::byte* in, Particles& p) {
   return at;
 }
 
-void pack_kinematics(Bytes& out, const Particles& p, std::size_t i, bool omega) {
-  const std::size_t at = out.size();
-  out.resize(at + kinematics_bytes(omega));
-  std::memcpy(out.data() + at, &p.position[i], sizeof(Vec3));
-  std::memcpy(out.data() + at + sizeof(Vec3), &p.velocity[i], sizeof(Vec3));
-  std::memcpy(out.data() + at + 2 * sizeof(Vec3), &p.acceleration[i], sizeof(Vec3));
-  if (omega) std::memcpy(out.data() + at + 3 * sizeof(Vec3), &p.omega[i], sizeof(Vec3));
+void pack_kinematics(Bytes& out, const Particles& p, std::size_t i, HaloFields f) {
+  std::size_t at = out.size();
+  out.resize(at + f.bytes());
+  const auto put = [&](const void* v, std::size_t n) {
+    std::memcpy(out.data() + at, v, n);
+    at += n;
+  };
+  if (f.kinematics) {
+    put(&p.position[i], sizeof(Vec3));
+    put(&p.velocity[i], sizeof(Vec3));
+    put(&p.acceleration[i], sizeof(Vec3));
+  }
+  if (f.omega) put(&p.omega[i], sizeof(Vec3));
+  if (f.temperature) put(&p.temperature[i], sizeof(double));
 }
 
-std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i, bool omega) {
-  std::memcpy(static_cast<void*>(&p.position[i]), in, sizeof(Vec3));
-  std::memcpy(static_cast<void*>(&p.velocity[i]), in + sizeof(Vec3), sizeof(Vec3));
-  std::memcpy(static_cast<void*>(&p.acceleration[i]), in + 2 * sizeof(Vec3), sizeof(Vec3));
-  if (omega) std::memcpy(static_cast<void*>(&p.omega[i]), in + 3 * sizeof(Vec3), sizeof(Vec3));
-  return kinematics_bytes(omega);
+std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i, HaloFields f) {
+  const std::byte* at = in;
+  const auto get = [&](void* v, std::size_t n) {
+    std::memcpy(v, at, n);
+    at += n;
+  };
+  if (f.kinematics) {
+    get(static_cast<void*>(&p.position[i]), sizeof(Vec3));
+    get(static_cast<void*>(&p.velocity[i]), sizeof(Vec3));
+    get(static_cast<void*>(&p.acceleration[i]), sizeof(Vec3));
+  }
+  if (f.omega) get(static_cast<void*>(&p.omega[i]), sizeof(Vec3));
+  if (f.temperature) get(&p.temperature[i], sizeof(double));
+  return f.bytes();
 }
 
 std::size_t rod_record_bytes(Rods& r) {

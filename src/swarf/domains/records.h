@@ -28,16 +28,22 @@ std::size_t unpack_particle(const std::byte* in, Particles& p, std::size_t i);
 /// Appends the record at 'in' as a new particle of p; returns the bytes read.
 std::size_t unpack_new_particle(const std::byte* in, Particles& p);
 
-/// The halo's record of particle i: the fields a step changes and the next step reads of a ghost
-/// (position, velocity, acceleration; with rotations its angular velocity too, which its
-/// contacts read; the domains refuse heat, whose temperature would join them). The other fields
-/// of a ghost stay as it arrived: constant ones (mass, radius, ...) exact, its orientation, the
-/// plastic strain's window and the force its own, which nothing of an owned particle reads.
-void pack_kinematics(Bytes& out, const Particles& p, std::size_t i, bool omega);
-/// The bytes of one halo record.
-constexpr std::size_t kinematics_bytes(bool omega) { return (omega ? 4 : 3) * sizeof(Vec3); }
+/// The fields of the halo's record: always position, velocity and acceleration (what a step
+/// changes and the next step reads of a ghost); with rotations the angular velocity (its
+/// contacts read it), with heat the temperature (its rods' and contacts' laws read it). The other
+/// fields of a ghost stay as it arrived: constant ones (mass, radius, ...) exact, its orientation,
+/// the plastic strain's window and the force its own, which nothing of an owned particle reads.
+struct HaloFields {
+  bool omega = false, temperature = false;
+  bool kinematics = true;  ///< false: only the fields flagged above (the conduction's temperatures midway)
+  std::size_t bytes() const {
+    return ((kinematics ? 3 : 0) + (omega ? 1 : 0)) * sizeof(Vec3) + (temperature ? sizeof(double) : 0);
+  }
+};
+/// Appends the halo's record of particle i.
+void pack_kinematics(Bytes& out, const Particles& p, std::size_t i, HaloFields f);
 /// Writes the halo's record at 'in' over particle i; returns the bytes read.
-std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i, bool omega);
+std::size_t unpack_kinematics(const std::byte* in, Particles& p, std::size_t i, HaloFields f);
 
 /// Rods gathered from records: their per-rod fields (in 'rods', whose 'ends' stay empty), keys
 /// and end ids, in the order received.

@@ -64,7 +64,7 @@ void ThermalSystem::resize(World& w) {
   if (tool_t_.size() != w.meshes.size()) tool_t_.resize(w.meshes.size(), w.heat.tool_temperature);
 }
 
-void ThermalSystem::fluxes(const World& w, const ContactSystem& contacts) {
+void ThermalSystem::fluxes(const World& w, const ContactSystem& contacts, double ds) {
   const auto& p = w.particles;
   const auto& r = w.rods;
   const std::size_t n = p.size(), nm = w.meshes.size();
@@ -100,6 +100,8 @@ void ThermalSystem::fluxes(const World& w, const ContactSystem& contacts) {
     in.mesh_temperature = tool_t_.data();
     in.mesh_conductivity = w.heat.tool_conductivity;
     in.friction = false;
+    in.counted = x_ ? x_->counted() : nullptr;  // (the heat into the tools over the sub-step ds)
+    in.scale = ds;
     contacts.heat(p, in, out_);
   }
 }
@@ -123,12 +125,18 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts, co
       q[r.ends[0]] += e;
       q[r.ends[1]] += e;
       plastic_heat += 2.0 * e;  // (the ledger's sum over the same list: no pass over the particles)
+      if (x_ && x_->counted()[r.ends[0]]) exact_.plastic.add(2.0 * e);  // (a rod: its first end's owner's)
     }
   }
   // Friction over the step: half to each body.
   assign(out_.friction, n);
   assign(out_.mesh_friction, nm);
-  if (contacts.enabled()) contacts.heat(p, ContactSystem::HeatInput{}, out_);  // (friction only: no flux written)
+  if (contacts.enabled()) {
+    ContactSystem::HeatInput in;  // (friction only: no flux written)
+    in.counted = x_ ? x_->counted() : nullptr;
+    in.scale = h;
+    contacts.heat(p, in, out_);
+  }
   const double c_heat = hp.heat_capacity;
   double* T = p.temperature.data();
   const double* m = p.mass.data();
@@ -151,6 +159,17 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts, co
   }
   c.ledger.heat_friction += h * particle_friction + tool_friction;
   c.ledger.heat_to_tools += tool_friction;
+  if (x_) {
+    const std::uint8_t* owned = x_->counted();
+    for (const std::int32_t i : held_list_)
+      if (owned[i]) exact_.to_clamps.add(qp[i] + h * qf[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      if (owned[i]) exact_.friction.add(h * qf[i]);
+    for (const ExactSum& q : out_.mesh_friction_exact) {  // (empty without contacts)
+      exact_.friction.add(q);
+      exact_.to_tools.add(q);
+    }
+  }
   // Conduction, when it is due.
   pending_ += h;
   if (pending_ >= interval_) {
@@ -168,13 +187,17 @@ void ThermalSystem::conduct(World& w, const ContactSystem& contacts, double dt, 
   double* T = p.temperature.data();
   int sub = 1;
   for (int s = 0; s < sub; ++s) {
-    fluxes(w, contacts);
+    if (x_) x_->temperatures();  // (the ghosts': their owners added this step's sources, or the last sub-step)
+    fluxes(w, contacts, dt / sub);
     if (s == 0) {
-      // The explicit limit of this pass: min_i C_i / sum_j G_ij (and the heated tools').
+      // The explicit limit of this pass: min_i C_i / sum_j G_ij (and the heated tools'); over
+      // the domains, of the owned particles (a ghost's conductance lacks its other rods).
       double limit = HUGE_VAL;
+      const std::uint8_t* owned = x_ ? x_->counted() : nullptr;
       for (std::size_t i = 0; i < n; ++i)
-        if (out_.conductance[i] > 0.0 && m[i] > 0.0 && !held_[i])
+        if (out_.conductance[i] > 0.0 && m[i] > 0.0 && !held_[i] && (!owned || owned[i]))
           limit = std::min(limit, m[i] * c_heat / out_.conductance[i]);
+      if (x_) limit = x_->min_all(limit);
       const double particle_limit = limit;
       if (hp.tool_heat_capacity > 0.0)
         for (std::size_t k = 0; k < nm; ++k)
@@ -194,6 +217,7 @@ void ThermalSystem::conduct(World& w, const ContactSystem& contacts, double dt, 
             limit < particle_limit ? "tool_heat_capacity" : "heat_capacity"));
       sub = std::max(1, static_cast<int>(wanted));
       last_step_ = dt / sub;
+      if (x_ && sub > 1) fluxes(w, contacts, dt / sub);  // (the same fluxes; the tools' exact heat over the sub-step)
       // Nothing conducts yet (no rod, no touching contact): look again at the next step.
       interval_ = std::isfinite(allowed) ? allowed : 0.0;
     }
@@ -208,6 +232,12 @@ void ThermalSystem::conduct(World& w, const ContactSystem& contacts, double dt, 
       const double in = ds * out_.mesh_flux[k];
       ledger.heat_to_tools += in;
       if (hp.tool_heat_capacity > 0.0) tool_t_[k] += in / hp.tool_heat_capacity;
+    }
+    if (x_) {
+      const std::uint8_t* owned = x_->counted();
+      for (const std::int32_t i : held_list_)
+        if (owned[i]) exact_.to_clamps.add(ds * q[i]);
+      for (const ExactSum& in : out_.mesh_flux_exact) exact_.to_tools.add(in);
     }
   }
   ++conductions_;

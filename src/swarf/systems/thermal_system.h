@@ -35,6 +35,7 @@
 #include "swarf/systems/energy_ledger.h"
 #include "swarf/systems/rod_system.h"
 #include "swarf/systems/step_context.h"
+#include "swarf/systems/step_exchange.h"
 
 namespace swarf {
 
@@ -74,13 +75,23 @@ class ThermalSystem {
   // systems' reaches cover.
   static constexpr Sharing sharing = Sharing::Replicated;
   double ghost_reach(const World&) const { return 0.0; }
+  /// A domain's link to the others (null: a run in one process). With it the conduction reads
+  /// the ghosts' temperatures after this step's sources (and after each sub-step), its explicit
+  /// limit is the smallest over the domains, and the heat's ledger lines are also counted by
+  /// owner, each term added exactly (exact_share()): the same sums over the domains for any
+  /// partition. The tools then must keep their temperature (no tool heat capacity or conductivity).
+  void set_exchange(StepExchange* x) { x_ = x; }
+  struct ExactShare {
+    ExactSum plastic, friction, to_tools, to_clamps;  ///< the ledger's heat_plastic, ..., J
+  };
+  const ExactShare& exact_share() const { return exact_; }
 
  private:
   // One conduction over dt (sub-stepped within the limit); updates limit_ and the interval.
   void conduct(World& w, const ContactSystem& contacts, double dt, EnergyLedger& ledger);
   // Heat flowing into each particle by conduction (W) and its total conductance (W/K), the
   // rods' and the contacts' (and the meshes'), into out_.
-  void fluxes(const World& w, const ContactSystem& contacts);
+  void fluxes(const World& w, const ContactSystem& contacts, double ds);  // ds: the (sub-)step, s
 
   bool enabled_ = false;
   std::vector<double> tool_t_;           // state: per mesh, K
@@ -93,6 +104,8 @@ class ThermalSystem {
   std::vector<std::int32_t> held_list_;  // the held particles' indices, ascending (the clamps' heat sum)
   std::vector<double> plastic_;          // scratch per particle: the step's plastic heat, J
   ContactSystem::HeatOutput out_;        // scratch: friction, conduction and conductance per particle and mesh
+  StepExchange* x_ = nullptr;            // a domain's link to the others (not owned)
+  ExactShare exact_;                     // with x_: this domain's exact share of the heat's ledger lines
 };
 
 }  // namespace swarf
