@@ -165,7 +165,7 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts, co
       if (owned[i]) exact_.to_clamps.add(qp[i] + h * qf[i]);
     for (std::size_t i = 0; i < n; ++i)
       if (owned[i] && qf[i] != 0.0) exact_.friction.add(h * qf[i]);  // (most particles touch nothing)
-    for (const ExactSum& q : out_.mesh_friction_exact) {  // (empty without contacts)
+    for (const ExactSum& q : out_.mesh_friction_exact) {             // (empty without contacts)
       exact_.friction.add(q);
       exact_.to_tools.add(q);
     }
