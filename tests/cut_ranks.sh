@@ -1,18 +1,15 @@
 #!/usr/bin/env bash
 # 'mpirun -n N swarf run' of a cut: the default cut (the tool, contacts with friction and
-# sticking, the periodic width, Johnson-Cook rods softened by the heat, the heat with its clamps)
-# on a 30-cell block for 10 us, the tool touching from the start: 1 rank x 2 threads, 2 ranks
-# whose slabs are cut anew every 7 steps (hundreds of migrations with the chip's contacts and
-# their friction histories), and a checkpoint written by 2 ranks at 5 us continued on 3 give the
-# same series.csv, frames and state hash, byte for byte. What the domains do not run yet is
-# switched off: bond formation, and with it the rods' damping (without bond formation the default
-# step is sqrt(3) longer, and the damped rods of the sheared chip then lose the energy balance:
-# the check would stop the run).
+# sticking, the periodic width, Johnson-Cook rods softened by the heat, the heat with its clamps,
+# bond formation with neighbour exchange) on a 30-cell block for 10 us, the tool touching from the
+# start: 1 rank x 2 threads, 2 ranks whose slabs are cut anew every 7 steps (hundreds of migrations
+# with the chip's contacts, their friction histories and the rods formed), and a checkpoint
+# written by 2 ranks at 5 us continued on 3 give the same series.csv, frames and state hash, byte
+# for byte.
 # Usage: cut_ranks.sh SWARF   (exit 77: mpirun missing, skipped)
 swarf=$1
 source "$(dirname "$0")/mpi_prelude.sh"
-cut=(--set rod.bond_overlap=inf --set rod.neighbour_exchange=false --set rod.damping_ratio=0
-  --set "workpiece.cells=[30,2,15]" --set group.1.box_min.0=1.0e-3 --set mesh.0.origin.0=-0.016e-3
+cut=(--set "workpiece.cells=[30,2,15]" --set group.1.box_min.0=1.0e-3 --set mesh.0.origin.0=-0.016e-3
   --set output.frame_interval=2.5e-6 --set output.steady_from=5e-6 --set output.plots=false
   --set output.checkpoint_at_end=true)
 OMP_NUM_THREADS=2 $MPI -n 1 "$swarf" run "${cut[@]}" --set integrator.end_time=1e-5 --out "$dir/one" >"$dir/one.log" 2>&1

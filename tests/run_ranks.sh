@@ -3,7 +3,7 @@
 # rank, bit for bit, with 2 threads or 1 per rank (series.csv, the ParaView frames, the final state's hash in summary.json),
 # and a checkpoint written on 2 ranks goes on over 3 ranks with the uninterrupted run's rows and
 # state (the ledger's exact sums travel in the checkpoint), as does one interrupted by SIGTERM; the
-# default cut is refused. The case: the uniaxial bar
+# implicit step is refused. The case: the uniaxial bar
 # (validation/hysteresis/bar.toml: rods, grips, velocity Verlet) for 0.3 ms, 5,524 steps.
 # Usage: run_ranks.sh SWARF BAR_CASE   (exit 77: mpirun missing, skipped)
 swarf=$1 case=$2
@@ -26,15 +26,15 @@ for kind in particles rods; do
   cmp "$a" "$b" || { echo "the last $kind frame of the restart differs"; fail=1; }
 done
 grep -q '"ranks": 2' "$dir/two/summary.json" || { echo "summary.json of 2 ranks does not say so"; fail=1; }
-# A case the domains do not run yet (the default cut: bond formation) is refused by name, with
+# A case the domains do not run yet (the bar with the implicit step) is refused by name, with
 # exit code 2, before anything is written.
 set +e
-refusal=$($MPI -n 2 "$swarf" run --out "$dir/cut" 2>&1)
+refusal=$($MPI -n 2 "$swarf" run "$case" --set 'integrator.scheme="newmark"' --out "$dir/cut" 2>&1)
 code=$?
 set -e
 # (every rank meets it: said once, by rank 0)
-if [ $code -ne 2 ] || [ "$(grep -c "does not support bond formation" <<<"$refusal")" != 1 ] || [ -e "$dir/cut" ]; then
-  echo "the default cut on 2 ranks: exit code $code (2 expected), output: $refusal"
+if [ $code -ne 2 ] || [ "$(grep -c "does not support the implicit Newmark step" <<<"$refusal")" != 1 ] || [ -e "$dir/cut" ]; then
+  echo "the bar with the implicit step on 2 ranks: exit code $code (2 expected), output: $refusal"
   fail=1
 fi
 # Interrupted: SIGTERM to the ranks (as Slurm's --signal sends it to a job's tasks; mpirun passes

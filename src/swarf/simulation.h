@@ -143,8 +143,11 @@ class Simulation {
   /// The heat: the tools' temperatures, the stored heat, the conduction's step (issue 33).
   const ThermalSystem& thermal() const { return sys_.thermal; }
   /// A domain's link to the other domains for what a step needs of them midway (issue 38;
-  /// systems/step_exchange.h): the heat's conduction. Not owned; null: a run in one process.
-  void set_exchange(StepExchange* x) { sys_.thermal.set_exchange(x); }
+  /// systems/step_exchange.h): the heat's conduction, bond formation. Not owned; null: a run in one process.
+  void set_exchange(StepExchange* x) {
+    sys_.thermal.set_exchange(x);
+    sys_.rods.set_exchange(x);
+  }
   /// Per-stage wall time of the steps taken while enabled (swarf bench --stages).
   StageClock& stage_clock() { return clock_; }
   const StageClock& stage_clock() const { return clock_; }

@@ -114,8 +114,6 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what = "particle inflows and outflows";
   else if (w.heat.enabled && (w.heat.tool_heat_capacity > 0.0 || w.heat.tool_conductivity > 0.0))
     what = "tools that warm or conduct heat (heat.tool_heat_capacity, heat.tool_conductivity)";
-  else if (w.rods.formation.enabled())
-    what = "bond formation";
   // A group's members are found again from the particles' group indices after a migration.
   for (std::size_t g = 0; g < w.groups.size() && !what; ++g)
     for (const std::int32_t i : w.groups[g].members)
@@ -154,6 +152,14 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
     reach_ = 2.0 * largest + contact_skin_;
   }
   copy_configuration(global, local_);  // (no particles and no rods yet: adopt brings them)
+  global_rods_ = static_cast<std::int64_t>(global.rods.size());
+  if (global.rods.formation.enabled()) {
+    for (std::size_t k = 0; k < global.rods.size(); ++k)
+      if (k >= global.rods.formed.size() || !global.rods.formed[k])
+        for (const std::int32_t i : global.rods.ends[k]) lattice_ids_.push_back(global.particles.id[i]);
+    std::sort(lattice_ids_.begin(), lattice_ids_.end());
+    lattice_ids_.erase(std::unique(lattice_ids_.begin(), lattice_ids_.end()), lattice_ids_.end());
+  }
   local_.particles.next_id = global.particles.next_id;
   Particles& gp = const_cast<Particles&>(global.particles);  // (records are read through for_each_field)
   Rods& gr = const_cast<Rods&>(global.rods);
@@ -686,37 +692,67 @@ void DomainRun::gather_into(Simulation& mirror) {
   if (comm_.rank() == 0) {
     // The step state first: the contacts are found again where the meshes are now.
     load_step_state(state, mirror);
-    mirror.overwrite_records(
-        [&](Particles& mp, Rods& mr) {
-          std::size_t particles = 0, rods = 0;
-          for (int rank = 0; rank < comm_.size(); ++rank) {
-            const std::byte* at = rank == 0 ? mine.data() : gather_in_[rank].data();
-            const std::uint64_t n = get_count(at);
-            for (std::uint64_t q = 0; q < n; ++q) {
-              const auto id = static_cast<std::int64_t>(get_count(at));
-              const auto it = std::lower_bound(mp.id.begin(), mp.id.end(), id);
-              if (it == mp.id.end() || *it != id)
-                throw std::logic_error(fmt::format("domains: particle id {} is not in the mirror", id));
-              at += unpack_particle(at, mp, static_cast<std::size_t>(it - mp.id.begin()));
-            }
-            const std::uint64_t m = get_count(at);
-            for (std::uint64_t q = 0; q < m; ++q) {
-              const RodHead h = rod_head(at);
-              const auto k = static_cast<std::size_t>(h.key);
-              if (h.key < 0 || k >= mr.size() || mp.id[mr.ends[k][0]] != h.end_id[0] ||
-                  mp.id[mr.ends[k][1]] != h.end_id[1])
-                throw std::logic_error(fmt::format("domains: rod {} (particles {}, {}) is not the mirror's", h.key,
-                                                   h.end_id[0], h.end_id[1]));
-              at += unpack_rod_over(at, mr, k);
-            }
-            particles += n;
-            rods += m;
-          }
-          if (particles != mp.size() || rods != mr.size())
-            throw std::logic_error(fmt::format("domains: {} particles and {} rods gathered, the mirror has {} and {}",
-                                               particles, rods, mp.size(), mr.size()));
-        },
-        contacts_ ? &contacts : nullptr);
+    // Where each record lies: the particles' (after their ids) and the rods' (their heads).
+    std::vector<std::pair<std::int64_t, const std::byte*>> precs;
+    std::vector<std::pair<RodHead, const std::byte*>> rrecs;
+    const std::size_t pbytes = particle_record_bytes(p);
+    for (int rank = 0; rank < comm_.size(); ++rank) {
+      const std::byte* at = rank == 0 ? mine.data() : gather_in_[rank].data();
+      for (std::uint64_t n = get_count(at), q = 0; q < n; ++q) {
+        const auto id = static_cast<std::int64_t>(get_count(at));
+        precs.emplace_back(id, at);
+        at += pbytes;
+      }
+      for (std::uint64_t m = get_count(at), q = 0; q < m; ++q) {
+        rrecs.emplace_back(rod_head(at), at);
+        at += rb;
+      }
+    }
+    const Particles& current = mirror.world().particles;
+    const auto index = [&](std::int64_t id) {
+      const auto it = std::lower_bound(current.id.begin(), current.id.end(), id);
+      if (it == current.id.end() || *it != id)
+        throw std::logic_error(fmt::format("domains: particle id {} is not in the mirror", id));
+      return static_cast<std::int32_t>(it - current.id.begin());
+    };
+    if (precs.size() != current.size() || static_cast<std::int64_t>(rrecs.size()) != global_rods_)
+      throw std::logic_error(fmt::format("domains: {} particles and {} rods gathered, the run has {} and {}",
+                                         precs.size(), rrecs.size(), current.size(), global_rods_));
+    // The mirror's rods are the run's unless bond formation changed them since the last gather.
+    const Rods& mirror_rods = mirror.world().rods;
+    bool same_rods = mirror_rods.size() == rrecs.size();
+    for (std::size_t q = 0; q < rrecs.size() && same_rods; ++q) {
+      const RodHead& h = rrecs[q].first;
+      const auto k = static_cast<std::size_t>(h.key);
+      same_rods = h.key >= 0 && k < mirror_rods.size() && current.id[mirror_rods.ends[k][0]] == h.end_id[0] &&
+                  current.id[mirror_rods.ends[k][1]] == h.end_id[1];
+    }
+    const auto write_particles = [&](Particles& mp) {
+      for (const auto& [id, at] : precs) unpack_particle(at, mp, static_cast<std::size_t>(index(id)));
+    };
+    if (same_rods) {
+      mirror.overwrite_records(
+          [&](Particles& mp, Rods& mr) {
+            write_particles(mp);
+            for (const auto& [h, at] : rrecs) unpack_rod_over(at, mr, static_cast<std::size_t>(h.key));
+          },
+          contacts_ ? &contacts : nullptr);
+    } else {
+      // (the run's rods in their keys' order, ends as the mirror's indices)
+      Particles mp = current;
+      write_particles(mp);
+      Rods mr;
+      mr.ends.resize(rrecs.size());
+      mr.for_each_field([&](const char*, auto& v) { v.resize(rrecs.size()); });
+      for (const auto& [h, at] : rrecs) {
+        const auto k = static_cast<std::size_t>(h.key);
+        if (h.key < 0 || k >= rrecs.size())
+          throw std::logic_error(fmt::format("domains: rod key {} of {} rods", h.key, rrecs.size()));
+        mr.ends[k] = {index(h.end_id[0]), index(h.end_id[1])};
+        unpack_rod_over(at, mr, k);
+      }
+      mirror.replace_particles(std::move(mp), std::move(mr), contacts_ ? &contacts : nullptr);
+    }
   }
   state.set("broken_rods", static_cast<std::int64_t>(mirror.broken_rods()));  // (counted from its records)
   load_step_state(state, mirror);

@@ -196,6 +196,7 @@ class DomainRun : private StepExchange {
   void temperatures() override;
   double min_all(double v) override;
   const std::uint8_t* counted() const override { return owned_.data(); }
+  std::vector<std::array<std::int32_t, 2>> form_rods(RodSystem& rods, World& w, ContactSystem& contacts) override;
   void migrate(bool recut);                   // recut: choose the cuts again (unless fixed)
   void load_sums_into(Simulation& out);       // collective: this rank's step state and the run's sums
   MemoryArchive sums_archive();               // collective: that step state, to load (broken_rods not set)
@@ -225,6 +226,10 @@ class DomainRun : private StepExchange {
   bool contacts_ = false;
   double reach_ = 0.0, contact_skin_ = 0.0;
   std::vector<Vec3> x_migrated_;
+  // Bond formation: the ids of the lattice's particles (built with rods: the candidates),
+  // ascending, and the number of rods of the whole run (the next formed rod's key).
+  std::vector<std::int64_t> lattice_ids_;
+  std::int64_t global_rods_ = 0;
   std::vector<Vec3> mesh_force_;
   double contact_power_ = 0.0;
 };

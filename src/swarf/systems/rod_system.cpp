@@ -93,31 +93,39 @@ void RodSystem::account(const StepContext& c) {
   for (double v : block_viscous_) visc += v;
   c.ledger.viscous_work += visc * c.h;
   if (counted_) {
-    // (the rods of the last evaluation, index for index: bond formation, which appends and
-    // removes rods between the two, is refused where the exact ledger is on, the domains)
-    if (rod_viscous_.size() != c.world.rods.size())
-      throw std::logic_error("RodSystem::account: the rods changed since their evaluation under count_exactly");
-    // Each run of rods with one first end and consecutive keys summed plainly, in key order,
-    // then added exactly: the runs are the same on every partition (all rods of a counted first
-    // end are here, in the global order), and one exact add per particle instead of one per rod
-    // (the exact add is ten times a plain one: validation/bench/README.md).
-    const auto& ends = c.world.rods.ends;
-    double run = 0.0;  // W
-    std::int32_t first = -1;
-    std::int64_t last = -2;
-    for (std::size_t k = 0; k < rod_viscous_.size(); ++k) {
-      if (!counted_[ends[k][0]]) continue;
-      const std::int64_t key = keys_ ? keys_[k] : static_cast<std::int64_t>(k);
-      if (ends[k][0] != first || key != last + 1) {
-        if (first >= 0) exact_.viscous_work.add(run * c.h);
-        run = 0.0;
-        first = ends[k][0];
-      }
-      run += rod_viscous_[k];
-      last = key;
-    }
-    if (first >= 0) exact_.viscous_work.add(run * c.h);
+    if (!runs_ready_) viscous_runs(c.world);
+    for (const double run : runs_) exact_.viscous_work.add(run * c.h);
+    runs_ready_ = false;
   }
+}
+
+void RodSystem::viscous_runs(const World& w) {
+  // (the rods of the last evaluation, index for index: bond formation, which appends and
+  // removes rods after it, takes them before it changes them)
+  if (rod_viscous_.size() != w.rods.size())
+    throw std::logic_error("RodSystem::account: the rods changed since their evaluation under count_exactly");
+  // Each run of rods with one first end and consecutive keys summed plainly, in key order,
+  // then added exactly: the runs are the same on every partition (all rods of a counted first
+  // end are here, in the global order), and one exact add per particle instead of one per rod
+  // (the exact add is ten times a plain one: validation/bench/README.md).
+  const auto& ends = w.rods.ends;
+  runs_.clear();
+  double run = 0.0;  // W
+  std::int32_t first = -1;
+  std::int64_t last = -2;
+  for (std::size_t k = 0; k < rod_viscous_.size(); ++k) {
+    if (!counted_[ends[k][0]]) continue;
+    const std::int64_t key = keys_ ? keys_[k] : static_cast<std::int64_t>(k);
+    if (ends[k][0] != first || key != last + 1) {
+      if (first >= 0) runs_.push_back(run);
+      run = 0.0;
+      first = ends[k][0];
+    }
+    run += rod_viscous_[k];
+    last = key;
+  }
+  if (first >= 0) runs_.push_back(run);
+  runs_ready_ = true;
 }
 
 double RodSystem::ghost_reach(const World& m_) const {
@@ -281,7 +289,19 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
   return pairs;
 }
 
+void RodSystem::formation_applied(World& w, std::size_t formed, std::int64_t broken_change) {
+  formed_ += formed;
+  broken_ = static_cast<std::size_t>(static_cast<std::int64_t>(broken_) + broken_change);
+  w.rods.build_rows(w.particles.size());
+  block_viscous_.resize(block_count(w.rods.size()), 0.0);
+  block_changed_.resize(block_count(w.rods.size()), 0);
+}
+
 RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLedger& ledger) {
+  if (x_) {  // (over domains: decided for the whole run; the step's viscous runs taken first)
+    if (counted_) viscous_runs(m_);
+    return x_->form_rods(*this, m_, contacts);
+  }
   auto& r = m_.rods;
   const auto& p = m_.particles;
   if (lattice_.size() != p.size()) {

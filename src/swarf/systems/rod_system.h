@@ -27,6 +27,7 @@
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
 #include "swarf/systems/step_context.h"
+#include "swarf/systems/step_exchange.h"
 
 namespace swarf {
 
@@ -91,6 +92,12 @@ class RodSystem {
   /// (nullptr). 'keys' (per rod: its place in the global rod order; nullptr: the rods are the
   /// global list) group the viscous work for its exact adds. Costs a pass over the rods per
   /// step and a store per rod in the kernel.
+  /// A domain's link to the others (null: a run in one process): form() hands bond formation to it.
+  void set_exchange(StepExchange* x) { x_ = x; }
+  /// After a domain's bond formation changed the rods (StepExchange::form_rods): 'formed' rods
+  /// formed over the run in this step, the lattice rods it broke less those it revived; the
+  /// rows are made again.
+  void formation_applied(World& w, std::size_t formed, std::int64_t broken_change);
   void count_exactly(const std::uint8_t* counted, const std::int64_t* keys = nullptr) {
     counted_ = counted;
     keys_ = keys;
@@ -109,8 +116,12 @@ class RodSystem {
   const std::uint8_t* counted_ = nullptr;  // per particle: its first-end rods count in exact_ (null: off)
 
   const std::int64_t* keys_ = nullptr;  // per rod, the global order (count_exactly)
+  StepExchange* x_ = nullptr;           // a domain's link to the others (not owned)
   ExactLedger exact_;
   std::vector<double> rod_viscous_;       // with counted_: per rod, viscous power of the last evaluation, W
+  std::vector<double> runs_;              // with counted_: the step's viscous power by run of rods (account), W
+  bool runs_ready_ = false;               // runs_ taken this step (before bond formation changed the rods)
+  void viscous_runs(const World& w);      // runs_ from rod_viscous_
   std::vector<ExactLedger> block_exact_;  // with counted_: commit's scratch per rod block
   std::size_t broken_ = 0;
   std::size_t formed_ = 0;             // state: 'formed_rods'

@@ -3,9 +3,16 @@
 // run in one process has none. The engine stays free of MPI: the domains talk through core/comm.h.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 namespace swarf {
+
+class ContactSystem;
+class RodSystem;
+struct EnergyLedger;
+struct World;
 
 class StepExchange {
  public:
@@ -16,6 +23,10 @@ class StepExchange {
   virtual double min_all(double v) = 0;
   /// Per particle: 1 for one this domain owns (every particle is counted by one domain).
   virtual const std::uint8_t* counted() const = 0;
+  /// Bond formation (RodSystem::form hands it over): decided for the whole run from every
+  /// domain's pressed pairs, in the serial run's order, and applied to this domain's rods and
+  /// contacts. Returns the pairs of local particles whose rods changed. Collective.
+  virtual std::vector<std::array<std::int32_t, 2>> form_rods(RodSystem& rods, World& w, ContactSystem& contacts) = 0;
 };
 
 }  // namespace swarf
