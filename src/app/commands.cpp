@@ -149,9 +149,10 @@ struct MaterialCommand final : Command {
 struct RunCommand final : Command {
   RunOptions ro;
   explicit RunCommand(CLI::App& app) {
-    sub = app.add_subcommand("run",
-                             "Run a case (no case file: the built-in default case); under mpirun -n N one run over N "
-                             "ranks (rods and grips; docs/cluster.md)");
+    sub = app.add_subcommand(
+        "run",
+        "Run a case (no case file: the built-in default case); under mpirun -n N one run over N "
+        "ranks (explicit steps: rods, grips, contacts, tools, heat, bond formation; docs/cluster.md)");
     sub->add_option("case", ro.case_path, "Case file (TOML); see docs/case-reference.md");
     sub->add_option("--out", ro.out_dir, "Output directory (default swarf-out)");
     sub->add_option("--set", ro.overrides, "Override a case key: --set integrator.dt=2e-9 (repeatable)")
