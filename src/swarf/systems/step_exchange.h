@@ -19,6 +19,10 @@ class StepExchange {
   virtual ~StepExchange() = default;
   /// Overwrites every ghost's Particles::temperature with its owner's. Collective.
   virtual void temperatures() = 0;
+  /// Overwrites every ghost's motion (position, velocity, acceleration, angular velocity) and
+  /// temperature with its owner's: after the kick a ghost's velocity is its own, made from its
+  /// partial force, and the contacts' frictional heat reads both ends' velocities. Collective.
+  virtual void motions() = 0;
   /// The smallest of 'v' over the domains. Collective.
   virtual double min_all(double v) = 0;
   /// Per particle: 1 for one this domain owns (every particle is counted by one domain).

@@ -128,10 +128,11 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts, co
       if (x_ && x_->counted()[r.ends[0]]) exact_.plastic.add(2.0 * e);  // (a rod: its first end's owner's)
     }
   }
-  // Friction over the step: half to each body.
+  // Friction over the step: half to each body (over domains from the ghosts' own velocities).
   assign(out_.friction, n);
   assign(out_.mesh_friction, nm);
   if (contacts.enabled()) {
+    if (x_) x_->motions();
     ContactSystem::HeatInput in;  // (friction only: no flux written)
     in.counted = x_ ? x_->counted() : nullptr;
     in.scale = h;
