@@ -1,5 +1,6 @@
 // domain_run.h: one run over the ranks of a Comm by domain decomposition (issue 38), with the
-// serial run's bits for any rank count. First slice: rods only, velocity Verlet.
+// serial run's bits for any rank count: rods, groups, contacts and tools, the heat and bond
+// formation under velocity Verlet.
 //
 // Why the bits are the serial ones: each particle's force is summed over its rods in rod order
 // (state/reindex.h), and each rod is evaluated from its ends' state and its own. A domain's
@@ -35,9 +36,12 @@
 // same bits for any rank count; the plain sums of the serial run agree to round-off only (it adds
 // in blocks, the cheaper way: exact adds in the rod kernel cost 11-20 % of the cut's step,
 // validation/bench/README.md). The Simulation's own ledger stays per domain.
-// Not in this slice (refused by name, check_supported): contacts, meshes and tools, rigid bodies,
-// particle flows, heat, bond formation, a periodic width, the implicit Newmark step and the Newton
-// solver. Rotations are off (they come with contacts).
+// Contacts make the ghosts spatial as well (every particle within reach of the slab; the layers
+// made anew before a particle's drift would pass half the lists' skin) and travel as records with
+// their friction histories; the heat and bond formation need the other domains midway through a
+// step (systems/step_exchange.h; domain_formation.cpp); see docs/architecture.md.
+// Not yet (refused by name, check_supported): rigid bodies, particle flows, tools that warm or
+// conduct heat, the implicit Newmark step and the Newton solver.
 // Setup: every rank builds the same global World (setup is deterministic) and keeps its part.
 #pragma once
 
