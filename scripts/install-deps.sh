@@ -17,6 +17,8 @@ PKGS=(
   pybind11-dev python3-dev
   # MPI (parameter studies, one run over ranks); procps: pkill for the tests that interrupt a run
   libopenmpi-dev openmpi-bin procps
+  # the domains' recursive coordinate bisection over MPI ranks (Zoltan)
+  libtrilinos-zoltan-dev
   # plots (PNG) and headless rendering
   python3 python3-numpy python3-matplotlib python3-h5py xvfb xauth
 )

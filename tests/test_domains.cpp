@@ -6,12 +6,15 @@
 // order as in the serial run, and each rod is evaluated from bitwise identical inputs, so any
 // difference is a bug. The domains run as threads of this process (run_loopback), and under
 // mpirun -n 2 as MPI ranks (DomainsMpi, the ctest test domains_mpi_two_ranks).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 
 #include "scenes/pulled_bar.h"
@@ -20,6 +23,7 @@
 #include "setup/model.h"
 #include "study/mpi_comm.h"
 #include "study/sweep_mpi.h"
+#include "study/zoltan_rcb.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/loopback_comm.h"
 #include "swarf/domains/domain_run.h"
@@ -73,6 +77,30 @@ Scene make_scene() {
 const Scene& scene() {
   static const Scene s = make_scene();
   return s;
+}
+
+// Four boxes, a 2 x 2 split of the x-z plane at (xc, zc) (y never cut), whatever the points:
+// what a bisection over four ranks makes of a flat block, fixed so that particles cross the
+// cuts, and the corner, as the block moves (the partitioner behind Zoltan's RCB under MPI).
+struct FourBoxes final : Partitioner {
+  double xc = 0.0, zc = 0.0;
+  FourBoxes(double x, double z) : xc(x), zc(z) {}
+  std::vector<DomainBox> partition(const std::vector<Vec3>&, const std::vector<std::int64_t>&, bool) override {
+    const double inf = HUGE_VAL;
+    return {{Vec3(-inf, -inf, -inf), Vec3(xc, inf, zc)},
+            {Vec3(xc, -inf, -inf), Vec3(inf, inf, zc)},
+            {Vec3(-inf, -inf, zc), Vec3(xc, inf, inf)},
+            {Vec3(xc, -inf, zc), Vec3(inf, inf, inf)}};
+  }
+  std::string name() const override { return "four fixed boxes"; }
+};
+
+// The middle of a World's particles in x and z, m.
+std::pair<double, double> middle_xz(const World& w) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL, zlo = HUGE_VAL, zhi = -HUGE_VAL;
+  for (const Vec3& x : w.particles.position)
+    lo = std::min(lo, x[0]), hi = std::max(hi, x[0]), zlo = std::min(zlo, x[2]), zhi = std::max(zhi, x[2]);
+  return {0.5 * (lo + hi), 0.5 * (zlo + zhi)};
 }
 
 // The serial run's World after kSteps (one thread).
@@ -306,6 +334,52 @@ TEST(Domains, ThreeDomainsRebalancedEveryTenStepsGiveTheSerialBits) {
   for (const DomainReport& d : reports) std::printf("   %zu owned, %zu ghosts\n", d.owned_ids.size(), d.ghosts);
   EXPECT_GE(reports[0].migrations, kSteps / 10);
   EXPECT_GT(arrivals, 300);
+}
+
+TEST(Domains, PartitionBoxesOwnAndReachAsTheyAreDrawn) {
+  // Slabs: the cut belongs to the upper slab; near widens both faces.
+  const Partition slabs = Partition::slabs({1.0, 2.0});
+  EXPECT_EQ(slabs.ranks(), 3);
+  EXPECT_EQ(slabs.owner(Vec3(0.999, 5, 5)), 0);
+  EXPECT_EQ(slabs.owner(Vec3(1.0, -5, 5)), 1);
+  EXPECT_EQ(slabs.owner(Vec3(2.0, 0, 0)), 2);
+  EXPECT_TRUE(slabs.near(Vec3(0.95, 0, 0), 1, 0.1));
+  EXPECT_FALSE(slabs.near(Vec3(0.85, 0, 0), 1, 0.1));
+  EXPECT_FALSE(slabs.near(Vec3(2.1, 0, 0), 1, 0.1));  // (half-open: x < 2 + 0.1)
+  EXPECT_THROW(Partition::slabs({2.0, 1.0}), InputError);
+  // Boxes: the 2 x 2 split at (1, 1): each quarter owns its half-open quadrant, and a point near
+  // the corner lies within reach of all four.
+  FourBoxes four(1.0, 1.0);
+  const Partition boxes(four.partition({}, {}, false));
+  EXPECT_EQ(boxes.ranks(), 4);
+  EXPECT_EQ(boxes.owner(Vec3(0.5, 9, 0.5)), 0);
+  EXPECT_EQ(boxes.owner(Vec3(1.0, 9, 0.5)), 1);
+  EXPECT_EQ(boxes.owner(Vec3(0.5, -9, 1.0)), 2);
+  EXPECT_EQ(boxes.owner(Vec3(1.0, 0, 1.0)), 3);
+  for (int r = 0; r < 4; ++r) EXPECT_TRUE(boxes.near(Vec3(1.05, 0, 0.96), r, 0.06)) << r;
+  EXPECT_FALSE(boxes.near(Vec3(1.05, 0, 0.96), 0, 0.04));  // (0.05 beyond box 0 along x)
+  EXPECT_TRUE(boxes.near(Vec3(1.05, 0, 0.96), 1, 0.0));    // (its own)
+  EXPECT_THROW(Partition({{Vec3(1, 0, 0), Vec3(0, 1, 1)}}), InputError);
+}
+
+TEST(Domains, FourDomainsInBoxesGiveTheSerialBits) {
+  // A 2 x 2 split of the x-z plane: the block moves along x through the x cut, and the shear
+  // and stretch move particles across both, so particles have owners and ghosts in up to four
+  // boxes at once.
+  const auto [xc, zc] = middle_xz(scene().world);
+  DomainSettings ds;
+  ds.rebalance_every = 1000000;
+  ds.partitioner = std::make_shared<FourBoxes>(xc + 0.1 * scene().length, zc);
+  const auto reports = run_domains(4, ds);
+  const std::int64_t arrivals = expect_serial_bits(reports, false);
+  std::printf("4 domains in boxes: %lld particles changed owner in %lld migrations; at the end\n",
+              static_cast<long long>(arrivals), static_cast<long long>(reports[0].migrations));
+  for (const DomainReport& d : reports) std::printf("   %zu owned, %zu ghosts\n", d.owned_ids.size(), d.ghosts);
+  EXPECT_GT(arrivals, 300);
+  for (const DomainReport& d : reports) EXPECT_GT(d.owned_ids.size(), 0u);
+  // Rebalanced every 10 steps (the same boxes again: every particle sent to its box's owner).
+  ds.rebalance_every = 10;
+  expect_serial_bits(run_domains(4, ds), false);
 }
 
 TEST(Domains, ThreeDomainsWithFixedCutsAndTwoThreadsEachGiveTheSerialBits) {
@@ -572,13 +646,14 @@ void expect_contacts_over_domains(const World& initial, const StepSettings& step
                 static_cast<long long>(sim.thermal().conductions()), sim.ledger().heat_plastic,
                 sim.ledger().heat_friction, sim.ledger().heat_to_clamps, sim.ledger().heat_to_tools);
   }
-  const auto run = [&](int n) {
+  const auto run = [&](int n, std::shared_ptr<Partitioner> boxes = nullptr) {
     std::vector<ContactRun> out(n);
     std::vector<World> storage(n);
     const auto body = [&](Comm& comm) {
       omp_set_num_threads(1);
       DomainSettings ds;
       ds.rebalance_every = 20;
+      ds.partitioner = boxes;
       DomainRun d(comm, initial, step, ds);
       for (int k = 0; k < steps; ++k) d.step();
       ContactRun& r = out[comm.rank()];
@@ -598,10 +673,14 @@ void expect_contacts_over_domains(const World& initial, const StepSettings& step
     return out[0];
   };
   const ContactRun one = run(1), two = run(2), three = run(3);
+  // Four boxes split at the block's middle in x and z: spatial ghosts within reach of up to
+  // three other boxes (the corner), the tool's contacts in the upper two.
+  const auto [xc, zc] = middle_xz(initial);
+  const ContactRun four = run(4, std::make_shared<FourBoxes>(xc, zc));
   const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
   const double scale = std::max(std::abs(sim.ledger().contact_work), std::abs(sim.ledger().external_work));
-  for (const ContactRun* r : {&one, &two, &three}) {
-    const int n = r == &one ? 1 : r == &two ? 2 : 3;
+  for (const ContactRun* r : {&one, &two, &three, &four}) {
+    const int n = r == &one ? 1 : r == &two ? 2 : r == &three ? 3 : 4;
     EXPECT_TRUE(same_world(const_cast<World&>(r->world), serial_world)) << n << " domains";
     EXPECT_EQ(r->touching, sim.contacts().touching()) << n << " domains";
     EXPECT_EQ(bits(r->sums.kinetic_energy), bits(sim.particle_kinetic_energy().value())) << n << " domains";
@@ -808,19 +887,27 @@ TEST(Domains, LoopbackRethrowsARanksError) {
                InputError);
 }
 
-// Under mpirun (the ctest test domains_mpi_two_ranks runs DomainsMpi.*, which starts this one
-// on two ranks): each rank runs the serial run and its domain, and checks its particles.
-TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
-  if (!MpiSession::launched()) GTEST_SKIP() << "started by DomainsMpi.TwoRanksUnderMpirun";
+// On the MPI ranks of an mpirun: each rank runs the serial run and its domain (regions made
+// anew every 10 steps: Zoltan's RCB boxes with 'rcb', slabs otherwise), and checks its
+// particles, rods and the reduced sums against the serial run's bits; prints "rank R of N (LABEL)".
+void expect_serial_bits_over_mpi(int ranks, bool rcb, const char* label) {
   MpiSession session;
   MpiComm comm;
-  ASSERT_EQ(comm.size(), 2);
+  ASSERT_EQ(comm.size(), ranks);
   omp_set_num_threads(1);
-  const Serial& s = serial();
-  (void)s;
+  (void)serial();
   DomainSettings ds;
   ds.rebalance_every = 10;
+  if (rcb) ds.partitioner = std::make_shared<ZoltanRcb>();
   DomainRun d(comm, scene().world, scene().step, ds);
+  ASSERT_EQ(d.partition().ranks(), ranks);
+  // The regions balance the weights (1 + intact rods per particle): each rank owns its share of
+  // the particles to within 20 % (the weights favour the inner particles; a cut lies between
+  // two lattice planes or on a histogram bin's edge).
+  std::int64_t owned_at_start = 0;
+  for (std::size_t i = 0; i < d.world().particles.size(); ++i) owned_at_start += d.owned(i);
+  const double share = static_cast<double>(serial().world.particles.size()) / ranks;
+  EXPECT_NEAR(static_cast<double>(owned_at_start), share, 0.2 * share) << "rank " << comm.rank();
   for (int k = 0; k < kSteps; ++k) d.step();
   const DomainReport rep = compare(d);
   Particles all = d.gather_owned();
@@ -828,32 +915,61 @@ TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
   EXPECT_EQ(rep.particle_mismatches, 0u) << rep.first_mismatch;
   EXPECT_EQ(rep.rod_mismatches, 0u) << rep.first_mismatch;
   const DomainRun::Sums sums = d.sums();  // (over MPI: the serial bits too)
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.kinetic_energy), std::bit_cast<std::uint64_t>(serial().kinetic));
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.elastic_energy), std::bit_cast<std::uint64_t>(serial().elastic));
+  const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  EXPECT_EQ(bits(sums.kinetic_energy), bits(serial().kinetic));
+  EXPECT_EQ(bits(sums.elastic_energy), bits(serial().elastic));
   EXPECT_EQ(sums.broken_rods, serial().broken_now);
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.plastic_work),
-            std::bit_cast<std::uint64_t>(one_domain_sums().plastic_work));
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.viscous_work),
-            std::bit_cast<std::uint64_t>(one_domain_sums().viscous_work));
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(sums.fracture_energy),
-            std::bit_cast<std::uint64_t>(one_domain_sums().fracture_energy));
+  EXPECT_EQ(bits(sums.plastic_work), bits(one_domain_sums().plastic_work));
+  EXPECT_EQ(bits(sums.viscous_work), bits(one_domain_sums().viscous_work));
+  EXPECT_EQ(bits(sums.fracture_energy), bits(one_domain_sums().fracture_energy));
   const std::int64_t owned = comm.sum_all(static_cast<std::int64_t>(rep.owned_ids.size()));
   const std::int64_t arrivals = comm.sum_all(rep.arrivals);
   EXPECT_EQ(owned, static_cast<std::int64_t>(serial().world.particles.size()));
   EXPECT_GT(arrivals, 100);
-  std::printf("rank %d of 2: %zu particles owned, %lld changed owner in all, %lld migrations\n", comm.rank(),
-              rep.owned_ids.size(), static_cast<long long>(arrivals), static_cast<long long>(rep.migrations));
+  const DomainBox& b = d.partition().boxes()[comm.rank()];
+  std::printf(
+      "rank %d of %d (%s): x [%.3g, %.3g) z [%.3g, %.3g) m, %zu particles owned, %lld changed owner in all, "
+      "%lld migrations\n",
+      comm.rank(), ranks, label, b.lo[0], b.hi[0], b.lo[2], b.hi[2], rep.owned_ids.size(),
+      static_cast<long long>(arrivals), static_cast<long long>(rep.migrations));
+}
+
+// Starts this test binary on 'ranks' MPI ranks with the gtest filter 'filter'; every rank's
+// line must be there and nothing skipped.
+void expect_under_mpirun(int ranks, const std::string& filter, const std::string& label) {
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const auto r = test::run_command("mpirun -n " + std::to_string(ranks) +
+                                   " --oversubscribe --bind-to none --allow-run-as-root " + self +
+                                   " --gtest_filter=" + filter);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (int k = 0; k < ranks; ++k)
+    EXPECT_NE(r.output.find(fmt::format("rank {} of {} ({})", k, ranks, label)), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("SKIPPED"), std::string::npos) << r.output;
+}
+
+// Under mpirun (the ctest test domains_mpi_two_ranks runs DomainsMpi.*, which starts these):
+// two ranks in slabs, four in the boxes of Zoltan's recursive coordinate bisection.
+TEST(DomainsMpiRank, TwoRanksGiveTheSerialBits) {
+  if (!MpiSession::launched()) GTEST_SKIP() << "started by DomainsMpi.TwoRanksUnderMpirun";
+  expect_serial_bits_over_mpi(2, false, "slabs");
+}
+
+TEST(DomainsMpiRcbRank, FourRanksInZoltanBoxesGiveTheSerialBits) {
+  if (!MpiSession::launched()) GTEST_SKIP() << "started by DomainsMpi.FourRanksInZoltanBoxesUnderMpirun";
+  expect_serial_bits_over_mpi(4, true, "Zoltan RCB");
 }
 
 TEST(DomainsMpi, TwoRanksUnderMpirun) {
   if (!std::getenv("SWARF_TEST_MPI")) GTEST_SKIP() << "run by the ctest test domains_mpi_two_ranks";
   if (test::run_command("command -v mpirun").exit_code != 0) GTEST_SKIP() << "mpirun not installed";
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  const auto r = test::run_command("mpirun -n 2 --oversubscribe --bind-to none --allow-run-as-root " + self +
-                                   " --gtest_filter=DomainsMpiRank.*");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("rank 1 of 2"), std::string::npos) << r.output;
-  EXPECT_EQ(r.output.find("SKIPPED"), std::string::npos) << r.output;
+  expect_under_mpirun(2, "DomainsMpiRank.*", "slabs");
+}
+
+TEST(DomainsMpi, FourRanksInZoltanBoxesUnderMpirun) {
+  if (!std::getenv("SWARF_TEST_MPI")) GTEST_SKIP() << "run by the ctest test domains_mpi_two_ranks";
+  if (test::run_command("command -v mpirun").exit_code != 0) GTEST_SKIP() << "mpirun not installed";
+  if (!ZoltanRcb::available()) GTEST_SKIP() << "built without Zoltan";
+  expect_under_mpirun(4, "DomainsMpiRcbRank.*", "Zoltan RCB");
 }
 
 }  // namespace

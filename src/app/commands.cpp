@@ -161,11 +161,16 @@ struct RunCommand final : Command {
         "--threads", ro.threads,
         "Threads (default: OpenMP's, OMP_NUM_THREADS; under mpirun the CPUs over the ranks on the machine)");
     sub->add_option("--rebalance-every", ro.rebalance_every,
-                    "Under mpirun: steps between new slab cuts balancing the ranks' work (default 1000; the results do "
+                    "Under mpirun: steps between new cuts balancing the ranks' work (default 1000; the results do "
                     "not depend on it)");
     sub->add_option("--stray-check-every", ro.stray_check_every,
-                    "Under mpirun: steps between the checks for particles that left their rank's slab (default 10; "
+                    "Under mpirun: steps between the checks for particles that left their rank's region (default 10; "
                     "the results do not depend on it)");
+    sub->add_option("--partition", ro.partition,
+                    "Under mpirun: the ranks' regions, 'rcb' (boxes by Zoltan's recursive coordinate bisection; "
+                    "the default where swarf was built with Zoltan) or 'slabs' along x (the results do not depend "
+                    "on it)")
+        ->check(CLI::IsMember({"rcb", "slabs"}));
     sub->add_flag("--force", ro.force, "Run even if the case's memory estimate exceeds the machine's memory");
     sub->add_flag("--allow-long", ro.allow_long,
                   "Run even if the case is estimated to need more steps than integrator.max_steps");

@@ -33,6 +33,7 @@
 #include "io/h5file.h"
 #include "setup/case_keys.h"
 #include "setup/model.h"
+#include "study/zoltan_rcb.h"
 #include "swarf/core/comm.h"
 #include "swarf/core/errors.h"
 #include "swarf/domains/domain_run.h"
@@ -206,8 +207,11 @@ void run_case(const RunOptions& opt) {
   RunProvenance prov = run_provenance(threads);
   prov.ranks = opt.comm ? opt.comm->size() : 1;
   print_setup(model, threads);
+  const std::string partition = !opt.partition.empty() ? opt.partition : ZoltanRcb::available() ? "rcb" : "slabs";
   if (opt.comm)
-    say("  ranks {} (one run by domain decomposition: slabs along x; rank 0 writes the outputs)\n", prov.ranks);
+    say("  ranks {} (one run by domain decomposition: {}, made anew every {} steps; rank 0 writes the outputs)\n",
+        prov.ranks, partition == "rcb" ? "boxes by Zoltan's recursive coordinate bisection" : "slabs along x",
+        opt.rebalance_every);
   if (opt.check) {
     agreement.passed();
     say("\n  --check: the case builds; nothing was run and nothing was written\n");
@@ -250,6 +254,7 @@ void run_case(const RunOptions& opt) {
   DomainSettings balance;
   balance.rebalance_every = static_cast<int>(opt.rebalance_every);
   balance.check_every = static_cast<int>(opt.stray_check_every);
+  if (opt.comm && opt.comm->size() > 1 && partition == "rcb") balance.partitioner = std::make_shared<ZoltanRcb>();
   const std::unique_ptr<RankSteps> ranks = opt.comm ? std::make_unique<RankSteps>(
                                                           *opt.comm, sim, observers.step_listeners(), ledger, balance)
                                                     : nullptr;

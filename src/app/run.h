@@ -30,6 +30,10 @@ struct RunOptions {
   /// Under mpirun: steps between new slab cuts (--rebalance-every) and between the checks for
   /// particles that left their slab (--stray-check-every). Neither changes the results.
   long long rebalance_every = 1000, stray_check_every = 10;
+  /// Under mpirun: how the ranks' regions are cut (--partition): "rcb", boxes by Zoltan's
+  /// recursive coordinate bisection, or "slabs" along x; empty: rcb where swarf was built with
+  /// Zoltan, slabs otherwise. Neither changes the results.
+  std::string partition;
 };
 
 /// Runs the case and writes DIR/series.csv, DIR/summary.json, DIR/results.h5, the ParaView

@@ -138,12 +138,14 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
     throw InputError(fmt::format("domains: rebalance_every = {} must be at least 1", ds_.rebalance_every));
   if (ds_.check_every < 1)
     throw InputError(fmt::format("domains: check_every = {} must be at least 1", ds_.check_every));
+  if (!ds_.fixed_cuts.empty() && ds_.partitioner)
+    throw InputError("domains: fixed cut planes and a partitioner are exclusive");
   if (!ds_.fixed_cuts.empty() && static_cast<int>(ds_.fixed_cuts.size()) != size - 1)
     throw InputError(
         fmt::format("domains: {} cut planes for {} ranks (one fewer than the ranks)", ds_.fixed_cuts.size(), size));
   contacts_ = global.contacts;
   if (contacts_) {
-    // Every particle within reach of a slab is a copy there: a contact of an owned particle
+    // Every particle within reach of a rank's box is a copy there: a contact of an owned particle
     // then always has both ends at hand, as long as no particle moves more than half the lists'
     // skin between migrations (step()).
     double largest = 0.0;
@@ -169,13 +171,12 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
   for (std::size_t k = 0; k < gr.size(); ++k)
     if (gr.intact[k]) ++w[gr.ends[k][0]], ++w[gr.ends[k][1]];
   if (!ds_.fixed_cuts.empty()) {
-    partition_ = SlabPartition(ds_.fixed_cuts);
+    partition_ = Partition::slabs(ds_.fixed_cuts);
   } else {
-    // Each rank contributes a share of the global particles (any split gives the same cuts).
+    // Each rank contributes a share of the global particles (any split gives the same slabs).
     const std::size_t a = n * rank / size, b = n * (rank + 1) / size;
-    std::vector<double> x;
-    for (std::size_t i = a; i < b; ++i) x.push_back(gp.position[i][0]);
-    partition_ = SlabPartition::balanced(comm_, x, std::vector<std::int64_t>(w.begin() + a, w.begin() + b));
+    repartition(std::vector<Vec3>(gp.position.begin() + a, gp.position.begin() + b),
+                std::vector<std::int64_t>(w.begin() + a, w.begin() + b));
   }
   // This rank's particles, their rods and the rods' other ends, from the global World.
   std::vector<std::int64_t> owned_ids;
@@ -294,7 +295,7 @@ DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uin
     ids.push_back(a);
     ids.push_back(b);
   }
-  // With contacts, every particle within reach of the slab (its owner sent it).
+  // With contacts, every particle within reach of the box (its owner sent it).
   if (contacts_)
     for (std::size_t q = 0; q < pool.size(); ++q)
       if (partition_.near(pool.position[q], comm_.rank(), reach_)) ids.push_back(pool.id[q]);
@@ -483,7 +484,7 @@ void DomainRun::plan_halo() {
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (owned_[i]) continue;
     const int o = partition_.owner(p.position[i]);
-    if (o == rank) throw std::logic_error(fmt::format("domain {}: ghost {} lies in its own slab", rank, p.id[i]));
+    if (o == rank) throw std::logic_error(fmt::format("domain {}: ghost {} lies in its own box", rank, p.id[i]));
     want[o].push_back(p.id[i]);
     recv_[o].push_back(static_cast<std::int32_t>(i));
   }
@@ -801,10 +802,10 @@ void DomainRun::step(double max_dt) {
   exchange_halo();
   if (contacts_) book_contacts(false);
   ++steps_;
-  // Every rebalance_every steps new cuts; in between, when a particle strayed beyond its slab
-  // and skin (looked for every check_every steps), every particle goes to the owner of its
-  // slab, the cuts kept. With contacts the ghosts are spatial: all particles move to their
-  // slabs' owners and the ghost layers are made anew once any particle has moved half the
+  // Every rebalance_every steps new boxes (or slabs); in between, when a particle strayed beyond
+  // its box and skin (looked for every check_every steps), every particle goes to the owner of
+  // its box, the boxes kept. With contacts the ghosts are spatial: all particles move to their
+  // boxes' owners and the ghost layers are made anew once any particle has moved half the
   // lists' skin since the last time (looked for after every step), so that a contact of an
   // owned particle never misses its other end.
   const bool recut = steps_ % ds_.rebalance_every == 0;
@@ -838,6 +839,19 @@ void DomainRun::step(double max_dt) {
   exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+void DomainRun::repartition(const std::vector<Vec3>& x, const std::vector<std::int64_t>& w) {
+  if (ds_.partitioner) {
+    partition_ = Partition(ds_.partitioner->partition(x, w, !local_.periodic.on()));
+    if (partition_.ranks() != comm_.size())
+      throw std::logic_error(
+          fmt::format("domains: the partitioner made {} boxes for {} ranks", partition_.ranks(), comm_.size()));
+    return;
+  }
+  std::vector<double> xs(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) xs[i] = x[i][0];
+  partition_ = Partition::balanced_slabs(comm_, xs, w);
+}
+
 void DomainRun::migrate(bool recut) {
   const int size = comm_.size(), rank = comm_.rank();
   Particles& p = local_.particles;
@@ -845,15 +859,15 @@ void DomainRun::migrate(bool recut) {
   ++migrations_;
   if (recut && ds_.fixed_cuts.empty()) {
     const std::vector<std::int64_t> w = weights();  // (owned particles have all their rods here)
-    std::vector<double> x;
+    std::vector<Vec3> x;
     std::vector<std::int64_t> ow;
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (owned_[i]) x.push_back(p.position[i][0]), ow.push_back(w[i]);
-    partition_ = SlabPartition::balanced(comm_, x, ow);
+      if (owned_[i]) x.push_back(p.position[i]), ow.push_back(w[i]);
+    repartition(x, ow);
   }
   // Each particle leaving this rank goes with its rods and their other ends (the new owner's
   // ghosts) and its contacts; with contacts, every owned particle within reach of another
-  // rank's slab goes there too (a spatial ghost).
+  // rank's box goes there too (a spatial ghost).
   std::vector<std::vector<std::int64_t>> leaving(size);
   std::vector<std::vector<std::int32_t>> with_particle(size), with_rod(size);  // local indices, per rank
   std::vector<std::int64_t> staying;
@@ -861,12 +875,10 @@ void DomainRun::migrate(bool recut) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!owned_[i]) continue;
     const int o = partition_.owner(p.position[i]);
-    if (contacts_) {
-      for (int q = o - 1; q >= 0 && partition_.near(p.position[i], q, reach_); --q)
-        if (q != rank) with_particle[q].push_back(static_cast<std::int32_t>(i));
-      for (int q = o + 1; q < size && partition_.near(p.position[i], q, reach_); ++q)
-        if (q != rank) with_particle[q].push_back(static_cast<std::int32_t>(i));
-    }
+    if (contacts_)
+      for (int q = 0; q < size; ++q)
+        if (q != o && q != rank && partition_.near(p.position[i], q, reach_))
+          with_particle[q].push_back(static_cast<std::int32_t>(i));
     if (o == rank) {
       staying.push_back(p.id[i]);
       continue;

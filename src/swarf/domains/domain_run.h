@@ -65,6 +65,9 @@ namespace swarf {
 struct DomainSettings {
   int rebalance_every = 100;       ///< steps between re-partitions and migrations (>= 1)
   std::vector<double> fixed_cuts;  ///< the slabs' cut planes along x, m (ranks - 1 of them); empty: balanced
+  /// Makes the ranks' boxes at the start and at every rebalance (partition.h; Zoltan's RCB under
+  /// MPI); null: balanced slabs along x. Not with fixed_cuts.
+  std::shared_ptr<Partitioner> partitioner;
   /// How far an owned particle may stray beyond its slab before all particles go to the owners
   /// of their slabs, m (0: as soon as one leaves). Ownership never changes the bits, so a skin
   /// only trades a larger domain for fewer migrations (LAMMPS's reneighbouring skin).
@@ -165,7 +168,7 @@ class DomainRun : private StepExchange {
   std::size_t owned_count() const;
   /// Per local rod: its index in the global (serial) rod order.
   const std::vector<std::int64_t>& rod_keys() const { return rod_key_; }
-  const SlabPartition& partition() const { return partition_; }
+  const Partition& partition() const { return partition_; }
   const Simulation& simulation() const { return *sim_; }
   /// Particles that arrived at this rank as their new owner, over the run.
   std::int64_t arrivals() const { return arrivals_; }
@@ -214,7 +217,9 @@ class DomainRun : private StepExchange {
   std::unique_ptr<Simulation> sim_;
   std::vector<std::uint8_t> owned_;    // per local particle
   std::vector<std::int64_t> rod_key_;  // per local rod
-  SlabPartition partition_;
+  Partition partition_;
+  /// New boxes (or slabs) for the owned particles at x with weights w (collective).
+  void repartition(const std::vector<Vec3>& x, const std::vector<std::int64_t>& w);
   std::vector<std::vector<std::int32_t>> send_, recv_;  // per rank: local indices, in the halo's order
   std::int64_t arrivals_ = 0, migrations_ = 0, steps_ = 0;
   double exchange_seconds_ = 0.0;

@@ -1,17 +1,24 @@
-// partition.h: which rank owns a point: slabs along x (the cut direction), one per rank.
+// partition.h: which rank owns a point: one axis-aligned box per rank.
 //
-// Rank k owns [cut[k-1], cut[k]) (the first and last slabs open). The cuts are either given or
-// balanced: each slab about the same total weight (a particle's weight: 1 + its intact rods,
-// the work of its gather), found from a histogram of the ranks' particles along x whose integer
-// weights are summed exactly, so that every rank finds the same cuts, for any split of the
-// particles over the ranks. Slabs are the simplest partition that follows the work as a cut
-// moves along x; a recursive coordinate bisection (Zoltan's RCB) can replace it behind owner()
-// when the 3D cut needs blocks (issue 38). Ownership never changes the bits (domain_run.h): it
-// only decides where the work is done.
+// Rank k owns the half-open box [lo, hi) of boxes()[k] (the outer faces at +-inf), the boxes
+// tiling space. Two ways to make them:
+// - slabs along x (the cut direction), balanced: each slab about the same total weight (a
+//   particle's weight: 1 + its intact rods, the work of its gather), found from a histogram of
+//   the ranks' particles along x whose integer weights are summed exactly, so that every rank
+//   finds the same cuts, for any split of the particles over the ranks. Slabs follow the work
+//   as a cut moves along x, but a slab thins as the ranks grow (a 2 mm cut on 64 ranks is two
+//   particles thick per slab: all ghosts);
+// - boxes of a recursive coordinate bisection from a Partitioner (Zoltan's RCB under MPI,
+//   study/zoltan_rcb.h): a box's surface, and so its halo, shrinks with the ranks as N^(2/3)/P^(2/3)
+//   instead of staying a whole cross-section.
+// Ownership never changes the bits (domain_run.h): it only decides where the work is done, so a
+// partitioner need not be deterministic, only the same boxes on every rank.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "swarf/core/comm.h"
@@ -19,31 +26,71 @@
 
 namespace swarf {
 
-class SlabPartition {
- public:
-  /// One slab: everything is rank 0's.
-  SlabPartition() = default;
-  /// Slabs between the ascending 'cuts' (m): cuts.size() + 1 ranks. Throws InputError if not ascending.
-  explicit SlabPartition(std::vector<double> cuts);
+/// One rank's region, [lo, hi) along each axis, m (+-inf for an open side; all of space by default).
+struct DomainBox {
+  Vec3 lo = Vec3::Constant(-HUGE_VAL), hi = Vec3::Constant(HUGE_VAL);
+  bool contains(const Vec3& x) const {
+    return x[0] >= lo[0] && x[0] < hi[0] && x[1] >= lo[1] && x[1] < hi[1] && x[2] >= lo[2] && x[2] < hi[2];
+  }
+  /// True if x lies in the box widened by 'skin' (m) on every side.
+  bool near(const Vec3& x, double skin) const {
+    for (int a = 0; a < 3; ++a)
+      if (!(x[a] >= lo[a] - skin && x[a] < hi[a] + skin)) return false;
+    return true;
+  }
+};
 
-  /// Collective: the cuts that balance the weights 'w' of this rank's particles at x-coordinates
+class Partition {
+ public:
+  /// One rank: all of space.
+  Partition();
+  /// Slabs between the ascending 'cuts' along x (m): cuts.size() + 1 ranks. Throws InputError if
+  /// not ascending or not finite.
+  static Partition slabs(std::vector<double> cuts);
+  /// Given boxes, one per rank (a Partitioner's). Throws InputError for a box with lo > hi or a
+  /// NaN bound.
+  explicit Partition(std::vector<DomainBox> boxes);
+
+  /// Collective: the slabs that balance the weights 'w' of this rank's particles at x-coordinates
   /// 'x' (m) with those of the other ranks, in comm.size() slabs, to the width of one of
   /// bins_per_rank * size bins of the particles' extent along x.
-  static SlabPartition balanced(Comm& comm, const std::vector<double>& x, const std::vector<std::int64_t>& w,
-                                int bins_per_rank = 64);
+  static Partition balanced_slabs(Comm& comm, const std::vector<double>& x, const std::vector<std::int64_t>& w,
+                                  int bins_per_rank = 64);
 
-  int ranks() const { return static_cast<int>(cuts_.size()) + 1; }
+  int ranks() const { return static_cast<int>(boxes_.size()); }
+  /// The rank whose box holds x (a point in none, a NaN, goes to the last rank, as a slab's
+  /// search puts it: the step that follows stops on it).
   int owner(const Vec3& x) const {
-    return static_cast<int>(std::upper_bound(cuts_.begin(), cuts_.end(), x[0]) - cuts_.begin());
+    if (slabs_) return static_cast<int>(std::upper_bound(cuts_.begin(), cuts_.end(), x[0]) - cuts_.begin());
+    for (std::size_t k = 0; k < boxes_.size(); ++k)
+      if (boxes_[k].contains(x)) return static_cast<int>(k);
+    return ranks() - 1;
   }
-  /// True if x lies in rank's slab widened by 'skin' (m) on each side.
-  bool near(const Vec3& x, int rank, double skin) const {
-    return (rank == 0 || x[0] >= cuts_[rank - 1] - skin) && (rank == ranks() - 1 || x[0] < cuts_[rank] + skin);
-  }
-  const std::vector<double>& cuts() const { return cuts_; }
+  /// True if x lies in rank's box widened by 'skin' (m) on each side.
+  bool near(const Vec3& x, int rank, double skin) const { return boxes_[rank].near(x, skin); }
+  const std::vector<DomainBox>& boxes() const { return boxes_; }
+  /// "slabs" or "boxes", for the run's report.
+  std::string kind() const { return slabs_ ? "slabs" : "boxes"; }
 
  private:
-  std::vector<double> cuts_;  // m, ascending
+  std::vector<DomainBox> boxes_;
+  bool slabs_ = true;
+  std::vector<double> cuts_;  // m, ascending (slabs)
+};
+
+/// Makes the boxes of a run's ranks from where the work is (issue 38 asks for a well-kept
+/// partitioner: study/zoltan_rcb.h wraps Zoltan's recursive coordinate bisection). The domains
+/// cut balanced slabs without one.
+class Partitioner {
+ public:
+  virtual ~Partitioner() = default;
+  /// Collective: one box per rank that together tile space and balance the weights 'w' of this
+  /// rank's points 'x' (m) with the other ranks'. A periodic y (cut_y false) is never cut: every
+  /// box spans it whole, so that no spatial ghost needs its periodic image.
+  virtual std::vector<DomainBox> partition(const std::vector<Vec3>& x, const std::vector<std::int64_t>& w,
+                                           bool cut_y) = 0;
+  /// The method's name for the run's report ("Zoltan RCB").
+  virtual std::string name() const = 0;
 };
 
 }  // namespace swarf
