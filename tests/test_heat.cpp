@@ -10,6 +10,7 @@
 #include <random>
 
 #include "scenes/shear_layers.h"
+#include "scenes/tiny_cut.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -365,6 +366,49 @@ tool_conductivity = 20.0
   // The tool's lumped temperature holds what reached it.
   ASSERT_FALSE(sim.thermal().tool_temperature().empty());
   EXPECT_GT(sim.thermal().tool_temperature()[0], w.heat.tool_temperature);
+}
+
+// heat.tool_friction_share splits a tool contact's frictional heat: the tiny cut (rods that do
+// not read the temperature, no sticking: the motion is the same whatever the heat) with a tool
+// taking 0.5 (the default), 0.2 and 0 of it. The motion is the same bits in all three and the
+// friction heat made the same to round-off; what the tool takes scales with the share, to
+// round-off (1e-12: the same terms summed with another factor), and the particles keep the rest
+// (the ledger closes).
+TEST(Heat, TheToolsShareOfTheFrictionHeatIsTheSetFraction) {
+  struct Out {
+    double friction = 0, to_tools = 0, stored = 0, made = 0;
+    std::vector<Vec3> x;
+  };
+  const auto run = [](double share) {
+    Model w = build_model(parse_case(std::string(test::kTinyCut) + fmt::format(R"([heat]
+heat_capacity = 486.0
+conductivity = 50.7
+tool_friction_share = {}
+)",
+                                                                               share),
+                                     "tiny_cut", {}));
+    EXPECT_EQ(w.heat.tool_friction_share, share);
+    Simulation sim(w, w.step);
+    for (int n = 0; n < 1500; ++n) sim.step();
+    const EnergyLedger& L = sim.ledger();
+    return Out{L.heat_friction, L.heat_to_tools, sim.thermal().stored_heat(w), L.heat_plastic + L.heat_friction,
+               w.particles.position};
+  };
+  const Out half = run(0.5), fifth = run(0.2), none = run(0.0);
+  ASSERT_GT(half.to_tools, 0.0) << "the tool must rub";
+  EXPECT_TRUE(half.x == fifth.x && half.x == none.x) << "the heat changed the motion";
+  // (the same power, split in other parts before the sums: equal to round-off)
+  EXPECT_NEAR(fifth.friction, half.friction, 1e-12 * half.friction);
+  EXPECT_NEAR(none.friction, half.friction, 1e-12 * half.friction);
+  EXPECT_NEAR(fifth.to_tools, 0.4 * half.to_tools, 1e-12 * half.to_tools);
+  EXPECT_EQ(none.to_tools, 0.0);
+  for (const Out* o : {&half, &fifth, &none}) EXPECT_NEAR(o->made, o->stored + o->to_tools, 1e-9 * o->made);
+  // The particles hold what the tool did not take.
+  EXPECT_NEAR(none.stored - half.stored, half.to_tools, 1e-9 * half.made);
+  EXPECT_THROW(build_model(parse_case(std::string(test::kTinyCut) + "[heat]\nheat_capacity = 486.0\nconductivity = "
+                                                                    "50.7\ntool_friction_share = 1.5\n",
+                                      "tiny_cut", {})),
+               InputError);
 }
 
 }  // namespace

@@ -208,10 +208,12 @@ void run_case(const RunOptions& opt) {
   prov.ranks = opt.comm ? opt.comm->size() : 1;
   print_setup(model, threads);
   const std::string partition = !opt.partition.empty() ? opt.partition : ZoltanRcb::available() ? "rcb" : "slabs";
-  if (opt.comm)
+  if (opt.comm && prov.ranks > 1)
     say("  ranks {} (one run by domain decomposition: {}, made anew every {} steps; rank 0 writes the outputs)\n",
         prov.ranks, partition == "rcb" ? "boxes by Zoltan's recursive coordinate bisection" : "slabs along x",
         opt.rebalance_every);
+  else if (opt.comm)
+    say("  ranks 1 (one domain: the domain decomposition's path on one rank)\n");
   if (opt.check) {
     agreement.passed();
     say("\n  --check: the case builds; nothing was run and nothing was written\n");

@@ -3,6 +3,7 @@
 //
 //   swarf_domains_bench CASE STEPS [--set key=value ...]            one process: the serial run
 //   mpirun -n N swarf_domains_bench CASE STEPS [--set ...] [--rebalance-every K] [--check-every S]   N domains
+//   ... [--partition rcb|slabs]    the ranks' regions: Zoltan's RCB boxes or slabs along x (the default here)
 //   ... [--checkpoint-at K FILE]   after step K the gathered state as a checkpoint (HDF5, rank 0 writes)
 //   ... [--restart FILE]           go on from a checkpoint to step STEPS, on any rank count (serially: a plain run)
 //
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,7 @@
 #include "setup/model.h"
 #include "study/mpi_comm.h"
 #include "study/sweep_mpi.h"
+#include "study/zoltan_rcb.h"
 #include "swarf/core/errors.h"
 #include "swarf/core/state_archive.h"
 #include "swarf/domains/domain_run.h"
@@ -57,7 +60,7 @@ int main(int argc, char** argv) {
   if (argc < 3) {
     fmt::print(stderr,
                "usage: [mpirun -n N] swarf_domains_bench CASE STEPS [--set key=value ...] [--rebalance-every K] "
-               "[--check-every S] [--checkpoint-at K FILE] [--restart FILE]\n");
+               "[--check-every S] [--partition rcb|slabs] [--checkpoint-at K FILE] [--restart FILE]\n");
     return 2;
   }
   MpiSession session;
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> overrides;
     DomainSettings ds;
     int checkpoint_at = -1;
+    bool rcb = false;
     std::string checkpoint, restart;
     for (int a = 3; a + 1 < argc; a += 2) {
       const std::string opt = argv[a];
@@ -80,6 +84,8 @@ int main(int argc, char** argv) {
         ds.rebalance_every = std::stoi(argv[a + 1]);
       else if (opt == "--check-every")
         ds.check_every = std::stoi(argv[a + 1]);
+      else if (opt == "--partition" && (std::strcmp(argv[a + 1], "rcb") == 0 || std::strcmp(argv[a + 1], "slabs") == 0))
+        rcb = std::strcmp(argv[a + 1], "rcb") == 0;
       else
         throw InputError("unknown option '" + opt + "'");
     }
@@ -116,6 +122,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     MpiComm comm;
+    if (rcb) ds.partitioner = std::make_shared<ZoltanRcb>();
     DomainRun d = start ? DomainRun(comm, *start, ds) : DomainRun(comm, model, model.step, ds);
     comm.barrier();
     const auto t0 = Clock::now();
@@ -144,9 +151,12 @@ int main(int argc, char** argv) {
         fmt::print(
             "rank {} of {}: {} owned, {} ghosts ({:.1f} % of owned), halo {:.0f} kB sent in the last step, {} "
             "migrations; "
-            "{:.3f} s of {:.3f} in the halo exchange and migrations\n",
+            "{:.3f} s of {:.3f} in the halo exchange and migrations; box x [{:.4g}, {:.4g}) y [{:.4g}, {:.4g}) z "
+            "[{:.4g}, {:.4g}) m\n",
             r, comm.size(), owned, ghosts, 100.0 * double(ghosts) / double(owned), 1e-3 * double(d.halo_bytes()),
-            d.migrations(), in_halo, s);
+            d.migrations(), in_halo, s, d.partition().boxes()[r].lo[0], d.partition().boxes()[r].hi[0],
+            d.partition().boxes()[r].lo[1], d.partition().boxes()[r].hi[1], d.partition().boxes()[r].lo[2],
+            d.partition().boxes()[r].hi[2]);
       std::fflush(stdout);
     }
     Particles all = d.gather_owned();

@@ -65,7 +65,14 @@ const std::vector<Key<HeatSettings>>& heat_keys() {
        .unit = "W/(m K)",
        .range = in(0, 1e4, "[]"),
        .doc = "Conductivity of the meshes for the contact conductance with the particles. 0 means no conduction "
-              "into the tools: they get only their half of the frictional heat."},
+              "into the tools: they get only their share of the frictional heat (`tool_friction_share`)."},
+      {.name = "tool_friction_share",
+       .field = &S::tool_friction_share,
+       .unit = "1",
+       .range = in(0, 1, "[]"),
+       .doc = "Share of the frictional heat of a contact between a particle and a mesh (tool) that goes into the "
+              "mesh; the particle takes the rest (the heat partition coefficient of FE cutting codes; 0.5 splits "
+              "it evenly, 0 heats only the chip, as Oxley's theory assumes)."},
       {.name = "stability_fraction",
        .field = &S::stability_fraction,
        .unit = "1",
@@ -116,6 +123,7 @@ void build_heat(const CaseSettings& cs, World& world) {
     h.tool_temperature = s.tool_temperature;
     h.tool_heat_capacity = s.tool_heat_capacity;
     h.tool_conductivity = s.tool_conductivity;
+    h.tool_friction_share = s.tool_friction_share;
     h.stability_fraction = s.stability_fraction;
     h.held.assign(world.groups.size(), 0);
     for (std::size_t g = 0; g < world.groups.size(); ++g)
@@ -132,11 +140,12 @@ std::string heat_echo(const Model& m) {
     if (h.held[g]) held += (held.empty() ? "" : ", ") + m.groups[g].name;
   return fmt::format(
       "  heat: c = {:.4g} J/(kg K), k = {:.4g} W/(m K) (rod conductance k d/(2 sqrt 2) = {:.4g} W/K), "
-      "Taylor-Quinney {:.3g}, start {:.5g} K; tools at {:.5g} K{}; held at the start temperature: {}\n",
+      "Taylor-Quinney {:.3g}, start {:.5g} K; tools at {:.5g} K{}, taking {:.3g} of their contacts' friction heat; "
+      "held at the start temperature: {}\n",
       h.heat_capacity, h.conductivity, h.conductivity * d.nn_distance / (2.0 * std::sqrt(2.0)), h.taylor_quinney,
       h.initial_temperature, h.tool_temperature,
       h.tool_heat_capacity > 0 ? fmt::format(" (lumped, {:.4g} J/K)", h.tool_heat_capacity) : std::string(" (held)"),
-      held.empty() ? std::string("none") : held);
+      h.tool_friction_share, held.empty() ? std::string("none") : held);
 }
 
 }  // namespace swarf

@@ -29,6 +29,7 @@ struct HeatSettings {
   double tool_temperature = 293.15;      ///< K
   double tool_heat_capacity = 0.0;       ///< J/K per mesh; 0 = held at tool_temperature
   double tool_conductivity = 0.0;        ///< W/(m K); 0 = no conduction into the tools
+  double tool_friction_share = 0.5;      ///< 1: share of a tool contact's frictional heat into the tool
   double stability_fraction = 0.5;       ///< 1
   std::vector<std::string> held_groups;  ///< [[group]] names held at the initial temperature (clamps)
 };

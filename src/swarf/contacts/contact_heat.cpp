@@ -67,6 +67,7 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
     }
   }
   const double* Tm = in.mesh_temperature;
+  const double to_mesh = in.mesh_share, to_particle = 1.0 - in.mesh_share;  // (0.5 and 0.5 exactly by default)
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     double f = 0.0, flux = 0.0, g = 0.0;
@@ -87,7 +88,7 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
       }
     }
     for (std::int32_t q = trow_[i]; q < trow_[i + 1]; ++q) {
-      f += 0.5 * tf[q];
+      f += to_particle * tf[q];
       if (T) {
         flux += tg[q] * (Tm[tri_mesh_[tris_[q].tri]] - Ti);
         g += tg[q];
@@ -106,9 +107,9 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
   for (std::size_t q = 0; q < nt; ++q) {  // (list order: the meshes' sums do not depend on the threads)
     if (!ttouch_[q]) continue;
     const std::int32_t m = tri_mesh_[tris_[q].tri];
-    out.mesh_friction[m] += 0.5 * tf[q];
+    out.mesh_friction[m] += to_mesh * tf[q];
     const bool counted = in.counted && in.counted[tris_[q].i];
-    if (counted && in.friction) out.mesh_friction_exact[m].add(in.scale * (0.5 * tf[q]));
+    if (counted && in.friction) out.mesh_friction_exact[m].add(in.scale * (to_mesh * tf[q]));
     if (T) {
       out.mesh_flux[m] += tg[q] * (T[tris_[q].i] - Tm[m]);
       out.mesh_conductance[m] += tg[q];

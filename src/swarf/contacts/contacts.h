@@ -206,6 +206,7 @@ class ContactSystem {
     const double* mesh_temperature = nullptr;  ///< per mesh, K
     double mesh_conductivity = 0.0;            ///< of the meshes, W/(m K); 0: no conduction into them
     bool friction = true;                      ///< add the frictional power
+    double mesh_share = 0.5;                   ///< share of a triangle contact's frictional power into the mesh, 1
     /// Domains (issue 38): per particle, 1 for one this domain owns; the meshes' shares of the
     /// triangle contacts of those particles are then also added exactly, each term times 'scale'
     /// (a step or sub-step, s: J), into HeatOutput's mesh_*_exact.

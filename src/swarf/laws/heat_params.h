@@ -20,9 +20,12 @@ struct HeatParams {
   double tool_temperature = 293.15;     ///< the meshes' (tools') temperature at the start, K
   double tool_heat_capacity = 0.0;      ///< of each mesh, J/K; 0: held at tool_temperature (a heat sink)
   double tool_conductivity = 0.0;       ///< of the meshes, W/(m K); 0: no conduction into them (friction heat only)
-  double stability_fraction = 0.5;      ///< conduction step as a fraction of its explicit limit, 1, (0, 1]
-  std::vector<std::uint8_t> held;       ///< per World group: 1 = its particles keep their starting temperature (a
-                                        ///< clamp that is a heat sink); may be shorter than the groups
+  /// Share of a tool contact's frictional heat that goes into the tool, 1, [0, 1]; the particle
+  /// takes the rest (the heat partition coefficient of FE cutting codes).
+  double tool_friction_share = 0.5;
+  double stability_fraction = 0.5;  ///< conduction step as a fraction of its explicit limit, 1, (0, 1]
+  std::vector<std::uint8_t> held;   ///< per World group: 1 = its particles keep their starting temperature (a
+                                    ///< clamp that is a heat sink); may be shorter than the groups
 };
 
 }  // namespace swarf

@@ -43,6 +43,8 @@ void ThermalSystem::setup(World& w) {
       !(hp.tool_conductivity >= 0.0 && std::isfinite(hp.tool_conductivity)))
     throw InputError(fmt::format("heat: the tools' heat capacity {} J/K and conductivity {} W/(m K) must be >= 0",
                                  hp.tool_heat_capacity, hp.tool_conductivity));
+  if (!(hp.tool_friction_share >= 0.0 && hp.tool_friction_share <= 1.0))
+    throw InputError(fmt::format("heat: tool_friction_share {} is not within [0, 1]", hp.tool_friction_share));
   tool_t_.assign(w.meshes.size(), hp.tool_temperature);
   resize(w);
   interval_ = 0.0;  // (the first conduction measures the limit)
@@ -128,12 +130,14 @@ void ThermalSystem::heat(const StepContext& c, const ContactSystem& contacts, co
       if (x_ && x_->counted()[r.ends[0]]) exact_.plastic.add(2.0 * e);  // (a rod: its first end's owner's)
     }
   }
-  // Friction over the step: half to each body (over domains from the ghosts' own velocities).
+  // Friction over the step: half to each particle of a pair, heat.tool_friction_share of a tool
+  // contact's to the tool (over domains from the ghosts' own velocities).
   assign(out_.friction, n);
   assign(out_.mesh_friction, nm);
   if (contacts.enabled()) {
     if (x_) x_->motions();
     ContactSystem::HeatInput in;  // (friction only: no flux written)
+    in.mesh_share = hp.tool_friction_share;
     in.counted = x_ ? x_->counted() : nullptr;
     in.scale = h;
     contacts.heat(p, in, out_);
