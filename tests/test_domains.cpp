@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <random>
 
 #include "scenes/pulled_bar.h"
 #include "scenes/tiny_cut.h"
@@ -360,6 +361,73 @@ TEST(Domains, PartitionBoxesOwnAndReachAsTheyAreDrawn) {
   EXPECT_FALSE(boxes.near(Vec3(1.05, 0, 0.96), 0, 0.04));  // (0.05 beyond box 0 along x)
   EXPECT_TRUE(boxes.near(Vec3(1.05, 0, 0.96), 1, 0.0));    // (its own)
   EXPECT_THROW(Partition({{Vec3(1, 0, 0), Vec3(0, 1, 1)}}), InputError);
+}
+
+// A recursive bisection of [0, 1]^3 into n boxes at random planes (the axis and the share of
+// the ranks on each side random too), as Zoltan's RCB makes them; the outer faces open.
+void bisect(DomainBox box, int first, int n, std::mt19937& rng, std::vector<DomainBox>& out) {
+  if (n == 1) {
+    for (int a = 0; a < 3; ++a) {
+      if (box.lo[a] <= 0.0) box.lo[a] = -HUGE_VAL;
+      if (box.hi[a] >= 1.0) box.hi[a] = HUGE_VAL;
+    }
+    out[first] = box;
+    return;
+  }
+  const int axis = std::uniform_int_distribution<int>(0, 2)(rng);
+  const int below = std::uniform_int_distribution<int>(1, n - 1)(rng);
+  const double lo = std::max(box.lo[axis], 0.0), hi = std::min(box.hi[axis], 1.0);
+  const double cut = lo + (hi - lo) * std::uniform_real_distribution<double>(0.2, 0.8)(rng);
+  DomainBox b = box, a = box;
+  b.hi[axis] = cut;
+  a.lo[axis] = cut;
+  bisect(b, first, below, rng, out);
+  bisect(a, first + below, n - below, rng, out);
+}
+
+TEST(Domains, TheCutTreeFindsWhatAScanOfTheBoxesFinds) {
+  // Owners and the ranks within reach by the partition's cut tree against a scan of every box,
+  // for 2,000 random points (some outside the unit cube, some on the cuts) in random bisections
+  // of 2 to 37 boxes. Boxes that no plane separates (a pinwheel) fall back to the scan.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  for (int n : {2, 3, 5, 8, 13, 37}) {
+    DomainBox all;
+    all.lo = Vec3::Zero();
+    all.hi = Vec3::Ones();
+    std::vector<DomainBox> boxes(n);
+    bisect(all, 0, n, rng, boxes);
+    const Partition part(boxes);
+    std::vector<int> near, scan;
+    for (int k = 0; k < 2000; ++k) {
+      Vec3 x(u(rng), u(rng), u(rng));
+      if (k % 10 == 0) x[k % 3] = boxes[k % n].lo[k % 3] > -1.0 ? boxes[k % n].lo[k % 3] : 0.5;  // (on a cut)
+      int owners = 0, owner = -1;
+      for (int r = 0; r < n; ++r)
+        if (boxes[r].contains(x)) ++owners, owner = r;
+      ASSERT_EQ(owners, 1) << "the boxes must tile space";
+      ASSERT_EQ(part.owner(x), owner) << n << " boxes, point " << k;
+      const double skin = 0.05 * (k % 4);
+      part.near_ranks(x, skin, near);
+      scan.clear();
+      for (int r = 0; r < n; ++r)
+        if (part.near(x, r, skin)) scan.push_back(r);
+      ASSERT_EQ(near, scan) << n << " boxes, point " << k;
+    }
+  }
+  // A pinwheel: four boxes around a middle one, no plane separates them; the scan answers.
+  const double inf = HUGE_VAL;
+  const Partition pin({{Vec3(-inf, -inf, -inf), Vec3(2, 1, inf)},
+                       {Vec3(2, -inf, -inf), Vec3(inf, 2, inf)},
+                       {Vec3(1, 2, -inf), Vec3(inf, inf, inf)},
+                       {Vec3(-inf, 1, -inf), Vec3(1, inf, inf)},
+                       {Vec3(1, 1, -inf), Vec3(2, 2, inf)}});
+  EXPECT_EQ(pin.owner(Vec3(1.5, 1.5, 0)), 4);
+  EXPECT_EQ(pin.owner(Vec3(0.5, 0.5, 0)), 0);
+  EXPECT_EQ(pin.owner(Vec3(2.5, 2.5, 0)), 2);
+  std::vector<int> near;
+  pin.near_ranks(Vec3(1.05, 1.05, 0), 0.1, near);
+  EXPECT_EQ(near, (std::vector<int>{0, 3, 4}));
 }
 
 TEST(Domains, FourDomainsInBoxesGiveTheSerialBits) {

@@ -11,9 +11,13 @@ The model, per rank and step (one rank per core, W1: a bonded FCC block, 4 parti
                                            check)
   ghosts g = 2 * (cells across a face)^2 per face of the busiest rank's domain (two FCC lattice planes: measured 578 at 17^3 and
              7,938 at 63^3 per cut face, both exactly 2 n^2)
-Decompositions: slabs along x (what the engine has now: 2 faces, m = 2) and boxes from recursive
-coordinate bisection (what Zoltan's RCB would give: 6 faces, m = 6 with LAMMPS's staged exchange,
-which forwards the edge and corner ghosts).
+Decompositions: slabs along x (`--partition slabs`: 2 faces, m = 2) and boxes from recursive
+coordinate bisection (`--partition rcb`, Zoltan's RCB, the default of `mpirun -n N swarf run` since
+2026-12-07: 6 faces, m = 6 with LAMMPS's staged exchange, which forwards the edge and corner
+ghosts; swarf's halo sends to each box within reach directly, up to 26 messages, which the model's
+m = 6 understates). The ghost count checked against the engine (README.md, "Boxes from Zoltan's
+recursive coordinate bisection", W1 31^3): slabs exactly 2 n^2 per face; RCB at 8 ranks 1,488
+measured against 1,442 modelled (the edges add 3 %).
 Measured inputs (W1, this 2-core machine, 2026-12-06): t_c = 44 ns (17^3, 1 thread, 43.2-46.4) and
 57 ns (63^3, 55-59); t_g = 170 ns per ghost as measured on 2 ranks here (88-104 us per step of
 exchange for 578 ghosts, which includes waiting on the other rank), or 20 ns at memory speed

@@ -872,13 +872,15 @@ void DomainRun::migrate(bool recut) {
   std::vector<std::vector<std::int32_t>> with_particle(size), with_rod(size);  // local indices, per rank
   std::vector<std::int64_t> staying;
   std::vector<int> leaves_to(p.size(), -1);
+  std::vector<int> within;  // (the ranks whose boxes a particle is within reach of)
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!owned_[i]) continue;
     const int o = partition_.owner(p.position[i]);
-    if (contacts_)
-      for (int q = 0; q < size; ++q)
-        if (q != o && q != rank && partition_.near(p.position[i], q, reach_))
-          with_particle[q].push_back(static_cast<std::int32_t>(i));
+    if (contacts_) {
+      partition_.near_ranks(p.position[i], reach_, within);
+      for (const int q : within)
+        if (q != o && q != rank) with_particle[q].push_back(static_cast<std::int32_t>(i));
+    }
     if (o == rank) {
       staying.push_back(p.id[i]);
       continue;

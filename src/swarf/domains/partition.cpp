@@ -1,12 +1,17 @@
 // partition.cpp: the slabs and boxes of the ranks (see partition.h).
 #include "swarf/domains/partition.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "swarf/core/errors.h"
 
 namespace swarf {
+
+namespace {
+constexpr int kNoTree = -0x7fffffff;  // (build_tree: the boxes have no separating plane)
+}  // namespace
 
 Partition::Partition() : boxes_{DomainBox{}} {}
 
@@ -34,6 +39,69 @@ Partition::Partition(std::vector<DomainBox> boxes) : boxes_(std::move(boxes)), s
                          std::to_string(boxes_[k].lo[a]) + " m above its upper bound " +
                          std::to_string(boxes_[k].hi[a]) + " m along axis " + std::to_string(a));
   if (boxes_.size() == 1) boxes_[0] = DomainBox{};  // (one rank owns everything, whatever it was given)
+  std::vector<int> all(boxes_.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+  if (boxes_.size() > 1 && build_tree(all) == kNoTree) tree_.clear();  // (not a bisection's boxes: scan)
+}
+
+int Partition::build_tree(std::vector<int> ranks) {
+  if (ranks.size() == 1) return -ranks[0] - 1;
+  // A plane that puts every box wholly on one side, both sides non-empty: a bisection's boxes
+  // always have one (its first cut); found among the boxes' lower faces, O(n^2) per axis, once
+  // per rebalance.
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int r : ranks) {
+      const double c = boxes_[r].lo[axis];
+      if (!std::isfinite(c)) continue;
+      std::vector<int> below, above;
+      for (const int q : ranks) {
+        if (boxes_[q].hi[axis] <= c)
+          below.push_back(q);
+        else if (boxes_[q].lo[axis] >= c)
+          above.push_back(q);
+        else
+          break;
+      }
+      if (below.empty() || above.empty() || below.size() + above.size() != ranks.size()) continue;
+      const int node = static_cast<int>(tree_.size());
+      tree_.push_back({axis, c, 0, 0});
+      const int b = build_tree(std::move(below));
+      const int a = build_tree(std::move(above));
+      if (b == kNoTree || a == kNoTree) return kNoTree;
+      tree_[node].below = b;
+      tree_[node].above = a;
+      return node;
+    }
+  return kNoTree;
+}
+
+int Partition::scan_owner(const Vec3& x) const {
+  for (std::size_t k = 0; k < boxes_.size(); ++k)
+    if (boxes_[k].contains(x)) return static_cast<int>(k);
+  return ranks() - 1;
+}
+
+void Partition::near_ranks(const Vec3& x, double skin, std::vector<int>& out) const {
+  out.clear();
+  if (slabs_ || tree_.empty()) {
+    for (int k = 0; k < ranks(); ++k)
+      if (boxes_[k].near(x, skin)) out.push_back(k);
+    return;
+  }
+  // Down the tree: a subtree below a cut holds boxes whose faces along the axis end at or before
+  // it, so x is within reach of one of them only if x < cut + skin (above: x >= cut - skin);
+  // the leaves check their whole box.
+  const auto visit = [&](const auto& self, int node) -> void {
+    if (node < 0) {
+      if (boxes_[-node - 1].near(x, skin)) out.push_back(-node - 1);
+      return;
+    }
+    const Node& n = tree_[node];
+    if (x[n.axis] < n.cut + skin) self(self, n.below);
+    if (x[n.axis] >= n.cut - skin) self(self, n.above);
+  };
+  visit(visit, 0);
+  std::sort(out.begin(), out.end());
 }
 
 Partition Partition::balanced_slabs(Comm& comm, const std::vector<double>& x, const std::vector<std::int64_t>& w,

@@ -58,24 +58,39 @@ class Partition {
                                   int bins_per_rank = 64);
 
   int ranks() const { return static_cast<int>(boxes_.size()); }
-  /// The rank whose box holds x (a point in none, a NaN, goes to the last rank, as a slab's
-  /// search puts it: the step that follows stops on it).
+  /// The rank whose box holds x, by the cut tree in O(log ranks) (a NaN ends in some box: the
+  /// step that follows stops on it).
   int owner(const Vec3& x) const {
     if (slabs_) return static_cast<int>(std::upper_bound(cuts_.begin(), cuts_.end(), x[0]) - cuts_.begin());
-    for (std::size_t k = 0; k < boxes_.size(); ++k)
-      if (boxes_[k].contains(x)) return static_cast<int>(k);
-    return ranks() - 1;
+    if (tree_.empty()) return scan_owner(x);
+    int node = 0;
+    while (node >= 0) node = x[tree_[node].axis] < tree_[node].cut ? tree_[node].below : tree_[node].above;
+    return -node - 1;
   }
   /// True if x lies in rank's box widened by 'skin' (m) on each side.
   bool near(const Vec3& x, int rank, double skin) const { return boxes_[rank].near(x, skin); }
+  /// Every rank whose box widened by 'skin' (m) holds x, ascending, into 'out' (cleared): the
+  /// cut tree visits only the boxes within reach, not every rank's.
+  void near_ranks(const Vec3& x, double skin, std::vector<int>& out) const;
   const std::vector<DomainBox>& boxes() const { return boxes_; }
   /// "slabs" or "boxes", for the run's report.
   std::string kind() const { return slabs_ ? "slabs" : "boxes"; }
 
  private:
+  // The cut tree of the boxes (a recursive bisection's: every inner node splits its boxes by one
+  // plane); a child index < 0 is the leaf of rank -index - 1. Empty for slabs, one box, or boxes
+  // that no sequence of planes separates (then owner scans the boxes).
+  struct Node {
+    int axis;
+    double cut;  // m: x[axis] < cut goes below
+    int below, above;
+  };
+  int build_tree(std::vector<int> ranks);  // the node (or leaf) index of the ranks' subtree; -0x7fffffff: none
+  int scan_owner(const Vec3& x) const;
   std::vector<DomainBox> boxes_;
   bool slabs_ = true;
   std::vector<double> cuts_;  // m, ascending (slabs)
+  std::vector<Node> tree_;
 };
 
 /// Makes the boxes of a run's ranks from where the work is (issue 38 asks for a well-kept
