@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -448,6 +449,30 @@ TEST(Domains, FourDomainsInBoxesGiveTheSerialBits) {
   // Rebalanced every 10 steps (the same boxes again: every particle sent to its box's owner).
   ds.rebalance_every = 10;
   expect_serial_bits(run_domains(4, ds), false);
+}
+
+// A partitioner whose first caller gets other boxes than the rest: ranks that would own by
+// different boxes are stopped at the partition, not left to own particles twice or never.
+struct SplitMind final : Partitioner {
+  std::atomic<int> calls{0};
+  std::vector<DomainBox> partition(const std::vector<Vec3>&, const std::vector<std::int64_t>&, bool) override {
+    const double cut = calls++ == 0 ? 0.0 : 1.0;
+    return {{Vec3::Constant(-HUGE_VAL), Vec3(cut, HUGE_VAL, HUGE_VAL)},
+            {Vec3(cut, -HUGE_VAL, -HUGE_VAL), Vec3::Constant(HUGE_VAL)}};
+  }
+  std::string name() const override { return "split mind"; }
+};
+
+TEST(Domains, RanksGivenDifferentBoxesAreStopped) {
+  DomainSettings ds;
+  ds.partitioner = std::make_shared<SplitMind>();
+  std::string what;
+  try {
+    run_loopback(2, [&](Comm& comm) { DomainRun d(comm, scene().world, scene().step, ds); });
+  } catch (const std::logic_error& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("the partitioner gave the ranks different boxes (split mind)"), std::string::npos) << what;
 }
 
 TEST(Domains, ThreeDomainsWithFixedCutsAndTwoThreadsEachGiveTheSerialBits) {

@@ -845,6 +845,14 @@ void DomainRun::repartition(const std::vector<Vec3>& x, const std::vector<std::i
     if (partition_.ranks() != comm_.size())
       throw std::logic_error(
           fmt::format("domains: the partitioner made {} boxes for {} ranks", partition_.ranks(), comm_.size()));
+    // Every rank must own by the same boxes (a partitioner's collective gives them to all; a
+    // rank with other boxes would own particles twice or not at all): one gather per rebalance.
+    Bytes mine(partition_.boxes().size() * sizeof(DomainBox));
+    std::memcpy(mine.data(), partition_.boxes().data(), mine.size());
+    for (const Bytes& theirs : comm_.all_gather(mine))
+      if (theirs != mine)
+        throw std::logic_error("domains: the partitioner gave the ranks different boxes (" + ds_.partitioner->name() +
+                               ")");
     return;
   }
   std::vector<double> xs(x.size());
