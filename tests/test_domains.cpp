@@ -416,6 +416,18 @@ TEST(Domains, TheCutTreeFindsWhatAScanOfTheBoxesFinds) {
       ASSERT_EQ(near, scan) << n << " boxes, point " << k;
     }
   }
+  // Slabs go through the same tree (their reach at 9 ranks, some cuts repeated: empty slabs).
+  const Partition slabs = Partition::slabs({0.1, 0.2, 0.2, 0.35, 0.5, 0.5, 0.7, 0.9});
+  std::vector<int> near, scan;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 x(u(rng), 0.0, 0.0);
+    const double skin = 0.05 * (k % 4);
+    slabs.near_ranks(x, skin, near);
+    scan.clear();
+    for (int r = 0; r < slabs.ranks(); ++r)
+      if (slabs.near(x, r, skin)) scan.push_back(r);
+    ASSERT_EQ(near, scan) << "slabs, point " << k;
+  }
   // A pinwheel: four boxes around a middle one, no plane separates them; the scan answers.
   const double inf = HUGE_VAL;
   const Partition pin({{Vec3(-inf, -inf, -inf), Vec3(2, 1, inf)},
@@ -426,7 +438,6 @@ TEST(Domains, TheCutTreeFindsWhatAScanOfTheBoxesFinds) {
   EXPECT_EQ(pin.owner(Vec3(1.5, 1.5, 0)), 4);
   EXPECT_EQ(pin.owner(Vec3(0.5, 0.5, 0)), 0);
   EXPECT_EQ(pin.owner(Vec3(2.5, 2.5, 0)), 2);
-  std::vector<int> near;
   pin.near_ranks(Vec3(1.05, 1.05, 0), 0.1, near);
   EXPECT_EQ(near, (std::vector<int>{0, 3, 4}));
 }

@@ -27,6 +27,7 @@ Partition Partition::slabs(std::vector<double> cuts) {
     p.boxes_[k + 1].lo[0] = cuts[k];
   }
   p.cuts_ = std::move(cuts);
+  p.build_index();
   return p;
 }
 
@@ -39,40 +40,53 @@ Partition::Partition(std::vector<DomainBox> boxes) : boxes_(std::move(boxes)), s
                          std::to_string(boxes_[k].lo[a]) + " m above its upper bound " +
                          std::to_string(boxes_[k].hi[a]) + " m along axis " + std::to_string(a));
   if (boxes_.size() == 1) boxes_[0] = DomainBox{};  // (one rank owns everything, whatever it was given)
+  build_index();
+}
+
+void Partition::build_index() {
+  tree_.clear();
+  if (boxes_.size() < 2) return;
   std::vector<int> all(boxes_.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-  if (boxes_.size() > 1 && build_tree(all) == kNoTree) tree_.clear();  // (not a bisection's boxes: scan)
+  if (build_tree(std::move(all)) == kNoTree) tree_.clear();  // (not a bisection's boxes: scan)
 }
 
 int Partition::build_tree(std::vector<int> ranks) {
   if (ranks.size() == 1) return -ranks[0] - 1;
   // A plane that puts every box wholly on one side, both sides non-empty: a bisection's boxes
-  // always have one (its first cut); found among the boxes' lower faces, O(n^2) per axis, once
-  // per rebalance.
+  // always have one (its first cut). Of those among the boxes' lower faces the most even split,
+  // so that the tree is about log2 of the ranks deep (slabs too, whose first lower face would
+  // make a chain); O(n^2) per axis, once per rebalance.
+  int best_axis = -1;
+  double best_cut = 0.0;
+  std::size_t best_smaller = 0;
   for (int axis = 0; axis < 3; ++axis)
     for (const int r : ranks) {
       const double c = boxes_[r].lo[axis];
       if (!std::isfinite(c)) continue;
-      std::vector<int> below, above;
+      std::size_t below = 0, above = 0;
       for (const int q : ranks) {
         if (boxes_[q].hi[axis] <= c)
-          below.push_back(q);
+          ++below;
         else if (boxes_[q].lo[axis] >= c)
-          above.push_back(q);
+          ++above;
         else
           break;
       }
-      if (below.empty() || above.empty() || below.size() + above.size() != ranks.size()) continue;
-      const int node = static_cast<int>(tree_.size());
-      tree_.push_back({axis, c, 0, 0});
-      const int b = build_tree(std::move(below));
-      const int a = build_tree(std::move(above));
-      if (b == kNoTree || a == kNoTree) return kNoTree;
-      tree_[node].below = b;
-      tree_[node].above = a;
-      return node;
+      if (below == 0 || above == 0 || below + above != ranks.size()) continue;
+      if (std::min(below, above) > best_smaller) best_axis = axis, best_cut = c, best_smaller = std::min(below, above);
     }
-  return kNoTree;
+  if (best_axis < 0) return kNoTree;
+  std::vector<int> below, above;
+  for (const int q : ranks) (boxes_[q].hi[best_axis] <= best_cut ? below : above).push_back(q);
+  const int node = static_cast<int>(tree_.size());
+  tree_.push_back({best_axis, best_cut, 0, 0});
+  const int b = build_tree(std::move(below));
+  const int a = build_tree(std::move(above));
+  if (b == kNoTree || a == kNoTree) return kNoTree;
+  tree_[node].below = b;
+  tree_[node].above = a;
+  return node;
 }
 
 int Partition::scan_owner(const Vec3& x) const {
@@ -83,7 +97,7 @@ int Partition::scan_owner(const Vec3& x) const {
 
 void Partition::near_ranks(const Vec3& x, double skin, std::vector<int>& out) const {
   out.clear();
-  if (slabs_ || tree_.empty()) {
+  if (tree_.empty()) {
     for (int k = 0; k < ranks(); ++k)
       if (boxes_[k].near(x, skin)) out.push_back(k);
     return;

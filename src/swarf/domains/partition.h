@@ -77,14 +77,15 @@ class Partition {
   std::string kind() const { return slabs_ ? "slabs" : "boxes"; }
 
  private:
-  // The cut tree of the boxes (a recursive bisection's: every inner node splits its boxes by one
-  // plane); a child index < 0 is the leaf of rank -index - 1. Empty for slabs, one box, or boxes
-  // that no sequence of planes separates (then owner scans the boxes).
+  // The cut tree of the boxes (a recursive bisection's, slabs too: every inner node splits its
+  // boxes by one plane); a child index < 0 is the leaf of rank -index - 1. Empty for one box or
+  // boxes that no sequence of planes separates (then owner and near_ranks scan the boxes).
   struct Node {
     int axis;
     double cut;  // m: x[axis] < cut goes below
     int below, above;
   };
+  void build_index();                      // tree_ from boxes_
   int build_tree(std::vector<int> ranks);  // the node (or leaf) index of the ranks' subtree; -0x7fffffff: none
   int scan_owner(const Vec3& x) const;
   std::vector<DomainBox> boxes_;
