@@ -895,11 +895,9 @@ TEST(Domains, ACutWithBondFormationGivesTheSerialBitsOnAnyNumberOfDomains) {
 // near them break. No rod joins the blocks, so the contacts across their faces have their other
 // ends on another domain only through the spatial ghosts (the slabs are balanced: a cut lies
 // near the faces).
-TEST(Domains, TwoBlocksCollidingAcrossTheSlabsGiveTheSerialBits) {
-  // (with heat: the frictional heat of a pair across a cut plane reads both ends' velocities,
-  // which a ghost has right only after a halo midway through the step; without it the whole
-  // default cut over 2 ranks parted from 1 rank's bits after 145 us)
-  Model m = tiny_cut_model("[heat]\nheat_capacity = 1.0\nconductivity = 1.0e4\n");
+// Two copies of the tiny cut's block (its tool and base taken away) thrown at each other: 'm'
+// with its rods as built.
+World colliding_blocks(const Model& m, double speed = 20.0) {
   World w = static_cast<const World&>(m);
   w.meshes.clear();
   w.mesh_motion.clear();
@@ -918,8 +916,8 @@ TEST(Domains, TwoBlocksCollidingAcrossTheSlabsGiveTheSerialBits) {
     p.id[n + i] = static_cast<std::int64_t>(n + i);
     p.position[n + i][0] += shift;
     p.initial_position[n + i][0] += shift;
-    p.velocity[i] = Vec3(20.0, 0.0, 5.0);
-    p.velocity[n + i] = Vec3(-20.0, 0.0, -5.0);
+    p.velocity[i] = Vec3(speed, 0.0, 0.25 * speed);
+    p.velocity[n + i] = Vec3(-speed, 0.0, -0.25 * speed);
   }
   p.next_id = static_cast<std::int64_t>(2 * n);
   Rods& r = w.rods;
@@ -932,7 +930,30 @@ TEST(Domains, TwoBlocksCollidingAcrossTheSlabsGiveTheSerialBits) {
   for (std::size_t k = 0; k < nr; ++k)
     r.ends[nr + k] = {r.ends[k][0] + static_cast<std::int32_t>(n), r.ends[k][1] + static_cast<std::int32_t>(n)};
   r.build_rows(2 * n);
-  expect_contacts_over_domains(w, m.step, 1200, 500, false);
+  return w;
+}
+
+TEST(Domains, TwoBlocksCollidingAcrossTheSlabsGiveTheSerialBits) {
+  // (with heat: the frictional heat of a pair across a cut plane reads both ends' velocities,
+  // which a ghost has right only after a halo midway through the step; without it the whole
+  // default cut over 2 ranks parted from 1 rank's bits after 145 us)
+  Model m = tiny_cut_model("[heat]\nheat_capacity = 1.0\nconductivity = 1.0e4\n");
+  expect_contacts_over_domains(colliding_blocks(m), m.step, 1200, 500, false);
+}
+
+// The colliding blocks with bond formation and neighbour exchange: their faces bond, and pressed
+// pairs of particles at 12 rods trade the most stretched one, so a rod given up by one particle
+// often belongs to a particle whose first pair comes later in the step's list (its count must then
+// leave that rod out: domain_formation.cpp's 'pending'), a case the tiny cut does not reach (at
+// 100 m/s some 70 times over the three domain runs; without 'pending' this test fails).
+TEST(Domains, CollidingBlocksThatBondGiveTheSerialBitsOnAnyNumberOfDomains) {
+  const std::string rod = "tensile_strength = 3e8";
+  std::string text = std::string(test::kTinyCut);
+  text.replace(text.find(rod), rod.size(), rod + "\nyield_strain = 5e-4\nbond_overlap = 0.0\nneighbour_exchange = true");
+  text.replace(text.find("end_time = 4e-5"), 15, "scheme = \"verlet\"\nend_time = 4e-5");
+  const Model m = build_model(parse_case(text, "colliding_formation", {}));
+  ASSERT_TRUE(m.rods.formation.enabled());
+  expect_contacts_over_domains(colliding_blocks(m, 100.0), m.step, 2000, 800, false);
 }
 
 TEST(Domains, OneDomainIsTheSerialRun) {

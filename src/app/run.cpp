@@ -207,6 +207,7 @@ void run_case(const RunOptions& opt) {
   RunProvenance prov = run_provenance(threads);
   prov.ranks = opt.comm ? opt.comm->size() : 1;
   print_setup(model, threads);
+  if (const std::string w = thread_placement_warning(threads); !w.empty()) say("  {}\n", w);
   const std::string partition = !opt.partition.empty() ? opt.partition : ZoltanRcb::available() ? "rcb" : "slabs";
   if (opt.comm && prov.ranks > 1)
     say("  ranks {} (one run by domain decomposition: {}, made anew every {} steps; rank 0 writes the outputs)\n",

@@ -69,6 +69,17 @@ int set_threads(int n, int local_rank, int local_size) {
   return used;
 }
 
+std::string thread_placement_warning(int threads) {
+  const AllowedCpus a = allowed_cpus();
+  const int cpus = static_cast<int>(a.cpus.size());
+  if (a.cpus.empty() || threads <= cpus) return "";
+  return fmt::format(
+      "warning: {} threads share the {} CPU{} this process may run on (its affinity: under mpirun, the rank's "
+      "binding), so they run at about the speed of {}; give each rank its threads' cores (Open MPI: mpirun "
+      "--map-by slot:PE={} or --bind-to none; Slurm: --cpus-per-task={}) or ask for --threads {}",
+      threads, cpus, cpus == 1 ? "" : "s", cpus, threads, threads, cpus);
+}
+
 int threads_per_rank(int local_size) {
   const AllowedCpus a = allowed_cpus();
   const int cpus = a.cpus.empty() ? omp_get_num_procs() : static_cast<int>(a.cpus.size());

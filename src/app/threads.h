@@ -1,12 +1,18 @@
 // threads.h: the OpenMP thread count of a run (and where its threads run).
 #pragma once
 
+#include <string>
+
 namespace swarf {
 
 /// Sets the OpenMP thread count (n > 0) and returns the count in effect; pins the threads to
 /// CPUs when that helps (threads.cpp says when). 'local_rank' of 'local_size': this process's
 /// place among the MPI ranks of one run on its machine (their threads must not share CPUs).
 int set_threads(int n, int local_rank = 0, int local_size = 1);
+/// "" if 'threads' threads each have a CPU of their own; otherwise a warning that they share the
+/// fewer CPUs this process may run on (mpirun binds each rank to one core unless told
+/// otherwise: two threads of one rank then run at the speed of one), with the remedy.
+std::string thread_placement_warning(int threads);
 /// The threads a rank of a run over MPI ranks takes when none are asked for: the CPUs it may run
 /// on, shared with the other 'local_size' ranks on its machine unless mpirun bound it to its own.
 int threads_per_rank(int local_size);

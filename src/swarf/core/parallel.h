@@ -52,4 +52,22 @@ ExactSum exact_sum(std::size_t n, F&& f) {
   return total;
 }
 
+/// As exact_sum, for a loop that adds any number of terms per index: f(i, sum) calls sum.add.
+/// Blocks of 256 indices (an exact sum is the same for any split, so short loops, a group's
+/// members or a step's rod runs, still share the threads).
+template <class F>
+ExactSum exact_sum_of(std::size_t n, F&& f) {
+  constexpr std::size_t kExactBlock = 256;
+  const std::size_t nb = (n + kExactBlock - 1) / kExactBlock;
+  std::vector<ExactSum> part(nb);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    const std::size_t end = std::min(n, (b + 1) * kExactBlock);
+    for (std::size_t i = b * kExactBlock; i < end; ++i) f(i, part[b]);
+  }
+  ExactSum total;
+  for (const ExactSum& s : part) total.add(s);
+  return total;
+}
+
 }  // namespace swarf

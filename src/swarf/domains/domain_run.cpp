@@ -471,6 +471,12 @@ void DomainRun::adopt(Local&& l) {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods), contacts_ ? &l.contacts : nullptr);
   }
   sim_->count_exactly(owned_.data(), rod_key_.data());  // (each rod booked by its first end's owner)
+  {  // (bond formation's candidates, asked for every contact pair of every step)
+    const auto& id = local_.particles.id;
+    lattice_local_.resize(id.size());
+    for (std::size_t i = 0; i < id.size(); ++i)
+      lattice_local_[i] = std::binary_search(lattice_ids_.begin(), lattice_ids_.end(), id[i]);
+  }
   if (contacts_) x_migrated_ = local_.particles.position;
   plan_halo();
 }

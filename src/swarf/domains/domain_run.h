@@ -239,6 +239,7 @@ class DomainRun : private StepExchange {
   // Bond formation: the ids of the lattice's particles (built with rods: the candidates),
   // ascending, and the number of rods of the whole run (the next formed rod's key).
   std::vector<std::int64_t> lattice_ids_;
+  std::vector<std::uint8_t> lattice_local_;  // per local particle: its id is in lattice_ids_ (made in adopt)
   std::int64_t global_rods_ = 0;
   std::vector<Vec3> mesh_force_;
   double contact_power_ = 0.0;

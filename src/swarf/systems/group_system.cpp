@@ -1,6 +1,7 @@
 // group_system.cpp: prescribed motions of particle groups and their reactions (see group_system.h).
 #include "swarf/systems/group_system.h"
 
+#include "swarf/core/parallel.h"
 #include "swarf/core/state_archive.h"
 
 namespace swarf {
@@ -86,19 +87,26 @@ void GroupSystem::account_exactly(const StepContext& ctx) {
       if (groups[o.group].dofs & (1u << c)) exact_.external_work.add(-0.5 * o.force[c] * du[c]);
   }
   // The end-of-step half and the members' own kinetic energy change, per counted member (the
-  // plain ledger books the latter with the group's mass: the same up to round-off).
+  // plain ledger books the latter with the group's mass: the same up to round-off). Exact sums
+  // over blocks of members (the same sums for any split).
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const Vec3 du = u_new_[g] - u_old_[g];
     const Vec3 v = du / h;
-    for (auto i : groups[g].members) {
-      if (!counted_[i]) continue;
+    const auto& members = groups[g].members;
+    const unsigned dofs = groups[g].dofs;
+    for (int c = 0; c < 3; ++c)
+      exact_.reaction[g][c] = exact_sum_of(members.size(), [&](std::size_t k, ExactSum& s) {
+        if (counted_[members[k]]) s.add(-p.force[members[k]][c]);
+      });
+    exact_.external_work.add(exact_sum_of(members.size(), [&](std::size_t k, ExactSum& s) {
+      const auto i = members[k];
+      if (!counted_[i]) return;
       for (int c = 0; c < 3; ++c) {
-        exact_.reaction[g][c].add(-p.force[i][c]);
-        if (!(groups[g].dofs & (1u << c))) continue;
-        exact_.external_work.add(-0.5 * p.force[i][c] * du[c]);
-        exact_.external_work.add(0.5 * p.mass[i] * (v[c] * v[c] - v_[g][c] * v_[g][c]));
+        if (!(dofs & (1u << c))) continue;
+        s.add(-0.5 * p.force[i][c] * du[c]);
+        s.add(0.5 * p.mass[i] * (v[c] * v[c] - v_[g][c] * v_[g][c]));
       }
-    }
+    }));
   }
   book_old_forces(ctx.world);
 }

@@ -94,7 +94,8 @@ void RodSystem::account(const StepContext& c) {
   c.ledger.viscous_work += visc * c.h;
   if (counted_) {
     if (!runs_ready_) viscous_runs(c.world);
-    for (const double run : runs_) exact_.viscous_work.add(run * c.h);
+    const double h = c.h;
+    exact_.viscous_work.add(exact_sum_of(runs_.size(), [&](std::size_t k, ExactSum& s) { s.add(runs_[k] * h); }));
     runs_ready_ = false;
   }
 }
@@ -108,23 +109,41 @@ void RodSystem::viscous_runs(const World& w) {
   // then added exactly: the runs are the same on every partition (all rods of a counted first
   // end are here, in the global order), and one exact add per particle instead of one per rod
   // (the exact add is ten times a plain one: validation/bench/README.md).
+  //
+  // In blocks, each starting at a rod whose first end differs from the rod's before it: a run
+  // starts there in the one loop over all rods too (a run has one first end, and a rod before it
+  // that is not counted has a key in between), so the blocks' runs, joined in block order, are
+  // that loop's, sum for sum.
   const auto& ends = w.rods.ends;
-  runs_.clear();
-  double run = 0.0;  // W
-  std::int32_t first = -1;
-  std::int64_t last = -2;
-  for (std::size_t k = 0; k < rod_viscous_.size(); ++k) {
-    if (!counted_[ends[k][0]]) continue;
-    const std::int64_t key = keys_ ? keys_[k] : static_cast<std::int64_t>(k);
-    if (ends[k][0] != first || key != last + 1) {
-      if (first >= 0) runs_.push_back(run);
-      run = 0.0;
-      first = ends[k][0];
+  const std::size_t m = rod_viscous_.size(), nb = block_count(m);
+  const auto block_start = [&](std::size_t k) {
+    k = std::min(k, m);
+    while (k > 0 && k < m && ends[k][0] == ends[k - 1][0]) ++k;
+    return k;
+  };
+  block_runs_.resize(nb);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::vector<double>& out = block_runs_[b];
+    out.clear();
+    double run = 0.0;  // W
+    std::int32_t first = -1;
+    std::int64_t last = -2;
+    for (std::size_t k = block_start(b * kBlock), end = block_start((b + 1) * kBlock); k < end; ++k) {
+      if (!counted_[ends[k][0]]) continue;
+      const std::int64_t key = keys_ ? keys_[k] : static_cast<std::int64_t>(k);
+      if (ends[k][0] != first || key != last + 1) {
+        if (first >= 0) out.push_back(run);
+        run = 0.0;
+        first = ends[k][0];
+      }
+      run += rod_viscous_[k];
+      last = key;
     }
-    run += rod_viscous_[k];
-    last = key;
+    if (first >= 0) out.push_back(run);
   }
-  if (first >= 0) runs_.push_back(run);
+  runs_.clear();
+  for (const std::vector<double>& out : block_runs_) runs_.insert(runs_.end(), out.begin(), out.end());
   runs_ready_ = true;
 }
 
@@ -289,10 +308,10 @@ RodSystem::PairList RodSystem::commit(World& m_, EnergyLedger& ledger, WorkList*
   return pairs;
 }
 
-void RodSystem::formation_applied(World& w, std::size_t formed, std::int64_t broken_change) {
+void RodSystem::formation_applied(World& w, std::size_t formed, std::int64_t broken_change, std::size_t first_changed) {
   formed_ += formed;
   broken_ = static_cast<std::size_t>(static_cast<std::int64_t>(broken_) + broken_change);
-  w.rods.build_rows(w.particles.size());
+  w.rods.update_rows(first_changed, w.particles.size());
   block_viscous_.resize(block_count(w.rods.size()), 0.0);
   block_changed_.resize(block_count(w.rods.size()), 0);
 }

@@ -96,8 +96,9 @@ class RodSystem {
   void set_exchange(StepExchange* x) { x_ = x; }
   /// After a domain's bond formation changed the rods (StepExchange::form_rods): 'formed' rods
   /// formed over the run in this step, the lattice rods it broke less those it revived; the
-  /// rows are made again.
-  void formation_applied(World& w, std::size_t formed, std::int64_t broken_change);
+  /// rows are brought up to date from 'first_changed', the first rod appended or moved (as the
+  /// serial form() does).
+  void formation_applied(World& w, std::size_t formed, std::int64_t broken_change, std::size_t first_changed);
   void count_exactly(const std::uint8_t* counted, const std::int64_t* keys = nullptr) {
     counted_ = counted;
     keys_ = keys;
@@ -118,11 +119,12 @@ class RodSystem {
   const std::int64_t* keys_ = nullptr;  // per rod, the global order (count_exactly)
   StepExchange* x_ = nullptr;           // a domain's link to the others (not owned)
   ExactLedger exact_;
-  std::vector<double> rod_viscous_;       // with counted_: per rod, viscous power of the last evaluation, W
-  std::vector<double> runs_;              // with counted_: the step's viscous power by run of rods (account), W
-  bool runs_ready_ = false;               // runs_ taken this step (before bond formation changed the rods)
-  void viscous_runs(const World& w);      // runs_ from rod_viscous_
-  std::vector<ExactLedger> block_exact_;  // with counted_: commit's scratch per rod block
+  std::vector<double> rod_viscous_;              // with counted_: per rod, viscous power of the last evaluation, W
+  std::vector<double> runs_;                     // with counted_: the step's viscous power by run of rods (account), W
+  std::vector<std::vector<double>> block_runs_;  // (viscous_runs' per-block runs, kept for their memory)
+  bool runs_ready_ = false;                      // runs_ taken this step (before bond formation changed the rods)
+  void viscous_runs(const World& w);             // runs_ from rod_viscous_
+  std::vector<ExactLedger> block_exact_;         // with counted_: commit's scratch per rod block
   std::size_t broken_ = 0;
   std::size_t formed_ = 0;             // state: 'formed_rods'
   std::vector<Vec3> mesh_edge_;        // per mesh: its lowest reference vertex (parting lines), m; empty: none
