@@ -180,7 +180,10 @@ void evaluate_rods_with(const Law& rod_law, double area, const RodKernelView& vi
   int* block_changed = view.block_changed;
   double* rod_visc = view.rod_viscous;
   const bool rate = uses_rate(law);
-#pragma omp parallel for schedule(static)
+  // Dynamic: in a cut the rods' cost is uneven (the chip's flow, the formed rods at the list's
+  // end), and a static split left one thread waiting (validation/bench/README.md). Each block
+  // writes its own sums, so the bits do not depend on which thread took it.
+#pragma omp parallel for schedule(dynamic)
   for (std::size_t b = 0; b < nb; ++b) {
     const std::size_t begin = b * kBlock, end = std::min(m, (b + 1) * kBlock);
     // Compile-time switches: the common rate-free or non-periodic cases pay for neither.
