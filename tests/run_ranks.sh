@@ -26,6 +26,9 @@ for kind in particles rods; do
   cmp "$a" "$b" || { echo "the last $kind frame of the restart differs"; fail=1; }
 done
 grep -q '"ranks": 2' "$dir/two/summary.json" || { echo "summary.json of 2 ranks does not say so"; fail=1; }
+# run.log says what the decomposition cost: the migrations, the time after the steps, the halo.
+grep -Eq 'over 2 ranks: [0-9]+ migrations in [0-9]+ steps.*halo [0-9.]+ kB per step' "$dir/two/run.log" ||
+  { echo "run.log of 2 ranks does not report the decomposition's cost"; fail=1; }
 # A case the domains do not run yet (the bar with the implicit step) is refused by name, with
 # exit code 2, before anything is written.
 set +e

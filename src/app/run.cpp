@@ -286,6 +286,8 @@ void run_case(const RunOptions& opt) {
     }
   }
   progress.done(sim.time(), sim.steps());
+  if (ranks)
+    if (const std::string cost = ranks->cost_report(); !cost.empty()) say("  {}\n", cost);
   if (outputs) finish_run(dir, model, sim, *outputs, observers, prov, opt.restart);
 }
 

@@ -12,7 +12,9 @@
 // run's; its particles are not all of them).
 #pragma once
 
+#include <chrono>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "swarf/core/comm.h"
@@ -68,6 +70,11 @@ class RankSteps {
   After agree(bool output_due, int signal);
   /// Collective: the mirror takes the run's state now.
   void gather();
+  /// Collective: what the decomposition cost, for run.log (rank 0's string; "" elsewhere): the
+  /// migrations, the time each rank spent after its steps exchanging (halo, stray checks,
+  /// migrations: what waits on the other ranks) against its wall time since the first step, the
+  /// halo's bytes per step and the owned particles' balance.
+  std::string cost_report();
 
   bool root() const { return comm_.rank() == 0; }
 
@@ -76,6 +83,8 @@ class RankSteps {
   Simulation& mirror_;
   ExactLedger& ledger_;
   std::unique_ptr<DomainRun> run_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::int64_t steps_at_start_ = 0;
 };
 
 }  // namespace swarf
