@@ -26,6 +26,16 @@ Network assumed (not measured here): InfiniBand HDR100, alpha = 1.5 us, beta = 1
 10 Gb Ethernet with MPI over TCP, alpha = 20 us, beta = 1.1 GB/s.
 Efficiency E(P) = T(1) / (P * T(P)); T(1) = t_c * N.
 
+A cut with bond formation adds a term that does not shrink with P (README.md, "The domains'
+serial bookkeeping", 2026-12-07): every rank gathers the run's pressed pairs and the reports of
+their particles each step (two all-gathers) and replays the serial rule on all of them,
+  formation = 2 ceil(log2 P) alpha + B_f * pairs / beta + t_r * pairs
+with pairs = 207 per step per 0.08 mm of chip width (the default cut at 10 layers across h =
+0.2 mm, measured from 1 mm of travel on), B_f = 136 B per pair (40 B a pair, 48 B per report,
+409 reports for 207 pairs) and t_r = 0.15 us per pair to sort and replay (estimated from perf:
+not measured apart), beside the cut's own t_c = 160 ns per particle-step on one core (the
+checkpoint at 1 mm on 1 thread, 145-165 ns) and W1's halo model for the same number of particles.
+
 Usage: scaling_model.py [OUT.png]   prints the tables (markdown) and writes the plot.
 """
 import math
@@ -35,6 +45,11 @@ T_C = {17: 44e-9, 63: 57e-9, "large": 57e-9}  # s per particle-step, one core
 T_G = {"as measured here": 170e-9, "halo at memory speed": 20e-9}  # s per ghost and step
 NETS = {"InfiniBand HDR100": (1.5e-6, 12e9), "10 GbE (TCP)": (20e-6, 1.1e9)}
 BYTES_PER_GHOST = 72
+# The cut with bond formation (docstring): measured on the default cut, 2026-12-07.
+T_C_CUT = 160e-9  # s per particle-step, one core
+PAIRS_PER_MM = 207 / 0.08  # pressed pairs per step per mm of chip width
+BYTES_PER_PAIR = 136  # B gathered per pressed pair (pair and its particles' reports)
+T_REPLAY = 0.15e-6  # s per pressed pair to sort and replay, on every rank
 
 
 def step_time(n_cells, ranks, decomposition, t_c, t_g, alpha, beta):
@@ -61,6 +76,18 @@ def step_time(n_cells, ranks, decomposition, t_c, t_g, alpha, beta):
     exchange = messages * alpha + BYTES_PER_GHOST * ghosts / beta + t_g * ghosts
     exchange += math.ceil(math.log2(ranks)) * alpha
     return compute, exchange
+
+
+def cut_efficiency(particles, width_mm, ranks, t_g, alpha, beta):
+    """Strong-scaling efficiency of a cut of 'particles' with a chip 'width_mm' wide: W1's halo model
+    for a cube of as many particles (boxes), at the cut's t_c, plus bond formation's replay."""
+    cells = (particles / 4.0) ** (1.0 / 3.0)
+    if ranks == 1:
+        return 1.0
+    c, e = step_time(cells, ranks, "boxes (RCB)", T_C_CUT, t_g, alpha, beta)
+    pairs = PAIRS_PER_MM * width_mm
+    formation = 2 * math.ceil(math.log2(ranks)) * alpha + BYTES_PER_PAIR * pairs / beta + T_REPLAY * pairs
+    return T_C_CUT * particles / (ranks * (c + e + formation))
 
 
 def efficiency(n_cells, ranks, decomposition, t_c, t_g, alpha, beta):
@@ -108,6 +135,20 @@ def main():
                     cells = (per_rank * p / 4.0) ** (1.0 / 3.0)
                     row.append(efficiency(cells, p, "boxes (RCB)", T_C["large"], tg, a, b))
                 print(f"| {per_rank:.0e} | {net} | {tgn} | " + " | ".join(f"{x:.2f}" for x in row) + " |")
+    print()
+    print("## A 3D cut with bond formation, strong scaling (boxes; efficiency)\n")
+    print("| cut | network | t_g | " + " | ".join(f"P={p}" for p in ranks) + " | formation's share at P=1024 |")
+    print("|" + "---|" * (4 + len(ranks)))
+    for particles, width, label in ((5e6, 1.0, "5 M particles, chip 1 mm wide"), (5e7, 3.0, "50 M, 3 mm wide")):
+        for net, (a, b) in NETS.items():
+            for tgn, tg in T_G.items():
+                row = [cut_efficiency(particles, width, p, tg, a, b) for p in ranks]
+                cells = (particles / 4.0) ** (1.0 / 3.0)
+                c, e = step_time(cells, 1024, "boxes (RCB)", T_C_CUT, tg, a, b)
+                pairs = PAIRS_PER_MM * width
+                f = 2 * math.ceil(math.log2(1024)) * a + BYTES_PER_PAIR * pairs / b + T_REPLAY * pairs
+                share = f / (c + e + f)
+                print(f"| {label} | {net} | {tgn} | " + " | ".join(f"{x:.2f}" for x in row) + f" | {share:.2f} |")
     try:
         import matplotlib
 
