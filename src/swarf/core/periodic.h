@@ -27,6 +27,11 @@ struct Periodic {
   void wrap(Vec3& d) const {
     if (std::abs(d[1]) > half) d[1] -= period * std::nearbyint(d[1] * inv_period);
   }
+  /// The same for the y component alone (a loop that keeps the components in registers).
+  double wrapped(double dy) const {
+    if (std::abs(dy) > half) dy -= period * std::nearbyint(dy * inv_period);
+    return dy;
+  }
 };
 
 }  // namespace swarf
