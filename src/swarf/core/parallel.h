@@ -34,27 +34,9 @@ double deterministic_sum(std::size_t n, F&& f) {
   return total;
 }
 
-/// Sum over i in [0, n) of f(i), exact before its one rounding (exact_sum.h): the same bits for
-/// any thread count and for any split of the terms over domains. A few ns per term: for sums that
-/// are read (energies at the rows), not for the step's inner loops.
-template <class F>
-ExactSum exact_sum(std::size_t n, F&& f) {
-  const std::size_t nb = block_count(n);
-  std::vector<ExactSum> part(nb);
-#pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < nb; ++b) {
-    const std::size_t end = std::min(n, (b + 1) * kBlock);
-    for (std::size_t i = b * kBlock; i < end; ++i)
-      if (const double x = f(i); x != 0.0) part[b].add(x);
-  }
-  ExactSum total;
-  for (const ExactSum& s : part) total.add(s);
-  return total;
-}
-
-/// As exact_sum, for a loop that adds any number of terms per index: f(i, sum) calls sum.add.
-/// Blocks of 256 indices (an exact sum is the same for any split, so short loops, a group's
-/// members or a step's rod runs, still share the threads).
+/// Sum of the terms that f(i, sum) adds through sum.add (any number per index) for i in [0, n),
+/// exact before its one rounding (exact_sum.h). Blocks of 256 indices: an exact sum is the same
+/// for any split, so short loops (a group's members, a step's rod runs) still share the threads.
 template <class F>
 ExactSum exact_sum_of(std::size_t n, F&& f) {
   constexpr std::size_t kExactBlock = 256;
@@ -68,6 +50,16 @@ ExactSum exact_sum_of(std::size_t n, F&& f) {
   ExactSum total;
   for (const ExactSum& s : part) total.add(s);
   return total;
+}
+
+/// Sum over i in [0, n) of f(i), exact before its one rounding (exact_sum.h): the same bits for
+/// any thread count and for any split of the terms over domains. A few ns per term: for sums that
+/// are read (energies at the rows), not for the step's inner loops.
+template <class F>
+ExactSum exact_sum(std::size_t n, F&& f) {
+  return exact_sum_of(n, [&](std::size_t i, ExactSum& s) {
+    if (const double x = f(i); x != 0.0) s.add(x);
+  });
 }
 
 }  // namespace swarf

@@ -24,6 +24,8 @@ struct Periodic {
   /// The nearest image of a difference vector d = x_j - x_i. Nearly every rod and contact is
   /// shorter than half the period, so the common path is one comparison (nearbyint is a
   /// library call on the baseline x86-64 target).
+  /// (An in-place branch, not d[1] = wrapped(d[1]): written so, the rod kernel rounded every
+  /// rod's y and ran 30 % slower: validation/bench/README.md.)
   void wrap(Vec3& d) const {
     if (std::abs(d[1]) > half) d[1] -= period * std::nearbyint(d[1] * inv_period);
   }

@@ -95,20 +95,30 @@ std::vector<std::array<std::int32_t, 2>> DomainRun::form_rods(RodSystem& rs, Wor
   std::vector<std::int64_t> involved;
   for (const PairReport& q : pairs) involved.push_back(q.a), involved.push_back(q.b);
   std::sort(involved.begin(), involved.end());
-  const auto involved_all = involved;  // (with repeats: a particle's number of pairs)
-  involved.erase(std::unique(involved.begin(), involved.end()), involved.end());
+  std::vector<int> pairs_of;  // per involved particle: its number of pairs
+  {
+    std::size_t out = 0;
+    for (std::size_t k = 0; k < involved.size(); ++k)
+      if (k > 0 && involved[k] == involved[out - 1]) {
+        ++pairs_of.back();
+      } else {
+        involved[out++] = involved[k];
+        pairs_of.push_back(1);
+      }
+    involved.resize(out);
+  }
   const auto slot = [&](std::int64_t id) {
     return static_cast<std::size_t>(std::lower_bound(involved.begin(), involved.end(), id) - involved.begin());
   };
   std::vector<RodReport> reports_mine;
-  for (const std::int64_t id : involved) {
+  for (std::size_t n = 0; n < involved.size(); ++n) {
+    const std::int64_t id = involved[n];
     const std::int32_t i = local_index(id);
     if (i < 0 || !owned_[i]) continue;
     int intact = 0;
     for (std::int32_t x = r.row_start[i]; x < r.row_start[i + 1]; ++x) intact += r.intact[r.entries[x].rod];
     reports_mine.push_back(RodReport{id, kCountReport, intact, 0, 0.0, 0.0});
-    const auto in_pairs = std::equal_range(involved_all.begin(), involved_all.end(), id);
-    if (!rule.exchange || may_form(rule, intact + static_cast<int>(in_pairs.second - in_pairs.first) - 1)) continue;
+    if (!rule.exchange || may_form(rule, intact + pairs_of[n] - 1)) continue;
     for (std::int32_t x = r.row_start[i]; x < r.row_start[i + 1]; ++x) {
       const std::int32_t k = r.entries[x].rod;
       if (!r.intact[k]) continue;
@@ -126,7 +136,7 @@ std::vector<std::array<std::int32_t, 2>> DomainRun::form_rods(RodSystem& rs, Wor
     return std::pair{x.id, x.key} < std::pair{y.id, y.key};
   });
   std::vector<std::size_t> first_report(involved.size() + 1, reports.size());
-  for (std::size_t n = involved.size(); n-- > 0;) {
+  for (std::size_t n = 0; n < involved.size(); ++n) {
     const auto it = std::lower_bound(reports.begin(), reports.end(), involved[n],
                                      [](const RodReport& x, std::int64_t id) { return x.id < id; });
     if (it == reports.end() || it->id != involved[n] || it->key != kCountReport)

@@ -471,7 +471,7 @@ void DomainRun::adopt(Local&& l) {
     sim_->replace_particles(std::move(l.particles), std::move(l.rods), contacts_ ? &l.contacts : nullptr);
   }
   sim_->count_exactly(owned_.data(), rod_key_.data());  // (each rod booked by its first end's owner)
-  {  // (bond formation's candidates, asked for every contact pair of every step)
+  if (local_.rods.formation.enabled()) {                // (its candidates, asked for every contact pair of every step)
     const auto& id = local_.particles.id;
     lattice_local_.resize(id.size());
     for (std::size_t i = 0; i < id.size(); ++i)
