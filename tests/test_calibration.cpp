@@ -157,7 +157,7 @@ TEST(MaterialPreset, C45FillsTheMaterial) {
   EXPECT_NEAR(std::get<RodLaw>(m.derived.law).flow.stress[0], 553.1e6 * e_rod / (1.5 * std::sqrt(3.0) * 205e9),
               1e-6 * 553.1e6);
   EXPECT_TRUE(std::isfinite(std::get<RodLaw>(m.derived.law).failure_strain));
-  EXPECT_TRUE(m.derived.implicit);  // rods can break: Newmark by default
+  EXPECT_FALSE(m.derived.implicit);  // rods can break, and "auto" is still Verlet (test_case_files.cpp)
   // A key given beside the preset wins.
   const Model n = build_model(parse_case(kCase + "", "m.toml", {"material.density=7800"}));
   EXPECT_EQ(n.settings.material.density, 7800.0);

@@ -849,7 +849,7 @@ Model tiny_cut_model(const std::string& extra = "") {
   std::string text = std::string(test::kTinyCut) + extra;
   const auto replace = [&](const std::string& a, const std::string& b) { text.replace(text.find(a), a.size(), b); };
   replace("origin = [-0.05e-3", "origin = [-0.11e-3");
-  replace("end_time = 4e-5", "scheme = \"verlet\"\nend_time = 4e-5");
+  replace("scheme = \"newmark\"", "scheme = \"verlet\"");
   return build_model(parse_case(text, "tiny_cut", {}));
 }
 
@@ -866,7 +866,7 @@ TEST(Domains, ACutWithContactsGivesTheSerialBitsOnAnyNumberOfDomains) {
 TEST(Domains, ACutWithHeatGivesTheSerialBitsOnAnyNumberOfDomains) {
   std::string text = test::kTinyCut;
   text.replace(text.find("origin = [-0.05e-3"), 18, "origin = [-0.11e-3");
-  text.replace(text.find("end_time = 4e-5"), 15, "scheme = \"verlet\"\nend_time = 4e-5");
+  text.replace(text.find("scheme = \"newmark\""), 18, "scheme = \"verlet\"");
   text.replace(text.find("tensile_strength = 3e8"), 22, "tensile_strength = 3e8\nyield_strain = 5e-4");
   text += "[heat]\nheat_capacity = 1.0\nconductivity = 1.0e4\nheld_groups = [\"base\"]\n";
   Model m = build_model(parse_case(text, "tiny_cut_heat", {}));
@@ -881,7 +881,7 @@ TEST(Domains, ACutWithHeatGivesTheSerialBitsOnAnyNumberOfDomains) {
 TEST(Domains, ACutWithBondFormationGivesTheSerialBitsOnAnyNumberOfDomains) {
   std::string text = test::kTinyCut;
   text.replace(text.find("origin = [-0.05e-3"), 18, "origin = [-0.11e-3");
-  text.replace(text.find("end_time = 4e-5"), 15, "scheme = \"verlet\"\nend_time = 4e-5");
+  text.replace(text.find("scheme = \"newmark\""), 18, "scheme = \"verlet\"");
   text.replace(text.find("tensile_strength = 3e8"), 22,
                "tensile_strength = 3e8\nyield_strain = 5e-4\nbond_overlap = 0.0\nneighbour_exchange = true");
   text.replace(text.find("velocity = [5.0"), 15, "velocity = [20.0");
@@ -950,7 +950,7 @@ TEST(Domains, CollidingBlocksThatBondGiveTheSerialBitsOnAnyNumberOfDomains) {
   const std::string rod = "tensile_strength = 3e8";
   std::string text = std::string(test::kTinyCut);
   text.replace(text.find(rod), rod.size(), rod + "\nyield_strain = 5e-4\nbond_overlap = 0.0\nneighbour_exchange = true");
-  text.replace(text.find("end_time = 4e-5"), 15, "scheme = \"verlet\"\nend_time = 4e-5");
+  text.replace(text.find("scheme = \"newmark\""), 18, "scheme = \"verlet\"");
   const Model m = build_model(parse_case(text, "colliding_formation", {}));
   ASSERT_TRUE(m.rods.formation.enabled());
   expect_contacts_over_domains(colliding_blocks(m, 100.0), m.step, 2000, 800, false);

@@ -37,6 +37,7 @@ density = {}
 youngs_modulus = 200e9
 tensile_strength = 1e12
 [integrator]
+scheme = "newmark"
 end_time = 1
 [[group]]
 name = "cold"
@@ -282,6 +283,7 @@ damping_ratio = 0.0
 tensile_strength = 1e12
 failure_strain = 10.0
 [integrator]
+scheme = "newmark"
 end_time = {}
 [heat]
 heat_capacity = {}

@@ -395,7 +395,7 @@ TEST(JohnsonCookRodLaw, ARodPulledHotYieldsAtRThetaSigmaYInBothSteps) {
 // A small C45 case on the [material] route (the preset gives the flow curve and the factors).
 std::string c45_case(const std::string& rod_lines) {
   return "[workpiece]\ncells = [2, 2, 2]\nradius = 1.0e-5\n[material]\npreset = \"C45\"\n[rod]\n" + rod_lines +
-         "[integrator]\nend_time = 1e-6\n";
+         "[integrator]\nscheme = \"newmark\"\nend_time = 1e-6\n";
 }
 
 TEST(JohnsonCookRodLaw, TheCaseKeysBuildTheLaw) {

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "lattice_gen/lattice_file.h"
+#include "scenes/scheme.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -116,7 +117,7 @@ youngs_modulus = 200e9
 tensile_strength = 1e12
 [integrator]
 end_time = 1
-)" + overrides_toml,
+)" + test::newmark_unless_named(overrides_toml),
                                    "block", {}));
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-0.1, 0.1);

@@ -14,6 +14,7 @@
 
 #include "lattice_gen/lattice_file.h"
 #include "scenes/block_on_floor.h"
+#include "scenes/scheme.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
 #include "swarf/core/errors.h"
@@ -152,7 +153,7 @@ tensile_strength = 1e12
 end_time = 1
 )",
                                                cells) +
-                                       integrator,
+                                       test::newmark_unless_named(integrator),
                                    "block", {}));
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-0.1, 0.1);
@@ -211,7 +212,7 @@ grip_dofs = "axis"
 strain_path = [0.0, 0.006]
 strain_rate = 200.0
 [integrator]
-)" + integrator,
+)" + test::newmark_unless_named(integrator),
                                 "bar", {}));
 }
 
@@ -414,10 +415,11 @@ Model jc_chain(const test::TempDir& dir, double rate, const std::string& integra
   return chain_model(dir, n,
                      "law = \"johnson_cook\"\nrate_sensitivity = 0.0134\nreference_rate = 1.0\n"
                      "yield_strain = 1e-3\nhardening_modulus = 20e9\ntensile_strength = 1e12\ndamping_ratio = 0.1\n",
-                     integrator + fmt::format("\n[[group]]\nname = \"left\"\nside = \"x-\"\n"
-                                              "[[group]]\nname = \"right\"\nside = \"x+\"\nmotion = \"velocity\"\n"
-                                              "velocity = [{:.17g}, 0.0, 0.0]\n",
-                                              v));
+                     test::newmark_unless_named(integrator) +
+                         fmt::format("\n[[group]]\nname = \"left\"\nside = \"x-\"\n"
+                                     "[[group]]\nname = \"right\"\nside = \"x+\"\nmotion = \"velocity\"\n"
+                                     "velocity = [{:.17g}, 0.0, 0.0]\n",
+                                     v));
 }
 
 TEST(Newton, JohnsonCookChainPulledAtConstantRateTakesFullStepsWithTheLaggedRateFactor) {

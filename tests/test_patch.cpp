@@ -144,6 +144,7 @@ yield_stress = 400e6
 hardening_modulus = 2e9
 tensile_strength = 600e6
 [integrator]
+scheme = "newmark"
 end_time = 1e-6
 )";
   const Model m = build_model(parse_case(text, "macro", {}));

@@ -13,6 +13,7 @@
 
 #include "memory_archive.h"
 #include "scenes/pulled_bar.h"
+#include "scenes/scheme.h"
 #include "scenes/shear_layers.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
@@ -44,7 +45,7 @@ failure_strain = 100.0
 end_time = {}
 {}
 )",
-                                       R, duration, extra);
+                                       R, duration, test::newmark_unless_named(extra));
   const Model plain = build_model(parse_case(head, "shear", {}));
   int layers = 0;
   const std::string groups = test::shear_layer_groups(plain.particles, R, gamma / duration, layers);

@@ -24,7 +24,7 @@ struct Derived {
   double omega_max = 0;      ///< sqrt(8 kb_max/m) (kb_max below; 24 with bond formation), rad/s
   double dt_stable = 0;      ///< (2/w)(sqrt(1+(2 zeta)^2) - 2 zeta), w = omega_max; sqrt(m/(2 kb)) undamped, s
   double dt = 0;             ///< step used (newmark: the first step), s
-  bool implicit = false;     ///< the Newmark scheme (scheme "newmark", or "auto" with breakable rods)
+  bool implicit = false;     ///< the Newmark scheme (scheme "newmark", or "auto" with solver "newton")
   double dt_min = 0;         ///< newmark: smallest step before the run stops, s
   double dt_max = 0;         ///< newmark: largest step, s
   double wave_speed = 0;     ///< longitudinal wave speed along [100], c_L = d sqrt(kb/m), m/s

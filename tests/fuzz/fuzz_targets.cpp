@@ -108,6 +108,7 @@ origin = [-0.05e-3, 1.0e-3, 1.0e-3]
 motion = "velocity"
 velocity = [20.0, 0.0, 0.0]
 [integrator]
+scheme = "newmark"
 end_time = 1e-3
 [output]
 vtk = false

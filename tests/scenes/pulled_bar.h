@@ -9,6 +9,8 @@
 #include <array>
 #include <string>
 
+#include "scheme.h"
+
 namespace swarf::test {
 
 struct PulledBar {
@@ -48,7 +50,7 @@ velocity = [{}, 0.0, 0.0]
 {})",
                      b.cells[0], b.cells[1], b.cells[2],
                      b.damping_ratio > 0 ? "damping_ratio = " + toml_float(b.damping_ratio) + "\n" : std::string(),
-                     b.integrator, toml_float(b.velocity), b.extra);
+                     newmark_unless_named(b.integrator), toml_float(b.velocity), b.extra);
 }
 
 }  // namespace swarf::test

@@ -26,6 +26,7 @@ origin = [-0.05e-3, 0.14e-3, 0.5e-3]
 motion = "velocity"
 velocity = [5.0, 0.0, 0.0]
 [integrator]
+scheme = "newmark"
 end_time = 4e-5
 [output]
 vtk = false
