@@ -85,7 +85,7 @@ struct OneRod {
   std::vector<Vec3> x{Vec3::Zero(), Vec3(kL0, 0, 0)}, v{Vec3::Zero(), Vec3::Zero()};
   std::vector<double> temperature{0.0, 0.0};
   std::array<std::int32_t, 2> ends{0, 1};
-  double l0 = kL0, inv_l0 = 1.0 / kL0, shift = 0.0, trial = 0.0, stress = 0.0, coef = 0.0;
+  double l0 = kL0, shift = 0.0, trial = 0.0, stress = 0.0, coef = 0.0;
   std::uint8_t intact = 1, broken = 0;
   double visc = 0.0;
   int changed = 0;
@@ -97,7 +97,6 @@ struct OneRod {
     view.rods = 1;
     view.ends = &ends;
     view.rest_length = &l0;
-    view.inv_rest_length = &inv_l0;
     view.shift = &shift;
     view.intact = &intact;
     view.x = x.data();
@@ -207,7 +206,6 @@ World one_rod_world(const AnyRodLaw& law) {
   r.area = kA;
   r.ends = {{0, 1}};
   r.rest_length = {kL0};
-  r.inv_rest_length = {1.0 / kL0};
   r.reset_state();
   r.build_rows(2);
   return w;

@@ -207,7 +207,7 @@ void expect_kernel_agrees(double viscosity) {
   const std::size_t m = strain.size();
   std::vector<Vec3> x(m + 1, Vec3::Zero()), v(m + 1, Vec3::Zero());
   std::vector<std::array<std::int32_t, 2>> ends(m);
-  std::vector<double> l0(m, L0), inv_l0(m, 1.0 / L0), trial(m), stress(m), coef(m);
+  std::vector<double> l0(m, L0), trial(m), stress(m), coef(m);
   std::vector<std::uint8_t> intact(m, 1), broken(m);
   for (std::size_t k = 0; k < m; ++k) {
     const Vec3 n = Vec3(1.0, 0.3 * k, -0.2 * k).normalized();
@@ -221,7 +221,6 @@ void expect_kernel_agrees(double viscosity) {
   view.rods = m;
   view.ends = ends.data();
   view.rest_length = l0.data();
-  view.inv_rest_length = inv_l0.data();
   view.shift = committed.data();
   view.intact = intact.data();
   view.x = x.data();

@@ -37,7 +37,6 @@ World three_on_a_line(double R, double x1, double x2) {
   r.area = R * R;
   r.ends = {{0, 1}, {1, 2}};
   r.rest_length = {x1, x2 - x1};
-  r.inv_rest_length = {1.0 / x1, 1.0 / (x2 - x1)};
   r.reset_state();
   r.build_rows(3);
   return w;

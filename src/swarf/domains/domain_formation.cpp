@@ -124,7 +124,7 @@ std::vector<std::array<std::int32_t, 2>> DomainRun::form_rods(RodSystem& rs, Wor
       if (!r.intact[k]) continue;
       Vec3 d = p.position[r.entries[x].other] - p.position[i];
       w.periodic.wrap(d);
-      const double strain = d.norm() * r.inv_rest_length[k] - 1.0;
+      const double strain = d.norm() * (1.0 / r.rest_length[k]) - 1.0;
       if (!(strain > 0.0)) continue;  // (the rule gives only a stretched rod: the others need not travel)
       reports_mine.push_back(RodReport{id, rod_key_[k], p.id[r.entries[x].other], r.formed[k], strain,
                                        elastic_energy_density(r.law, r.stress[k]) * r.area * r.rest_length[k]});
@@ -214,7 +214,6 @@ std::vector<std::array<std::int32_t, 2>> DomainRun::form_rods(RodSystem& rs, Wor
       broken_change -= !q->formed;
       if (const std::int64_t k = local_rod(q->key); k >= 0) {
         r.rest_length[k] = q->length;
-        r.inv_rest_length[k] = 1.0 / q->length;
         r.shift[k] = r.trial_shift[k] = 0.0;
         r.stress[k] = r.force_coef[k] = 0.0;
         r.trial_broken[k] = 0;

@@ -25,20 +25,19 @@ namespace swarf {
 struct RodKernelView {
   std::size_t rods = 0;
   const std::array<std::int32_t, 2>* ends = nullptr;
-  const double* rest_length = nullptr;      ///< m
-  const double* inv_rest_length = nullptr;  ///< 1/m
-  const double* shift = nullptr;            ///< committed plastic shift, 1
-  const std::uint8_t* intact = nullptr;     ///< committed
-  const Vec3* x = nullptr;                  ///< particle positions, m
-  const Vec3* v = nullptr;                  ///< particle velocities, m/s
-  const double* temperature = nullptr;      ///< particle temperatures, K (0 = not set); nullptr: none (T_ref)
-  double* trial_shift = nullptr;            ///< out, 1
-  std::uint8_t* trial_broken = nullptr;     ///< out
-  double* stress = nullptr;                 ///< out, Pa
-  double* coef = nullptr;                   ///< out, N/m
-  double* block_viscous = nullptr;          ///< out per block of kBlock rods: viscous power, W
-  int* block_changed = nullptr;             ///< out per block: 1 if a rod yielded or broke
-  double* rod_viscous = nullptr;            ///< out per rod when set: viscous power, W (0 for a broken rod)
+  const double* rest_length = nullptr;   ///< m
+  const double* shift = nullptr;         ///< committed plastic shift, 1
+  const std::uint8_t* intact = nullptr;  ///< committed
+  const Vec3* x = nullptr;               ///< particle positions, m
+  const Vec3* v = nullptr;               ///< particle velocities, m/s
+  const double* temperature = nullptr;   ///< particle temperatures, K (0 = not set); nullptr: none (T_ref)
+  double* trial_shift = nullptr;         ///< out, 1
+  std::uint8_t* trial_broken = nullptr;  ///< out
+  double* stress = nullptr;              ///< out, Pa
+  double* coef = nullptr;                ///< out, N/m
+  double* block_viscous = nullptr;       ///< out per block of kBlock rods: viscous power, W
+  int* block_changed = nullptr;          ///< out per block: 1 if a rod yielded or broke
+  double* rod_viscous = nullptr;         ///< out per rod when set: viscous power, W (0 for a broken rod)
   /// Positions and velocities from which a law that scales its flow stresses by the rate
   /// (Johnson-Cook) takes the rate of its factor, m and m/s; nullptr: x and v (the trial's own
   /// rate). The Newton solve passes the step's start: a lagged rate factor, so that the trial's

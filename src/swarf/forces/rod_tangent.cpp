@@ -36,7 +36,7 @@ void rod_tangent_setup_with(const Law& law, double area, double kx, double kv, c
     periodic.wrap(dx);
     const double len = dx.norm();
     const Vec3 n = dx / len;
-    const double inv_l0 = v.inv_rest_length[k];
+    const double inv_l0 = 1.0 / v.rest_length[k];
     double strain = 0.0, rate = 0.0;
     if constexpr (Law::kTangentReadsMotion) {
       strain = len * inv_l0 - 1.0;

@@ -41,7 +41,7 @@ namespace swarf {
 struct RodTangentView {
   std::size_t rods = 0;
   const std::array<std::int32_t, 2>* ends = nullptr;
-  const double* inv_rest_length = nullptr;     ///< 1/m
+  const double* rest_length = nullptr;         ///< m
   const double* shift = nullptr;               ///< committed plastic shift, 1
   const double* trial_shift = nullptr;         ///< of the latest evaluation, 1
   const std::uint8_t* intact = nullptr;        ///< committed

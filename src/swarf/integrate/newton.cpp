@@ -191,7 +191,7 @@ void newton_tangent(Integration& it, double h) {
   RodTangentView v;
   v.rods = m;
   v.ends = r.ends.data();
-  v.inv_rest_length = r.inv_rest_length.data();
+  v.rest_length = r.rest_length.data();
   v.shift = r.shift.data();
   v.trial_shift = r.trial_shift.data();
   v.intact = r.intact.data();

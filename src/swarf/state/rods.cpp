@@ -14,8 +14,6 @@ void Rods::reset_state() {
   trial_broken.assign(m, 0);
   stress.assign(m, 0.0);
   force_coef.assign(m, 0.0);
-  inv_rest_length.resize(m);
-  for (std::size_t k = 0; k < m; ++k) inv_rest_length[k] = 1.0 / rest_length[k];
 }
 
 void build_rod_rows(const std::vector<std::array<std::int32_t, 2>>& ends, std::size_t n_particles, RodRows& out) {
@@ -46,7 +44,6 @@ void Rods::append_formed(std::int32_t i, std::int32_t j, double length) {
   if (i > j) std::swap(i, j);
   ends.push_back({i, j});
   rest_length.push_back(length);
-  inv_rest_length.push_back(1.0 / length);
   shift.push_back(0.0);
   intact.push_back(1);
   formed.push_back(1);

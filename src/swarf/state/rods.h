@@ -26,7 +26,6 @@ struct Rods {
 
   std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
   std::vector<double> rest_length;                ///< L0, m
-  std::vector<double> inv_rest_length;            ///< 1/L0, 1/m (cached: saves a division per rod and step)
   std::vector<double> shift;                      ///< committed plastic shift eps0, 1
   std::vector<std::uint8_t> intact;               ///< committed: 1 intact, 0 broken (for good unless 'formation')
   std::vector<std::uint8_t> formed;  ///< 1 for a rod between a new pair, formed during the run (bond_formation.h)
@@ -55,7 +54,6 @@ struct Rods {
   template <class F>
   void for_each_field(F&& f) {
     f("rest_length", rest_length);
-    f("inv_rest_length", inv_rest_length);
     f("shift", shift);
     f("intact", intact);
     f("formed", formed);

@@ -49,7 +49,6 @@ void RodSystem::forces(World& m_, const Vec3* rate_x, const Vec3* rate_v) {
   view.rods = r.size();
   view.ends = r.ends.data();
   view.rest_length = r.rest_length.data();
-  view.inv_rest_length = r.inv_rest_length.data();
   view.shift = r.shift.data();
   view.intact = r.intact.data();
   view.x = p.position.data();
@@ -355,7 +354,7 @@ RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLe
       if (!r.intact[k]) continue;
       Vec3 d = p.position[r.entries[q].other] - p.position[i];
       m_.periodic.wrap(d);
-      const double strain = d.norm() * r.inv_rest_length[k] - 1.0;
+      const double strain = d.norm() * (1.0 / r.rest_length[k]) - 1.0;
       if (strain > worst) {
         worst = strain;
         best = k;
@@ -411,7 +410,6 @@ RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLe
       continue;
     }
     r.rest_length[rod] = length;
-    r.inv_rest_length[rod] = 1.0 / length;
     r.shift[rod] = r.trial_shift[rod] = 0.0;
     r.stress[rod] = r.force_coef[rod] = 0.0;
     r.trial_broken[rod] = 0;
