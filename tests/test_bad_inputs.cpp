@@ -436,7 +436,9 @@ void spoil_first_entry(const std::string& path, const std::string& dataset, doub
 
 TEST(BadInput, ACheckpointWithANaNTimeOrStateOrAnOutputTimeThatCannotAdvanceIsRefused) {
   TempDir dir("bad_ckpt");
-  const auto a = run_bar(dir, "--set output.checkpoint_every=20");
+  // (orientations written: the bar's particles cannot turn, so without them its checkpoint holds
+  // no rotation arrays to spoil)
+  const auto a = run_bar(dir, "--set output.checkpoint_every=20 --set output.orientations=true");
   ASSERT_EQ(a.exit_code, 0) << a.output;
   // Each spoilt copy of the checkpoint: the dataset, its new first entry, the words refused.
   // (A NaN position trapped in the first step; a next row time of -1e300 hung the run loop,
@@ -458,6 +460,24 @@ TEST(BadInput, ACheckpointWithANaNTimeOrStateOrAnOutputTimeThatCannotAdvanceIsRe
                                std::filesystem::copy_options::overwrite_existing);
     spoil_first_entry(dir / "spoilt.h5", dataset, value);
     expect_refused(run_command(fmt::format("timeout 120 {} run --restart {}", SWARF_BINARY, dir / "spoilt.h5")), word);
+  }
+}
+
+// A run holds the accumulated plastic strain's arrays only where an output field needs them, so
+// its checkpoint holds them only then: a restart that asks for PEEQ from such a checkpoint would
+// start it at 0 mid-run, and is refused by name; with the field from the start it continues.
+TEST(BadInput, ARestartThatAddsPeeqToACheckpointWithoutItIsRefused) {
+  TempDir dir("restart_peeq");
+  for (const char* fields : {"[]", "[\"peeq\"]"}) {
+    const auto a = run_bar(dir, fmt::format("--set output.checkpoint_at_end=true --set 'output.fields={}'", fields));
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    const auto r = run_command(fmt::format(
+        "timeout 120 {} run --restart {} --out {} --set integrator.end_time=4e-6 --set 'output.fields=[\"peeq\"]'",
+        SWARF_BINARY, dir / "out/checkpoint.h5", dir / "again"));
+    if (std::string(fields) == "[]")
+      expect_refused(r, "may not add 'peeq'");
+    else
+      EXPECT_EQ(r.exit_code, 0) << r.output;
   }
 }
 

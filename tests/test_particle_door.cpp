@@ -258,3 +258,43 @@ TEST(ParticleDoor, RejectsAnOrderThatIsNotAPermutation) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A bonded bar without contacts cannot turn its particles: its World holds no rotation arrays
+// (136 B per particle) and none of the plastic strain's (72 B) unless an output needs them, and
+// steps to the same bits as with them held. Turning rotations on afterwards takes the arrays up
+// with a solid sphere's inertia, as the build gives it.
+TEST(ParticleLayout, ABarThatCannotTurnHoldsNoRotationArraysAndStepsToTheSameBits) {
+  Model lean = build_model(parse_case(kBar, "bar", {"output.fields=[]"}));
+  Model full = build_model(parse_case(kBar, "bar", {"output.orientations=true", "output.fields=[\"peeq\"]"}));
+  Simulation sl(lean, lean.step), sf(full, full.step);
+  const Particles& pl = lean.particles;
+  const Particles& pf = full.particles;
+  EXPECT_FALSE(pl.layout.rotation);
+  EXPECT_FALSE(pl.layout.plastic_strain);
+  EXPECT_TRUE(pl.omega.empty() && pl.inertia.empty() && pl.orientation.empty() && pl.torque.empty());
+  EXPECT_TRUE(pl.peeq.empty() && pl.window_normal.empty());
+  ASSERT_TRUE(pf.layout.rotation && pf.layout.plastic_strain);
+  ASSERT_EQ(pf.omega.size(), pf.size());
+  for (int s = 0; s < 400; ++s) {
+    sl.step();
+    sf.step();
+  }
+  ASSERT_EQ(pl.size(), pf.size());
+  for (std::size_t i = 0; i < pl.size(); ++i) {
+    ASSERT_TRUE(same_bits(pl.position[i], pf.position[i])) << i;
+    ASSERT_TRUE(same_bits(pl.velocity[i], pf.velocity[i])) << i;
+  }
+  sl.set_rotations(true);
+  ASSERT_EQ(pl.inertia.size(), pl.size());
+  for (std::size_t i = 0; i < pl.size(); ++i) {
+    EXPECT_EQ(pl.inertia[i], pf.inertia[i]) << i;
+    EXPECT_EQ(pl.inv_inertia[i], pf.inv_inertia[i]) << i;
+    EXPECT_EQ(pl.orientation[i], Quat(1.0, 0.0, 0.0, 0.0)) << i;
+  }
+}
+
+}  // namespace
+}  // namespace swarf

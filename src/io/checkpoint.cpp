@@ -99,6 +99,7 @@ class H5StateReader final : public StateArchive {
   /// is a corrupt file, and the first step would trap or run on garbage).
   H5StateReader(const H5File& f, std::string root, bool finite) : f_(f), root_(std::move(root)), finite_(finite) {}
   bool loading() const override { return true; }
+  bool has(std::string_view name) const override { return f_.has(key(name)); }
   void array(std::string_view name, std::vector<double>& v, std::size_t expected) override {
     v = doubles(name, expected, 1);
   }

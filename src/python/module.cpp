@@ -247,7 +247,8 @@ PYBIND11_MODULE(_swarf, m) {
           [](py::object s) { return vec3s(s.cast<ParticlesView&>().p().initial_position, s, false); }, "(n, 3) m")
       .def_property_readonly(
           "omega", [](py::object s) { return vec3s(s.cast<ParticlesView&>().p().omega, s, true); },
-          "(n, 3) rad/s, world frame, writable (integrated only when rotations are on)")
+          "(n, 3) rad/s, world frame, writable (integrated only when rotations are on; (0, 3) in a run whose particles "
+          "cannot turn: no contacts, bodies, flows or output.orientations)")
       .def_property_readonly(
           "torque", [](py::object s) { return vec3s(s.cast<ParticlesView&>().p().torque, s, false); }, "(n, 3) N m")
       .def_property_readonly(

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/output_fields.h"
 #include "lattice_gen/lattice_disorder.h"
 #include "lattice_gen/membrane_lattice.h"
 #include "swarf/core/errors.h"
@@ -26,6 +27,17 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
   const Derived& d = model.derived;
   auto& p = model.particles;
   const std::size_t n = lat.position.size();
+  // The optional arrays only where the run will hold them (Simulation::Simulation decides and
+  // takes up or frees a group itself; deciding here too spares the build their memory): the
+  // rotation arrays where particles can turn or their spins were given, the plastic strain's
+  // where an output field needs it.
+  bool rigid_body = false;
+  for (const auto& m : cs.meshes) rigid_body = rigid_body || m.dynamics == "rigid_body";
+  bool spin = false;
+  for (const Vec3& w : free_spin) spin = spin || !w.isZero(0.0);
+  p.layout.rotation = cs.contact.enabled || rigid_body || spin || !cs.inflows.empty() || !cs.outflows.empty() ||
+                      cs.output.orientations;
+  p.layout.plastic_strain = needs_plastic_strain_window(cs.output.fields);
   p.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     p.position[i] = lat.position[i];
@@ -35,17 +47,20 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
     const double s = lat.radius[i] / d.radius;
     p.mass[i] = d.particle_mass * s * s * s;
     p.inv_mass[i] = 1.0 / p.mass[i];
-    p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
-    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+    if (p.layout.rotation) {
+      p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
+      p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+    }
   }
   for (std::size_t k = 0; k < free_velocity.size(); ++k) {
     const std::size_t i = model.lattice_particles + k;
     // Free particles are solid spheres whatever the lattice's mass basis.
     p.mass[i] = cs.material.density * 4.0 / 3.0 * M_PI * std::pow(p.radius[i], 3);
     p.inv_mass[i] = 1.0 / p.mass[i];
+    p.velocity[i] = free_velocity[k];
+    if (!p.layout.rotation) continue;
     p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
     p.inv_inertia[i] = 1.0 / p.inertia[i][0];
-    p.velocity[i] = free_velocity[k];
     p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
   }
 }

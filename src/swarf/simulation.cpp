@@ -34,6 +34,11 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
     if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) ms_.rotations = true;
   }
   sys_.thermal.setup(m_);
+  // The rotation arrays only where something can turn a particle or read its turn: contacts
+  // (torques), bodies and flows (their particles' and new particles' spins), orientation output.
+  const bool turns = ms_.rotations || m_.contacts || !m_.bodies.empty() || !m_.inflows.empty() ||
+                     !m_.outflows.empty() || set_.sphere_orientations;
+  m_.particles.set_layout(ParticleLayout{.rotation = turns, .plastic_strain = m_.particles.layout.plastic_strain});
   sys_.plastic.setup(m_, set_.plastic_strain_window);
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
   Integration it = integration();
@@ -67,6 +72,10 @@ void Simulation::apply_flows(double h) {
 void Simulation::set_rotations(bool on) {
   ms_.rotations = on;
   if (!on) return;
+  if (!m_.particles.layout.rotation) {
+    m_.particles.set_layout(ParticleLayout{.rotation = true, .plastic_strain = m_.particles.layout.plastic_strain});
+    resize_scratch();
+  }
   integrate::update_free_to_rotate(m_, ms_);
   auto& p = m_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {

@@ -64,6 +64,7 @@ void Simulation::append_particles(const Particles& extra) {
   if (!consistent)
     throw InputError("append_particles: the new particles' arrays differ in length (size them with Particles::resize)");
   auto& p = m_.particles;
+  add.set_layout(p.layout);  // (the groups the World holds, so that the fields pair up)
   add.id.resize(k);
   for (std::size_t q = 0; q < k; ++q) add.id[q] = p.next_id++;
   // Both for_each_field walks visit the same fields in the same order: pair them by index.
@@ -111,7 +112,9 @@ void Simulation::replace_particles(Particles particles, Rods rods, const Contact
     throw InputError(
         "replace_particles: arrays of unequal length, rod ends out of range or not ascending, or a group index "
         "out of range");
+  const ParticleLayout layout = m_.particles.layout;
   m_.particles = std::move(particles);
+  m_.particles.set_layout(layout);  // (the groups this run holds)
   m_.rods.ends = std::move(rods.ends);
   m_.rods.for_each_field_with(rods, [](auto& mine, auto& theirs) { mine = std::move(theirs); });
   records_replaced(contacts);

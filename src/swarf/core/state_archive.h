@@ -29,6 +29,9 @@ class StateArchive {
   /// the particle, rod and contact arrays to records: MemoryArchive's skip): a visit whose load
   /// derives more from such fields skips that too.
   virtual bool keeps(std::string_view /*name*/) const { return true; }
+  /// On load: whether the archive holds the field (a checkpoint of a run that held fewer
+  /// optional particle arrays, particles.h's ParticleLayout, does not hold theirs).
+  virtual bool has(std::string_view /*name*/) const { return true; }
 
   // On save and hash the array is read; on load it is replaced by the stored one, whose
   // length must be 'expected' (elements) unless that is kAnySize: an archive of another

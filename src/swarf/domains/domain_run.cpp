@@ -200,6 +200,7 @@ DomainRun::DomainRun(Comm& comm, const World& global, const StepSettings& settin
     needed[i] = needed[j] = 1;
   }
   Particles pool;
+  pool.layout = gp.layout;  // (a record holds the groups its source holds)
   for (std::size_t i = 0; i < n; ++i)
     if (needed[i]) {
       buf.clear();
@@ -280,6 +281,7 @@ std::size_t DomainRun::owned_count() const {
 DomainRun::Local DomainRun::assemble(Particles& pool, const std::vector<std::uint8_t>& exact, RodPool& rods,
                                      const std::vector<std::int64_t>& owned_ids, const ContactPool& contacts) const {
   Local l;
+  l.particles.layout = pool.layout;
   // The rods with an owned end, once each, in the global order.
   std::vector<std::size_t> ro(rods.key.size());
   std::iota(ro.begin(), ro.end(), std::size_t{0});
@@ -543,12 +545,14 @@ Particles DomainRun::gather_owned() {
   for (std::size_t i = 0; i < p.size(); ++i)
     if (owned_[i]) pack_particle(mine, p, i);
   Particles all;
+  all.layout = p.layout;
   for (const Bytes& b : comm_.all_gather(std::move(mine)))
     for (const std::byte* at = b.data(); at != b.data() + b.size();) at += unpack_new_particle(at, all);
   std::vector<std::size_t> order(all.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
   Particles out;
+  out.layout = p.layout;
   Bytes buf;
   for (const std::size_t i : order) {
     buf.clear();
@@ -946,6 +950,7 @@ void DomainRun::migrate(bool recut) {
   const std::vector<Bytes> in = comm_.all_to_all(std::move(out));
   // What this rank has and what it received; the owned ids: those staying and those arriving.
   Particles pool;
+  pool.layout = p.layout;
   std::vector<std::uint8_t> exact;  // per pool entry: the copy of the particle's owner
   RodPool rods;
   Bytes buf;

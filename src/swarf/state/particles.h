@@ -17,6 +17,17 @@
 
 namespace swarf {
 
+/// Which optional groups of per-particle arrays a Particles holds. A run whose particles never
+/// turn (no contacts, bodies, flows or orientation output) holds no rotation arrays (136 B per
+/// particle), one without the accumulated plastic strain none of its arrays (72 B); the
+/// Simulation decides (Simulation::Simulation, PlasticStrainSystem::setup). Every Particles that
+/// takes another's records (domains/records.h) takes its layout first.
+struct ParticleLayout {
+  bool rotation = true;        ///< orientation, omega, omega_dot, inertia, inv_inertia, torque
+  bool plastic_strain = true;  ///< peeq, peeq_rate, window_normal, window_shear
+  bool operator==(const ParticleLayout&) const = default;
+};
+
 struct Particles {
   std::vector<Vec3> position;            ///< m
   std::vector<Vec3> velocity;            ///< m/s
@@ -32,12 +43,14 @@ struct Particles {
   // Accumulated plastic strain (systems/plastic_strain_system.h): PEEQ, its rate over the last
   // window and the window's sum of the rods' plastic increments, g (x) de_p (g the normal-strain
   // row of the rod's direction: xx, yy, zz parts in 'normal', 2xy, 2yz, 2xz in 'shear').
+  // (held only with layout.plastic_strain; otherwise empty)
   std::vector<double> peeq;         ///< equivalent plastic strain, integral of its rate, 1
   std::vector<double> peeq_rate;    ///< equivalent plastic strain rate over the last window, 1/s
   std::vector<Vec3> window_normal;  ///< the window's sum n_a^2 de_p (a = x, y, z), 1
   std::vector<Vec3> window_shear;   ///< the window's sum 2 n_a n_b de_p (xy, yz, xz), 1
   // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
-  // so torques come from contacts; the machinery is here for them).
+  // so torques come from contacts; the machinery is here for them). Held only with
+  // layout.rotation; otherwise empty.
   std::vector<Quat> orientation;    ///< unit quaternion, body to world
   std::vector<Vec3> omega;          ///< world-frame angular velocity, rad/s
   std::vector<Vec3> omega_dot;      ///< world-frame angular acceleration, rad/s^2
@@ -46,6 +59,24 @@ struct Particles {
   std::vector<Vec3> torque;         ///< world-frame torque of the last evaluation, N m
   std::vector<std::int64_t> id;     ///< stable identity (0, 1, ... in creation order; never reused)
   std::int64_t next_id = 0;         ///< the id the next new particle gets
+  ParticleLayout layout;            ///< the optional groups held
+
+  /// Holds the groups 'l' names and frees the others. A group taken up anew gets the values a
+  /// new particle gets (resize), except the inertia: that of a solid sphere, 2/5 m R^2, which is
+  /// what every particle a layout can drop the rotation of has (setup/model.cpp).
+  void set_layout(ParticleLayout l) {
+    const std::size_t n = size();
+    const ParticleLayout was = layout;
+    if (was.rotation && !l.rotation) release(orientation, omega, omega_dot, inertia, inv_inertia, torque);
+    if (was.plastic_strain && !l.plastic_strain) release(peeq, peeq_rate, window_normal, window_shear);
+    layout = l;
+    resize(n);
+    if (!was.rotation && l.rotation)
+      for (std::size_t i = 0; i < n; ++i) {
+        inertia[i] = Vec3::Constant(0.4 * mass[i] * radius[i] * radius[i]);
+        inv_inertia[i] = inertia[i][0] > 0.0 ? 1.0 / inertia[i][0] : 0.0;
+      }
+  }
 
   std::size_t size() const { return position.size(); }
 
@@ -64,16 +95,22 @@ struct Particles {
     f("prescribed", prescribed);
     f("group", group);
     f("temperature", temperature);
-    f("peeq", peeq);
-    f("peeq_rate", peeq_rate);
-    f("window_normal", window_normal);
-    f("window_shear", window_shear);
-    f("orientation", orientation);
-    f("omega", omega);
-    f("omega_dot", omega_dot);
-    f("inertia", inertia);
-    f("inv_inertia", inv_inertia);
-    f("torque", torque);
+    if (layout.plastic_strain) {
+      f("peeq", peeq);
+      f("peeq_rate", peeq_rate);
+    }
+    if (layout.plastic_strain) {
+      f("window_normal", window_normal);
+      f("window_shear", window_shear);
+    }
+    if (layout.rotation) {
+      f("orientation", orientation);
+      f("omega", omega);
+      f("omega_dot", omega_dot);
+      f("inertia", inertia);
+      f("inv_inertia", inv_inertia);
+      f("torque", torque);
+    }
     f("id", id);
   }
 
@@ -90,19 +127,29 @@ struct Particles {
     prescribed.resize(n, 0);
     group.resize(n, -1);
     temperature.resize(n, 0.0);
-    peeq.resize(n, 0.0);
-    peeq_rate.resize(n, 0.0);
-    window_normal.resize(n, Vec3::Zero());
-    window_shear.resize(n, Vec3::Zero());
-    orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));
-    omega.resize(n, Vec3::Zero());
-    omega_dot.resize(n, Vec3::Zero());
-    inertia.resize(n, Vec3::Zero());
-    inv_inertia.resize(n, 0.0);
-    torque.resize(n, Vec3::Zero());
+    if (layout.plastic_strain) {
+      peeq.resize(n, 0.0);
+      peeq_rate.resize(n, 0.0);
+      window_normal.resize(n, Vec3::Zero());
+      window_shear.resize(n, Vec3::Zero());
+    }
+    if (layout.rotation) {
+      orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));
+      omega.resize(n, Vec3::Zero());
+      omega_dot.resize(n, Vec3::Zero());
+      inertia.resize(n, Vec3::Zero());
+      inv_inertia.resize(n, 0.0);
+      torque.resize(n, Vec3::Zero());
+    }
     if (id.size() < n) id.reserve(n);  // (not one by one: that could leave twice the room)
     while (id.size() < n) id.push_back(next_id++);
     id.resize(n);
+  }
+
+ private:
+  template <class... V>
+  static void release(V&... v) {
+    ((v = {}), ...);  // (clear() would keep the memory)
   }
 };
 

@@ -16,8 +16,8 @@ constexpr double kWellDetermined = 0.01;
 
 void PlasticStrainSystem::setup(World& w, int window) {
   window_ = window > 0 ? window : 0;
-  auto& p = w.particles;
-  if (p.peeq.size() != p.size()) p.resize(p.size());  // (a World built before the fields: zeros)
+  // (its arrays are held only while it runs: 72 B per particle)
+  w.particles.set_layout(ParticleLayout{.rotation = w.particles.layout.rotation, .plastic_strain = enabled()});
 }
 
 void PlasticStrainSystem::accumulate(World& w, const RodSystem::WorkList& flowed, double h) {
