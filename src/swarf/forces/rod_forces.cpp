@@ -41,8 +41,8 @@ void rod_block(const Law& law, double A, std::size_t begin, std::size_t end, con
   // In chunks, three passes: the rods' vectors (scalar gathers), their lengths, inverse lengths
   // and inverse rest lengths (a loop of square roots and divisions the compiler vectorises: in
   // one loop with the law, their latency bound the kernel), then the law. The same values, bit
-  // for bit. (1/L0 is computed, not stored: 8 B per rod less, and the vector division is cheaper
-  // than the memory stream it replaces.)
+  // for bit. (1/L0 is computed, not stored: 8 B per rod less, for a small cost on one thread and
+  // none measurable on two, validation/bench/README.md.)
   //
   // A law that scales its flow stresses (ScalesFlow) has a fourth pass before the law's: the
   // velocity differences and end temperatures are gathered with the vectors, and the rates and

@@ -98,8 +98,6 @@ struct Particles {
     if (layout.plastic_strain) {
       f("peeq", peeq);
       f("peeq_rate", peeq_rate);
-    }
-    if (layout.plastic_strain) {
       f("window_normal", window_normal);
       f("window_shear", window_shear);
     }
