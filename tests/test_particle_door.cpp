@@ -263,7 +263,8 @@ namespace swarf {
 namespace {
 
 // A bonded bar without contacts cannot turn its particles: its World holds no rotation arrays
-// (136 B per particle) and none of the plastic strain's (72 B) unless an output needs them, and
+// (136 B per particle), none of the plastic strain's (72 B) unless an output needs them and no
+// temperature without heat (8 B), and
 // steps to the same bits as with them held. Turning rotations on afterwards takes the arrays up
 // with a solid sphere's inertia, as the build gives it.
 TEST(ParticleLayout, ABarThatCannotTurnHoldsNoRotationArraysAndStepsToTheSameBits) {
@@ -276,6 +277,8 @@ TEST(ParticleLayout, ABarThatCannotTurnHoldsNoRotationArraysAndStepsToTheSameBit
   EXPECT_FALSE(pl.layout.plastic_strain);
   EXPECT_TRUE(pl.omega.empty() && pl.inertia.empty() && pl.orientation.empty() && pl.torque.empty());
   EXPECT_TRUE(pl.peeq.empty() && pl.window_normal.empty());
+  EXPECT_FALSE(pl.layout.temperature);  // (no [heat] in either)
+  EXPECT_TRUE(pl.temperature.empty());
   ASSERT_TRUE(pf.layout.rotation && pf.layout.plastic_strain);
   ASSERT_EQ(pf.omega.size(), pf.size());
   for (int s = 0; s < 400; ++s) {

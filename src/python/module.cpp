@@ -273,7 +273,7 @@ PYBIND11_MODULE(_swarf, m) {
           "(n,) bitmask of prescribed components (1 x, 2 y, 4 z)")
       .def_property_readonly(
           "temperature", [](py::object s) { return scalars(s.cast<ParticlesView&>().p().temperature, s, false); },
-          "(n,) K, read-only ([heat]; 0 without heat)")
+          "(n,) K, read-only ([heat]; (0,) without heat)")
       .def_property_readonly(
           "stress",
           [](const ParticlesView& v) {

@@ -30,7 +30,7 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
   // The optional arrays only where the run will hold them (Simulation::Simulation decides and
   // takes up or frees a group itself; deciding here too spares the build their memory): the
   // rotation arrays where particles can turn or their spins were given, the plastic strain's
-  // where an output field needs it.
+  // where an output field needs it, the temperature with heat.
   bool rigid_body = false;
   for (const auto& m : cs.meshes) rigid_body = rigid_body || m.dynamics == "rigid_body";
   bool spin = false;
@@ -38,6 +38,7 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
   p.layout.rotation = cs.contact.enabled || rigid_body || spin || !cs.inflows.empty() || !cs.outflows.empty() ||
                       cs.output.orientations;
   p.layout.plastic_strain = needs_plastic_strain_window(cs.output.fields);
+  p.layout.temperature = cs.heat.present && cs.heat.enabled;
   p.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     p.position[i] = lat.position[i];

@@ -38,7 +38,9 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   // (torques), bodies and flows (their particles' and new particles' spins), orientation output.
   const bool turns = ms_.rotations || m_.contacts || !m_.bodies.empty() || !m_.inflows.empty() ||
                      !m_.outflows.empty() || set_.sphere_orientations;
-  m_.particles.set_layout(ParticleLayout{.rotation = turns, .plastic_strain = m_.particles.layout.plastic_strain});
+  ParticleLayout layout = m_.particles.layout;
+  layout.rotation = turns;
+  m_.particles.set_layout(layout);
   sys_.plastic.setup(m_, set_.plastic_strain_window);
   // Forces of the initial state (nothing committed: the first step re-evaluates them).
   Integration it = integration();
@@ -73,7 +75,9 @@ void Simulation::set_rotations(bool on) {
   ms_.rotations = on;
   if (!on) return;
   if (!m_.particles.layout.rotation) {
-    m_.particles.set_layout(ParticleLayout{.rotation = true, .plastic_strain = m_.particles.layout.plastic_strain});
+    ParticleLayout layout = m_.particles.layout;
+    layout.rotation = true;
+    m_.particles.set_layout(layout);
     resize_scratch();
   }
   integrate::update_free_to_rotate(m_, ms_);

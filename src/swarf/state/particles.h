@@ -19,12 +19,14 @@ namespace swarf {
 
 /// Which optional groups of per-particle arrays a Particles holds. A run whose particles never
 /// turn (no contacts, bodies, flows or orientation output) holds no rotation arrays (136 B per
-/// particle), one without the accumulated plastic strain none of its arrays (72 B); the
-/// Simulation decides (Simulation::Simulation, PlasticStrainSystem::setup). Every Particles that
-/// takes another's records (domains/records.h) takes its layout first.
+/// particle), one without the accumulated plastic strain none of its arrays (72 B), one without
+/// heat no temperature (8 B); the Simulation decides (Simulation::Simulation,
+/// PlasticStrainSystem::setup, ThermalSystem::setup). Every Particles that takes another's
+/// records (domains/records.h) takes its layout first.
 struct ParticleLayout {
   bool rotation = true;        ///< orientation, omega, omega_dot, inertia, inv_inertia, torque
   bool plastic_strain = true;  ///< peeq, peeq_rate, window_normal, window_shear
+  bool temperature = true;     ///< temperature
   bool operator==(const ParticleLayout&) const = default;
 };
 
@@ -39,7 +41,7 @@ struct Particles {
   std::vector<double> radius;            ///< m
   std::vector<std::uint8_t> prescribed;  ///< bitmask of prescribed components (1=x, 2=y, 4=z)
   std::vector<std::int32_t> group;       ///< index of the particle's group, -1 if none
-  std::vector<double> temperature;       ///< K; 0 = not given one yet (ThermalSystem sets it; stays 0 without heat)
+  std::vector<double> temperature;       ///< K; 0 = not given one yet (ThermalSystem sets it); held only with heat
   // Accumulated plastic strain (systems/plastic_strain_system.h): PEEQ, its rate over the last
   // window and the window's sum of the rods' plastic increments, g (x) de_p (g the normal-strain
   // row of the rod's direction: xx, yy, zz parts in 'normal', 2xy, 2yz, 2xz in 'shear').
@@ -69,6 +71,7 @@ struct Particles {
     const ParticleLayout was = layout;
     if (was.rotation && !l.rotation) release(orientation, omega, omega_dot, inertia, inv_inertia, torque);
     if (was.plastic_strain && !l.plastic_strain) release(peeq, peeq_rate, window_normal, window_shear);
+    if (was.temperature && !l.temperature) release(temperature);
     layout = l;
     resize(n);
     if (!was.rotation && l.rotation)
@@ -94,7 +97,7 @@ struct Particles {
     f("radius", radius);
     f("prescribed", prescribed);
     f("group", group);
-    f("temperature", temperature);
+    if (layout.temperature) f("temperature", temperature);
     if (layout.plastic_strain) {
       f("peeq", peeq);
       f("peeq_rate", peeq_rate);
@@ -124,7 +127,7 @@ struct Particles {
     radius.resize(n, 0.0);
     prescribed.resize(n, 0);
     group.resize(n, -1);
-    temperature.resize(n, 0.0);
+    if (layout.temperature) temperature.resize(n, 0.0);
     if (layout.plastic_strain) {
       peeq.resize(n, 0.0);
       peeq_rate.resize(n, 0.0);

@@ -17,7 +17,9 @@ constexpr double kWellDetermined = 0.01;
 void PlasticStrainSystem::setup(World& w, int window) {
   window_ = window > 0 ? window : 0;
   // (its arrays are held only while it runs: 72 B per particle)
-  w.particles.set_layout(ParticleLayout{.rotation = w.particles.layout.rotation, .plastic_strain = enabled()});
+  ParticleLayout layout = w.particles.layout;
+  layout.plastic_strain = enabled();
+  w.particles.set_layout(layout);
 }
 
 void PlasticStrainSystem::accumulate(World& w, const RodSystem::WorkList& flowed, double h) {

@@ -25,6 +25,11 @@ void assign(std::vector<double>& v, std::size_t n) { v.assign(n, 0.0); }
 void ThermalSystem::setup(World& w) {
   const HeatParams& hp = w.heat;
   enabled_ = hp.enabled;
+  // (the temperature array only with heat: 8 B per particle; without it the rods' and contacts'
+  // kernels take their temperature-free paths, which a World of 0 K gave them bit for bit)
+  ParticleLayout layout = w.particles.layout;
+  layout.temperature = enabled_;
+  w.particles.set_layout(layout);
   if (!enabled_) return;
   auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
   if (!positive(hp.heat_capacity) || !positive(hp.conductivity))
