@@ -48,10 +48,7 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
     const double s = lat.radius[i] / d.radius;
     p.mass[i] = d.particle_mass * s * s * s;
     p.inv_mass[i] = 1.0 / p.mass[i];
-    if (p.layout.rotation) {
-      p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
-      p.inv_inertia[i] = 1.0 / p.inertia[i][0];
-    }
+    if (p.layout.rotation) p.set_sphere_inertia(i);
   }
   for (std::size_t k = 0; k < free_velocity.size(); ++k) {
     const std::size_t i = model.lattice_particles + k;
@@ -60,8 +57,7 @@ void fill_particles(const CaseSettings& cs, const Lattice& lat, const std::vecto
     p.inv_mass[i] = 1.0 / p.mass[i];
     p.velocity[i] = free_velocity[k];
     if (!p.layout.rotation) continue;
-    p.inertia[i] = Vec3::Constant(0.4 * p.mass[i] * p.radius[i] * p.radius[i]);
-    p.inv_inertia[i] = 1.0 / p.inertia[i][0];
+    p.set_sphere_inertia(i);
     p.omega[i] = free_spin[k];  // world = body frame at the start (identity orientation)
   }
 }

@@ -27,7 +27,6 @@ struct ParticleLayout {
   bool rotation = true;        ///< orientation, omega, omega_dot, inertia, inv_inertia, torque
   bool plastic_strain = true;  ///< peeq, peeq_rate, window_normal, window_shear
   bool temperature = true;     ///< temperature
-  bool operator==(const ParticleLayout&) const = default;
 };
 
 struct Particles {
@@ -75,10 +74,13 @@ struct Particles {
     layout = l;
     resize(n);
     if (!was.rotation && l.rotation)
-      for (std::size_t i = 0; i < n; ++i) {
-        inertia[i] = Vec3::Constant(0.4 * mass[i] * radius[i] * radius[i]);
-        inv_inertia[i] = inertia[i][0] > 0.0 ? 1.0 / inertia[i][0] : 0.0;
-      }
+      for (std::size_t i = 0; i < n; ++i) set_sphere_inertia(i);
+  }
+
+  /// Particle i's inertia as a solid sphere's, 2/5 m R^2, from its mass and radius.
+  void set_sphere_inertia(std::size_t i) {
+    inertia[i] = Vec3::Constant(0.4 * mass[i] * radius[i] * radius[i]);
+    inv_inertia[i] = inertia[i][0] > 0.0 ? 1.0 / inertia[i][0] : 0.0;
   }
 
   std::size_t size() const { return position.size(); }

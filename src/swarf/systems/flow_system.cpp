@@ -124,8 +124,7 @@ Particles FlowSystem::inflow(World& m_, double h, EnergyLedger& ledger) {
         add.radius[k] = r;
         add.mass[k] = m;
         add.inv_mass[k] = 1.0 / m;
-        add.inertia[k] = Vec3::Constant(0.4 * m * r * r);
-        add.inv_inertia[k] = 1.0 / add.inertia[k][0];
+        add.set_sphere_inertia(k);
         ledger.flow_energy -= 0.5 * m * f.velocity.squaredNorm();
         ledger.flow_through += 0.5 * m * f.velocity.squaredNorm();
         ++f.created;
