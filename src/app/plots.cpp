@@ -13,6 +13,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "app/threads.h"
+
 extern char** environ;
 
 namespace swarf {
@@ -47,6 +49,7 @@ ScriptRun run_postprocess_script(const std::string& name, const std::vector<std:
   posix_spawn_file_actions_adddup2(&fa, fd[1], 2);
   posix_spawn_file_actions_addclose(&fa, fd[1]);
   pid_t pid = 0;
+  const CallingThreadUnpinned unpinned;  // (the plots' process gets the run's CPUs, not thread 0's one)
   const int rc = posix_spawnp(&pid, argv[0].c_str(), &fa, nullptr, cargv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
   ::close(fd[1]);

@@ -22,13 +22,20 @@ struct AllowedCpus {
   std::vector<int> cpus;
   bool whole_machine = false;
 };
-AllowedCpus allowed_cpus() {
-  AllowedCpus a;
-  cpu_set_t allowed;
-  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return a;
-  for (int c = 0; c < CPU_SETSIZE; ++c)
-    if (CPU_ISSET(c, &allowed)) a.cpus.push_back(c);
-  a.whole_machine = static_cast<long>(a.cpus.size()) >= sysconf(_SC_NPROCESSORS_ONLN);
+// Read once, at the first call (set_threads makes it before it pins): sched_getaffinity(0)
+// reads the calling thread's mask, and pinning makes the main thread OpenMP's thread 0 on one
+// CPU, after which it would report a one-CPU process (the false "threads share 1 CPU" warning
+// of every pinned run) and hand that one CPU to every process the run starts.
+const AllowedCpus& allowed_cpus() {
+  static const AllowedCpus a = [] {
+    AllowedCpus r;
+    cpu_set_t allowed;
+    if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return r;
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &allowed)) r.cpus.push_back(c);
+    r.whole_machine = static_cast<long>(r.cpus.size()) >= sysconf(_SC_NPROCESSORS_ONLN);
+    return r;
+  }();
   return a;
 }
 
@@ -43,7 +50,7 @@ AllowedCpus allowed_cpus() {
 void pin_threads(int threads, int local_rank, int local_size) {
   if (threads < 2 || std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("GOMP_CPU_AFFINITY"))
     return;
-  const AllowedCpus allowed = allowed_cpus();
+  const AllowedCpus& allowed = allowed_cpus();
   const std::vector<int>& cpus = allowed.cpus;
   if (static_cast<int>(cpus.size()) < threads) return;
   int first = 0;
@@ -69,8 +76,21 @@ int set_threads(int n, int local_rank, int local_size) {
   return used;
 }
 
+CallingThreadUnpinned::CallingThreadUnpinned() {
+  const AllowedCpus& a = allowed_cpus();
+  if (a.cpus.empty() || pthread_getaffinity_np(pthread_self(), sizeof saved_, &saved_) != 0) return;
+  cpu_set_t all;
+  CPU_ZERO(&all);
+  for (int c : a.cpus) CPU_SET(c, &all);
+  restore_ = pthread_setaffinity_np(pthread_self(), sizeof all, &all) == 0;  // (on failure it stays where it is)
+}
+
+CallingThreadUnpinned::~CallingThreadUnpinned() {
+  if (restore_) pthread_setaffinity_np(pthread_self(), sizeof saved_, &saved_);
+}
+
 std::string thread_placement_warning(int threads) {
-  const AllowedCpus a = allowed_cpus();
+  const AllowedCpus& a = allowed_cpus();
   const int cpus = static_cast<int>(a.cpus.size());
   if (a.cpus.empty() || threads <= cpus) return "";
   return fmt::format(
@@ -81,7 +101,7 @@ std::string thread_placement_warning(int threads) {
 }
 
 int threads_per_rank(int local_size) {
-  const AllowedCpus a = allowed_cpus();
+  const AllowedCpus& a = allowed_cpus();
   const int cpus = a.cpus.empty() ? omp_get_num_procs() : static_cast<int>(a.cpus.size());
   return std::max(1, a.whole_machine || a.cpus.empty() ? cpus / std::max(1, local_size) : cpus);
 }

@@ -1,6 +1,8 @@
 // threads.h: the OpenMP thread count of a run (and where its threads run).
 #pragma once
 
+#include <sched.h>
+
 #include <string>
 
 namespace swarf {
@@ -9,6 +11,20 @@ namespace swarf {
 /// CPUs when that helps (threads.cpp says when). 'local_rank' of 'local_size': this process's
 /// place among the MPI ranks of one run on its machine (their threads must not share CPUs).
 int set_threads(int n, int local_rank = 0, int local_size = 1);
+/// While it lives, the calling thread may run on every CPU the process could run on at its
+/// start: set_threads pins the main thread (OpenMP's thread 0) to one CPU, and a process it
+/// starts (the plots' Python) would inherit that one CPU. Restores the pinning when it goes.
+class CallingThreadUnpinned {
+ public:
+  CallingThreadUnpinned();
+  ~CallingThreadUnpinned();
+  CallingThreadUnpinned(const CallingThreadUnpinned&) = delete;
+  CallingThreadUnpinned& operator=(const CallingThreadUnpinned&) = delete;
+
+ private:
+  cpu_set_t saved_;
+  bool restore_ = false;
+};
 /// "" if 'threads' threads each have a CPU of their own; otherwise a warning that they share the
 /// fewer CPUs this process may run on (mpirun binds each rank to one core unless told
 /// otherwise: two threads of one rank then run at the speed of one), with the remedy.
