@@ -23,7 +23,7 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
   const std::vector<MeshBody>& meshes = *meshes_;
 #pragma omp parallel
   {
-#pragma omp for schedule(static) nowait
+#pragma omp for schedule(dynamic, 256) nowait
     for (std::size_t q = 0; q < np; ++q) {
       if (!ptouch_[q]) continue;
       const std::int32_t i = pairs_[q].i, j = pairs_[q].j;
@@ -68,7 +68,7 @@ void ContactSystem::heat(const Particles& p, const HeatInput& in, HeatOutput& ou
   }
   const double* Tm = in.mesh_temperature;
   const double to_mesh = in.mesh_share, to_particle = 1.0 - in.mesh_share;  // (0.5 and 0.5 exactly by default)
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     double f = 0.0, flux = 0.0, g = 0.0;
     const double Ti = T ? T[i] : 0.0;

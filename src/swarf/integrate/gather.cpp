@@ -1,6 +1,8 @@
 // gather.cpp: the gather stage: each particle's rod and contact forces summed in a
 // fixed order, the accelerations, the convergence measure of the Newmark sweeps, and the
 // explicit scheme's corrector fused with it (see integration.h).
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +14,36 @@ namespace swarf::integrate {
 namespace {
 constexpr double kForceFloorStrain = 1e-8;  // see gather_impl
 enum class GatherMode { Plain, Measure, Kick };
+
+// Moves the gather's block boundaries so that each thread's predicted time is the same: a
+// thread's blocks are taken to cost its measured time over their number each, and the
+// boundaries go halfway to where that cost profile splits evenly (halfway: one step's timing
+// is noisy, and a full move could swing back and forth). Only which thread sums which block
+// changes, never a result.
+void rebalance_gather(std::vector<std::size_t>& split, const std::vector<double>& seconds) {
+  const std::size_t nt = seconds.size(), nb = split.back();
+  double total = 0.0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (!(seconds[t] >= 0.0) || !std::isfinite(seconds[t])) return;
+    total += seconds[t];
+  }
+  if (!(total > 0.0)) return;
+  std::vector<std::size_t> next(split);
+  std::size_t t = 0;
+  double before = 0.0;  // the predicted time of the blocks before split[t]
+  for (std::size_t k = 1; k < nt; ++k) {
+    const double target = total * static_cast<double>(k) / static_cast<double>(nt);
+    while (t < nt && before + seconds[t] < target) before += seconds[t++];
+    if (t >= nt) break;
+    const std::size_t blocks = split[t + 1] - split[t];
+    const double per_block = blocks > 0 ? seconds[t] / static_cast<double>(blocks) : 0.0;
+    const double x = per_block > 0.0 ? static_cast<double>(split[t]) + (target - before) / per_block
+                                     : static_cast<double>(split[t]);
+    const double moved = 0.5 * (static_cast<double>(split[k]) + std::min(x, static_cast<double>(nb)));
+    next[k] = std::clamp(static_cast<std::size_t>(std::lround(moved)), next[k - 1], nb);
+  }
+  split = next;
+}
 
 // The particles' part of the sweep's convergence measure, for the bodies' part.
 SweepMeasure sweep_measure(const Integration& it) {
@@ -135,15 +167,46 @@ double gather_impl(Integration& it, double h) {
     }
     if constexpr (Kick) ms.block_power[b] = power;
   };
-  // Static, as the passes that move the particles and the pair loop: each thread finds its
-  // particles' data in its own core's cache (dynamic blocks were slower: validation/bench/README.md).
-#pragma omp parallel for schedule(static) reduction(max : dmax, fmax, damax)
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (contacts)
-      block.template operator()<true>(b, dmax, fmax, damax);
-    else
-      block.template operator()<false>(b, dmax, fmax, damax);
+  // Contiguous ranges of blocks per thread, as the passes that move the particles: each thread
+  // finds its particles' data in its own core's cache (dynamic blocks were slower:
+  // validation/bench/README.md). Equal ranges are not equal work in a cut (the chip's particles,
+  // their rods' other ends scattered by the exchange and their contacts, sit in one thread's
+  // range), so the ranges follow the threads' measured times.
+  const std::size_t nt = static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  std::vector<std::size_t>& split = ms.gather_split;
+  if (split.size() != nt + 1 || split.back() != nb) {
+    split.resize(nt + 1);
+    for (std::size_t t = 0; t <= nt; ++t) split[t] = nb * t / nt;
+    ms.gather_seconds.assign(nt, 0.0);
   }
+  bool whole_team = true;
+#pragma omp parallel num_threads(static_cast <int>(nt)) reduction(max : dmax, fmax, damax)
+  {
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    if (static_cast<std::size_t>(omp_get_num_threads()) != nt) {
+#pragma omp single
+      whole_team = false;  // (fewer threads than asked: the ranges below would miss blocks)
+    }
+    if (whole_team) {
+      const double t0 = omp_get_wtime();
+      for (std::size_t b = split[t]; b < split[t + 1]; ++b) {
+        if (contacts)
+          block.template operator()<true>(b, dmax, fmax, damax);
+        else
+          block.template operator()<false>(b, dmax, fmax, damax);
+      }
+      ms.gather_seconds[t] = omp_get_wtime() - t0;
+    } else {
+#pragma omp for schedule(static)
+      for (std::size_t b = 0; b < nb; ++b) {
+        if (contacts)
+          block.template operator()<true>(b, dmax, fmax, damax);
+        else
+          block.template operator()<false>(b, dmax, fmax, damax);
+      }
+    }
+  }
+  if (whole_team && nt > 1) rebalance_gather(split, ms.gather_seconds);
   if constexpr (Measure) ms.sweep_force_level2 = fmax;  // (the bodies' measure compares with it)
   if constexpr (Kick) {
     ms.kick_power = 0.0;

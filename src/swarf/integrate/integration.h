@@ -62,15 +62,19 @@ struct MotionState {
   double contact_power_old = 0;     ///< power of the contact forces at the start of the step, W
   double kick_power = 0;            ///< power of the contact forces on the particles after the kick, W
   std::vector<double> block_power;  ///< its parts per block of particles, W
-  double sweep_force_level2 = 0;    ///< the particles' force level of the last sweep squared, N^2
-  double sweep_dt = 0;              ///< step size of the current sweep, s
-  double step_disp2 = 0;            ///< largest squared displacement of the step so far, m^2
-  double moved2 = -1.0;             ///< largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
-  bool rebuild_lists = false;       ///< rebuild the contact lists at the next evaluation (after an append)
-  bool mesh_rejected = false;       ///< the last implicit try was rejected because a mesh moved too far
-  RodSystem::WorkList rod_work;     ///< commit's scratch: the rods that flowed (the heat's and PEEQ's sources)
-  NewtonWork newton;                ///< the Newton solve's work arrays
-  NewtonStats newton_stats;         ///< and its counters
+  /// The gather's threads' blocks: thread t takes blocks [gather_split[t], gather_split[t+1]),
+  /// balanced by their measured times (gather.cpp; the results do not depend on it).
+  std::vector<std::size_t> gather_split;
+  std::vector<double> gather_seconds;  ///< each thread's time in the last gather, s
+  double sweep_force_level2 = 0;       ///< the particles' force level of the last sweep squared, N^2
+  double sweep_dt = 0;                 ///< step size of the current sweep, s
+  double step_disp2 = 0;               ///< largest squared displacement of the step so far, m^2
+  double moved2 = -1.0;          ///< largest squared displacement since the contact lists' build, m^2 (< 0: unknown)
+  bool rebuild_lists = false;    ///< rebuild the contact lists at the next evaluation (after an append)
+  bool mesh_rejected = false;    ///< the last implicit try was rejected because a mesh moved too far
+  RodSystem::WorkList rod_work;  ///< commit's scratch: the rods that flowed (the heat's and PEEQ's sources)
+  NewtonWork newton;             ///< the Newton solve's work arrays
+  NewtonStats newton_stats;      ///< and its counters
 };
 
 /// What an integrator works on in one step: built by the Simulation for every step.
