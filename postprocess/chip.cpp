@@ -124,11 +124,13 @@ ChipMetrics measure_chip(const ChipInput& in) {
     m.members.push_back(i);
     const Vec3 rel = x - in.tool_tip;
     const double along = rel.dot(up);
+    m.head = std::max(m.head, along);
     if (along < 2.0 * in.depth_of_cut || along >= section_end) continue;  // edge region, or curled away
     dist.push_back(rel.dot(normal));
   }
   m.measured_particles = dist.size();
   if (dist.size() < 10 || !(in.depth_of_cut > 0)) return m;
+  if (m.head < section_end + 0.5 * in.depth_of_cut) return m;  // the head still crosses the section (chip.h)
   m.thickness = quantile(dist, 0.98) - quantile(dist, 0.02) + 2.0 * in.radius;
   m.compression_ratio = in.depth_of_cut / m.thickness;
   m.shear_angle_deg = shear_angle_deg(m.compression_ratio, in.rake_angle_deg);

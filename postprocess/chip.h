@@ -9,7 +9,11 @@
 // chip that lies on the face: from 2 to 3 depths of cut from the tip along the face, and not
 // past the face's end (past the edge region, before the chip curls away from the face; the chip beyond, lifted off the
 // face by its curl, made the spread grow with the length of the chip: 0.66 to 1.37 mm over the second half of the
-// default cut, against 0.65 to 0.79 mm in the section). Then, with h the depth of cut (uncut chip thickness) and gamma
+// default cut, against 0.65 to 0.79 mm in the section). A state is measured only once the chip's head (its particle
+// farthest along the face) lies at least h/2 past the section's end: while the head crosses the section it holds only
+// part of the chip's thickness (the default cut's section read 0.23, 0.27, 0.31 mm at 1.0, 1.2, 1.4 mm of travel, its
+// head 0.47, 0.55, 0.62 mm along the face, and 0.326-0.332 mm once the head was 0.1 mm and more past 0.6 mm), and
+// these rows made the steady median 3 % thin. Then, with h the depth of cut (uncut chip thickness) and gamma
 // the rake angle:
 //   compression ratio r = h / h_c,  shear angle phi: tan(phi) = r cos(gamma) / (1 - r sin(gamma)),
 //   friction angle beta = gamma + atan(Ft / Fc),  Merchant: phi_M = 45 deg + gamma/2 - beta/2.
@@ -67,6 +71,7 @@ struct ChipInput {
 struct ChipMetrics {
   std::size_t chip_particles = 0;      ///< particles above the uncut surface
   std::size_t measured_particles = 0;  ///< of these, those in the measured section
+  double head = 0;                     ///< the chip's reach: its farthest particle along the face from the tip, m
   double thickness = 0;                ///< h_c, m (0 if too few particles)
   double compression_ratio = 0;        ///< r = h / h_c, 1
   double shear_angle_deg = 0;          ///< from r and the rake angle, deg

@@ -54,6 +54,33 @@ TEST(Chip, SyntheticChipOfKnownThickness) {
   EXPECT_NEAR(m.shear_angle_deg, shear_angle_deg(h / m.thickness, gamma), 1e-12);
 }
 
+// A chip whose head still crosses the section (2 h to 3 h up the face) holds only part of its
+// thickness there (a rounded head: here a slab whose outer layers end 2 h short of its inner
+// ones, so the section sees the inner half of the chip until the head is 2 h past it); the measure
+// waits until the head is h/2 past the section's end: 0 before, the chip's thickness after.
+TEST(Chip, AChipWhoseHeadStillCrossesTheSectionIsNotMeasured) {
+  const double R = 1e-5, h = 2e-4, hc = 5e-4, gamma = 10.0;
+  const Vec3 up = face_up(gamma), normal = face_normal(gamma);
+  auto chip_to = [&](double head) {
+    ChipInput in = cut_of(R, h, gamma);
+    for (double s = 0; s <= head + 1e-12; s += R)
+      for (double t = R; t <= hc - R + 1e-12; t += (hc - 2 * R) / 20)
+        if (t < 0.5 * hc || s <= head - 2 * h) in.position.push_back(in.tool_tip + s * up + t * normal);
+    return in;
+  };
+  const ChipMetrics crossing = measure_chip(chip_to(3.4 * h));
+  EXPECT_GT(crossing.measured_particles, 100u);
+  EXPECT_NEAR(crossing.head, 3.4 * h, 1e-12);
+  EXPECT_EQ(crossing.thickness, 0.0) << "the head is 0.4 h past the section";
+  EXPECT_EQ(crossing.compression_ratio, 0.0);
+  // (the inner half only: what the measure would have read)
+  const ChipMetrics past = measure_chip(chip_to(3.6 * h));
+  EXPECT_GT(past.thickness, 0.0) << "the head is 0.6 h past the section";
+  EXPECT_LT(past.thickness, 0.8 * hc) << "still the inner part: the head's outer layers end 2 h behind it";
+  const ChipMetrics whole = measure_chip(chip_to(5.1 * h));
+  EXPECT_NEAR(whole.thickness, hc, 0.05 * hc);  // as the straight slab above
+}
+
 // A chip of thickness hc on the rake face of cut_of(R, h, gamma): a grid of centres a radius inside
 // both free surfaces (21 layers across, R apart along the centre line), straight on the face for
 // 'flat' from the tip, then curling away from it through 'arc' rad, its centre line on a circle of
