@@ -20,6 +20,9 @@
 #include "swarf/version.h"
 
 namespace swarf {
+namespace {
+constexpr std::size_t kFieldStrip = 65536;  // particles per strip of a results.h5 field (3 MB of tensors)
+}  // namespace
 
 nlohmann::json number(double v) {
   if (std::isfinite(v)) return v;
@@ -143,9 +146,13 @@ void write_results_h5(const std::string& path, const Simulation& sim, const std:
       const bool chosen = field->choice == FieldChoice::Always || field->results_always ||
                           has_field(fields, field->name);
       if (!chosen || (field->results_with_heat && !sim.world().heat.enabled)) continue;
-      const std::vector<double> v = compute_output_field(*field, in);
-      put("/particles/" + std::string(field->name), n ? v.data() : nullptr, n,
-          static_cast<std::size_t>(field->components), std::string(field->unit), std::string(field->description));
+      // (in strips: a whole field's copy was up to 48 B per particle on top of the run's state)
+      const std::string name = "/particles/" + std::string(field->name);
+      f.write_strips(name, n, static_cast<std::size_t>(field->components), kFieldStrip,
+                     [&](std::size_t b, std::size_t e, std::vector<double>& v) {
+                       compute_output_field_rows(*field, in, b, e, v);
+                     });
+      f.describe(name, std::string(field->unit), std::string(field->description));
     }
     put("/particles/mass", p.mass.data(), n, 1, "kg", "particle mass");
     if (sim.settings().sphere_orientations) {

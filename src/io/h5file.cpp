@@ -77,6 +77,32 @@ void H5File::write(const std::string& name, const std::uint8_t* data, std::size_
   write_any(id_, path_, name, H5T_NATIVE_UINT8, data, rows, 1);
 }
 
+void H5File::write_strips(const std::string& name, std::size_t rows, std::size_t cols, std::size_t strip,
+                          const std::function<void(std::size_t, std::size_t, std::vector<double>&)>& fill) {
+  const hid_t file = static_cast<hid_t>(id_);
+  const int rank = cols == 1 ? 1 : 2;
+  hsize_t dims[2] = {rows, cols};
+  hid_t space = H5Screate_simple(rank, dims, nullptr);
+  hid_t lcpl = link_props();
+  hid_t set = H5Dcreate2(file, name.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t st = set < 0 ? -1 : 0;
+  std::vector<double> values;
+  strip = std::max<std::size_t>(strip, 1);
+  for (std::size_t b = 0; st >= 0 && b < rows; b += strip) {
+    const std::size_t e = std::min(rows, b + strip);
+    fill(b, e, values);
+    hsize_t start[2] = {b, 0}, count[2] = {e - b, cols};
+    hid_t memory = H5Screate_simple(rank, count, nullptr);
+    st = H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+    if (st >= 0) st = H5Dwrite(set, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, values.data());
+    H5Sclose(memory);
+  }
+  if (set >= 0) H5Dclose(set);
+  H5Pclose(lcpl);
+  H5Sclose(space);
+  if (st < 0) throw OutputError("cannot write dataset '" + name + "' to HDF5 file '" + path_ + "' (disk full?)");
+}
+
 // A fixed-length string attribute on the object 'obj'; false when HDF5 refuses it.
 static bool string_attribute(hid_t obj, const std::string& name, const std::string& value) {
   hid_t type = H5Tcopy(H5T_C_S1);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ class H5File {
   /// strips, so that no 64-bit copy of a large index array (the rods' ends) is made.
   void write(const std::string& name, const std::int32_t* data, std::size_t rows, std::size_t cols = 1);
   void write(const std::string& name, const std::uint8_t* data, std::size_t rows);
+  /// Writes a rows x cols dataset of doubles (as write()) a strip of 'strip' rows at a time:
+  /// fill(begin, end, values) puts rows [begin, end) into 'values' ((end - begin) x cols). No
+  /// copy of the whole dataset is made (a million particles' stress tensors are 48 MB).
+  void write_strips(const std::string& name, std::size_t rows, std::size_t cols, std::size_t strip,
+                    const std::function<void(std::size_t, std::size_t, std::vector<double>&)>& fill);
   /// Writes a 1-D dataset of variable-length strings (group names, ...).
   void write_strings(const std::string& name, const std::vector<std::string>& values);
   /// Gives the dataset 'name' its attributes 'unit' (SI; "1" for numbers without unit) and

@@ -15,12 +15,14 @@
 namespace swarf {
 namespace {
 
-void copy_vectors(const std::vector<Vec3>& v, std::vector<double>& out) {
-  for (std::size_t i = 0; i < v.size(); ++i)
-    for (int c = 0; c < 3; ++c) out[3 * i + c] = v[i][c];
+void copy_vectors(const std::vector<Vec3>& v, std::size_t begin, std::size_t end, double* out) {
+  for (std::size_t i = begin; i < end; ++i)
+    for (int c = 0; c < 3; ++c) out[3 * (i - begin) + c] = v[i][c];
 }
 
-void copy(const std::vector<double>& v, std::vector<double>& out) { std::copy(v.begin(), v.end(), out.begin()); }
+void copy(const std::vector<double>& v, std::size_t begin, std::size_t end, double* out) {
+  std::copy(v.begin() + static_cast<std::ptrdiff_t>(begin), v.begin() + static_cast<std::ptrdiff_t>(end), out);
+}
 
 // The rows. Their order is that of output.fields' allowed values and of the docs; the writers
 // write them by kind (FieldKind), in this order within a kind.
@@ -31,7 +33,8 @@ constexpr std::array kFields{
         .components = 3,
         .kind = FieldKind::Motion,
         .description = "particle velocity at the end",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy_vectors(in.particles.velocity, out); },
+        .compute = [](const FieldInput& in, std::size_t b, std::size_t e,
+                      double* out) { copy_vectors(in.particles.velocity, b, e, out); },
     },
     OutputField{
         .name = "displacement",
@@ -41,10 +44,10 @@ constexpr std::array kFields{
         .doc = "position - initial position",
         .description = "position minus initial position",
         .compute =
-            [](const FieldInput& in, std::vector<double>& out) {
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
               const Particles& p = in.particles;
-              for (std::size_t i = 0; i < p.size(); ++i)
-                for (int c = 0; c < 3; ++c) out[3 * i + c] = p.position[i][c] - p.initial_position[i][c];
+              for (std::size_t i = b; i < e; ++i)
+                for (int c = 0; c < 3; ++c) out[3 * (i - b) + c] = p.position[i][c] - p.initial_position[i][c];
             },
     },
     OutputField{
@@ -54,7 +57,8 @@ constexpr std::array kFields{
         .choice = FieldChoice::Always,
         .doc = "use it to scale glyphs (spheres)",
         .description = "particle radius",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.particles.radius, out); },
+        .compute = [](const FieldInput& in, std::size_t b, std::size_t e,
+                      double* out) { copy(in.particles.radius, b, e, out); },
     },
     OutputField{
         .name = "broken_fraction",
@@ -63,8 +67,10 @@ constexpr std::array kFields{
         .doc = "fraction of the particle's rods that are broken. It is 0 for a particle without rods. With bond "
                "formation, 1 - intact / original rods, at least 0.",
         .description = "damage: broken rods over the particle's rods at the start",
-        .compute = [](const FieldInput& in,
-                      std::vector<double>& out) { out = broken_fraction_per_particle(in.particles, in.rods); },
+        .compute =
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
+              for (std::size_t i = b; i < e; ++i) out[i - b] = broken_fraction_of(in.rods, i);
+            },
         .results_always = true,
     },
     OutputField{
@@ -78,9 +84,9 @@ constexpr std::array kFields{
         .description = "virial stress of rods and contacts over 4 sqrt(2) R^3: xx, yy, zz, xy, yz, xz; positive in "
                        "tension",
         .compute =
-            [](const FieldInput& in, std::vector<double>& out) {
-              for (std::size_t i = 0; i < in.measured->stress.size(); ++i)
-                for (int c = 0; c < 6; ++c) out[6 * i + c] = in.measured->stress[i].data()[c];
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
+              for (std::size_t i = b; i < e; ++i)
+                for (int c = 0; c < 6; ++c) out[6 * (i - b) + c] = in.measured->stress[i][c];
             },
         .measured = true,
     },
@@ -90,7 +96,10 @@ constexpr std::array kFields{
         .kind = FieldKind::Measured,
         .doc = "sqrt(3/2 s:s), s the deviator of `stress`",
         .description = "von Mises stress sqrt(3/2 s:s)",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.measured->von_mises, out); },
+        .compute =
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
+              for (std::size_t i = b; i < e; ++i) out[i - b] = von_mises(in.measured->stress[i]);
+            },
         .measured = true,
     },
     OutputField{
@@ -99,7 +108,10 @@ constexpr std::array kFields{
         .kind = FieldKind::Measured,
         .doc = "tr(`stress`)/3, positive in tension (the pressure is minus this)",
         .description = "trace of the stress over 3, positive in tension (pressure = -this)",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.measured->hydrostatic, out); },
+        .compute =
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
+              for (std::size_t i = b; i < e; ++i) out[i - b] = hydrostatic(in.measured->stress[i]);
+            },
         .measured = true,
     },
     OutputField{
@@ -109,7 +121,8 @@ constexpr std::array kFields{
         .doc = "equivalent plastic strain held by the particle's intact rods "
                "([per-particle fields](#per-particle-fields))",
         .description = "von Mises equivalent of the plastic strain tensor fitted to the particle's intact rods",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.measured->plastic_strain, out); },
+        .compute = [](const FieldInput& in, std::size_t b, std::size_t e,
+                      double* out) { copy(in.measured->plastic_strain, b, e, out); },
         .measured = true,
     },
     OutputField{
@@ -119,7 +132,8 @@ constexpr std::array kFields{
         .doc = "accumulated equivalent plastic strain, the time integral of the equivalent plastic strain rate, as "
                "FEM codes' PEEQ ([per-particle fields](#per-particle-fields))",
         .description = "accumulated equivalent plastic strain: the integral of the equivalent plastic strain rate",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.particles.peeq, out); },
+        .compute = [](const FieldInput& in, std::size_t b, std::size_t e,
+                      double* out) { copy(in.particles.peeq, b, e, out); },
         .plastic_window = true,
     },
     OutputField{
@@ -129,7 +143,8 @@ constexpr std::array kFields{
         .doc = "equivalent plastic strain rate over the last window of 32 steps "
                "([per-particle fields](#per-particle-fields))",
         .description = "equivalent plastic strain rate",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.particles.peeq_rate, out); },
+        .compute = [](const FieldInput& in, std::size_t b, std::size_t e,
+                      double* out) { copy(in.particles.peeq_rate, b, e, out); },
         .plastic_window = true,
     },
     OutputField{
@@ -138,7 +153,8 @@ constexpr std::array kFields{
         .kind = FieldKind::Heat,
         .doc = "only with `[heat]` ([physics.md section 10](physics.md#10-heat))",
         .description = "particle temperature at the end ([heat])",
-        .compute = [](const FieldInput& in, std::vector<double>& out) { copy(in.particles.temperature, out); },
+        .compute = [](const FieldInput& in, std::size_t b, std::size_t e,
+                      double* out) { copy(in.particles.temperature, b, e, out); },
         .results_with_heat = true,
     },
     OutputField{
@@ -150,11 +166,15 @@ constexpr std::array kFields{
                "formation count too)",
         .description = "coordination number: the particle's intact rods",
         .compute =
-            [](const FieldInput& in, std::vector<double>& out) {
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
               const Rods& r = in.rods;
-              for (std::size_t i = 0; i + 1 < r.row_start.size() && i < out.size(); ++i)
-                for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e)
-                  out[i] += r.intact[r.entries[e].rod] ? 1.0 : 0.0;
+              for (std::size_t i = b; i < e; ++i) {
+                double c = 0.0;
+                if (i + 1 < r.row_start.size())
+                  for (std::int32_t q = r.row_start[i]; q < r.row_start[i + 1]; ++q)
+                    c += r.intact[r.entries[q].rod] ? 1.0 : 0.0;
+                out[i - b] = c;
+              }
             },
     },
 };
@@ -196,10 +216,16 @@ std::vector<std::string> output_field_names() {
   return names;
 }
 
-std::vector<double> compute_output_field(const OutputField& f, const FieldInput& in) {
-  std::vector<double> out(in.particles.size() * static_cast<std::size_t>(f.components), 0.0);
+void compute_output_field_rows(const OutputField& f, const FieldInput& in, std::size_t begin, std::size_t end,
+                               std::vector<double>& out) {
   if (f.measured && !in.measured) throw OutputError(fmt::format("output field '{}' needs the measured fields", f.name));
-  f.compute(in, out);
+  out.assign((end - begin) * static_cast<std::size_t>(f.components), 0.0);
+  if (end > begin) f.compute(in, begin, end, out.data());
+}
+
+std::vector<double> compute_output_field(const OutputField& f, const FieldInput& in) {
+  std::vector<double> out;
+  compute_output_field_rows(f, in, 0, in.particles.size(), out);
   return out;
 }
 

@@ -51,8 +51,10 @@ struct OutputField {
   FieldChoice choice = FieldChoice::Chosen;
   std::string_view doc = {};          ///< the meaning, markdown: docs/outputs.md's table of the point arrays
   std::string_view description = {};  ///< results.h5's 'description' attribute of /particles/<name>
-  /// Writes the n x components values, row by row, into 'out' (sized for them).
-  void (*compute)(const FieldInput& in, std::vector<double>& out) = nullptr;
+  /// Writes the values of the particles [begin, end), row by row, to out[0 .. (end - begin) x
+  /// components): a writer may take the particles in strips (results.h5 does: a whole field at once
+  /// was up to 48 B per particle more at a run's last write).
+  void (*compute)(const FieldInput& in, std::size_t begin, std::size_t end, double* out) = nullptr;
   bool measured = false;           ///< needs the measured fields (particle_fields(): virial sums, plastic strain fits)
   bool plastic_window = false;     ///< needs the run to accumulate PEEQ (StepSettings::plastic_strain_window)
   bool results_always = false;     ///< results.h5 holds it whatever output.fields says (swarf post reads it)
@@ -73,6 +75,9 @@ std::vector<std::string> output_field_names();
 
 /// The values of one field for the particles now (n x components).
 std::vector<double> compute_output_field(const OutputField& f, const FieldInput& in);
+/// Those of the particles [begin, end) into 'out' (resized to (end - begin) x components).
+void compute_output_field_rows(const OutputField& f, const FieldInput& in, std::size_t begin, std::size_t end,
+                               std::vector<double>& out);
 
 /// Whether 'fields' (the names of output.fields) holds 'name'.
 bool has_field(const std::vector<std::string>& fields, std::string_view name);

@@ -164,26 +164,26 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh) {
   write_xml(w, path);
 }
 
+double broken_fraction_of(const Rods& r, std::size_t i) {
+  const int n = r.row_start[i + 1] - r.row_start[i];
+  if (n == 0) return 0.0;
+  const bool formed = r.formed.size() == r.size();
+  int broken = 0, original = 0, intact = 0;
+  for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
+    const std::int32_t k = r.entries[e].rod;
+    broken += r.intact[k] ? 0 : 1;
+    intact += r.intact[k] ? 1 : 0;
+    original += formed && r.formed[k] ? 0 : 1;
+  }
+  // With rods formed during the run (bond formation), the share of the particle's original
+  // coordination it has lost: 1 - intact / original, at least 0.
+  if (original == n) return double(broken) / n;
+  return original > 0 ? std::max(0.0, 1.0 - double(intact) / original) : 0.0;
+}
+
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r) {
   std::vector<double> out(p.size(), 0.0);
-  const bool formed = r.formed.size() == r.size();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const int n = r.row_start[i + 1] - r.row_start[i];
-    if (n == 0) continue;
-    int broken = 0, original = 0, intact = 0;
-    for (std::int32_t e = r.row_start[i]; e < r.row_start[i + 1]; ++e) {
-      const std::int32_t k = r.entries[e].rod;
-      broken += r.intact[k] ? 0 : 1;
-      intact += r.intact[k] ? 1 : 0;
-      original += formed && r.formed[k] ? 0 : 1;
-    }
-    // With rods formed during the run (bond formation), the share of the particle's original
-    // coordination it has lost: 1 - intact / original, at least 0.
-    if (original == n)
-      out[i] = double(broken) / n;
-    else
-      out[i] = original > 0 ? std::max(0.0, 1.0 - double(intact) / original) : 0.0;
-  }
+  for (std::size_t i = 0; i < p.size(); ++i) out[i] = broken_fraction_of(r, i);
   return out;
 }
 

@@ -65,5 +65,7 @@ void write_vtp(const std::string& path, const TriangleMesh& mesh);
 /// Fraction of each particle's rods that are broken (0 for a particle without rods); with rods
 /// formed during the run, the share of its original rods' count it lacks (1 - intact / original).
 std::vector<double> broken_fraction_per_particle(const Particles& p, const Rods& r);
+/// That of particle i alone (its rod list, Rods::row_start, must be current).
+double broken_fraction_of(const Rods& r, std::size_t i);
 
 }  // namespace swarf

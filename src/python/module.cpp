@@ -90,6 +90,15 @@ auto field_copy(std::vector<double> ParticleFields::*member) {
     return doubles_copy((f.*member).data(), (f.*member).size(), 1);
   };
 }
+// One scalar read off each particle's stress tensor (von_mises, hydrostatic), a copy.
+auto stress_part(double (*part)(const SymTensor&)) {
+  return [part](const ParticlesView& v) {
+    const ParticleFields f = fields_of(v);
+    std::vector<double> values(f.stress.size());
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = part(f.stress[i]);
+    return doubles_copy(values.data(), values.size(), 1);
+  };
+}
 
 // A held body coupled to an outside code (swarf/body_coupling.h); keeps its Simulation alive.
 struct CouplingView {
@@ -282,10 +291,10 @@ PYBIND11_MODULE(_swarf, m) {
           },
           "(n, 6) Pa, the particles' virial stress (xx, yy, zz, xy, yz, xz; positive in tension), computed "
           "at each access (a copy)")
-      .def_property_readonly("von_mises_stress", field_copy(&ParticleFields::von_mises),
+      .def_property_readonly("von_mises_stress", stress_part(&von_mises),
                              "(n,) Pa, von Mises stress, computed at each access (a copy)")
       .def_property_readonly(
-          "hydrostatic_stress", field_copy(&ParticleFields::hydrostatic),
+          "hydrostatic_stress", stress_part(&hydrostatic),
           "(n,) Pa, trace of the stress over 3 (positive in tension), computed at each access (a copy)")
       .def_property_readonly("plastic_strain", field_copy(&ParticleFields::plastic_strain),
                              "(n,) 1, von Mises equivalent of the plastic strain the particle's intact rods hold, "

@@ -37,10 +37,10 @@ namespace swarf {
 
 class ContactSystem;
 
+/// (The von Mises and hydrostatic parts are read off the stress where they are written, von_mises()
+/// and hydrostatic(): held for every particle they were 16 B each of a run's last write.)
 struct ParticleFields {
   std::vector<SymTensor> stress;       ///< Pa, positive in tension
-  std::vector<double> von_mises;       ///< sqrt(3/2 s:s), s the deviator of the stress, Pa
-  std::vector<double> hydrostatic;     ///< tr(sigma)/3, Pa (positive in tension; pressure = -this)
   std::vector<double> plastic_strain;  ///< von Mises equivalent of the fitted plastic strain tensor, 1
 };
 
@@ -57,5 +57,7 @@ ParticleFields particle_fields(const Particles& p, const Rods& r, const Periodic
 
 /// von Mises stress sqrt(3/2 s:s) of a symmetric tensor (s its deviator), in its unit.
 double von_mises(const SymTensor& t);
+/// tr(t)/3, in its unit (for a stress positive in tension: minus the pressure).
+inline double hydrostatic(const SymTensor& t) { return (t[0] + t[1] + t[2]) / 3.0; }
 
 }  // namespace swarf
