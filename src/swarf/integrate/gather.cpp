@@ -13,6 +13,7 @@ namespace swarf::integrate {
 
 namespace {
 constexpr double kForceFloorStrain = 1e-8;  // see gather_impl
+constexpr int kGatherTimed = 64;            // gathers timed before the threads' ranges move
 enum class GatherMode { Plain, Measure, Kick };
 
 // Moves the gather's block boundaries so that each thread's predicted time is the same: a
@@ -178,6 +179,7 @@ double gather_impl(Integration& it, double h) {
     split.resize(nt + 1);
     for (std::size_t t = 0; t <= nt; ++t) split[t] = nb * t / nt;
     ms.gather_seconds.assign(nt, 0.0);
+    ms.gather_timed = 0;
   }
   bool whole_team = true;
 #pragma omp parallel num_threads(static_cast <int>(nt)) reduction(max : dmax, fmax, damax)
@@ -195,7 +197,7 @@ double gather_impl(Integration& it, double h) {
         else
           block.template operator()<false>(b, dmax, fmax, damax);
       }
-      ms.gather_seconds[t] = omp_get_wtime() - t0;
+      ms.gather_seconds[t] += omp_get_wtime() - t0;
     } else {
 #pragma omp for schedule(static)
       for (std::size_t b = 0; b < nb; ++b) {
@@ -206,7 +208,13 @@ double gather_impl(Integration& it, double h) {
       }
     }
   }
-  if (whole_team && nt > 1) rebalance_gather(split, ms.gather_seconds);
+  // Over kGatherTimed gathers at a time: one gather's times carry the machine's noise (a thread
+  // descheduled for a moment), and a split moved by it cost more than the imbalance it corrected.
+  if (whole_team && nt > 1 && ++ms.gather_timed >= kGatherTimed) {
+    rebalance_gather(split, ms.gather_seconds);
+    std::fill(ms.gather_seconds.begin(), ms.gather_seconds.end(), 0.0);
+    ms.gather_timed = 0;
+  }
   if constexpr (Measure) ms.sweep_force_level2 = fmax;  // (the bodies' measure compares with it)
   if constexpr (Kick) {
     ms.kick_power = 0.0;

@@ -65,7 +65,8 @@ struct MotionState {
   /// The gather's threads' blocks: thread t takes blocks [gather_split[t], gather_split[t+1]),
   /// balanced by their measured times (gather.cpp; the results do not depend on it).
   std::vector<std::size_t> gather_split;
-  std::vector<double> gather_seconds;  ///< each thread's time in the last gather, s
+  std::vector<double> gather_seconds;  ///< each thread's time in the gathers since the ranges moved, s
+  int gather_timed = 0;                ///< those gathers
   double sweep_force_level2 = 0;       ///< the particles' force level of the last sweep squared, N^2
   double sweep_dt = 0;                 ///< step size of the current sweep, s
   double step_disp2 = 0;               ///< largest squared displacement of the step so far, m^2
