@@ -18,9 +18,9 @@ enum class GatherMode { Plain, Measure, Kick };
 
 // Moves the gather's block boundaries so that each thread's predicted time is the same: a
 // thread's blocks are taken to cost its measured time over their number each, and the
-// boundaries go halfway to where that cost profile splits evenly (halfway: one step's timing
-// is noisy, and a full move could swing back and forth). Only which thread sums which block
-// changes, never a result.
+// boundaries go halfway to where that cost profile splits evenly (halfway: the cost is not
+// uniform within a thread's range, and a full move could swing back and forth). Only which
+// thread sums which block changes, never a result.
 void rebalance_gather(std::vector<std::size_t>& split, const std::vector<double>& seconds) {
   const std::size_t nt = seconds.size(), nb = split.back();
   double total = 0.0;
@@ -209,7 +209,7 @@ double gather_impl(Integration& it, double h) {
     }
   }
   // Over kGatherTimed gathers at a time: one gather's times carry the machine's noise (a thread
-  // descheduled for a moment), and a split moved by it cost more than the imbalance it corrected.
+  // descheduled for a moment would move the ranges by what it lost).
   if (whole_team && nt > 1 && ++ms.gather_timed >= kGatherTimed) {
     rebalance_gather(split, ms.gather_seconds);
     std::fill(ms.gather_seconds.begin(), ms.gather_seconds.end(), 0.0);
