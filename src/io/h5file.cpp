@@ -88,18 +88,26 @@ void H5File::write_strips(const std::string& name, std::size_t rows, std::size_t
   herr_t st = set < 0 ? -1 : 0;
   std::vector<double> values;
   strip = std::max<std::size_t>(strip, 1);
-  for (std::size_t b = 0; st >= 0 && b < rows; b += strip) {
-    const std::size_t e = std::min(rows, b + strip);
-    fill(b, e, values);
-    hsize_t start[2] = {b, 0}, count[2] = {e - b, cols};
-    hid_t memory = H5Screate_simple(rank, count, nullptr);
-    st = H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
-    if (st >= 0) st = H5Dwrite(set, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, values.data());
-    H5Sclose(memory);
+  const auto release = [&] {
+    if (set >= 0) H5Dclose(set);
+    H5Pclose(lcpl);
+    H5Sclose(space);
+  };
+  try {
+    for (std::size_t b = 0; st >= 0 && b < rows; b += strip) {
+      const std::size_t e = std::min(rows, b + strip);
+      fill(b, e, values);
+      hsize_t start[2] = {b, 0}, count[2] = {e - b, cols};
+      hid_t memory = H5Screate_simple(rank, count, nullptr);
+      st = H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+      if (st >= 0) st = H5Dwrite(set, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, values.data());
+      H5Sclose(memory);
+    }
+  } catch (...) {  // (a field that cannot be computed: the handles go before the error does)
+    release();
+    throw;
   }
-  if (set >= 0) H5Dclose(set);
-  H5Pclose(lcpl);
-  H5Sclose(space);
+  release();
   if (st < 0) throw OutputError("cannot write dataset '" + name + "' to HDF5 file '" + path_ + "' (disk full?)");
 }
 

@@ -131,12 +131,14 @@ CutSetup CutProbe::setup_now() const {
 }
 
 void CutProbe::columns(std::vector<Column>& out) const {
-  out.insert(out.end(),
-             {{"tool_travel", "m", "the tool's displacement along x from its initial placement"},
-              {"cutting_force_per_width", "N/m", "cutting force Fc = -force_<tool>_x over the workpiece width"},
-              {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
-              {"chip_thickness", "m", "chip thickness h_c at this row; 0 before the chip's head is h/2 past the section (2 h to 3 h up the face)"},
-              {"contact_length", "m", "tool-chip contact length along the rake face (particles touching it)"}});
+  out.insert(
+      out.end(),
+      {{"tool_travel", "m", "the tool's displacement along x from its initial placement"},
+       {"cutting_force_per_width", "N/m", "cutting force Fc = -force_<tool>_x over the workpiece width"},
+       {"thrust_force_per_width", "N/m", "thrust force Ft = force_<tool>_z over the workpiece width"},
+       {"chip_thickness", "m",
+        "chip thickness h_c at this row; 0 before the chip's head is h/2 past the section (2 h to 3 h up the face)"},
+       {"contact_length", "m", "tool-chip contact length along the rake face (particles touching it)"}});
   if (setup_.free_sides)
     out.insert(out.end(),
                {{"passive_force_per_width", "N/m", "passive force Fp = force_<tool>_y over the workpiece width"},
