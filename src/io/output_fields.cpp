@@ -16,11 +16,13 @@ namespace swarf {
 namespace {
 
 void copy_vectors(const std::vector<Vec3>& v, std::size_t begin, std::size_t end, double* out) {
-  for (std::size_t i = begin; i < end; ++i)
+  for (std::size_t i = begin; i < std::min(end, v.size()); ++i)
     for (int c = 0; c < 3; ++c) out[3 * (i - begin) + c] = v[i][c];
 }
 
+// (an array the run does not hold, as the temperature without heat, leaves the zeros out was made with)
 void copy(const std::vector<double>& v, std::size_t begin, std::size_t end, double* out) {
+  if (v.size() < end) return;
   std::copy(v.begin() + static_cast<std::ptrdiff_t>(begin), v.begin() + static_cast<std::ptrdiff_t>(end), out);
 }
 
