@@ -246,7 +246,8 @@ CutResult analyze_cut(const CutSetup& s, const CutData& d) {
   } else {
     out.chip["note"] = fmt::format(
         "chip thickness not measured: {} steady rows measured it (at least {} needed; "
-        "a row needs 10 chip particles beyond the edge region)",
+        "a row needs 10 chip particles 2 to 3 depths of cut up the rake face and the chip's head half a depth "
+        "of cut past them: a cut too short for the chip to pass there measures none)",
         steady_hc.size(), kMinThicknessRows);
   }
   free_side_figures(s, d, out);
