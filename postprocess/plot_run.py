@@ -67,9 +67,12 @@ def plot_cut(run, summary, s):
     if pts:
         cx.plot([p[0] for p in pts], [p[1] for p in pts], color="C2", lw=0.8, label="chip thickness h_c (right axis)")
         if "thickness_m" in chip and steady is not None and x0 is not None:
-            cx.hlines(chip["thickness_m"] * 1e3, x0, travel[-1], colors="C2", linestyles="--", lw=1.5,
+            first = max(x0, pts[0][0])  # (over the rows that measured it: the chip's head passes late)
+            cx.hlines(chip["thickness_m"] * 1e3, first, travel[-1], colors="C2", linestyles="--", lw=1.5,
                       label="h_c, median of the steady part")
         cx.set_ylabel("chip thickness [mm]", color="C2")
+        # From zero: a settled chip's 1 % wander, scaled to the axis, read as a chip still thickening.
+        cx.set_ylim(0.0, 1.15 * max(p[1] for p in pts))
         handles += cx.get_legend_handles_labels()[0]
     elif "chip_thickness" in s:
         bx.text(0.99, 0.05, "chip thickness not measured", transform=bx.transAxes, ha="right", va="bottom",
