@@ -215,6 +215,53 @@ TEST(Sticking, TheCapTakesOverWhereMuTimesThePressureExceedsTheShearStrength) {
   EXPECT_NEAR(-strong.x(), 0.3 * fn, 1e-12 * fn);
 }
 
+// The flow zone (sticking.h): the cap is read at the face's temperature T + b tau, b = f R v_s,
+// so tau is the root of tau = k0 Theta(T + b tau). Checked against a value worked by hand for
+// m = 1 (the closed form), against the defining equation for m = 1 and m = 0.8 (the bisection,
+// to a relative 1e-12: round-off of a root of a monotone function), and at its limits: no slip
+// or no rise gives the cold cap, a face at the melting point the floor, and the cap falls as the
+// slip grows.
+TEST(Sticking, TheFlowZoneSolvesTheCapAtTheFacesOwnTemperature) {
+  StickingRule s{.shear_strength = 666.2e6, .softening_exponent = 1.0, .melt_temperature = 1733.0};
+  // By hand: u = (800 - 293.15)/1439.85 = 0.3520158, k0 b/span = 666.2/1439.85 = 0.4626871,
+  // tau = 666.2 MPa (1 - u)/(1 + 0.4626871) = 295.1329 MPa (to the 7 digits given: 1 kPa).
+  EXPECT_NEAR(flow_zone_strength(s, 800.0, 1e-6), 295.1329e6, 1e3);
+  for (double m : {1.0, 0.8}) {
+    s.softening_exponent = m;
+    for (double T : {250.0, 293.15, 600.0, 1200.0})
+      for (double b : {1e-8, 1e-7, 1e-6, 1e-5}) {
+        const double tau = flow_zone_strength(s, T, b);
+        EXPECT_NEAR(tau, s.shear_strength * sticking_softening(s, T + b * tau), 1e-12 * s.shear_strength)
+            << "m " << m << " T " << T << " b " << b;
+        EXPECT_LE(tau, s.shear_strength * sticking_softening(s, T)) << "m " << m << " T " << T << " b " << b;
+      }
+    EXPECT_EQ(flow_zone_strength(s, 900.0, 0.0), s.shear_strength * sticking_softening(s, 900.0));
+    EXPECT_NEAR(flow_zone_strength(s, 1733.0, 1e-6), 1e-3 * s.shear_strength, 1e-12 * s.shear_strength);
+  }
+  // Through the contact: a sphere (R = 1 mm) sliding at 50 m/s over a face at 900 K, the cap well
+  // below Coulomb's mu fn: its friction is 4 R^2 tau at the face's temperature, with f chosen so
+  // that the rise is large (b k0 = half the span to melting: tau = k0 (1 - u)/1.5, two thirds of
+  // the cold cap); the same sphere without the flow zone passes the cap at the particle's
+  // temperature.
+  const TriangleMesh mesh = square(4, 0.0, 1);
+  const Vec3 centre(2.5e-3, 2.5e-3, 1e-3 - 2e-6), slide(50.0, 0.0, 0.0);
+  const Vec3 free = force_on_sphere(mesh, centre, slide);
+  const double R = 1e-3, fn = free.z();
+  StickingRule c{.shear_strength = 0.1 * fn / (4.0 * R * R), .softening_exponent = 1.0, .melt_temperature = 1733.0};
+  const Vec3 cold = force_on_sphere(mesh, centre, slide, c, 900.0);
+  EXPECT_NEAR(-cold.x(), 4.0 * R * R * c.shear_strength * sticking_softening(c, 900.0), 1e-12 * fn);
+  c.flow_zone = 0.5 * (c.melt_temperature - c.reference_temperature) / c.shear_strength / (R * 50.0);
+  const double b = c.flow_zone * R * 50.0;
+  const Vec3 hot = force_on_sphere(mesh, centre, slide, c, 900.0);
+  EXPECT_NEAR(-hot.x(), 4.0 * R * R * flow_zone_strength(c, 900.0, b), 1e-12 * fn);
+  EXPECT_NEAR(-hot.x(), -cold.x() / 1.5, 1e-12 * fn);
+  EXPECT_NEAR(hot.z(), fn, 1e-12 * fn);
+  // Standing still on the face the flow zone is not heated: the cold cap (the spring law's force
+  // is then below it; checked on the cap itself).
+  EXPECT_EQ(sticking_cap(c, R, 900.0, 0.0), 4.0 * R * R * c.shear_strength * sticking_softening(c, 900.0));
+  EXPECT_LT(sticking_cap(c, R, 900.0, 100.0), sticking_cap(c, R, 900.0, 50.0));
+}
+
 TEST(FlatSurface, SameForceHoweverTriangulated) {
   const TriangleMesh two = square(1, 0.0, 1), many = square(16, 0.3, 5);
   ASSERT_EQ(two.triangles.size(), 2u);

@@ -447,5 +447,16 @@ TEST(CutTable, PostGivesTheRunsBrokenRodFraction) {
   EXPECT_EQ(line(p.output), line(r.output));
 }
 
+// contact.sticking_flow_zone reaches the contact law as f = (1 - s) 2 / (3 K) (sticking.h) and
+// is refused by name without [heat] (the face's rise is the friction heat over K).
+TEST(CutTable, TheFlowZoneNeedsHeatAndReachesTheStickingRule) {
+  const Model m = build_model(parse_case(kDefaultCaseToml, "default", {"contact.sticking_flow_zone=true"}));
+  EXPECT_NEAR(m.contact.sticking.flow_zone, (1.0 - 0.5) * 2.0 / (3.0 * 50.7), 1e-15);
+  const Model off = build_model(parse_case(kDefaultCaseToml, "default", {}));
+  EXPECT_EQ(off.contact.sticking.flow_zone, 0.0);
+  test::expect_mentions(test::case_error(kDefaultCaseToml, {"contact.sticking_flow_zone=true", "heat.enabled=false"}),
+                        {"bad.toml", "contact.sticking_flow_zone", "[heat]"});
+}
+
 }  // namespace
 }  // namespace swarf

@@ -152,6 +152,7 @@ CaseSettings parse_case(const std::string& text, const std::string& source, cons
   read_uniaxial(in, cs);
   read_contact(in, cs);
   read_heat(in, cs);
+  check_flow_zone(in, cs);
   read_environment(in, cs);
   read_meshes(in, cs);
   read_particles(in, cs);

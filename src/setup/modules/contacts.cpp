@@ -85,6 +85,14 @@ const std::vector<Key<ContactSettings>>& contact_keys() {
        .default_note = "the preset's",
        .range = in(300, 1e4, "[]"),
        .doc = "T_melt of the thermal factor of k."},
+      {.name = "sticking_flow_zone",
+       .field = &S::sticking_flow_zone,
+       .doc = "Read the cap at the rake face's temperature instead of the particle's: the chip's flow zone "
+              "(about 10 um, thinner than a particle) is hotter than the particle's mean by the contact's "
+              "friction heat into the chip, (1 - `heat.tool_friction_share`) tau v_s, conducted over 2R/3: "
+              "Delta T = (1 - s) tau v_s 2R / (3 K) with K = `heat.conductivity` (tau the face shear stress, v_s "
+              "the slip speed). The cap solves tau = k0 Theta(T + Delta T). Needs [heat] "
+              "([physics.md section 5](physics.md#5-hertz-contacts-with-restitution-damping-and-friction))."},
   };
   return keys;
 }
@@ -92,7 +100,8 @@ const std::vector<Key<ContactSettings>>& contact_keys() {
 // [contact] sticking: its keys only with sticking = true; what they leave out from the preset.
 static void read_sticking(TableReader& r, CaseSettings& cs) {
   ContactSettings& c = cs.contact;
-  for (const char* key : {"sticking_shear_strength", "sticking_softening_exponent", "sticking_melt_temperature"})
+  for (const char* key :
+       {"sticking_shear_strength", "sticking_softening_exponent", "sticking_melt_temperature", "sticking_flow_zone"})
     if (r.has(key) && !c.sticking) r.fail(key, r.get(key), "is used only with contact.sticking = true");
   if (!c.sticking) return;
   const MaterialPreset* preset = cs.material.preset.empty() ? nullptr : find_material_preset(cs.material.preset);
@@ -117,6 +126,14 @@ void read_contact(const CaseInput& in, CaseSettings& cs) {
   }
 }
 
+void check_flow_zone(const CaseInput& in, const CaseSettings& cs) {
+  if (!cs.contact.sticking_flow_zone || (cs.heat.present && cs.heat.enabled)) return;
+  TableReader r = in.reader(in.table("contact"), "contact");
+  r.know(contact_keys());
+  r.fail("sticking_flow_zone", r.get("sticking_flow_zone"),
+         "needs [heat] (the face's temperature rise is the friction heat over the workpiece's conductivity)");
+}
+
 // [contact]: the contact law's parameters.
 static ContactParams contact_params(const CaseSettings& cs, const Particles& p) {
   ContactParams c;
@@ -137,7 +154,10 @@ static ContactParams contact_params(const CaseSettings& cs, const Particles& p) 
     c.sticking = StickingRule{.shear_strength = cs.contact.sticking_shear_strength,
                               .softening_exponent = cs.contact.sticking_softening_exponent,
                               .melt_temperature = cs.contact.sticking_melt_temperature,
-                              .reference_temperature = 293.15};
+                              .reference_temperature = 293.15,
+                              .flow_zone = cs.contact.sticking_flow_zone ? (1.0 - cs.heat.tool_friction_share) * 2.0 /
+                                                                               (3.0 * cs.heat.conductivity)
+                                                                         : 0.0};
   return c;
 }
 
@@ -149,11 +169,17 @@ void build_contacts(const CaseSettings& cs, World& world) {
 std::string contacts_echo(const Model& m) {
   if (!(m.contacts && m.contact.sticking.shear_strength > 0)) return {};
   const Derived& d = m.derived;
-  return fmt::format(
+  std::string s = fmt::format(
       "  sticking: tool friction capped at 4 R^2 k0 (1 - T*^{:.3g}), k0 = {:.4g} Pa, T_melt {:.5g} K: {:.4g} N per "
       "particle cold\n",
       m.contact.sticking.softening_exponent, m.contact.sticking.shear_strength, m.contact.sticking.melt_temperature,
       sticking_cap(m.contact.sticking, d.radius, 0.0));
+  if (m.contact.sticking.flow_zone > 0)
+    s += fmt::format(
+        "  flow zone: the cap read at the face's temperature T + f R tau v_s, f R = {:.4g} K per MPa m/s (f = {:.4g} "
+        "K m/W)\n",
+        m.contact.sticking.flow_zone * d.radius * 1e6, m.contact.sticking.flow_zone);
+  return s;
 }
 
 }  // namespace swarf

@@ -32,12 +32,17 @@ struct ContactSettings {
   double sticking_shear_strength = 0.0;      ///< k0, Pa; 0 = not given (the preset's)
   double sticking_softening_exponent = 0.0;  ///< m, 1; 0 = not given (the preset's, else 1)
   double sticking_melt_temperature = 0.0;    ///< T_melt, K; 0 = not given (the preset's)
+  bool sticking_flow_zone = false;  ///< the cap at the face's temperature (a sub-particle flow zone), needs [heat]
 };
 
 const std::vector<Key<ContactSettings>>& contact_keys();
 
 /// Reads [contact] when present and checks its rules; after [material] (its preset) and [[group]].
 void read_contact(const CaseInput& in, CaseSettings& cs);
+
+/// [contact] sticking_flow_zone's rule between tables: it needs [heat] (its conductivity and the
+/// tool's share of the friction heat); after read_heat.
+void check_flow_zone(const CaseInput& in, const CaseSettings& cs);
 
 /// The World's contact switch and, with [contact], its parameters (the skin from the particles'
 /// and the inflows' largest radius).

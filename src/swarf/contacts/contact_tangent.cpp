@@ -93,8 +93,12 @@ void ContactSystem::tangent(const Particles& p, double h, double kx, double kv) 
       const double fn = hit.weight * HertzLaw{q.K, q.D}.force(hit.overlap, root, root4, -vn);
       if (!(fn > 0.0)) continue;
       const double normal = hit.weight * (kx * 1.5 * q.K * root + kv * q.D * root4);
-      const double stick = hit.weight * sticking_cap(prm_.sticking, R, temperature ? temperature[i] : 0.0);
-      const double t = kv * friction_tangent(rule, n, vrel - vn * n, fn, hit.weight * q.kt0 * root,
+      const Vec3 vt = vrel - vn * n;
+      // The cap's fall with the slip (the flow zone, sticking.h) is left out of the tangent, as its
+      // turn with the slip's direction is: Newton's residual test corrects an approximate tangent.
+      const double slip = prm_.sticking.flow_zone > 0.0 ? vt.norm() : 0.0;
+      const double stick = hit.weight * sticking_cap(prm_.sticking, R, temperature ? temperature[i] : 0.0, slip);
+      const double t = kv * friction_tangent(rule, n, vt, fn, hit.weight * q.kt0 * root,
                                              hit.weight * eta_ratio * q.D * root4, q.history, stick);
       ttan_axis_[k] = n;
       ttan_lateral_[k] = t;

@@ -142,7 +142,8 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       const Vec3 vt = vrel - vn * n;
       Vec3 hist = q.history;
       // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
-      const double stick = hit.weight * sticking_cap(stick_rule, R, temperature ? temperature[i] : 0.0);
+      const double slip = stick_rule.flow_zone > 0.0 ? vt.norm() : 0.0;  // the flow zone's heat (sticking.h)
+      const double stick = hit.weight * sticking_cap(stick_rule, R, temperature ? temperature[i] : 0.0, slip);
       const Vec3 ft = friction_force(rule, n, vt, fn, hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4,
                                      hist, stick);
       tres[k] = Result{fn * n + ft, ft.cross(n)};
