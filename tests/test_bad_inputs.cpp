@@ -821,7 +821,8 @@ TEST(BadInput, AnExplicitStepForcedBeyondItsStableSizeStopsWhenTheEnergyBalanceI
                                           "--set integrator.allow_unstable_dt=true",
                                           3 * dt_stable));
   EXPECT_EQ(r.exit_code, 3) << r.output;
-  for (const char* word : {"energy balance lost at t = ", "energy error", "external work", "allow_unstable_dt"})
+  for (const char* word :
+       {"energy balance lost at t = ", "energy error", "external work", "allow_unstable_dt", "integrator.dt_safety"})
     EXPECT_NE(r.output.find(word), std::string::npos) << "the message should name '" << word << "':\n" << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out/summary.json"));
 }

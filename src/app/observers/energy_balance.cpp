@@ -51,8 +51,9 @@ void check_energy_balance(const EnergyBalanceNow& b, double t) {
         "energy balance lost at t = {:.6g} s: energy error {:.4g} J against external work {:.4g} J and "
         "kinetic + elastic + contact energy {:.4g} J{} (the error may be at most {:g} times the larger); plastic "
         "{:.4g} J, viscous {:.4g} J, fracture {:.4g} J, contact work {:.4g} J. The step is probably "
-        "beyond its stable size (integrator.dt with allow_unstable_dt) or too large for the loads "
-        "(swarf run --no-energy-check runs on)",
+        "beyond its stable size (integrator.dt with allow_unstable_dt) or too large for the loads: a "
+        "smaller integrator.dt_safety shortens it (a chip sheared without bond formation crowds its "
+        "damped rods and needs about 0.7; swarf run --no-energy-check runs on)",
         nan_safe(t), nan_safe(b.error), nan_safe(b.external_work), nan_safe(held),
         b.flow_through > 0.0 ? fmt::format(" and energy through the flows {:.4g} J", nan_safe(b.flow_through)) : "",
         kMaxEnergyErrorRatio, nan_safe(b.plastic_work), nan_safe(b.viscous_work), nan_safe(b.fracture_energy),
