@@ -185,27 +185,23 @@ double gather_impl(Integration& it, double h) {
 #pragma omp parallel num_threads(static_cast <int>(nt)) reduction(max : dmax, fmax, damax)
   {
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    const auto sum_block = [&](std::size_t b) {
+      if (contacts)
+        block.template operator()<true>(b, dmax, fmax, damax);
+      else
+        block.template operator()<false>(b, dmax, fmax, damax);
+    };
     if (static_cast<std::size_t>(omp_get_num_threads()) != nt) {
 #pragma omp single
       whole_team = false;  // (fewer threads than asked: the ranges below would miss blocks)
     }
     if (whole_team) {
       const double t0 = omp_get_wtime();
-      for (std::size_t b = split[t]; b < split[t + 1]; ++b) {
-        if (contacts)
-          block.template operator()<true>(b, dmax, fmax, damax);
-        else
-          block.template operator()<false>(b, dmax, fmax, damax);
-      }
+      for (std::size_t b = split[t]; b < split[t + 1]; ++b) sum_block(b);
       ms.gather_seconds[t] += omp_get_wtime() - t0;
     } else {
 #pragma omp for schedule(static)
-      for (std::size_t b = 0; b < nb; ++b) {
-        if (contacts)
-          block.template operator()<true>(b, dmax, fmax, damax);
-        else
-          block.template operator()<false>(b, dmax, fmax, damax);
-      }
+      for (std::size_t b = 0; b < nb; ++b) sum_block(b);
     }
   }
   // Over kGatherTimed gathers at a time: one gather's times carry the machine's noise (a thread
