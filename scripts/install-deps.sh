@@ -19,6 +19,8 @@ PKGS=(
   libopenmpi-dev openmpi-bin procps
   # the domains' recursive coordinate bisection over MPI ranks (Zoltan)
   libtrilinos-zoltan-dev
+  # BoomerAMG (hypre) as the Newton solve's preconditioner, measured by swarf bench --preconditioner amg
+  libhypre-dev
   # plots (PNG) and headless rendering
   python3 python3-numpy python3-matplotlib python3-h5py xvfb xauth
 )

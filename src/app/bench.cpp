@@ -13,6 +13,7 @@
 #include "io/checkpoint.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
+#include "study/hypre_amg.h"
 #include "swarf/core/errors.h"
 #include "swarf/simulation.h"
 
@@ -70,9 +71,15 @@ void run_bench(const BenchOptions& opt) {
       bool newton = false;
       std::size_t builds = 0;
       StageClock stages;
+      std::string amg_note;
       for (int rep = 0; rep < std::max(1, opt.repeats); ++rep) {
         Model model = build_model(cs);
         Simulation sim(model, model.step);
+        std::shared_ptr<HypreAmg> amg;
+        if (opt.preconditioner == "amg") {
+          amg = std::make_shared<HypreAmg>(HypreAmgSettings{opt.amg_refresh, opt.amg_threshold, opt.amg_nodal});
+          sim.set_newton_preconditioner(amg);
+        }
         // From a checkpoint, the counters restart at the stored state: only this repeat's
         // steps, evaluations and list builds are counted.
         long long steps0 = 0, evals0 = 0, solves0 = 0, cg0 = 0;
@@ -105,6 +112,9 @@ void run_bench(const BenchOptions& opt) {
         nr = model.rods.size();
         implicit = sim.implicit();
         stages = sim.stage_clock();
+        if (amg)
+          amg_note = fmt::format("BoomerAMG: {} hierarchies, {:.3f} s in their setup, {:.3f} s in the cycles",
+                                 amg->setups(), amg->setup_seconds(), amg->apply_seconds());
         builds = sim.contacts().list_builds() - builds0;
       }
       std::sort(secs.begin(), secs.end());
@@ -117,6 +127,7 @@ void run_bench(const BenchOptions& opt) {
           scene, implicit ? "newmark" : "verlet", np, nr, n, evals, iters, used, med, secs.front(), secs.back(),
           med * 1e9 / (double(np) * double(n)), med * 1e9 / (double(np) * double(evals)), broken, ke,
           med > 0.0 ? first_cost / (med * used) : 1.0);
+      if (!amg_note.empty()) fmt::print("  ({}; last repeat)\n", amg_note);
       if (opt.stages) stage_rows.push_back(stage_row(scene, used, stages, double(np) * double(n), builds));
       std::fflush(stdout);
     }

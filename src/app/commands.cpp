@@ -329,6 +329,15 @@ struct BenchCommand final : Command {
     sub->add_option("--steps", bo.steps, "Steps (default: run to the case's end_time)");
     sub->add_option("--repeats", bo.repeats, "Repeats per row, median reported (default 3)");
     sub->add_flag("--stages", bo.stages, "Also print the time of each step stage (ns per particle-step)");
+    sub->add_option("--preconditioner", bo.preconditioner,
+                    "The Newton solve's CG preconditioner: block_jacobi (default) or amg (hypre's BoomerAMG on the "
+                    "assembled tangent)")
+        ->check(CLI::IsMember({"block_jacobi", "amg"}));
+    sub->add_option("--amg-refresh", bo.amg_refresh, "With amg: a new hierarchy at every N-th tangent (default 1)")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--amg-threshold", bo.amg_threshold, "With amg: BoomerAMG's strong threshold, 1 (default 0.5)")
+        ->check(CLI::Range(0.0, 1.0));
+    sub->add_flag("--amg-nodal", bo.amg_nodal, "With amg: coarsen by particles (3x3 blocks) instead of by unknowns");
     sub->add_option("--set", bo.overrides, "Override a case key (repeatable)")->allow_extra_args(false);
   }
   int run() override {

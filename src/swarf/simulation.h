@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "swarf/core/exact_sum.h"
@@ -86,6 +87,9 @@ class Simulation {
   const StepStats& stats() const { return stats_; }
   /// Counters of the Newton solver (zero with the fixed-point one).
   const NewtonStats& newton_stats() const { return ms_.newton_stats; }
+  /// The Newton solve's CG preconditioned by p, which reads J assembled (integrate/tangent_matrix.h),
+  /// in place of the matrix-free block-Jacobi; nullptr restores the block-Jacobi.
+  void set_newton_preconditioner(std::shared_ptr<LinearPreconditioner> p) { ms_.newton.preconditioner = std::move(p); }
   const EnergyLedger& ledger() const { return ledger_; }
   /// The rods' ledger lines summed exactly over the rods whose first particle has counted[i]
   /// != 0 (RodSystem::count_exactly; nullptr: off): a domain's share, the same sums over the

@@ -171,6 +171,16 @@ class ContactSystem {
       for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) add(paxis[k], paxial[k], plateral[k]);
       for (std::int32_t k = trow[i], end = trow[i + 1]; k < end; ++k) add(taxis[k], taxial[k], tlateral[k]);
     }
+    /// Calls f(other, n, axial, lateral) for each of i's sphere-sphere contacts, in the order
+    /// times() visits them: the off-diagonal blocks -S of an assembled J (integrate/tangent_matrix.h).
+    template <class F>
+    void for_each_pair(std::size_t i, F&& f) const {
+      for (std::int32_t e = jrow[i], end = jrow[i + 1]; e < end; ++e) {
+        const std::int32_t k = jent[e];
+        f(pairs[k].i, paxis[k], paxial[k], plateral[k]);
+      }
+      for (std::int32_t k = prow[i], end = prow[i + 1]; k < end; ++k) f(pairs[k].j, paxis[k], paxial[k], plateral[k]);
+    }
     /// The contacts' part of (J d)_i: minus the sum over i's pairs of S (d_other - d_i), plus
     /// S d_i for each triangle contact (the mesh's motion is prescribed), in a fixed order.
     Vec3 times(std::size_t i, const Vec3* d) const {

@@ -208,6 +208,13 @@ void newton_tangent(Integration& it, double h) {
   if (m > 0) rod_tangent_setup(r.law, r.area, it.set.beta * h * h, it.set.gamma * h, v, world.periodic);
   const bool contacts = it.sys.contacts.enabled();
   if (contacts) it.sys.contacts.tangent(p, h, it.set.beta * h * h, it.set.gamma * h);
+  if (ms.newton.preconditioner) {
+    // A preconditioner of the assembled J in place of the block-Jacobi (tangent_matrix.h).
+    if (!ms.newton.preconditioner->wants_tangent(3 * n)) return;
+    assemble_tangent(it, ms.newton.matrix);
+    ms.newton.preconditioner->setup(ms.newton.matrix);
+    return;
+  }
   const ContactSystem::TangentRows ct = contacts ? it.sys.contacts.tangent_rows() : ContactSystem::TangentRows{};
   // Block-Jacobi: particle i's 3x3 diagonal block m_i I + sum of its rods' S_k, with the
   // prescribed components' rows and columns replaced by the identity (their d stays 0).
@@ -288,12 +295,33 @@ int newton_krylov(Integration& it) {
   const Vec3* q = w.q.data();
   const Vec3* res = w.residual.data();
   const Eigen::Matrix3d* inv = w.block_inverse.data();
-  auto [rz, rr] = deterministic_sums2(n, [&](std::size_t i) {
+  LinearPreconditioner* pc = w.preconditioner.get();
+  const std::uint8_t* prescribed = world.particles.prescribed.data();
+  // z = P r for a preconditioner handed in (its prescribed components kept at 0, as the
+  // block-Jacobi's unit rows keep them), then the two sums over the rows.
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "the preconditioner reads the Vec3 arrays as 3 n doubles");
+  auto external = [&]() {
+    pc->apply(r->data(), z->data());
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) mask_prescribed(z[i], prescribed[i]);
+    return deterministic_sums2(n, [&](std::size_t i) {
+      return std::array<double, 2>{r[i].dot(z[i]), r[i].squaredNorm()};
+    });
+  };
+  if (pc) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) r[i] = -res[i];
+  }
+  auto [rz, rr] = pc ? external() : deterministic_sums2(n, [&](std::size_t i) {
     r[i] = -res[i];
     z[i] = inv[i] * r[i];
     pp[i] = z[i];
     return std::array<double, 2>{r[i].dot(z[i]), r[i].squaredNorm()};
   });
+  if (pc) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) pp[i] = z[i];
+  }
   if (rr == 0.0) return 0;
   // Stop at krylov_tolerance of the Newton residual, or as soon as the linear residual is
   // below half the Newton tolerance of the force level (2-norm, so every particle's too):
@@ -310,7 +338,14 @@ int newton_krylov(Integration& it) {
     newton_product(it, w.p, w.q, pq);
     if (!(pq > 0.0)) return -1;  // J is not positive definite on this direction (or NaN)
     const double alpha = rz / pq;
-    const auto [rz_new, rr_new] = deterministic_sums2(n, [&](std::size_t i) {
+    if (pc) {
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        d[i] += alpha * pp[i];
+        r[i] -= alpha * q[i];
+      }
+    }
+    const auto [rz_new, rr_new] = pc ? external() : deterministic_sums2(n, [&](std::size_t i) {
       d[i] += alpha * pp[i];
       r[i] -= alpha * q[i];
       z[i] = inv[i] * r[i];

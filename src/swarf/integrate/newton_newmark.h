@@ -4,15 +4,18 @@
 // accelerations a,  R(a) = M a - F(x(a), v(a)),  with
 //   x = x_n + h v_n + h^2 ((1/2 - beta) a_n + beta a),  v = v_n + h ((1 - gamma) a_n + gamma a),
 // by Newton: J d = -R with J = M + beta h^2 K + gamma h C (forces/rod_tangent.h), solved by
-// conjugate gradients with a 3x3 block-Jacobi preconditioner per particle, matrix-free.
+// conjugate gradients with a 3x3 block-Jacobi preconditioner per particle, matrix-free (or a
+// preconditioner handed in that reads J assembled: tangent_matrix.h).
 // Prescribed components are removed: their rows and columns of J are dropped (d = 0 there).
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "swarf/core/vec3.h"
+#include "swarf/integrate/tangent_matrix.h"
 
 namespace swarf {
 
@@ -36,6 +39,10 @@ struct NewtonWork {
   std::vector<Vec3> axis;                      ///< per rod: unit axis
   std::vector<double> axial, lateral;          ///< per rod: coefficients of S_k, kg
   double level2 = 0.0;                         ///< squared force level of the latest residual, N^2
+  /// A preconditioner that reads the assembled J in place of the block-Jacobi (none: block-Jacobi;
+  /// Simulation::set_newton_preconditioner), and J assembled for it.
+  std::shared_ptr<LinearPreconditioner> preconditioner;
+  TangentMatrix matrix;
   // The rods' trial state at the start of the step (restored with the particles when a
   // step is rejected, so that a rejected try leaves the state hash as it was).
   std::vector<double> trial_shift, stress, coef;
