@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "io/h5file.h"
+#include "study/hypre_amg.h"
 #include "test_helpers.h"
 
 namespace swarf {
@@ -186,6 +187,24 @@ TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
   EXPECT_GE(newton, 3) << nb.output;
   EXPECT_GE(cg, newton) << nb.output;
   EXPECT_LT(newton, 3 * 25) << nb.output;  // (a sanity bound: max_iterations = 25 per try, one try per step)
+  // hypre's BoomerAMG in place of the block-Jacobi: the same counts' columns and a line with its
+  // hierarchies; on a scene Newton does not solve the option is refused by name.
+  if (HypreAmg::available()) {
+    auto amg = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
+                                 " --steps 3 --threads 1 --repeats 1 --set integrator.scheme='\"newmark\"'"
+                                 " --set integrator.solver='\"newton\"' --preconditioner amg");
+    ASSERT_EQ(amg.exit_code, 0) << amg.output;
+    const auto acells = row_cells(amg.output);
+    ASSERT_EQ(acells.size(), 8u) << amg.output;
+    EXPECT_GE(std::stoll(acells[7]), std::stoll(acells[6])) << amg.output;
+    EXPECT_NE(amg.output.find("BoomerAMG: " + std::to_string(std::stoll(acells[6])) + " hierarchies"),
+              std::string::npos)
+        << amg.output;  // (one per Newton iteration at --amg-refresh 1)
+  }
+  auto verlet_amg = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
+                                      " --steps 1 --threads 1 --repeats 1 --preconditioner amg");
+  EXPECT_EQ(verlet_amg.exit_code, 2) << verlet_amg.output;
+  EXPECT_NE(verlet_amg.output.find("--preconditioner amg"), std::string::npos) << verlet_amg.output;
   auto bad = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "missing.h5") + " --steps 1");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("missing.h5"), std::string::npos) << bad.output;

@@ -76,6 +76,11 @@ void run_bench(const BenchOptions& opt) {
         Model model = build_model(cs);
         Simulation sim(model, model.step);
         std::shared_ptr<HypreAmg> amg;
+        if (opt.preconditioner == "amg" && !(model.step.solver == Solver::Newton && model.step.implicit()))
+          throw InputError(fmt::format(
+              "--preconditioner amg: scene '{}' is not solved by Newton's method (integrator.scheme = \"newmark\" "
+              "and integrator.solver = \"newton\"): only the Newton solve's CG takes a preconditioner",
+              path));
         if (opt.preconditioner == "amg") {
           amg = std::make_shared<HypreAmg>(HypreAmgSettings{opt.amg_refresh, opt.amg_threshold, opt.amg_nodal});
           sim.set_newton_preconditioner(amg);
