@@ -176,9 +176,13 @@ TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
   EXPECT_EQ(cells[6], " - ") << b.output;          // (no Newton iterations with this scheme)
   // The same state continued by the Newton solver: its iterations are counted from the
   // stored state on (at least one per step, and one CG iteration per Newton iteration).
-  auto nb = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
-                              " --steps 3 --threads 1 --repeats 1 --set integrator.scheme='\"newmark\"'"
-                              " --set integrator.solver='\"newton\"'");
+  const auto newton_bench = [&](const std::string& extra) {
+    return test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
+                             " --steps 3 --threads 1 --repeats 1 --set integrator.scheme='\"newmark\"'"
+                             " --set integrator.solver='\"newton\"'" +
+                             extra);
+  };
+  auto nb = newton_bench("");
   ASSERT_EQ(nb.exit_code, 0) << nb.output;
   const auto ncells = row_cells(nb.output);
   ASSERT_EQ(ncells.size(), 8u) << nb.output;
@@ -190,9 +194,7 @@ TEST(Restart, BenchContinuesACheckpointAndCountsOnlyItsOwnSteps) {
   // hypre's BoomerAMG in place of the block-Jacobi: the same counts' columns and a line with its
   // hierarchies; on a scene Newton does not solve the option is refused by name.
   if (HypreAmg::available()) {
-    auto amg = test::run_command(std::string(SWARF_BINARY) + " bench " + (dir / "b/checkpoint.h5") +
-                                 " --steps 3 --threads 1 --repeats 1 --set integrator.scheme='\"newmark\"'"
-                                 " --set integrator.solver='\"newton\"' --preconditioner amg");
+    auto amg = newton_bench(" --preconditioner amg");
     ASSERT_EQ(amg.exit_code, 0) << amg.output;
     const auto acells = row_cells(amg.output);
     ASSERT_EQ(acells.size(), 8u) << amg.output;
