@@ -23,6 +23,10 @@
 //   meets d^T J d <= 0, the step is rejected and retried shorter (reject_factor): J tends to
 //   M as h shrinks, so a shorter step restores definiteness, and an indefinite J means the
 //   step spans a buckling-like loss of stiffness that a long step would not resolve anyway.
+// - A preconditioner handed in (Simulation::set_newton_preconditioner) reads J assembled
+//   (tangent_matrix.h) in place of the block-Jacobi. The block-Jacobi stays the solver's own: an
+//   algebraic multigrid (study/hypre_amg.h) cut the CG iterations but cost more than it saved
+//   (validation/integrators/README.md).
 // - Inexact Newton: CG stops at |r| <= krylov_tolerance |R|; the Newton loop then measures the
 //   real residual again. A solve stopped at krylov_max_iterations is used as it is (the
 //   residual check decides), and the step control does not grow the next step.
