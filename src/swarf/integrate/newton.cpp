@@ -191,7 +191,6 @@ void newton_tangent(Integration& it, double h) {
   ms.newton.axis.resize(m);
   ms.newton.axial.resize(m);
   ms.newton.lateral.resize(m);
-  ms.newton.block_inverse.resize(n);
   RodTangentView v;
   v.rods = m;
   v.ends = r.ends.data();
@@ -219,6 +218,7 @@ void newton_tangent(Integration& it, double h) {
     ms.newton.preconditioner->setup(ms.newton.matrix);
     return;
   }
+  ms.newton.block_inverse.resize(n);
   const ContactSystem::TangentRows ct = contacts ? it.sys.contacts.tangent_rows() : ContactSystem::TangentRows{};
   // Block-Jacobi: particle i's 3x3 diagonal block m_i I + sum of its rods' S_k, with the
   // prescribed components' rows and columns replaced by the identity (their d stays 0).
