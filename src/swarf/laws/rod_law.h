@@ -110,7 +110,9 @@ inline RodResponse evaluate_flow_curve(const BilinearRodLaw& law, double strain,
   RodResponse r;
   r.shift = p;
   const double trial = E * (strain - p);
-  const double centre = scale * f.back_stress(p), half = scale * f.stress[0];
+  // (a rod that never yielded, most of a workpiece, has alpha(0) = 0 exactly: no search, no
+  // division; the same bits)
+  const double centre = p == 0.0 ? 0.0 : scale * f.back_stress(p), half = scale * f.stress[0];
   if (trial > centre + half || trial < centre - half) r.shift = f.return_map(E / scale, strain, p, trial > centre);
   r.stress = E * (strain - r.shift);
   r.viscous_stress = law.viscosity * strain_rate;
