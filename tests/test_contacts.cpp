@@ -153,7 +153,8 @@ TriangleMesh square(int n, double jitter, unsigned seed) {
 
 // The force on one sphere (radius 1 mm) at 'centre' pressed into the mesh, with a velocity.
 Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& velocity,
-                     const StickingRule& sticking = {}, double temperature = 0.0) {
+                     const StickingRule& sticking = {}, double temperature = 0.0,
+                     const SpeedFriction& tool_friction = {}) {
   Particles p;
   p.resize(1);
   p.temperature[0] = temperature;
@@ -177,6 +178,7 @@ Vec3 force_on_sphere(const TriangleMesh& mesh, const Vec3& centre, const Vec3& v
   prm.law = FrictionLaw::Spring;
   prm.skin = 2e-4;
   prm.sticking = sticking;
+  prm.tool_friction = tool_friction;
   ContactSystem cs;
   cs.setup(prm, 1, &meshes);
   cs.update_lists(p, rods, true);
@@ -260,6 +262,32 @@ TEST(Sticking, TheFlowZoneSolvesTheCapAtTheFacesOwnTemperature) {
   // is then below it; checked on the cap itself).
   EXPECT_EQ(sticking_cap(c, R, 900.0, 0.0), 4.0 * R * R * c.shear_strength * sticking_softening(c, 900.0));
   EXPECT_LT(sticking_cap(c, R, 900.0, 100.0), sticking_cap(c, R, 900.0, 50.0));
+}
+
+// The tool's friction against the sliding speed (speed_friction.h): the table's value by linear
+// interpolation between its points and constant outside, checked at worked values; through the
+// contact, a sphere sliding over a face (the spring law saturated at every speed used) passes
+// mu(|v_t|) fn against its slip, whatever mu the sphere-sphere contacts have (0.3 here), and
+// the normal force does not change. Tolerance: round-off (1e-12 relative).
+TEST(Friction, TheToolsCoefficientFollowsItsTableOfSlidingSpeeds) {
+  SpeedFriction c;
+  EXPECT_EQ(friction_at_speed(c, 0.3, 40.0), 0.3);  // (no table: the constant)
+  c.points = 3;
+  c.speed = {20.0, 60.0, 80.0};
+  c.mu = {0.6, 0.2, 0.1};
+  for (const auto& [s, mu] : std::vector<std::pair<double, double>>{
+           {0.0, 0.6}, {10.0, 0.6}, {20.0, 0.6}, {40.0, 0.4}, {50.0, 0.3}, {60.0, 0.2}, {70.0, 0.15}, {1e3, 0.1}})
+    EXPECT_NEAR(friction_at_speed(c, 0.3, s), mu, 1e-15) << s;
+  const TriangleMesh m = square(4, 0.0, 1);
+  const Vec3 centre(2.5e-3, 2.5e-3, 1e-3 - 2e-6);
+  const double fn = force_on_sphere(m, centre, Vec3(50.0, 0.0, 0.0)).z();
+  ASSERT_GT(fn, 0.0);
+  for (double s : {10.0, 40.0, 50.0, 100.0}) {
+    const Vec3 f = force_on_sphere(m, centre, Vec3(s, 0.0, 0.0), {}, 0.0, c);
+    EXPECT_NEAR(f.z(), fn, 1e-12 * fn) << s;
+    EXPECT_NEAR(-f.x(), friction_at_speed(c, 0.3, s) * fn, 1e-12 * fn) << s;
+    EXPECT_NEAR(f.y(), 0.0, 1e-12 * fn) << s;
+  }
 }
 
 TEST(FlatSurface, SameForceHoweverTriangulated) {

@@ -458,5 +458,35 @@ TEST(CutTable, TheFlowZoneNeedsHeatAndReachesTheStickingRule) {
                         {"bad.toml", "contact.sticking_flow_zone", "[heat]"});
 }
 
+// contact.tool_friction_* reach the contact law as the table they give (speed_friction.h), and a
+// table that is not one is refused by name: unequal lengths, speeds not increasing, half a table,
+// too many points, a table without a friction law.
+TEST(CutTable, TheToolFrictionTableReachesTheContactLawAndBadTablesAreNamed) {
+  const Model m = build_model(parse_case(
+      kDefaultCaseToml, "default",
+      {"contact.tool_friction_speeds=[1.0, 3.0, 6.0]", "contact.tool_friction_coefficients=[0.6, 0.45, 0.3]"}));
+  ASSERT_EQ(m.contact.tool_friction.points, 3);
+  EXPECT_EQ(m.contact.tool_friction.speed[2], 6.0);
+  EXPECT_EQ(m.contact.tool_friction.mu[1], 0.45);
+  EXPECT_NEAR(friction_at_speed(m.contact.tool_friction, m.contact.friction, 2.0), 0.525, 1e-15);
+  EXPECT_EQ(build_model(parse_case(kDefaultCaseToml, "default", {})).contact.tool_friction.points, 0);
+  test::expect_mentions(test::case_error(kDefaultCaseToml, {"contact.tool_friction_speeds=[1.0, 3.0]",
+                                                            "contact.tool_friction_coefficients=[0.6]"}),
+                        {"bad.toml", "contact.tool_friction_coefficients", "one coefficient per speed"});
+  test::expect_mentions(test::case_error(kDefaultCaseToml, {"contact.tool_friction_speeds=[3.0, 1.0]",
+                                                            "contact.tool_friction_coefficients=[0.6, 0.4]"}),
+                        {"bad.toml", "contact.tool_friction_speeds", "strictly increasing"});
+  test::expect_mentions(test::case_error(kDefaultCaseToml, {"contact.tool_friction_speeds=[3.0, 4.0]"}),
+                        {"bad.toml", "contact.tool_friction_speeds", "tool_friction_coefficients"});
+  test::expect_mentions(
+      test::case_error(kDefaultCaseToml, {"contact.tool_friction_speeds=[3.0]",
+                                          "contact.tool_friction_coefficients=[0.3]", "contact.friction_law=\"none\""}),
+      {"bad.toml", "contact.tool_friction_speeds", "friction law"});
+  test::expect_mentions(
+      test::case_error(kDefaultCaseToml, {"contact.tool_friction_speeds=[1, 2, 3, 4, 5, 6, 7, 8, 9]",
+                                          "contact.tool_friction_coefficients=[1, 1, 1, 1, 1, 1, 1, 1, 1]"}),
+      {"bad.toml", "contact.tool_friction_speeds", "1 to 8"});
+}
+
 }  // namespace
 }  // namespace swarf

@@ -31,7 +31,8 @@ Simulation::Simulation(World& world, const StepSettings& settings) : m_(world), 
   if (m_.contacts) {
     ms_.contact_force.assign(m_.particles.size(), Vec3::Zero());
     sys_.contacts.setup(m_.contact, m_.particles.size(), &m_.meshes, m_.periodic);
-    if (m_.contact.law != FrictionLaw::None && m_.contact.friction > 0.0) ms_.rotations = true;
+    if (m_.contact.law != FrictionLaw::None && (m_.contact.friction > 0.0 || m_.contact.tool_friction.points > 0))
+      ms_.rotations = true;
   }
   sys_.thermal.setup(m_);
   // The rotation arrays only where something can turn a particle or read its turn: contacts

@@ -93,6 +93,27 @@ const std::vector<Key<ContactSettings>>& contact_keys() {
               "Delta T = (1 - s) tau v_s 2R / (3 K) with K = `heat.conductivity` (tau the face shear stress, v_s "
               "the slip speed). The cap solves tau = k0 Theta(T + Delta T). Needs [heat] "
               "([physics.md section 5](physics.md#5-hertz-contacts-with-restitution-damping-and-friction))."},
+      {.name = "tool_friction_speeds",
+       .field = &S::tool_friction_speeds,
+       .unit = "m/s",
+       .no_default = true,
+       .default_note = "none: the tool's mu is `friction`",
+       .range = in(0.0, 1e3, "[]", "a sliding speed, 0 to 1000 m/s"),
+       .rule = "1 to 8 strictly increasing values; with `tool_friction_coefficients`; not with `friction_law` = "
+               "`\"none\"`",
+       .doc = "The tool (triangle) contacts' Coulomb coefficient as a table against the sliding speed v_s (the "
+              "contact's relative tangential speed): the speeds of its points. Piecewise linear between them, "
+              "constant outside; the sphere-sphere contacts keep `friction` "
+              "([physics.md section 5](physics.md#5-hertz-contacts-with-restitution-damping-and-friction))."},
+      {.name = "tool_friction_coefficients",
+       .field = &S::tool_friction_coefficients,
+       .unit = "1",
+       .no_default = true,
+       .default_note = "none",
+       .range = in(0.0, 10.0, "[]", "a judgement: measured coefficients are below 2"),
+       .rule = "as many as `tool_friction_speeds`",
+       .doc = "The tool contacts' Coulomb coefficient mu at the points of `tool_friction_speeds` (a tribometer's "
+              "friction against the sliding speed, measured at the cut's pressures)."},
   };
   return keys;
 }
@@ -116,6 +137,32 @@ static void read_sticking(TableReader& r, CaseSettings& cs) {
              "or material.preset");
 }
 
+// [contact] tool_friction_*: a table of the tool's mu against the sliding speed, whole or absent.
+static void read_tool_friction(TableReader& r, const ContactSettings& c) {
+  const auto& v = c.tool_friction_speeds;
+  const auto& mu = c.tool_friction_coefficients;
+  if (v.empty() && mu.empty()) return;
+  if (v.empty() || mu.empty()) {
+    const char* given = v.empty() ? "tool_friction_coefficients" : "tool_friction_speeds";
+    r.fail(given, r.get(given),
+           "the tool's friction table needs both tool_friction_speeds (m/s) and tool_friction_coefficients (1)");
+  }
+  if (v.size() > static_cast<std::size_t>(SpeedFriction::kMaxPoints))
+    r.fail("tool_friction_speeds", r.get("tool_friction_speeds"),
+           fmt::format("needs 1 to {} points, has {}", SpeedFriction::kMaxPoints, v.size()));
+  if (mu.size() != v.size())
+    r.fail(
+        "tool_friction_coefficients", r.get("tool_friction_coefficients"),
+        fmt::format("has {} values where tool_friction_speeds has {}: one coefficient per speed", mu.size(), v.size()));
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (!(v[i] > v[i - 1]))
+      r.fail("tool_friction_speeds", r.get("tool_friction_speeds"),
+             fmt::format("must be strictly increasing: value {} m/s is not above {} m/s", v[i], v[i - 1]));
+  if (c.friction_law == "none")
+    r.fail("tool_friction_speeds", r.get("tool_friction_speeds"),
+           "a friction table needs a friction law: contact.friction_law is \"none\"");
+}
+
 void read_contact(const CaseInput& in, CaseSettings& cs) {
   if (const toml::table* t = in.table("contact")) {
     TableReader r = in.reader(t, "contact");
@@ -123,6 +170,7 @@ void read_contact(const CaseInput& in, CaseSettings& cs) {
     r.read(contact_keys(), cs.contact);
     r.finish();  // (an unknown key, often a misspelt one, is named before the rules between keys)
     read_sticking(r, cs);
+    read_tool_friction(r, cs.contact);
   }
 }
 
@@ -145,6 +193,11 @@ static ContactParams contact_params(const CaseSettings& cs, const Particles& p) 
           : cs.contact.friction_law == "regularized" ? FrictionLaw::Regularized
                                                      : FrictionLaw::None;
   c.regularization_speed = cs.contact.regularization_speed;
+  c.tool_friction.points = static_cast<int>(cs.contact.tool_friction_speeds.size());
+  for (int k = 0; k < c.tool_friction.points; ++k) {
+    c.tool_friction.speed[k] = cs.contact.tool_friction_speeds[k];
+    c.tool_friction.mu[k] = cs.contact.tool_friction_coefficients[k];
+  }
   c.tangential_damping = cs.contact.tangential_damping;
   double rmax = 0;
   for (double rr : p.radius) rmax = std::max(rmax, rr);
@@ -167,9 +220,17 @@ void build_contacts(const CaseSettings& cs, World& world) {
 }
 
 std::string contacts_echo(const Model& m) {
-  if (!(m.contacts && m.contact.sticking.shear_strength > 0)) return {};
+  if (!m.contacts) return {};
+  std::string s;
+  const SpeedFriction& tf = m.contact.tool_friction;
+  if (tf.points > 0) {
+    s += "  tool friction against the sliding speed (piecewise linear, constant outside):";
+    for (int k = 0; k < tf.points; ++k)
+      s += fmt::format(" {:.4g} at {:.4g} m/s{}", tf.mu[k], tf.speed[k], k + 1 < tf.points ? "," : "\n");
+  }
+  if (!(m.contact.sticking.shear_strength > 0)) return s;
   const Derived& d = m.derived;
-  std::string s = fmt::format(
+  s += fmt::format(
       "  sticking: tool friction capped at 4 R^2 k0 (1 - T*^{:.3g}), k0 = {:.4g} Pa, T_melt {:.5g} K: {:.4g} N per "
       "particle cold\n",
       m.contact.sticking.softening_exponent, m.contact.sticking.shear_strength, m.contact.sticking.melt_temperature,

@@ -33,6 +33,8 @@ struct ContactSettings {
   double sticking_softening_exponent = 0.0;  ///< m, 1; 0 = not given (the preset's, else 1)
   double sticking_melt_temperature = 0.0;    ///< T_melt, K; 0 = not given (the preset's)
   bool sticking_flow_zone = false;  ///< the cap at the face's temperature (a sub-particle flow zone), needs [heat]
+  std::vector<double> tool_friction_speeds;        ///< sliding speeds of the tool's mu table, m/s (empty: none)
+  std::vector<double> tool_friction_coefficients;  ///< the tool's mu at those speeds, 1
 };
 
 const std::vector<Key<ContactSettings>>& contact_keys();

@@ -46,6 +46,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
   const double* radius = p.radius.data();
   const double* temperature = p.temperature.empty() ? nullptr : p.temperature.data();
   const StickingRule stick_rule = prm_.sticking;
+  const SpeedFriction tool_friction = prm_.tool_friction;
   const Periodic periodic = periodic_;
   const std::vector<MeshBody>& meshes = *meshes_;
   const std::int32_t* tri_mesh = tri_mesh_.data();
@@ -144,8 +145,10 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
       const double slip = stick_rule.flow_zone > 0.0 ? vt.norm() : 0.0;  // the flow zone's heat (sticking.h)
       const double stick = hit.weight * sticking_cap(stick_rule, R, temperature ? temperature[i] : 0.0, slip);
-      const Vec3 ft = friction_force(rule, n, vt, fn, hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4,
-                                     hist, stick);
+      FrictionRule tool_rule = rule;  // (the tool's mu at the contact's sliding speed: speed_friction.h)
+      if (tool_friction.points > 0) tool_rule.mu = friction_at_speed(tool_friction, rule.mu, vt.norm());
+      const Vec3 ft = friction_force(tool_rule, n, vt, fn, hit.weight * q.kt0 * root,
+                                     hit.weight * eta_ratio * q.D * root4, hist, stick);
       tres[k] = Result{fn * n + ft, ft.cross(n)};
       if (final)
         q.history = hist;

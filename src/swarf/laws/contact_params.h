@@ -6,6 +6,7 @@
 #pragma once
 
 #include "swarf/laws/friction.h"
+#include "swarf/laws/speed_friction.h"
 #include "swarf/laws/sticking.h"
 
 namespace swarf {
@@ -20,6 +21,7 @@ struct ContactParams {
   double tangential_damping = 0;       ///< tangential dashpot as a multiple of the normal one, 1
   double skin = 0;                     ///< Verlet skin, m
   StickingRule sticking;               ///< the tool-chip friction's sticking cap (off: shear_strength 0)
+  SpeedFriction tool_friction;         ///< the tool contacts' mu against the sliding speed (off: points 0)
 };
 
 }  // namespace swarf
