@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "app/run.h"
@@ -47,6 +48,14 @@ CaseSettings scene_case(const std::string& path, const std::vector<std::string>&
 }  // namespace
 
 void run_bench(const BenchOptions& opt) {
+  // A passive wait policy puts the threads to sleep at every barrier: it cost the cut its second
+  // thread (1.2 times one thread against 1.8, validation/bench/README.md), so a table measured
+  // under it says so.
+  if (const char* policy = std::getenv("OMP_WAIT_POLICY"); policy && (policy[0] == 'p' || policy[0] == 'P'))
+    fmt::print(
+        "(OMP_WAIT_POLICY={}: the threads sleep at every barrier; rows with 2 or more threads read slower than under "
+        "the default policy, the cut's by a third)\n",
+        policy);
   fmt::print(
       "| scene | scheme | particles | rods | steps | force evaluations | Newton iterations | CG iterations | threads | "
       "median s (min-max) | ns/particle-step | ns/particle-evaluation | broken rods | kinetic energy J | "
