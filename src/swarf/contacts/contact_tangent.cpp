@@ -100,10 +100,9 @@ void ContactSystem::tangent(const Particles& p, double h, double kx, double kv) 
       const double stick = hit.weight * sticking_cap(prm_.sticking, R, temperature ? temperature[i] : 0.0, slip);
       // (the tool's mu at the sliding speed, speed_friction.h; its slope d mu / d v_s is left out
       // like the cap's turn)
-      FrictionRule tool_rule = rule;
-      if (prm_.tool_friction.points > 0) tool_rule.mu = friction_at_speed(prm_.tool_friction, rule.mu, vt.norm());
-      const double t = kv * friction_tangent(tool_rule, n, vt, fn, hit.weight * q.kt0 * root,
-                                             hit.weight * eta_ratio * q.D * root4, q.history, stick);
+      const double t = kv * friction_tangent(at_sliding_speed(rule, prm_.tool_friction, vt), n, vt, fn,
+                                             hit.weight * q.kt0 * root, hit.weight * eta_ratio * q.D * root4, q.history,
+                                             stick);
       ttan_axis_[k] = n;
       ttan_lateral_[k] = t;
       ttan_axial_[k] = normal - t;

@@ -145,9 +145,7 @@ void ContactSystem::evaluate(const Particles& p, double h, bool final) {
       // The sphere plays body j (it moves relative to the wall): the friction on it is ft.
       const double slip = stick_rule.flow_zone > 0.0 ? vt.norm() : 0.0;  // the flow zone's heat (sticking.h)
       const double stick = hit.weight * sticking_cap(stick_rule, R, temperature ? temperature[i] : 0.0, slip);
-      FrictionRule tool_rule = rule;  // (the tool's mu at the contact's sliding speed: speed_friction.h)
-      if (tool_friction.points > 0) tool_rule.mu = friction_at_speed(tool_friction, rule.mu, vt.norm());
-      const Vec3 ft = friction_force(tool_rule, n, vt, fn, hit.weight * q.kt0 * root,
+      const Vec3 ft = friction_force(at_sliding_speed(rule, tool_friction, vt), n, vt, fn, hit.weight * q.kt0 * root,
                                      hit.weight * eta_ratio * q.D * root4, hist, stick);
       tres[k] = Result{fn * n + ft, ft.cross(n)};
       if (final)

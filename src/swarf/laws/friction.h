@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "swarf/core/vec3.h"
+#include "swarf/laws/speed_friction.h"
 
 namespace swarf {
 
@@ -21,6 +22,15 @@ struct FrictionRule {
   double v0;  // regularization speed, m/s
   double h;   // step, s
 };
+
+// The rule with the tool's mu at the sliding speed |vt| when a table is given (speed_friction.h);
+// the rule itself otherwise (no square root then).
+[[gnu::always_inline]] inline FrictionRule at_sliding_speed(const FrictionRule& r, const SpeedFriction& table,
+                                                            const Vec3& vt) {
+  FrictionRule out = r;
+  if (table.points > 0) out.mu = friction_at_speed(table, r.mu, vt.norm());
+  return out;
+}
 
 // Tangential force on body j from the relative tangential velocity vt (j relative to i, m/s),
 // the committed history 'hist' (m) and the normal force fn (N), with the tangential stiffness
