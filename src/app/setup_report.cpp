@@ -68,6 +68,9 @@ void print_setup(const Model& m, int threads) {
     if (m.rods.formation.enabled())
       say("  rod: unbonded lattice particles pressed beyond a relative overlap of {:.4g} form a rod\n",
           m.rods.formation.overlap);
+    if (m.rods.isochoric)
+      say("  rod: plastic flow keeps the volume (each step's increments of a particle's rods lose their mean{})\n",
+          m.rods.formation.enabled() ? "; a formed rod takes the lattice's length, r_i + r_j" : "");
     say("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area, d.rod_stiffness,
         d.rod_damping);
   }

@@ -124,6 +124,15 @@ const std::vector<Key<RodSettings>>& rod_keys() {
               "rod). Its coordination stays while its neighbours change, which is how a metal flows; the lattice "
               "then shears at a steady stress instead of hardening without bound or softening into a slip plane "
               "(validation/cutting/README.md). Without it, a particle with 12 rods forms none."},
+      {.name = "isochoric_plasticity",
+       .field = &S::isochoric_plasticity,
+       .rule = "not with `integrator.solver = \"newton\"`; one process (not over MPI ranks)",
+       .doc = "The rods' plastic flow keeps the volume, as a metal's does: after the law's return map, each step's "
+              "plastic increments of a particle's rods lose their mean (half of each end's), so that pressure "
+              "alone yields nothing and a shear flows as before. Without it a lattice of rods yields under a "
+              "hydrostatic pressure of about 0.77 times its yield stress and compacts plastically: the plain C45 "
+              "chip ends about 1.8 times as dense as the workpiece (docs/physics.md, \"Plastic flow that keeps "
+              "the volume\")."},
   };
   static const std::vector<Key<S>> keys = [] {
     std::vector<Key<S>> all = head;
@@ -172,6 +181,14 @@ void check_rods_across_tables(const CaseSettings& cs) {
         fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
                     "contacts: add a [contact] table",
                     cs.source, cs.rod.bond_overlap));
+  // (Newton's tangent has no term for the correction, which couples a rod to its ends' other
+  // rods: not built.)
+  if (cs.rod.isochoric_plasticity && cs.integrator.solver == "newton")
+    throw InputError(
+        fmt::format("{}: key 'rod.isochoric_plasticity' = true: not with integrator.solver = \"newton\" "
+                    "(its tangent has no term for the correction that couples a rod to its ends' other rods): "
+                    "use Verlet or the fixed-point Newmark step",
+                    cs.source));
 }
 
 void build_rods(const CaseSettings& cs, const Derived& d, Lattice& lat, std::size_t particles, Rods& r) {
@@ -179,6 +196,7 @@ void build_rods(const CaseSettings& cs, const Derived& d, Lattice& lat, std::siz
   r.area = d.rod_area;
   r.formation.overlap = cs.rod.bond_overlap;
   r.formation.exchange = cs.rod.neighbour_exchange;
+  r.isochoric = cs.rod.isochoric_plasticity;
   // Moved, not copied: the lattice's arrays are not needed after this, and a copy would hold
   // the largest arrays of the build twice.
   r.ends = std::move(lat.rods);

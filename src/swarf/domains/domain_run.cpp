@@ -43,6 +43,7 @@ void copy_configuration(const World& from, World& to) {
   to.rods.law = from.rods.law;
   to.rods.area = from.rods.area;
   to.rods.formation = from.rods.formation;
+  to.rods.isochoric = from.rods.isochoric;
   to.gravity = from.gravity;
   to.periodic = from.periodic;
   to.contact = from.contact;
@@ -110,6 +111,10 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what = s.solver == Solver::Newton ? "the Newton solver" : "the implicit Newmark step (integrator.scheme)";
   else if (!w.bodies.empty())
     what = "rigid bodies";
+  else if (w.rods.isochoric)
+    what =
+        "rods whose plastic flow keeps the volume (rod.isochoric_plasticity: a ghost's mean needs its rods on the "
+        "other rank)";
   else if (!w.inflows.empty() || !w.outflows.empty())
     what = "particle inflows and outflows";
   else if (w.heat.enabled && (w.heat.tool_heat_capacity > 0.0 || w.heat.tool_conductivity > 0.0))

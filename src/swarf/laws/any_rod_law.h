@@ -31,6 +31,9 @@ inline double elastic_energy_density(const AnyRodLaw& law, double stress) {
 inline double elastic_modulus(const AnyRodLaw& law) {
   return std::visit([](const auto& l) { return elastic_modulus(l); }, law);
 }
+inline double shift_modulus(const AnyRodLaw& law) {
+  return std::visit([](const auto& l) { return shift_modulus(l); }, law);
+}
 inline RodLawDescription describe(const AnyRodLaw& law) {
   return std::visit([](const auto& l) { return describe(l); }, law);
 }

@@ -204,6 +204,8 @@ inline double elastic_energy_density(const JohnsonCookRodLaw& law, double stress
   return elastic_energy_density(law.base, stress);
 }
 inline double elastic_modulus(const JohnsonCookRodLaw& law) { return elastic_modulus(law.base); }
+// (the scaled law keeps sigma = E eps - (E - k) q, and E (eps - q) on the hardening curve)
+inline double shift_modulus(const JohnsonCookRodLaw& law) { return shift_modulus(law.base); }
 inline bool uses_rate(const JohnsonCookRodLaw& law) { return law.rate_sensitivity != 0.0 || uses_rate(law.base); }
 
 /// The base law with its flow stresses scaled by a fixed S: the same responses as the law at a

@@ -22,6 +22,7 @@
 //   plastic_work_density(law, stress, dshift)           what a commit of dshift dissipates
 //   elastic_energy_density(law, stress)                 the recoverable energy
 //   elastic_modulus(law)                                the small-strain modulus E
+//   shift_modulus(law)                                  d sigma / d shift at a fixed strain, negated
 //   uses_rate(law)                                      whether evaluate reads the strain rate
 //   describe(law)                                       name and parameters with units (echo)
 // A law with the trait kReadsTemperature also has evaluate and tangent with a last argument, the
@@ -169,6 +170,12 @@ inline double plastic_strain(const BilinearRodLaw& law, double shift) {
 /// sigma d(eps_p), the plastic strain being eps_p = (E - k)/E eps0 (docs/physics.md sections 2 to 4).
 inline double plastic_work_density(const BilinearRodLaw& law, double stress, double dshift) {
   return stress * ((law.youngs_modulus - law.hardening) / law.youngs_modulus) * dshift;
+}
+
+/// How far the stress falls per unit of shift at a fixed strain, Pa: sigma = E eps - (E - k) eps0
+/// for the single slope, E (eps - eps0) for the hardening curve.
+inline double shift_modulus(const BilinearRodLaw& law) {
+  return law.flow.points > 0 ? law.youngs_modulus : law.youngs_modulus - law.hardening;
 }
 
 /// Recoverable elastic energy density of a rod at stress sigma, J/m^3 (sigma^2 / 2E).

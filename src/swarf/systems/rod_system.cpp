@@ -9,6 +9,7 @@
 #include "swarf/contacts/contacts.h"
 #include "swarf/core/parallel.h"
 #include "swarf/core/state_archive.h"
+#include "swarf/forces/plastic_volume.h"
 #include "swarf/forces/rod_forces.h"
 
 namespace swarf {
@@ -67,6 +68,10 @@ void RodSystem::forces(World& m_, const Vec3* rate_x, const Vec3* rate_v) {
     view.rod_viscous = rod_viscous_.data();
   }
   evaluate_rods(r.law, r.area, view, m_.periodic);
+  // (the plastic flow kept free of volume change: forces/plastic_volume.h)
+  if (r.isochoric)
+    keep_plastic_volume(r, p.position.data(), p.size(), m_.periodic, plastic_mean_, plastic_correction_,
+                        block_changed_.data());
   if (!mesh_edge_.empty()) part(m_);
 }
 
@@ -397,10 +402,22 @@ RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLe
   if (formed.empty()) return {};
   std::size_t revived = 0;
   const std::size_t m_before = r.size();
+  // With isochoric plasticity a new rod takes the lattice's length, the sum of its particles'
+  // radii, not their distance: a pair pressed into contact is closer than the lattice spacing,
+  // and a rod born at that distance would keep it (each exchange gives up the most stretched rod
+  // and takes a pressed one: the lattice compacted through its exchanges, whatever its plastic
+  // flow did). The rod is born pressed, its elastic energy booked against the fracture energy
+  // (the ledger's line for rods that part and form).
+  const bool lattice_length = r.isochoric;
+  double formation_energy = 0.0;
   for (const auto& e : formed) {
     Vec3 d = p.position[e[1]] - p.position[e[0]];
     m_.periodic.wrap(d);
-    const double length = d.norm();
+    const double length = lattice_length ? p.radius[e[0]] + p.radius[e[1]] : d.norm();
+    if (lattice_length) {
+      const double strain = (d.norm() - length) / length;
+      formation_energy += elastic_energy_density(r.law, elastic_modulus(r.law) * strain) * A * length;
+    }
     // The pair's broken rod, if it had one, forms again: one rod per pair.
     std::int32_t rod = -1;
     for (std::int32_t q = r.row_start[e[0]]; q < r.row_start[e[0] + 1]; ++q)
@@ -418,6 +435,7 @@ RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLe
   }
   formed_ += formed.size();
   broken_ -= revived;
+  ledger.fracture_energy -= formation_energy;
   // The rows change only when rods were appended or removed (a revived or exchanged rod keeps
   // its index), and then only from the first rod that moved or was appended on: rebuilding them
   // all, serial and O(rods), at every formation was most of its cost.
