@@ -37,11 +37,19 @@ namespace swarf {
 /// Passes of the correction per evaluation (plastic_volume.cpp says what each removes).
 inline constexpr int kPlasticVolumePasses = 4;
 
-/// Makes the trial's plastic increments mean-free per particle (above), for the particles at x;
-/// stress, force coefficient and trial shift of the rods it corrects change, and block_changed
-/// (per block of kBlock rods) is set where it did. 'mean' (per particle) and 'correction' (per
-/// rod) are scratch.
-void keep_plastic_volume(Rods& rods, const Vec3* x, std::size_t particles, Periodic periodic, std::vector<double>& mean,
-                         std::vector<double>& correction, int* block_changed);
+/// Per-particle and per-set scratch, kept between steps (no allocation per step): marks and
+/// means are 0 between calls.
+struct PlasticVolumeScratch {
+  std::vector<std::uint8_t> mark;  ///< 1: at a rod that yielded; 2: a neighbour of one
+  std::vector<double> mean;        ///< the particle's mean increment in the current pass, 1
+  std::vector<std::int32_t> set;   ///< the marked particles, in index order
+};
+
+/// Makes the trial's plastic increments mean-free per particle (above) where rods yielded (the
+/// blocks 'block_changed' marks: per block of kBlock rods, set where a correction changed a rod)
+/// and one ring of neighbours around, for the particles at x; stress, force coefficient and
+/// trial shift of the rods it corrects change.
+void keep_plastic_volume(Rods& rods, const Vec3* x, std::size_t particles, Periodic periodic, PlasticVolumeScratch& w,
+                         int* block_changed);
 
 }  // namespace swarf

@@ -70,8 +70,7 @@ void RodSystem::forces(World& m_, const Vec3* rate_x, const Vec3* rate_v) {
   evaluate_rods(r.law, r.area, view, m_.periodic);
   // (the plastic flow kept free of volume change: forces/plastic_volume.h)
   if (r.isochoric)
-    keep_plastic_volume(r, p.position.data(), p.size(), m_.periodic, plastic_mean_, plastic_correction_,
-                        block_changed_.data());
+    keep_plastic_volume(r, p.position.data(), p.size(), m_.periodic, plastic_volume_, block_changed_.data());
   if (!mesh_edge_.empty()) part(m_);
 }
 

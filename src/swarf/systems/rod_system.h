@@ -24,6 +24,7 @@
 
 #include "swarf/core/exact_sum.h"
 #include "swarf/core/vec3.h"
+#include "swarf/forces/plastic_volume.h"
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
 #include "swarf/systems/step_context.h"
@@ -126,14 +127,13 @@ class RodSystem {
   void viscous_runs(const World& w);             // runs_ from rod_viscous_
   std::vector<ExactLedger> block_exact_;         // with counted_: commit's scratch per rod block
   std::size_t broken_ = 0;
-  std::size_t formed_ = 0;                  // state: 'formed_rods'
-  std::vector<Vec3> mesh_edge_;             // per mesh: its lowest reference vertex (parting lines), m; empty: none
-  std::vector<std::uint8_t> lattice_;       // per particle: 1 if built with a rod (bond formation's candidates)
-  std::vector<int> intact_count_;           // form's scratch: a particle's intact rods, -1 = not counted yet
-  std::vector<double> plastic_mean_;        // with Rods::isochoric: per particle, its rods' mean plastic increment
-  std::vector<double> plastic_correction_;  // with Rods::isochoric: per rod, the increment taken off it
-  std::vector<double> block_viscous_;       // per rod block: viscous power of the last evaluation, W
-  std::vector<int> block_changed_;          // per rod block: a trial shift or break to commit
+  std::size_t formed_ = 0;               // state: 'formed_rods'
+  std::vector<Vec3> mesh_edge_;          // per mesh: its lowest reference vertex (parting lines), m; empty: none
+  std::vector<std::uint8_t> lattice_;    // per particle: 1 if built with a rod (bond formation's candidates)
+  std::vector<int> intact_count_;        // form's scratch: a particle's intact rods, -1 = not counted yet
+  PlasticVolumeScratch plastic_volume_;  // with Rods::isochoric (forces/plastic_volume.h)
+  std::vector<double> block_viscous_;    // per rod block: viscous power of the last evaluation, W
+  std::vector<int> block_changed_;       // per rod block: a trial shift or break to commit
   std::vector<WorkList>
       block_work_;  // commit's scratch per rod block: the rods that flowed (kept: no allocation per step)
 };
