@@ -8,8 +8,7 @@
 // depend on the pressure and keeps the volume (von Mises; Bridgman's experiments), the plastic
 // strain tensor has no trace. In a cut the material ahead of the tool and in the chip is under a
 // pressure of the order of the flow stress, and the plain rod lattice compacts there: the default
-// C45 chip ended about 1.5 times as dense as the workpiece (validation/cutting/README.md, "The
-// chip's volume").
+// C45 chip ends about 1.8 times as dense as the workpiece (validation/cutting/compaction/).
 //
 // The rule here: after the law's return map has given every rod its trial shift, the increments
 // of each particle's rods are made free of a mean. With m_p the mean of (trial shift - shift) over
@@ -17,11 +16,12 @@
 // rods, sum_k n_k n_k^T = 4 I, so the mean of n.de_p.n is tr(de_p) / 3), rod k between i and j
 // takes (m_i + m_j) / 2 off its increment, and its stress and force follow its shift (the law's
 // shift_modulus). Pressure then yields nothing: every rod proposes the same increment and keeps
-// none. A shear's increments have no mean and are kept. The stress of a corrected rod may lie a
+// none. A shear's increments have no mean (to first order in the strain) and are kept. The stress of a corrected rod may lie a
 // little off the law's band; the next evaluation's return map starts from it. The energy stays
 // exact (the stress is still the law's function of strain and shift, the plastic work sigma
 // times the committed increment); the work pressure did on the removed mean is no longer
-// dissipated. Each particle's mean runs over its row of the rod lists in rod order, each rod's
+// dissipated. (A corrected rod's own plastic work may come out negative, its neighbours' the
+// more positive; the heat's sources take the rods' works as they are.) Each particle's mean runs over its row of the rod lists in rod order, each rod's
 // correction is its own: the same bits for any thread count. Rods broken in this trial take no
 // part.
 #pragma once
