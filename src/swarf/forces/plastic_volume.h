@@ -16,14 +16,13 @@
 // rods, sum_k n_k n_k^T = 4 I, so the mean of n.de_p.n is tr(de_p) / 3), rod k between i and j
 // takes (m_i + m_j) / 2 off its increment, and its stress and force follow its shift (the law's
 // shift_modulus). Pressure then yields nothing: every rod proposes the same increment and keeps
-// none. A shear's increments have no mean (to first order in the strain) and are kept. The stress of a corrected rod may lie a
-// little off the law's band; the next evaluation's return map starts from it. The energy stays
-// exact (the stress is still the law's function of strain and shift, the plastic work sigma
-// times the committed increment); the work pressure did on the removed mean is no longer
-// dissipated. (A corrected rod's own plastic work may come out negative, its neighbours' the
-// more positive; the heat's sources take the rods' works as they are.) Each particle's mean runs over its row of the rod lists in rod order, each rod's
-// correction is its own: the same bits for any thread count. Rods broken in this trial take no
-// part.
+// none. A shear's increments have no mean (to first order in the strain) and are kept. The stress of a corrected rod
+// may lie a little off the law's band; the next evaluation's return map starts from it. The energy stays exact (the
+// stress is still the law's function of strain and shift, the plastic work sigma times the committed increment); the
+// work pressure did on the removed mean is no longer dissipated. (A corrected rod's own plastic work may come out
+// negative, its neighbours' the more positive; the heat's sources take the rods' works as they are.) Each particle's
+// mean runs over its row of the rod lists in rod order, each rod's correction is its own: the same bits for any thread
+// count. Rods broken in this trial take no part.
 #pragma once
 
 #include <vector>
