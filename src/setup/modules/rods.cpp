@@ -196,7 +196,7 @@ void build_rods(const CaseSettings& cs, const Derived& d, Lattice& lat, std::siz
   r.area = d.rod_area;
   r.formation.overlap = cs.rod.bond_overlap;
   r.formation.exchange = cs.rod.neighbour_exchange;
-  r.isochoric = cs.rod.isochoric_plasticity;
+  r.isochoric = r.formation.lattice_length = cs.rod.isochoric_plasticity;
   // Moved, not copied: the lattice's arrays are not needed after this, and a copy would hold
   // the largest arrays of the build twice.
   r.ends = std::move(lat.rods);

@@ -18,7 +18,12 @@
 //
 // The rule is decided at commit, like breakage, so an implicit step's iterations never see it.
 // It adds no energy: the new rod is stress-free; the Hertz energy the pair's contact held stays
-// in the contacts' ledger (what they took up), as it does when a contact separates.
+// in the contacts' ledger (what they took up), as it does when a contact separates. With
+// 'lattice_length' (rod.isochoric_plasticity) the new rod takes the lattice's length r_i + r_j
+// instead: a pair pressed into contact is closer than the lattice spacing, and a rod born at
+// that distance keeps it (each exchange gives up the most stretched rod and takes a pressed one:
+// the lattice compacts through its exchanges, validation/cutting/compaction/). It is then born
+// pressed, and the caller books its elastic energy.
 #pragma once
 
 #include <cmath>
@@ -37,9 +42,16 @@ struct BondFormation {
   /// neighbour gives up its most stretched rod for the new one, so that its coordination stays
   /// while its neighbours change. Off: it forms no rod.
   bool exchange = false;
+  /// A new rod's rest length: the lattice's r_i + r_j (true) or the pair's distance (false).
+  bool lattice_length = false;
 
   bool enabled() const { return overlap < 1.0; }
 };
+
+/// The rest length of a rod formed between particles of radii ri, rj (m) 'distance' (m) apart.
+inline double formed_rest_length(const BondFormation& rule, double distance, double ri, double rj) {
+  return rule.lattice_length ? ri + rj : distance;
+}
 
 /// True if a particle with 'intact' intact rods may form another.
 inline bool may_form(const BondFormation& rule, int intact) { return intact < rule.coordination; }

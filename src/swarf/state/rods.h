@@ -24,7 +24,8 @@ struct Rods {
   double area = 0.0;        ///< cross-section A of every rod, m^2
   BondFormation formation;  ///< when unbonded lattice particles pressed together form a rod (off by default)
   bool isochoric = false;   ///< each step's plastic increments made mean-free per particle: the lattice's
-                            ///< plastic flow keeps its volume (forces/plastic_volume.h)
+                            ///< plastic flow keeps its volume (forces/plastic_volume.h); set with
+                            ///< formation.lattice_length
 
   std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
   std::vector<double> rest_length;                ///< L0, m

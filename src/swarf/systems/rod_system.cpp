@@ -401,20 +401,17 @@ RodSystem::PairList RodSystem::form(World& m_, ContactSystem& contacts, EnergyLe
   if (formed.empty()) return {};
   std::size_t revived = 0;
   const std::size_t m_before = r.size();
-  // With isochoric plasticity a new rod takes the lattice's length, the sum of its particles'
-  // radii, not their distance: a pair pressed into contact is closer than the lattice spacing,
-  // and a rod born at that distance would keep it (each exchange gives up the most stretched rod
-  // and takes a pressed one: the lattice compacted through its exchanges, whatever its plastic
-  // flow did). The rod is born pressed, its elastic energy booked against the fracture energy
-  // (the ledger's line for rods that part and form).
-  const bool lattice_length = r.isochoric;
+  // A rod born at the lattice's length (BondFormation::lattice_length) is born pressed: its
+  // elastic energy is booked against the fracture energy (the ledger's line for rods that part
+  // and form).
   double formation_energy = 0.0;
   for (const auto& e : formed) {
     Vec3 d = p.position[e[1]] - p.position[e[0]];
     m_.periodic.wrap(d);
-    const double length = lattice_length ? p.radius[e[0]] + p.radius[e[1]] : d.norm();
-    if (lattice_length) {
-      const double strain = (d.norm() - length) / length;
+    const double distance = d.norm();
+    const double length = formed_rest_length(r.formation, distance, p.radius[e[0]], p.radius[e[1]]);
+    if (length != distance) {
+      const double strain = (distance - length) / length;
       formation_energy += elastic_energy_density(r.law, elastic_modulus(r.law) * strain) * A * length;
     }
     // The pair's broken rod, if it had one, forms again: one rod per pair.
