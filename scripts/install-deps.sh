@@ -23,6 +23,8 @@ PKGS=(
   libhypre-dev
   # plots (PNG) and headless rendering
   python3 python3-numpy python3-matplotlib python3-h5py xvfb xauth
+  # nearest neighbours of the chip's density (validation/cutting/compaction/chip_density.py)
+  python3-scipy
 )
 export DEBIAN_FRONTEND=noninteractive
 missing=()
