@@ -16,7 +16,10 @@ the same from a count: particles per cell of a grid in x-z (1.5 lattice cells wi
 width) over the bulk's, for the cells inside the material (a chip that has collapsed into dense
 sheets with gaps between them reads high by the 6 nearest and nearer 1 by the cells), and the
 rods' mean plastic shift there (results.h5 /bonds: the rods' own account of a volume
-change: for an FCC particle the mean plastic rod strain is a third of the plastic volume strain).
+change: for an FCC particle the mean plastic rod strain is a third of the plastic volume strain)
+and the rods' mean length over the lattice's spacing 2R (intact rods with both ends in the region,
+nearest images along a periodic width: where the chip's volume went, whatever the rods' shifts
+say; a rod whose rest length is not 2R would make the two differ).
 A metal's plastic flow keeps its volume: rho stays within the elastic 1 % everywhere.
 With --png, a picture per run of the particles coloured by rho (x along the cut, z up).
 """
@@ -109,6 +112,18 @@ def mean_shift(r, mask):
     return per[m].mean() if m.any() else float("nan")
 
 
+def rod_length(r, mask):
+    """The mean length of the intact rods with both ends in 'mask', over 2R."""
+    p, it, x = r["pairs"], r["intact"], r["x"]
+    m = it & mask[p[:, 0]] & mask[p[:, 1]]
+    if not m.any():
+        return float("nan")
+    d = x[p[m, 1]] - x[p[m, 0]]
+    if not r["free"] and r["width"] > 0:
+        d[:, 1] -= r["width"] * np.round(d[:, 1] / r["width"])
+    return float(np.linalg.norm(d, axis=1).mean() / (2.0 * r["radius"]))
+
+
 def main(argv):
     runs, png, labels = [], None, None
     i = 0
@@ -126,8 +141,8 @@ def main(argv):
         sys.exit(__doc__)
     labels = labels or runs
     print("| run | region | particles | rho, 6 nearest: median | 10-90 % | rho, cells: median (cells) | "
-          "rods' mean plastic shift |")
-    print("|---|---|---|---|---|---|---|")
+          "rods' mean plastic shift | rods' mean length / 2R |")
+    print("|---|---|---|---|---|---|---|---|")
     fields = []
     for run, label in zip(runs, labels):
         r = load(run)
@@ -139,13 +154,13 @@ def main(argv):
         cells = cell_density(r, reg)
         for name, m in reg.items():
             if not m.any():
-                print(f"| {label} | {name} | 0 | - | - | - | - |")
+                print(f"| {label} | {name} | 0 | - | - | - | - | - |")
                 continue
             lo, hi = np.percentile(rho[m], [10, 90])
             c = cells[name]
             cs = f"{np.median(c):.3f} ({len(c)})" if len(c) else "- (0)"
             print(f"| {label} | {name} | {m.sum()} | {np.median(rho[m]):.3f} | {lo:.3f}-{hi:.3f} | {cs} | "
-                  f"{mean_shift(r, m):+.4f} |")
+                  f"{mean_shift(r, m):+.4f} | {rod_length(r, m):.4f} |")
     if png:
         import matplotlib
         matplotlib.use("Agg")
