@@ -39,7 +39,8 @@ struct RodSettings {
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
   double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
   bool neighbour_exchange = false;    ///< a particle with 12 rods gives up its most stretched one for a new neighbour
-  bool isochoric_plasticity = false;  ///< yield and flow at each rod's strain with its ends' volume change divided out
+  bool isochoric_plasticity = false;  ///< each step's plastic increments of a particle's rods lose their mean
+                                      ///< (forces/plastic_volume.h)
 };
 
 /// [rod]'s keys: the shared ones, then each law's own (rod_laws.h), then the rest, in the docs' order.
