@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "lattice_gen/fcc_lattice.h"
 #include "memory_archive.h"
 #include "scenes/pulled_bar.h"
 #include "scenes/scheme.h"
@@ -19,6 +20,7 @@
 #include "setup/model.h"
 #include "swarf/measure/particle_fields.h"
 #include "swarf/simulation.h"
+#include "swarf/systems/plastic_strain_system.h"
 
 namespace swarf {
 namespace {
@@ -219,6 +221,56 @@ TEST(Peeq, FollowsTheParticlesThroughAShuffleAndARestart) {
   const std::uint64_t h = sc.state_hash();
   c.particles.peeq[0] += 1e-9;
   EXPECT_NE(sc.state_hash(), h);
+}
+
+// A 3 x 3 x 3-cell FCC block of R = 1 mm with one rod of an interior particle flowing by 1e-3;
+// particle j, the rod's other end, is put at 'fraction' of the lattice's distance from i along
+// the rod. Returns the PEEQ of i and j after one window of one step.
+std::array<double, 2> one_rod_window(double fraction) {
+  FccSpec spec;
+  spec.radius = 1e-3;
+  spec.cells = {3, 3, 3};
+  const Lattice lat = generate_fcc(spec);
+  World w;
+  Particles& p = w.particles;
+  const std::size_t n = lat.position.size();
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.position[i] = p.initial_position[i] = lat.position[i];
+    p.radius[i] = spec.radius;
+    p.mass[i] = p.inv_mass[i] = 1.0;
+    p.id[i] = static_cast<std::int64_t>(i);
+  }
+  p.next_id = static_cast<std::int64_t>(n);
+  w.rods.ends = lat.rods;
+  w.rods.rest_length = lat.rest_length;
+  w.rods.reset_state();
+  w.rods.build_rows(n);
+  PlasticStrainSystem system;
+  system.setup(w, 1);
+  // (an interior particle: 12 rods)
+  std::int32_t i = 0;
+  while (w.rods.row_start[i + 1] - w.rods.row_start[i] != 12) ++i;
+  const Rods::Entry e = w.rods.entries[w.rods.row_start[i]];
+  p.position[e.other] = p.position[i] + fraction * (p.position[e.other] - p.position[i]);
+  const RodSystem::WorkList flowed{{w.rods.ends[e.rod], 0.0, e.rod, 1e-3}};
+  system.accumulate(w, flowed, 1e-9);
+  return {p.peeq[i], p.peeq[e.other]};
+}
+
+// A rod whose pair has collapsed (shorter than half its rest length: two bonded spheres pressed
+// almost onto each other, as at a cut's separation line) adds nothing to PEEQ, where its
+// increment converted to the current length (L0 / L) would grow without bound; a rod at 0.55 L0
+// still counts, and particle i's PEEQ is 0.9 / 0.55 times what it is at 0.9 L0 (de = de_p L0 / L,
+// and i's fit, whose rods keep their directions, is linear in it; 1e-12 relative: rounding; j's
+// rods turn as it moves, so j is only checked to count).
+TEST(Peeq, ARodWhosePairCollapsedAddsNothing) {
+  const auto collapsed = one_rod_window(0.45), short_rod = one_rod_window(0.55), near = one_rod_window(0.9);
+  EXPECT_EQ(collapsed[0], 0.0);
+  EXPECT_EQ(collapsed[1], 0.0);
+  ASSERT_GT(near[0], 0.0);
+  EXPECT_NEAR(short_rod[0], near[0] * 0.9 / 0.55, 1e-12 * short_rod[0]);
+  EXPECT_GT(short_rod[1], 0.0);
 }
 
 }  // namespace

@@ -12,6 +12,13 @@ namespace {
 // The deviatoric fit's components kept: eigenvalues above 1 % of the largest (a lattice sheared
 // by gamma 3 keeps all five: strain_fit.h), which bounds each by 10 times the rods' rms increment.
 constexpr double kWellDetermined = 0.01;
+// A rod shorter than this fraction of its rest length adds nothing: its pair has collapsed (two
+// bonded spheres pressed almost onto each other where the lattice compacts at a cut's separation
+// line, validation/cutting/compaction/), its increment says nothing about a continuum's strain, and
+// the conversion to the current length, L0 / L, grows without bound (with it, single windows gave
+// the default cut's particles PEEQ of several hundred). A homogeneous simple shear to gamma 2
+// shortens no rod below 0.71 L0.
+constexpr double kCollapsed = 0.5;
 }  // namespace
 
 void PlasticStrainSystem::setup(World& w, int window) {
@@ -31,10 +38,10 @@ void PlasticStrainSystem::accumulate(World& w, const RodSystem::WorkList& flowed
     const auto [i, j] = f.ends;
     Vec3 d = p.position[j] - p.position[i];
     w.periodic.wrap(d);
-    const double len2 = d.squaredNorm();
-    if (!(len2 > 0.0)) continue;
+    const double len2 = d.squaredNorm(), L0 = r.rest_length[f.rod];
+    if (!(len2 > kCollapsed * kCollapsed * L0 * L0)) continue;
     // g(n) de with n = d / L and de = de_p L0 / L: g(d) de_p L0 / L^3.
-    const double s = f.plastic_strain * r.rest_length[f.rod] / (len2 * std::sqrt(len2));
+    const double s = f.plastic_strain * L0 / (len2 * std::sqrt(len2));
     const Vec3 normal(d[0] * d[0] * s, d[1] * d[1] * s, d[2] * d[2] * s);
     const Vec3 shear(2 * d[0] * d[1] * s, 2 * d[1] * d[2] * s, 2 * d[0] * d[2] * s);
     p.window_normal[i] += normal;

@@ -6,7 +6,8 @@
 //               logarithmic plastic increment de = de_p L0 / L (de_p the law's plastic strain
 //               increment, of the rest length L0; L the rod's length now) to both ends' windows as
 //               g(n) de (n its direction now, g the normal-strain row: measure/strain_fit.h), in
-//               list order (rod order: the same bits for any thread count)
+//               list order (rod order: the same bits for any thread count); a rod shorter than
+//               L0 / 2, whose pair has collapsed, adds nothing
 //   fit         every 'window' steps, each particle with a non-zero window solves the normal
 //               equations of its intact rods' current directions with the window as right-hand
 //               side: the deviatoric plastic strain increment tensor dE_p of the window (the
