@@ -11,8 +11,8 @@
 #include <random>
 #include <string>
 
-#include "lattice_gen/fcc_lattice.h"
 #include "memory_archive.h"
+#include "scenes/fcc_world.h"
 #include "scenes/pulled_bar.h"
 #include "scenes/scheme.h"
 #include "scenes/shear_layers.h"
@@ -227,25 +227,8 @@ TEST(Peeq, FollowsTheParticlesThroughAShuffleAndARestart) {
 // particle j, the rod's other end, is put at 'fraction' of the lattice's distance from i along
 // the rod. Returns the PEEQ of i and j after one window of one step.
 std::array<double, 2> one_rod_window(double fraction) {
-  FccSpec spec;
-  spec.radius = 1e-3;
-  spec.cells = {3, 3, 3};
-  const Lattice lat = generate_fcc(spec);
-  World w;
+  World w = test::fcc_world(1e-3, {3, 3, 3});
   Particles& p = w.particles;
-  const std::size_t n = lat.position.size();
-  p.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    p.position[i] = p.initial_position[i] = lat.position[i];
-    p.radius[i] = spec.radius;
-    p.mass[i] = p.inv_mass[i] = 1.0;
-    p.id[i] = static_cast<std::int64_t>(i);
-  }
-  p.next_id = static_cast<std::int64_t>(n);
-  w.rods.ends = lat.rods;
-  w.rods.rest_length = lat.rest_length;
-  w.rods.reset_state();
-  w.rods.build_rows(n);
   PlasticStrainSystem system;
   system.setup(w, 1);
   // (an interior particle: 12 rods)

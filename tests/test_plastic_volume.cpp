@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "lattice_gen/fcc_lattice.h"
+#include "scenes/fcc_world.h"
 #include "scenes/pulled_bar.h"
 #include "setup/case_config.h"
 #include "setup/model.h"
@@ -21,39 +21,20 @@ constexpr double kE = 2e11, kYield = 1e-3;  // rod modulus (Pa) and yield strain
 // A 6 x 6 x 6-cell FCC block of R = 1 mm with the paper's single-slope law at k = 0, its
 // positions mapped by x -> F x about the block's centre.
 World mapped_block(const Eigen::Matrix3d& F, bool isochoric) {
-  FccSpec spec;
-  spec.radius = 1e-3;
-  spec.cells = {6, 6, 6};
-  const Lattice lat = generate_fcc(spec);
-  World w;
+  World w = test::fcc_world(1e-3, {6, 6, 6});
   Particles& p = w.particles;
-  const std::size_t n = lat.position.size();
-  p.resize(n);
   Vec3 c = Vec3::Zero();
-  for (const Vec3& x : lat.position) c += x;
-  c /= double(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    p.initial_position[i] = lat.position[i];
-    p.position[i] = c + F * (lat.position[i] - c);
-    p.radius[i] = spec.radius;
-    p.mass[i] = 1.0;
-    p.inv_mass[i] = 1.0;
-    p.id[i] = static_cast<std::int64_t>(i);
-  }
-  p.next_id = static_cast<std::int64_t>(n);
+  for (const Vec3& x : p.initial_position) c += x;
+  c /= double(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p.position[i] = c + F * (p.initial_position[i] - c);
   RodLaw law;
   law.youngs_modulus = kE;
   law.yield_strain = kYield;
   law.hardening = 0.0;
   law.tensile_strength = HUGE_VAL;
-  Rods& r = w.rods;
-  r.law = law;
-  r.area = 1e-6;
-  r.isochoric = isochoric;
-  r.ends = lat.rods;
-  r.rest_length = lat.rest_length;
-  r.reset_state();
-  r.build_rows(n);
+  w.rods.law = law;
+  w.rods.area = 1e-6;
+  w.rods.isochoric = isochoric;
   return w;
 }
 
