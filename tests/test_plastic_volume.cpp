@@ -21,19 +21,7 @@ constexpr double kE = 2e11, kYield = 1e-3;  // rod modulus (Pa) and yield strain
 // A 6 x 6 x 6-cell FCC block of R = 1 mm with the paper's single-slope law at k = 0, its
 // positions mapped by x -> F x about the block's centre.
 World mapped_block(const Eigen::Matrix3d& F, bool isochoric) {
-  World w = test::fcc_world(1e-3, {6, 6, 6});
-  Particles& p = w.particles;
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& x : p.initial_position) c += x;
-  c /= double(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) p.position[i] = c + F * (p.initial_position[i] - c);
-  RodLaw law;
-  law.youngs_modulus = kE;
-  law.yield_strain = kYield;
-  law.hardening = 0.0;
-  law.tensile_strength = HUGE_VAL;
-  w.rods.law = law;
-  w.rods.area = 1e-6;
+  World w = test::mapped_fcc_block(1e-3, {6, 6, 6}, F, kE, kYield);
   w.rods.isochoric = isochoric;
   return w;
 }

@@ -71,6 +71,9 @@ void print_setup(const Model& m, int threads) {
     if (m.rods.isochoric)
       say("  rod: plastic flow keeps the volume (each step's increments of a particle's rods lose their mean{})\n",
           m.rods.formation.enabled() ? "; a formed rod takes the lattice's length, r_i + r_j" : "");
+    if (m.rods.compaction_modulus > 0.0)
+      say("  rod: a neighbourhood compacted by more than {:.4g} of its volume pushes back with K = {:.4g} Pa\n",
+          m.rods.compaction_onset, m.rods.compaction_modulus);
     say("  rod: A = {:.4g} m^2, kb = E A/L0 = {:.4g} N/m, damping c = {:.4g} N s/m\n", d.rod_area, d.rod_stiffness,
         d.rod_damping);
   }

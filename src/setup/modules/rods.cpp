@@ -133,6 +133,26 @@ const std::vector<Key<RodSettings>>& rod_keys() {
               "hydrostatic pressure of about 0.77 times its yield stress and compacts plastically: the plain C45 "
               "chip ends about 1.8 times as dense as the workpiece (docs/physics.md, \"Plastic flow that keeps "
               "the volume\")."},
+      {.name = "compaction_modulus",
+       .field = &S::compaction_modulus,
+       .unit = "Pa",
+       .range = kModulusOrZero,
+       .rule = "not with `integrator.solver = \"newton\"`; one process (not over MPI ranks)",
+       .doc = "Bulk modulus K with which a particle whose neighbourhood has lost more than `compaction_onset` of "
+              "its volume pushes back (the material's: C45 about 1.6e11 Pa). The volume change is read from the "
+              "distances of all its neighbours within 1.15 (r_i + r_j), bonded or not (the embedded-atom form), so "
+              "what the rods lost plastically counts and no rod's breaking, forming or exchange moves it; its energy "
+              "1/2 K V min(theta + onset, 0)^2 per particle is elastic. Without it a bonded pair's only resistance "
+              "in compression is its rod, which yields, and the cut's chip compacts. With it the lattice must find "
+              "new neighbours without compacting: give bond formation a gap (`bond_overlap` < 0, and a "
+              "`contact.skin` that reaches it) (docs/physics.md, \"A floor under the volume\"). 0 means off."},
+      {.name = "compaction_onset",
+       .field = &S::compaction_onset,
+       .unit = "1",
+       .range = in(0.0, 0.5, "[)", "0 to 0.5"),
+       .rule = "with `compaction_modulus`",
+       .doc = "The volumetric strain theta_0 a particle's neighbourhood may lose before `compaction_modulus` acts: "
+              "below it the lattice's calibrated elastic response is untouched."},
   };
   static const std::vector<Key<S>> keys = [] {
     std::vector<Key<S>> all = head;
@@ -167,6 +187,8 @@ void read_rod(const CaseInput& in, CaseSettings& cs) {
   if (d.neighbour_exchange && !BondFormation{d.bond_overlap}.enabled())
     r.fail("neighbour_exchange", r.get("neighbour_exchange"),
            "exchanges neighbours through bond formation: set bond_overlap");
+  if (r.has("compaction_onset") && !(d.compaction_modulus > 0.0))
+    r.fail("compaction_onset", r.get("compaction_onset"), "sets where rod.compaction_modulus acts: set it too");
   if (r.has("flow_plastic_strain") || r.has("flow_stress")) {
     for (const char* key : {"yield_strain", "hardening_modulus"})
       if (r.has(key)) r.fail(key, r.get(key), "the hardening curve (flow_plastic_strain, flow_stress) replaces it");
@@ -181,6 +203,11 @@ void check_rods_across_tables(const CaseSettings& cs) {
         fmt::format("{}: key 'rod.bond_overlap' = {}: bond formation finds the pressed pairs among the "
                     "contacts: add a [contact] table",
                     cs.source, cs.rod.bond_overlap));
+  if (cs.rod.compaction_modulus > 0.0 && cs.integrator.solver == "newton")
+    throw InputError(
+        fmt::format("{}: key 'rod.compaction_modulus' = {}: not with integrator.solver = \"newton\" "
+                    "(its tangent has no term for it): use Verlet or the fixed-point Newmark step",
+                    cs.source, cs.rod.compaction_modulus));
   // (Newton's tangent has no term for the correction, which couples a rod to its ends' other
   // rods: not built.)
   if (cs.rod.isochoric_plasticity && cs.integrator.solver == "newton")
@@ -197,6 +224,8 @@ void build_rods(const CaseSettings& cs, const Derived& d, Lattice& lat, std::siz
   r.formation.overlap = cs.rod.bond_overlap;
   r.formation.exchange = cs.rod.neighbour_exchange;
   r.isochoric = r.formation.lattice_length = cs.rod.isochoric_plasticity;
+  r.compaction_modulus = cs.rod.compaction_modulus;
+  r.compaction_onset = cs.rod.compaction_onset;
   // Moved, not copied: the lattice's arrays are not needed after this, and a copy would hold
   // the largest arrays of the build twice.
   r.ends = std::move(lat.rods);

@@ -39,6 +39,8 @@ struct RodSettings {
   double damping_ratio = 0.0;  ///< viscous part as a fraction of critical damping of one rod between two particles, 1
   double bond_overlap = kInf;  ///< relative overlap at which unbonded lattice particles form a rod, 1; inf = never
   bool neighbour_exchange = false;    ///< a particle with 12 rods gives up its most stretched one for a new neighbour
+  double compaction_modulus = 0.0;    ///< bulk modulus of a neighbourhood compacted beyond the onset, Pa; 0 = off
+  double compaction_onset = 0.01;     ///< volumetric strain a neighbourhood may lose before it acts, 1
   bool isochoric_plasticity = false;  ///< each step's plastic increments of a particle's rods lose their mean
                                       ///< (forces/plastic_volume.h)
 };

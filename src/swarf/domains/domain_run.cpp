@@ -44,6 +44,8 @@ void copy_configuration(const World& from, World& to) {
   to.rods.area = from.rods.area;
   to.rods.formation = from.rods.formation;
   to.rods.isochoric = from.rods.isochoric;
+  to.rods.compaction_modulus = from.rods.compaction_modulus;
+  to.rods.compaction_onset = from.rods.compaction_onset;
   to.gravity = from.gravity;
   to.periodic = from.periodic;
   to.contact = from.contact;
@@ -115,6 +117,8 @@ void DomainRun::check_supported(const World& w, const StepSettings& s) {
     what =
         "rods whose plastic flow keeps the volume (rod.isochoric_plasticity: a ghost's mean needs its rods on the "
         "other rank)";
+  else if (w.rods.compaction_modulus > 0.0)
+    what = "a floor under the rods' volume (rod.compaction_modulus: a ghost's volume needs its rods on the other rank)";
   else if (!w.inflows.empty() || !w.outflows.empty())
     what = "particle inflows and outflows";
   else if (w.heat.enabled && (w.heat.tool_heat_capacity > 0.0 || w.heat.tool_conductivity > 0.0))

@@ -94,6 +94,7 @@ double gather_impl(Integration& it, double h) {
   const std::int32_t* row_start = r.row_start.data();
   const Rods::Entry* entries = r.entries.data();
   const double* force_coef = r.force_coef.data();
+  const Vec3* floor_force = it.sys.rods.floor_force(world);  // (null: no compaction floor)
   Vec3* contact_force = ms.contact_force.data();
   const bool keep_contact_force = ms.keep_contact_force;
   const ContactSystem::Sums sums = contacts ? it.sys.contacts.sums() : ContactSystem::Sums{};
@@ -133,6 +134,7 @@ double gather_impl(Integration& it, double h) {
         torque[i] = tau;
       }
       f += mass[i] * gravity;
+      if (floor_force) f += floor_force[i];
       const std::uint8_t mask = prescribed[i];
       if constexpr (Measure) {
         Vec3 df = f - force[i];

@@ -20,12 +20,15 @@
 namespace swarf {
 
 struct Rods {
-  AnyRodLaw law;            ///< one rod family: the law (any_rod_law.h) with its parameters
-  double area = 0.0;        ///< cross-section A of every rod, m^2
-  BondFormation formation;  ///< when unbonded lattice particles pressed together form a rod (off by default)
-  bool isochoric = false;   ///< each step's plastic increments made mean-free per particle: the lattice's
-                            ///< plastic flow keeps its volume (forces/plastic_volume.h); set with
-                            ///< formation.lattice_length
+  AnyRodLaw law;                    ///< one rod family: the law (any_rod_law.h) with its parameters
+  double area = 0.0;                ///< cross-section A of every rod, m^2
+  BondFormation formation;          ///< when unbonded lattice particles pressed together form a rod (off by default)
+  bool isochoric = false;           ///< each step's plastic increments made mean-free per particle: the lattice's
+                                    ///< plastic flow keeps its volume (forces/plastic_volume.h); set with
+                                    ///< formation.lattice_length
+  double compaction_modulus = 0.0;  ///< K, Pa, of a neighbourhood compacted beyond compaction_onset
+                                    ///< (forces/density_floor.h); 0: none
+  double compaction_onset = 0.0;    ///< theta_0, 1: the volume a neighbourhood may lose before K acts
 
   std::vector<std::array<std::int32_t, 2>> ends;  ///< particle indices (i, j), i < j
   std::vector<double> rest_length;                ///< L0, m

@@ -15,6 +15,7 @@
 namespace swarf {
 
 void RodSystem::setup(World& m_) {
+  floor_.invalidate();
   if (m_.rods.formed.size() != m_.rods.size()) m_.rods.formed.assign(m_.rods.size(), 0);
   broken_ = m_.rods.broken_count();
   // Parting lines: each mesh's lowest reference vertex (the largest x among equals); none
@@ -36,6 +37,7 @@ void RodSystem::setup(World& m_) {
 
 void RodSystem::resize(const World& m_) {
   const std::size_t m = m_.rods.size();
+  floor_.invalidate();
   block_viscous_.resize(block_count(m), 0.0);
   block_changed_.resize(block_count(m), 0);
   broken_ = m_.rods.broken_count();
@@ -72,6 +74,9 @@ void RodSystem::forces(World& m_, const Vec3* rate_x, const Vec3* rate_v) {
   if (r.isochoric)
     keep_plastic_volume(r, p.position.data(), p.size(), m_.periodic, plastic_volume_, block_changed_.data());
   if (!mesh_edge_.empty()) part(m_);
+  // (a neighbourhood compacted beyond the onset pushes back: forces/density_floor.h)
+  if (r.compaction_modulus > 0.0)
+    floor_.evaluate(p.position.data(), p.radius.data(), p.size(), m_.periodic, r.compaction_modulus, r.compaction_onset);
 }
 
 void RodSystem::part(World& m_) {
@@ -168,7 +173,7 @@ double RodSystem::elastic_energy(const World& m_) const { return elastic_energy_
 ExactSum RodSystem::elastic_energy_exact(const World& m_, const std::uint8_t* counted) const {
   const auto& r = m_.rods;
   const double A = r.area;
-  return std::visit(  // (one visit: the sum's loop sees the concrete law)
+  ExactSum sum = std::visit(  // (one visit: the sum's loop sees the concrete law)
       [&](const auto& law) {
         return exact_sum(r.size(), [&](std::size_t k) {
           return r.intact[k] && (!counted || counted[k])
@@ -177,6 +182,9 @@ ExactSum RodSystem::elastic_energy_exact(const World& m_, const std::uint8_t* co
         });
       },
       r.law);
+  // (the floor's energy as its last evaluation found it; not over domains: refused there)
+  if (r.compaction_modulus > 0.0 && !counted) sum.add(floor_.energy());
+  return sum;
 }
 
 void RodSystem::visit_state(StateArchive& ar, World&, EnergyLedger&) {

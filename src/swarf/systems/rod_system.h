@@ -24,6 +24,7 @@
 
 #include "swarf/core/exact_sum.h"
 #include "swarf/core/vec3.h"
+#include "swarf/forces/density_floor.h"
 #include "swarf/forces/plastic_volume.h"
 #include "swarf/state/world.h"
 #include "swarf/systems/energy_ledger.h"
@@ -71,7 +72,13 @@ class RodSystem {
   /// The viscous work of the step's last evaluation over the step.
   void account(const StepContext& c);
 
-  /// Recoverable elastic energy of the intact rods, J.
+  /// The compaction floor's force on each particle from the last evaluation (N; null when the
+  /// floor is off): the gather adds it (forces/density_floor.h).
+  const Vec3* floor_force(const World& w) const {
+    return w.rods.compaction_modulus > 0.0 && w.rods.size() > 0 ? floor_.force() : nullptr;
+  }
+  const DensityFloor& floor() const { return floor_; }
+  /// Recoverable elastic energy of the intact rods (and of the compaction floor), J.
   double elastic_energy(const World& w) const;
   /// Over the rods k with counted[k] (all when null), summed exactly (core/exact_sum.h), J.
   ExactSum elastic_energy_exact(const World& w, const std::uint8_t* counted = nullptr) const;
@@ -131,6 +138,7 @@ class RodSystem {
   std::vector<Vec3> mesh_edge_;          // per mesh: its lowest reference vertex (parting lines), m; empty: none
   std::vector<std::uint8_t> lattice_;    // per particle: 1 if built with a rod (bond formation's candidates)
   std::vector<int> intact_count_;        // form's scratch: a particle's intact rods, -1 = not counted yet
+  DensityFloor floor_;                   // with Rods::compaction_modulus (forces/density_floor.h)
   PlasticVolumeScratch plastic_volume_;  // with Rods::isochoric (forces/plastic_volume.h)
   std::vector<double> block_viscous_;    // per rod block: viscous power of the last evaluation, W
   std::vector<int> block_changed_;       // per rod block: a trial shift or break to commit
