@@ -100,13 +100,18 @@ void DensityFloor::build(const Vec3* x, const double* radius, std::size_t n, Per
 
 void DensityFloor::evaluate(const Vec3* x, const double* radius, std::size_t n, Periodic periodic, double K,
                             double onset) {
+  const std::int64_t ns = static_cast<std::int64_t>(n);
   bool rebuild = x_build_.size() != n;
   if (!rebuild) {
+    moved_.resize(n);
     double moved2 = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) reduction(max : moved2)
+    for (std::int64_t i = 0; i < ns; ++i) {
       Vec3 d = x[i] - x_build_[i];
       periodic.wrap(d);
-      moved2 = std::max(moved2, d.squaredNorm());
+      const double d2 = d.squaredNorm();
+      moved2 = std::max(moved2, d2);
+      moved_[i] = std::sqrt(d2);
     }
     rebuild = 4.0 * moved2 > skin_ * skin_;
   }
@@ -115,11 +120,28 @@ void DensityFloor::evaluate(const Vec3* x, const double* radius, std::size_t n, 
   a_.resize(n);
   u_.resize(n);
   force_.resize(n);
+  rho_ref_.resize(n);
   const double rho0 = 12.0 * floor_weight(1.0);
-  const std::int64_t ns = static_cast<std::int64_t>(n);
+  // (a particle whose rho stays at or below this has g = 0: the margin is far above the sums' rounding)
+  const double inactive = rho0 + 4.0 * onset - 1e-9;
+  double rmin = HUGE_VAL;
+  for (std::size_t i = 0; i < n; ++i) rmin = std::min(rmin, radius[i]);
+  const double inv_l = 1.0 / (2.0 * rmin);
+  const bool bound = !rebuild && !exact_;
 #pragma omp parallel for schedule(static)
   for (std::int64_t ii = 0; ii < ns; ++ii) {
     const std::size_t i = static_cast<std::size_t>(ii);
+    if (bound) {
+      // (rho now <= rho at the build + sum_j (|dx_i| + |dx_j|) / l_ij)
+      double reach = 0.0;
+      for (std::int32_t q = start_[i]; q < start_[i + 1]; ++q) reach += moved_[i] + moved_[nb_[q]];
+      const double most = rho_ref_[i] + reach * inv_l;
+      if (most <= inactive) {
+        theta_[i] = -(most - rho0) / 4.0;
+        a_[i] = u_[i] = 0.0;
+        continue;
+      }
+    }
     double rho = 0.0;
     for (std::int32_t q = start_[i]; q < start_[i + 1]; ++q) {
       const std::int32_t j = nb_[q];
@@ -127,6 +149,7 @@ void DensityFloor::evaluate(const Vec3* x, const double* radius, std::size_t n, 
       periodic.wrap(d);
       rho += floor_weight(d.norm() / (radius[i] + radius[j]));
     }
+    if (rebuild) rho_ref_[i] = rho;
     const double theta = -(rho - rho0) / 4.0;
     const double g = std::min(theta + onset, 0.0), V = fcc_site_volume(radius[i]);
     theta_[i] = theta;

@@ -26,6 +26,11 @@
 //
 //   force on j (along e_ij, away from i) = -(|w'(s_ij)| / (4 l_ij)) K (V_i g_i + V_j g_j),  g = min(theta + theta_0, 0)
 //
+// Most particles of a cut are far from the onset (the elastic workpiece): between two builds of the
+// lists, a particle whose rho at the build plus what its and its neighbours' displacements since
+// could have added (w is 1-Lipschitz in s) stays below the onset is not summed; its g is 0, as its sum
+// would give to the bit, so the results are the same.
+//
 // Neighbours come from the floor's own lists (cells of the cut-off plus a skin, rebuilt when a
 // particle has moved half the skin), each particle's list in index order; each particle sums its
 // own list, so every pair is evaluated by both its ends from the same numbers (Newton's third law
@@ -63,8 +68,11 @@ class DensityFloor {
   void evaluate(const Vec3* x, const double* radius, std::size_t n, Periodic periodic, double K, double onset);
   /// The forces of the last evaluation, per particle (N).
   const Vec3* force() const { return force_.data(); }
-  /// theta_i of the last evaluation (1).
+  /// theta_i of the last evaluation (1); for a particle the bound below proved inactive, a lower bound
+  /// of it, at least -theta_0.
   const std::vector<double>& dilatation() const { return theta_; }
+  /// Every particle's rho summed at every evaluation, without the bound (the tests' reference).
+  void always_exact(bool on) { exact_ = on; }
   /// sum_i U_i of the last evaluation, in particle order (J).
   double energy() const;
   /// The lists are built again at the next evaluation (the particles changed).
@@ -72,7 +80,9 @@ class DensityFloor {
 
  private:
   void build(const Vec3* x, const double* radius, std::size_t n, Periodic periodic);
-  std::vector<Vec3> x_build_;             // positions at the last build
+  std::vector<Vec3> x_build_;            // positions at the last build
+  std::vector<double> rho_ref_, moved_;  // rho_i at the build; |x_i - x_build_i| (m)
+  bool exact_ = false;
   std::vector<std::int32_t> start_, nb_;  // per particle, its neighbours (both directions, ascending)
   double skin_ = 0.0;                     // m
   std::vector<double> theta_, a_, u_;     // theta_i; K V_i g_i (N m); U_i (J)
