@@ -180,6 +180,28 @@ TEST(DensityFloor, TheBoundSkipsOnlyWhatIsInactiveToTheBit) {
   EXPECT_GT(fast.energy(), 0.0);
 }
 
+// A periodic width of less than twice the floor's reach is refused by name (the nearest image would
+// not be the only one in reach), and one flung particle does not stretch the search over empty space.
+TEST(DensityFloor, ANarrowPeriodRefusedAndAFlungParticleFound) {
+  World w = mapped_block(0.97 * Eigen::Matrix3d::Identity(), kK);
+  DensityFloor floor;
+  const Particles& p = w.particles;
+  try {
+    floor.evaluate(p.position.data(), p.radius.data(), p.size(), Periodic::along_y(4.5 * kR), kK, kOnset);
+    FAIL() << "a period of 4.5 R was taken";
+  } catch (const InputError& e) {
+    test::expect_mentions(e.what(), {"rod.compaction_modulus", "periodic width"});
+  }
+  DensityFloor near, far;
+  near.evaluate(p.position.data(), p.radius.data(), p.size(), w.periodic, kK, kOnset);
+  const double energy = near.energy();
+  w.particles.position.push_back(Vec3(1e3, 0.0, 0.0));  // (a km away: alone)
+  w.particles.radius.push_back(kR);
+  far.evaluate(p.position.data(), p.radius.data(), p.size(), w.periodic, kK, kOnset);
+  EXPECT_EQ(far.energy(), energy);
+  EXPECT_EQ(far.force()[p.size() - 1], Vec3::Zero());
+}
+
 // The keys reach the rods; Newton and the domains refuse the floor by name, and an onset without a
 // modulus is refused.
 TEST(DensityFloor, TheKeysReachTheRodsAndNewtonDomainsRefuseThem) {

@@ -34,6 +34,12 @@ void DensityFloor::build(const Vec3* x, const double* radius, std::size_t n, Per
     nc[1] = std::max(1, static_cast<int>(periodic.period / reach));
     lo[1] = 0.0;
   }
+  // (a particle flung far away would stretch the grid over millions of empty cells: larger cells
+  // find the same neighbours)
+  while (static_cast<double>(nc[0]) * nc[1] * nc[2] > 8.0 * static_cast<double>(n) + 64.0) {
+    int& widest = nc[0] >= nc[1] && nc[0] >= nc[2] ? nc[0] : (nc[1] >= nc[2] ? nc[1] : nc[2]);
+    widest = std::max(1, widest / 2);
+  }
   auto cell_of = [&](const Vec3& p) {
     std::array<int, 3> c;
     for (int k = 0; k < 3; ++k) {
