@@ -16,8 +16,9 @@
 // with w(s) = u - tau/2 for u = s_c - s >= tau, u^2 / (2 tau) for 0 <= u < tau, 0 beyond: slope
 // -1 up to s_c - tau and a smooth end. For a particle of the lattice with its 12 neighbours
 // strained uniformly by eps, rho_i - 12 w(1) = -3 tr(eps) to first order (sum_k n_k n_k^T = 4 I),
-// so theta_i is the volume strain; a shear keeps it to first order and (w being linear there) to
-// second. Whether a pair is bonded does not enter: neither a rod's breaking nor its forming nor a
+// so theta_i is the volume strain; a shear keeps it to first order and reads as a dilation at
+// second (the pairs it stretches lengthen more than those it shortens shorten), so the floor does
+// not act on a shear. Whether a pair is bonded does not enter: neither a rod's breaking nor its forming nor a
 // neighbour exchange moves U, so the energy is a function of the positions alone (a rod-based
 // measure jumps at every exchange, which turns each into a source of energy: the compaction
 // README). A particle with fewer neighbours than the lattice's (a free surface) reads as
