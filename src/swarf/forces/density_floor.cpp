@@ -14,6 +14,9 @@ void DensityFloor::build(const Vec3* x, const double* radius, std::size_t n, Per
   double rmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) rmax = std::max(rmax, radius[i]);
   skin_ = 0.2 * rmax;
+  double rmin = rmax;
+  for (std::size_t i = 0; i < n; ++i) rmin = std::min(rmin, radius[i]);
+  inv_l_ = 1.0 / (2.0 * rmin);
   const double reach = kFloorReach * 2.0 * rmax + skin_;
   if (periodic.on() && !(reach < periodic.half))  // (the nearest image would not be the only one in reach)
     throw InputError(
@@ -130,9 +133,6 @@ void DensityFloor::evaluate(const Vec3* x, const double* radius, std::size_t n, 
   const double rho0 = 12.0 * floor_weight(1.0);
   // (a particle whose rho stays at or below this has g = 0: the margin is far above the sums' rounding)
   const double inactive = rho0 + 4.0 * onset - 1e-9;
-  double rmin = HUGE_VAL;
-  for (std::size_t i = 0; i < n; ++i) rmin = std::min(rmin, radius[i]);
-  const double inv_l = 1.0 / (2.0 * rmin);
   const bool bound = !rebuild && !exact_;
 #pragma omp parallel for schedule(static)
   for (std::int64_t ii = 0; ii < ns; ++ii) {
@@ -141,7 +141,7 @@ void DensityFloor::evaluate(const Vec3* x, const double* radius, std::size_t n, 
       // (rho now <= rho at the build + sum_j (|dx_i| + |dx_j|) / l_ij)
       double reach = 0.0;
       for (std::int32_t q = start_[i]; q < start_[i + 1]; ++q) reach += moved_[i] + moved_[nb_[q]];
-      const double most = rho_ref_[i] + reach * inv_l;
+      const double most = rho_ref_[i] + reach * inv_l_;
       if (most <= inactive) {
         theta_[i] = -(most - rho0) / 4.0;
         a_[i] = u_[i] = 0.0;

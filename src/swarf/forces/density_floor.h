@@ -86,6 +86,7 @@ class DensityFloor {
   bool exact_ = false;
   std::vector<std::int32_t> start_, nb_;  // per particle, its neighbours (both directions, ascending)
   double skin_ = 0.0;                     // m
+  double inv_l_ = 0.0;                    // 1 / (2 r_min) at the build, 1/m (the radii do not change)
   std::vector<double> theta_, a_, u_;     // theta_i; K V_i g_i (N m); U_i (J)
   std::vector<Vec3> force_;
 };
