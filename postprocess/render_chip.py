@@ -17,6 +17,8 @@ colour map, unit and range from postprocess/chip_view.json, which open_in_paravi
                       in view
   temperature         OUTPUT's stem + _temperature.png, inferno, deg C, the coolest to the hottest
                       particle in view (a run with [heat]; the hottest is the point: no percentile cut)
+  plastic_work        OUTPUT's stem + _plastic_work.png, viridis, MJ/m^3, 0 to the 99th percentile in
+                      view (where the plastic work went; not drawn unless --fields names it)
 A field the frame does not hold (output.fields left it out, or no [heat] for the temperature) is
 skipped, with a note if --fields named it.
 

@@ -151,7 +151,8 @@ TEST(Outputs, FieldsChooseThePerParticleArrays) {
   H5File h5(dir / "some/results.h5", H5File::Mode::Read);
   for (const char* kept : {"position", "radius", "group", "broken_fraction", "velocity", "plastic_strain"})
     EXPECT_TRUE(h5.has(std::string("/particles/") + kept)) << kept;
-  for (const char* left : {"displacement", "stress", "von_mises_stress", "hydrostatic_stress", "peeq", "peeq_rate"})
+  for (const char* left :
+       {"displacement", "stress", "von_mises_stress", "hydrostatic_stress", "peeq", "peeq_rate", "plastic_work"})
     EXPECT_FALSE(h5.has(std::string("/particles/") + left)) << left;
   const auto sum = nlohmann::json::parse(test::read_file(dir / "some/summary.json"));
   EXPECT_EQ(sum["case_effective"]["output"]["fields"], (nlohmann::json{"plastic_strain", "velocity"}));
@@ -171,7 +172,7 @@ TEST(Outputs, FieldsChooseThePerParticleArrays) {
   ASSERT_EQ(all.exit_code, 0) << all.output;
   H5File h5all(dir / "all/results.h5", H5File::Mode::Read);
   for (const char* f : {"velocity", "displacement", "broken_fraction", "stress", "von_mises_stress",
-                        "hydrostatic_stress", "plastic_strain", "peeq", "peeq_rate"})
+                        "hydrostatic_stress", "plastic_strain", "peeq", "peeq_rate", "plastic_work"})
     EXPECT_TRUE(h5all.has(std::string("/particles/") + f)) << f;
 
   // An unknown name: exit code 2, the key, the value and the valid names.

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "io/output_fields.h"
 #include "memory_archive.h"
 #include "scenes/fcc_world.h"
 #include "scenes/pulled_bar.h"
@@ -163,6 +164,43 @@ TEST(Peeq, OffLeavesTheFieldsZeroAndTheMechanicsAlone) {
   EXPECT_EQ(*std::max_element(b.particles.peeq.begin(), b.particles.peeq.end()), 0.0);
 }
 
+// The particles' plastic work (Particles::plastic_work: half of each rod's booked work to each
+// end) is where the ledger's plastic work went: over a bar pulled until rods that had yielded
+// broke (their plastic strain is held by no rod any more), the particles' sum is the ledger's.
+// Tolerance 1e-12 relative: the same terms summed in another order (the ledger per rod block,
+// the particles per end), a few roundings of a sum of about 10^4 positive terms.
+TEST(Peeq, TheParticlesPlasticWorkIsTheLedgers) {
+  Model a = build_model(parse_case(kBar, "bar", {}));
+  Simulation sa(a, a.step);
+  // The rods' plastic strain before a break, to see that broken rods had yielded.
+  double yielded_then_broke = 0.0;
+  std::vector<double> shift_before(a.rods.size());
+  for (int s = 0; s < 1500; ++s) {
+    shift_before = a.rods.shift;
+    const std::vector<std::uint8_t> intact = a.rods.intact;
+    sa.step();
+    for (std::size_t k = 0; k < a.rods.size(); ++k)
+      if (intact[k] && !a.rods.intact[k] && shift_before[k] != 0.0) yielded_then_broke += 1.0;
+  }
+  ASSERT_GT(sa.broken_rods(), 0u);
+  ASSERT_GT(yielded_then_broke, 0.0) << "no rod that had yielded broke: the check would not see their work";
+  const double ledger = sa.ledger().plastic_work;
+  ASSERT_GT(ledger, 0.0);
+  double sum = 0.0;
+  for (const double w : a.particles.plastic_work) {
+    EXPECT_GE(w, 0.0);
+    sum += w;
+  }
+  EXPECT_NEAR(sum, ledger, 1e-12 * ledger);
+  // The output field is the same work over each particle's lattice volume.
+  const OutputField* f = find_output_field("plastic_work");
+  ASSERT_NE(f, nullptr);
+  const std::vector<double> density = compute_output_field(*f, FieldInput{.particles = a.particles, .rods = a.rods});
+  double back = 0.0;
+  for (std::size_t i = 0; i < a.particles.size(); ++i) back += density[i] * particle_volume(a.particles.radius[i]);
+  EXPECT_NEAR(back, ledger, 1e-12 * ledger);
+}
+
 std::map<std::int64_t, std::size_t> by_id(const Particles& p) {
   std::map<std::int64_t, std::size_t> m;
   for (std::size_t i = 0; i < p.size(); ++i) m[p.id[i]] = i;
@@ -198,6 +236,7 @@ TEST(Peeq, FollowsTheParticlesThroughAShuffleAndARestart) {
     ASSERT_EQ(a.particles.peeq_rate[i], b.particles.peeq_rate[j]) << "id " << a.particles.id[i];
     ASSERT_EQ(a.particles.window_normal[i], b.particles.window_normal[j]) << "id " << a.particles.id[i];
     ASSERT_EQ(a.particles.window_shear[i], b.particles.window_shear[j]) << "id " << a.particles.id[i];
+    ASSERT_EQ(a.particles.plastic_work[i], b.particles.plastic_work[j]) << "id " << a.particles.id[i];
     top = std::max(top, a.particles.peeq[i]);
   }
   EXPECT_GT(top, 1e-3);  // (the bar flowed)
@@ -217,6 +256,7 @@ TEST(Peeq, FollowsTheParticlesThroughAShuffleAndARestart) {
   EXPECT_EQ(sb.state_hash(), sc.state_hash());
   EXPECT_EQ(b.particles.peeq, c.particles.peeq);
   EXPECT_EQ(b.particles.peeq_rate, c.particles.peeq_rate);
+  EXPECT_EQ(b.particles.plastic_work, c.particles.plastic_work);
   // The hash covers PEEQ.
   const std::uint64_t h = sc.state_hash();
   c.particles.peeq[0] += 1e-9;

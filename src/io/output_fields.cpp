@@ -179,6 +179,23 @@ constexpr std::array kFields{
               }
             },
     },
+    OutputField{
+        .name = "plastic_work",
+        .unit = "J/m^3",
+        .kind = FieldKind::Flow,
+        .doc = "accumulated plastic work per unit volume (plastic dissipation density): half of every plastic "
+               "increment of each of the particle's rods, sigma d(eps_p) A L0, since the start, over the particle's "
+               "share of the FCC lattice, 4 sqrt(2) R^3; it keeps the work of rods that broke or were exchanged since "
+               "([per-particle fields](#per-particle-fields))",
+        .description = "accumulated plastic work per unit volume (plastic dissipation density)",
+        .compute =
+            [](const FieldInput& in, std::size_t b, std::size_t e, double* out) {
+              const Particles& p = in.particles;
+              if (p.plastic_work.size() < e) return;
+              for (std::size_t i = b; i < e; ++i) out[i - b] = p.plastic_work[i] / particle_volume(p.radius[i]);
+            },
+        .plastic_window = true,
+    },
 };
 
 constexpr std::array<FixedArrayDoc, 4> kFixed{{

@@ -34,6 +34,10 @@ void Simulation::visit_state(StateArchive& ar) {
     throw InputError(
         "the checkpoint holds no accumulated plastic strain (the run that wrote it had no output field that needs "
         "it): output.fields may not add 'peeq' or 'peeq_rate' on this restart");
+  if (load && p.layout.plastic_strain && !ar.has("particles/plastic_work"))
+    throw InputError(
+        "the checkpoint holds the accumulated plastic strain but not the particles' plastic work (written by a swarf "
+        "before 2026-12-08): restart it with the swarf that wrote it, or run the case again");
   p.for_each_field([&](const char* name, auto& v) { ar.array(std::string("particles/") + name, v, load ? any : n); });
   ar.scalar("particles/next_id", p.next_id);
   std::vector<std::int32_t> ends(2 * m);

@@ -25,7 +25,7 @@ namespace swarf {
 /// records (domains/records.h) takes its layout first.
 struct ParticleLayout {
   bool rotation = true;        ///< orientation, omega, omega_dot, inertia, inv_inertia, torque
-  bool plastic_strain = true;  ///< peeq, peeq_rate, window_normal, window_shear
+  bool plastic_strain = true;  ///< peeq, peeq_rate, window_normal, window_shear, plastic_work
   bool temperature = true;     ///< temperature
 };
 
@@ -45,10 +45,11 @@ struct Particles {
   // window and the window's sum of the rods' plastic increments, g (x) de_p (g the normal-strain
   // row of the rod's direction: xx, yy, zz parts in 'normal', 2xy, 2yz, 2xz in 'shear').
   // (held only with layout.plastic_strain; otherwise empty)
-  std::vector<double> peeq;         ///< equivalent plastic strain, integral of its rate, 1
-  std::vector<double> peeq_rate;    ///< equivalent plastic strain rate over the last window, 1/s
-  std::vector<Vec3> window_normal;  ///< the window's sum n_a^2 de_p (a = x, y, z), 1
-  std::vector<Vec3> window_shear;   ///< the window's sum 2 n_a n_b de_p (xy, yz, xz), 1
+  std::vector<double> peeq;          ///< equivalent plastic strain, integral of its rate, 1
+  std::vector<double> peeq_rate;     ///< equivalent plastic strain rate over the last window, 1/s
+  std::vector<Vec3> window_normal;   ///< the window's sum n_a^2 de_p (a = x, y, z), 1
+  std::vector<Vec3> window_shear;    ///< the window's sum 2 n_a n_b de_p (xy, yz, xz), 1
+  std::vector<double> plastic_work;  ///< accumulated plastic work, half of each of its rods' commits, J
   // Rotation (integrated only when Simulation::rotations() is on: rods act at the centres,
   // so torques come from contacts; the machinery is here for them). Held only with
   // layout.rotation; otherwise empty.
@@ -69,7 +70,7 @@ struct Particles {
     const std::size_t n = size();
     const ParticleLayout was = layout;
     if (was.rotation && !l.rotation) release(orientation, omega, omega_dot, inertia, inv_inertia, torque);
-    if (was.plastic_strain && !l.plastic_strain) release(peeq, peeq_rate, window_normal, window_shear);
+    if (was.plastic_strain && !l.plastic_strain) release(peeq, peeq_rate, window_normal, window_shear, plastic_work);
     if (was.temperature && !l.temperature) release(temperature);
     layout = l;
     resize(n);
@@ -105,6 +106,7 @@ struct Particles {
       f("peeq_rate", peeq_rate);
       f("window_normal", window_normal);
       f("window_shear", window_shear);
+      f("plastic_work", plastic_work);
     }
     if (layout.rotation) {
       f("orientation", orientation);
@@ -135,6 +137,7 @@ struct Particles {
       peeq_rate.resize(n, 0.0);
       window_normal.resize(n, Vec3::Zero());
       window_shear.resize(n, Vec3::Zero());
+      plastic_work.resize(n, 0.0);
     }
     if (layout.rotation) {
       orientation.resize(n, Quat(1.0, 0.0, 0.0, 0.0));

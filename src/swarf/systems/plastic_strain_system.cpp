@@ -34,8 +34,11 @@ void PlasticStrainSystem::accumulate(World& w, const RodSystem::WorkList& flowed
   auto& p = w.particles;
   const auto& r = w.rods;
   for (const RodSystem::RodWork& f : flowed) {
-    if (f.plastic_strain == 0.0) continue;
     const auto [i, j] = f.ends;
+    // The work first: every rod the commit booked, a collapsed pair's too (the ledger's sum).
+    p.plastic_work[i] += 0.5 * f.work;
+    p.plastic_work[j] += 0.5 * f.work;
+    if (f.plastic_strain == 0.0) continue;
     Vec3 d = p.position[j] - p.position[i];
     w.periodic.wrap(d);
     const double len2 = d.squaredNorm(), L0 = r.rest_length[f.rod];

@@ -20,6 +20,9 @@
 // window also undercounts a strain path that reverses within it. Outputs see PEEQ as of the last
 // full window. The window (StepSettings::plastic_strain_window) is 32 steps: cheap against the
 // step, and short in strain where the step is small (the cut's).
+// The same pass adds half of each such rod's plastic work (what the commit booked in the ledger)
+// to each end's Particles::plastic_work, J: where the plastic work went, including that of rods
+// that broke or were given up since (whose plastic strain no particle holds any more).
 // Rods that break or are given up in a neighbour exchange have already given their increments,
 // and formed rods start from no plastic strain, so the sum carries over bond formation; the
 // per-particle arrays are the World's (Particles::peeq, peeq_rate, window_normal, window_shear)
