@@ -86,6 +86,9 @@ class H5StateWriter final : public StateArchive {
   }
   void scalar(std::string_view name, double& v) override { f_.write(key(name), &v, 1, 1); }
   void scalar(std::string_view name, std::int64_t& v) override { f_.write(key(name), &v, 1, 1); }
+  void int32_pairs(std::string_view name, const std::vector<std::array<std::int32_t, 2>>& v) override {
+    f_.write(key(name), v.empty() ? nullptr : v[0].data(), 2 * v.size(), 1);  // (the flat array's dataset)
+  }
 
  private:
   std::string key(std::string_view name) const { return root_ + std::string(name); }

@@ -33,19 +33,27 @@ void Simulation::visit_state(StateArchive& ar) {
   if (load && p.layout.plastic_strain && !ar.has("particles/peeq"))
     throw InputError(
         "the checkpoint holds no accumulated plastic strain (the run that wrote it had no output field that needs "
-        "it): output.fields may not add 'peeq' or 'peeq_rate' on this restart");
+        "it): output.fields may not add 'peeq', 'peeq_rate' or 'plastic_work' on this restart");
   if (load && p.layout.plastic_strain && !ar.has("particles/plastic_work"))
     throw InputError(
         "the checkpoint holds the accumulated plastic strain but not the particles' plastic work (written by a swarf "
         "before 2026-12-08): restart it with the swarf that wrote it, or run the case again");
   p.for_each_field([&](const char* name, auto& v) { ar.array(std::string("particles/") + name, v, load ? any : n); });
   ar.scalar("particles/next_id", p.next_id);
-  std::vector<std::int32_t> ends(2 * m);
-  for (std::size_t k = 0; k < m; ++k) {
-    ends[2 * k] = r.ends[k][0];
-    ends[2 * k + 1] = r.ends[k][1];
+  // A load reads the flat array and checks it below; it starts as the World's ends, which an
+  // archive that keeps no rods (a domain's step state) leaves as they are. A save or a hash reads
+  // the ends in place (the copy was the end of a run's peak: StateArchive::int32_pairs).
+  std::vector<std::int32_t> ends;
+  if (load) {
+    ends.resize(2 * m);
+    for (std::size_t k = 0; k < m; ++k) {
+      ends[2 * k] = r.ends[k][0];
+      ends[2 * k + 1] = r.ends[k][1];
+    }
+    ar.array("rods/ends", ends, any);
+  } else {
+    ar.int32_pairs("rods/ends", r.ends);
   }
-  ar.array("rods/ends", ends, load ? any : 2 * m);
   r.for_each_field([&](const char* name, auto& v) { ar.array(std::string("rods/") + name, v, load ? any : m); });
   for (std::size_t g = 0; g < ng; ++g) ar.array("groups/" + std::to_string(g) + "/members", m_.groups[g].members, any);
   if (load) check_loaded_world(ends);

@@ -26,6 +26,9 @@ class PrefixedArchive final : public StateArchive {
   void array(std::string_view name, std::vector<std::int32_t>& v, std::size_t n) override {
     inner_.array(key(name), v, n);
   }
+  void int32_pairs(std::string_view name, const std::vector<std::array<std::int32_t, 2>>& v) override {
+    inner_.int32_pairs(key(name), v);
+  }
   void array(std::string_view name, std::vector<std::int64_t>& v, std::size_t n) override {
     inner_.array(key(name), v, n);
   }
