@@ -481,6 +481,28 @@ TEST(BadInput, ARestartThatAddsPeeqToACheckpointWithoutItIsRefused) {
   }
 }
 
+// A checkpoint written before the particles' plastic work was kept (2026-12-08) holds PEEQ but not
+// it: a restart would start it at 0 mid-run, and is refused by name (the dataset is deleted from a
+// fresh checkpoint to make such a file).
+TEST(BadInput, ARestartFromACheckpointWithoutThePlasticWorkIsRefused) {
+  TempDir dir("restart_plastic_work");
+  const auto a = run_bar(dir, "--set output.checkpoint_at_end=true");
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  const std::string old = dir / "old.h5";
+  std::filesystem::copy_file(dir / "out/checkpoint.h5", old, std::filesystem::copy_options::overwrite_existing);
+  const hid_t f = H5Fopen(old.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  ASSERT_GE(H5Ldelete(f, "/sim/particles/plastic_work", H5P_DEFAULT), 0);
+  H5Fclose(f);
+  expect_refused(run_command(fmt::format("timeout 120 {} run --restart {} --out {} --set integrator.end_time=4e-6",
+                                         SWARF_BINARY, old, dir / "again")),
+                 "not the particles' plastic work");
+  // The checkpoint as written restarts.
+  const auto r = run_command(fmt::format("timeout 120 {} run --restart {} --out {} --set integrator.end_time=4e-6",
+                                         SWARF_BINARY, dir / "out/checkpoint.h5", dir / "again2"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 // A path the system cannot even look at (a name too long): std::filesystem's throwing calls
 // escaped as an unexplained exception (the study-file fuzzer, through a study's case path).
 TEST(BadInput, APathTooLongIsNamedNotThrownAsAFilesystemError) {

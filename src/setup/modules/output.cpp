@@ -31,8 +31,8 @@ const std::string& fields_doc() {
       "([outputs.md](outputs.md#choosing-the-fields-outputfields)); `[]` writes none. The positions, radii "
       "and groups are always written, and `results.h5` always holds {} (`swarf post` "
       "reads it). Fewer fields make smaller frames, and without {} the frames skip computing them, and without {} "
-      "the run does not accumulate PEEQ and the plastic work (a restart that adds them starts it from the checkpoint's "
-      "values).",
+      "the run does not accumulate PEEQ and the plastic work (a restart may not add them to the checkpoint of a run "
+      "that did not hold them: they would start from zero mid-run).",
       names_where([](const OutputField& f) { return f.results_always; }),
       names_where([](const OutputField& f) { return f.measured && f.choice == FieldChoice::Chosen; }),
       names_where([](const OutputField& f) { return f.plastic_window && f.choice == FieldChoice::Chosen; }));
