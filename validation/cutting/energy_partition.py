@@ -142,8 +142,8 @@ def main():
     rows = [analyse(r, args.x_from, args.behind, tracer_of(r)) for r in args.runs]
     print("| run | R (um) | chip, removed beyond 3R (kJ/m^2) | band 3R above the line | band 3R below | "
           "workpiece below | total (kJ/m^2 = kN/m) | bulk chip (MJ/m^3) | separation band's excess (kJ/m^2) | "
-          "scale to the ledger |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "excess within 100 um of the line (kJ/m^2) | scale to the ledger |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for run, o in zip(args.runs, rows):
         print(f"| {run} | {o['R_um']:.2f} | {o['chip']/1e3:.1f} | {o['band_above']/1e3:.1f} | "
               f"{o['band_below']/1e3:.1f} | {o['below']/1e3:.1f} | {o['total']/1e3:.1f} | {o['bulk_MJ_per_m3']:.0f} | {o['band_excess']/1e3:.1f} | {o['near_excess']/1e3:.1f} | {o['scale']:.3f} |")
@@ -181,7 +181,7 @@ def main():
         ax[1].set_xlabel("initial depth below the separation line / R")
         ax[1].set_ylabel("plastic work per area of cut in the layer (kJ/m^2)")
         ax[2].set_xlabel("initial depth below the separation line (um)")
-        ax[2].set_ylabel("plastic work per area of cut, from the surface down (kJ/m^2)")
+        ax[2].set_ylabel("per area of cut, summed from the top (kJ/m^2)")
         for a_ in ax:
             a_.axvline(0, color="k", lw=0.8)
             a_.legend()
