@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "swarf/core/errors.h"
+#include "swarf/geometry/site_volume.h"
 
 namespace swarf {
 
@@ -157,7 +158,7 @@ void DensityFloor::evaluate(const Vec3* x, const double* radius, std::size_t n, 
     }
     if (rebuild) rho_ref_[i] = rho;
     const double theta = -(rho - rho0) / 4.0;
-    const double g = std::min(theta + onset, 0.0), V = fcc_site_volume(radius[i]);
+    const double g = std::min(theta + onset, 0.0), V = particle_volume(radius[i]);
     theta_[i] = theta;
     a_[i] = K * V * g;
     u_[i] = 0.5 * K * V * g * g;

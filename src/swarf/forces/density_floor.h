@@ -59,9 +59,6 @@ inline double floor_slope(double s) {
   return u >= kFloorTaper ? 1.0 : (u > 0.0 ? u / kFloorTaper : 0.0);
 }
 
-/// The volume of an FCC site of spacing 2r (m^3): (2r)^3 / sqrt 2.
-inline double fcc_site_volume(double r) { return 5.656854249492381 * r * r * r; }
-
 class DensityFloor {
  public:
   /// Evaluates the floor for n particles at x with radii 'radius': the per-particle forces (N)

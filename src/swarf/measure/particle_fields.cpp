@@ -11,8 +11,6 @@
 
 namespace swarf {
 
-double particle_volume(double radius) { return 4.0 * std::sqrt(2.0) * radius * radius * radius; }
-
 double von_mises(const SymTensor& t) {
   const double m = (t[0] + t[1] + t[2]) / 3.0;
   const double sx = t[0] - m, sy = t[1] - m, sz = t[2] - m;

@@ -30,6 +30,7 @@
 
 #include "swarf/core/periodic.h"
 #include "swarf/core/sym_tensor.h"
+#include "swarf/geometry/site_volume.h"
 #include "swarf/state/particles.h"
 #include "swarf/state/rods.h"
 
@@ -43,9 +44,6 @@ struct ParticleFields {
   std::vector<SymTensor> stress;       ///< Pa, positive in tension
   std::vector<double> plastic_strain;  ///< von Mises equivalent of the fitted plastic strain tensor, 1
 };
-
-/// The volume V_i = 4 sqrt(2) R^3 a particle of radius R stands for, m^3.
-double particle_volume(double radius);
 
 /// The fields for the state now. The rods' forces are those of the last evaluation
 /// (Rods::force_coef: elastic-plastic and viscous); 'contacts' may be null (no contacts), else
